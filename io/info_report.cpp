@@ -1,0 +1,158 @@
+#include "io/info_report.h"
+
+#include <string>
+
+#include "kernel/assembly_state.h"
+#include "kernel/number_format.h"
+
+namespace mechanist {
+namespace {
+
+constexpr double kDegPerRad = 57.29577951308232;
+
+std::string Vec(const Eigen::Vector3d& v) {
+  return "(" + FormatNumber(v.x()) + ", " + FormatNumber(v.y()) + ", " + FormatNumber(v.z()) + ")";
+}
+
+std::string Parameters(const Feature& f) {
+  std::string s;
+  auto add = [&s](const std::string& item) { s += " " + item; };
+  auto mm = [](double x) { return FormatNumber(x) + " mm"; };
+  switch (f.kind) {
+    case FeatureKind::kShaft:
+    case FeatureKind::kHole:
+      add("diameter " + mm(f.diameter));
+      add("length " + mm(f.length));
+      if (f.through) add("through");
+      if (f.retained) add("retained");
+      break;
+    case FeatureKind::kThread:
+    case FeatureKind::kTappedHole:
+      add("M" + FormatNumber(f.diameter) + "x" + FormatNumber(f.pitch));
+      add("length " + mm(f.length));
+      if (f.starts != 1) add(std::to_string(f.starts) + " starts");
+      if (f.hand == Hand::kLeft) add("left-hand");
+      if (f.through) add("through");
+      if (f.kind == FeatureKind::kThread) add(f.fastening == Fastening::kTight ? "tight" : "loose");
+      break;
+    case FeatureKind::kSlot:
+    case FeatureKind::kKey:
+      add("width " + mm(f.width));
+      add("length " + mm(f.length));
+      if (f.depth > 0) add("depth " + mm(f.depth));
+      add("normal " + Vec(f.normal));
+      break;
+    case FeatureKind::kGear:
+    case FeatureKind::kWormWheel:
+      add(std::to_string(f.teeth) + " teeth");
+      add("module " + mm(f.module));
+      add("face width " + mm(f.length));
+      if (f.internal) add("internal");
+      break;
+    case FeatureKind::kWorm:
+      add(std::to_string(f.starts) + (f.starts == 1 ? " start" : " starts"));
+      add("module " + mm(f.module));
+      add("pitch diameter " + mm(f.pitch_diameter));
+      add("length " + mm(f.length));
+      if (f.hand == Hand::kLeft) add("left-hand");
+      break;
+    case FeatureKind::kRack:
+      add("module " + mm(f.module));
+      add("length " + mm(f.length));
+      add("normal " + Vec(f.normal));
+      break;
+    case FeatureKind::kBall:
+    case FeatureKind::kSocket:
+      add("diameter " + mm(f.diameter));
+      break;
+    case FeatureKind::kFace:
+      if (f.width > 0) add("width " + mm(f.width));
+      if (f.height > 0) add("height " + mm(f.height));
+      break;
+  }
+  return s;
+}
+
+}  // namespace
+
+void WriteInfo(const Assembly& assembly, std::ostream& out) {
+  const AssemblyState state = InitialState(assembly);
+  out << "assembly: " << (assembly.name().empty() ? "(unnamed)" : assembly.name()) << "\n";
+  if (!assembly.source().empty()) out << "file: " << assembly.source() << "\n";
+  out << "units in file: length " << assembly.units().length << ", angle " << assembly.units().angle
+      << " (reported: mm, degrees)\n";
+  out << "tolerance: " << FormatNumber(assembly.tolerance().length) << " mm, "
+      << FormatNumber(assembly.tolerance().angle * kDegPerRad) << " deg; friction "
+      << FormatNumber(assembly.friction()) << "\n";
+  std::size_t grounded = 0, triangles = 0, features = 0;
+  for (const Part& part : assembly.parts()) {
+    grounded += part.ground ? 1 : 0;
+    triangles += part.mesh->faces.size();
+    features += part.features.size();
+  }
+  out << "parts: " << assembly.parts().size() << " (" << grounded << " ground), " << triangles
+      << " triangles, " << features << " features\n";
+  for (std::size_t i = 0; i < assembly.parts().size(); ++i) {
+    const Part& part = assembly.part(i);
+    const Aabb box_W = WorldBox(assembly, state, i);
+    out << "  " << part.id << (part.ground ? " [ground]" : "")
+        << (part.placement.empty() ? "" : " [placed by features]") << ": " << part.mesh_source
+        << ", " << part.mesh->faces.size() << " triangles, box " << Vec(box_W.min) << " .. "
+        << Vec(box_W.max) << " mm";
+    if (!part.group.empty()) out << ", group " << part.group;
+    out << "\n";
+    for (const Feature& f : part.features) {
+      const AxisSegment axis_W = f.WorldAxis(state.X_WP[i]);
+      out << "    " << f.id << ": " << ToString(f.kind) << " at " << Vec(axis_W.origin) << " axis "
+          << Vec(axis_W.direction) << Parameters(f) << "\n";
+    }
+  }
+  if (!assembly.drivers().empty()) out << "drivers: " << assembly.drivers().size() << "\n";
+  for (const Driver& d : assembly.drivers()) {
+    const bool rotation = d.motion == Driver::Motion::kRotation;
+    out << "  " << d.id << ": " << (rotation ? "rotation" : "translation") << " of "
+        << assembly.FeatureName(d.feature) << " relative to "
+        << (d.relative_to ? assembly.part(*d.relative_to).id : std::string("the ground")) << ", "
+        << FormatNumber(d.rate) << (rotation ? " rev/s" : " mm/s") << ", amount "
+        << FormatNumber(d.amount) << (rotation ? " rev" : " mm") << "\n";
+  }
+  if (!assembly.adjustments().empty()) {
+    out << "adjustments: " << assembly.adjustments().size() << "\n";
+  }
+  for (const Adjustment& a : assembly.adjustments()) {
+    const bool rotate = a.kind == Adjustment::Kind::kRotate;
+    const double scale = rotate ? kDegPerRad : 1.0;
+    out << "  " << a.id << ": " << (rotate ? "rotate " : "translate ") << assembly.part(a.moves).id
+        << (rotate ? " about " : " along ") << assembly.FeatureName(a.axis) << " in ["
+        << FormatNumber(a.lower * scale) << ", " << FormatNumber(a.upper * scale) << "]"
+        << (rotate ? " deg" : " mm") << "\n";
+  }
+  if (!assembly.goals().empty()) out << "goals: " << assembly.goals().size() << "\n";
+  for (const Goal& g : assembly.goals()) {
+    out << "  " << (g.kind == Goal::Kind::kMesh ? "mesh " : "coaxial ")
+        << assembly.FeatureName(g.features[0]) << " with " << assembly.FeatureName(g.features[1])
+        << "\n";
+  }
+  if (!assembly.steps().empty()) out << "steps: " << assembly.steps().size() << "\n";
+  for (const AssemblyStep& s : assembly.steps()) {
+    out << "  insert " << assembly.FeatureName(s.insert) << " into " << assembly.FeatureName(s.into)
+        << "\n";
+  }
+  if (!assembly.overrides().empty()) out << "overrides: " << assembly.overrides().size() << "\n";
+  for (const PairOverride& o : assembly.overrides()) {
+    out << "  " << assembly.FeatureName(o.features[0]) << " + "
+        << assembly.FeatureName(o.features[1]) << ": "
+        << (o.type ? std::string(ToString(*o.type)) : std::string("none")) << "\n";
+  }
+  if (!assembly.expectations().empty()) {
+    out << "expectations: " << assembly.expectations().size() << "\n";
+  }
+}
+
+void WriteDiagnostics(const std::vector<Diagnostic>& diagnostics, std::ostream& out) {
+  for (const Diagnostic& d : diagnostics) {
+    out << ToString(d.severity) << " " << d.code << ": " << d.message << "\n";
+  }
+}
+
+}  // namespace mechanist

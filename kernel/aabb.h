@@ -1,0 +1,41 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <limits>
+
+#include "kernel/rigid_transform.h"
+
+namespace mechanist {
+
+/// An axis-aligned box in some frame (the frame is in the variable's name: box_W, box_P).
+/// Default-constructed boxes are empty (min > max); extending an empty box by a point gives
+/// the degenerate box at that point.
+struct Aabb {
+  Eigen::Vector3d min = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d max = Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity());
+
+  bool empty() const { return (min.array() > max.array()).any(); }
+  void Extend(const Eigen::Vector3d& p) {
+    min = min.cwiseMin(p);
+    max = max.cwiseMax(p);
+  }
+  void Extend(const Aabb& other) {
+    min = min.cwiseMin(other.min);
+    max = max.cwiseMax(other.max);
+  }
+  Eigen::Vector3d size() const {
+    return empty() ? Eigen::Vector3d::Zero() : Eigen::Vector3d(max - min);
+  }
+  Eigen::Vector3d center() const { return 0.5 * (min + max); }
+  /// True when the boxes overlap or touch.
+  bool Intersects(const Aabb& other) const {
+    return !empty() && !other.empty() && (min.array() <= other.max.array()).all() &&
+           (other.min.array() <= max.array()).all();
+  }
+};
+
+/// The world box of a box given in frame P: box_W = bounds of X_WP applied to box_P's eight
+/// corners (the seeds' tight box: computed in the part's frame, then transformed).
+Aabb TransformBox(const RigidTransform& X_WP, const Aabb& box_P);
+
+}  // namespace mechanist

@@ -1,0 +1,99 @@
+#include "kernel/assembly.h"
+
+#include <set>
+#include <stdexcept>
+#include <utility>
+
+namespace mechanist {
+
+std::optional<std::size_t> Part::FindFeature(const std::string& feature_id) const {
+  for (std::size_t i = 0; i < features.size(); ++i) {
+    if (features[i].id == feature_id) return i;
+  }
+  return std::nullopt;
+}
+
+Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
+  for (std::size_t i = 0; i < spec_.parts.size(); ++i) {
+    const Part& part = spec_.parts[i];
+    if (!part_index_.emplace(part.id, i).second) {
+      throw std::invalid_argument("duplicate part id '" + part.id + "'");
+    }
+    if (!part.mesh) throw std::invalid_argument("part '" + part.id + "' has no mesh");
+    std::set<std::string> feature_ids;
+    for (const Feature& f : part.features) {
+      if (!feature_ids.insert(f.id).second) {
+        throw std::invalid_argument("duplicate feature id '" + f.id + "' in part '" + part.id +
+                                    "'");
+      }
+    }
+    for (const PlacementCondition& c : part.placement) {
+      if (c.feature >= part.features.size()) {
+        throw std::invalid_argument("placement of part '" + part.id + "' names no feature");
+      }
+      CheckRef(c.target, "placement target");
+    }
+  }
+  for (const Driver& d : spec_.drivers) {
+    CheckRef(d.feature, "driver feature");
+    if (d.relative_to) CheckPart(*d.relative_to, "driver relative_to");
+  }
+  for (const Adjustment& a : spec_.adjustments) {
+    CheckPart(a.moves, "adjustment part");
+    CheckRef(a.axis, "adjustment axis");
+  }
+  for (const Goal& g : spec_.goals) {
+    for (FeatureRef f : g.features) CheckRef(f, "goal feature");
+  }
+  for (const AssemblyStep& s : spec_.steps) {
+    CheckRef(s.insert, "step feature");
+    CheckRef(s.into, "step target");
+  }
+  for (const PairOverride& o : spec_.overrides) {
+    for (FeatureRef f : o.features) CheckRef(f, "override feature");
+  }
+  for (const Expectation& e : spec_.expectations) {
+    if (e.part) CheckPart(*e.part, "expectation part");
+    if (e.feature) CheckRef(*e.feature, "expectation feature");
+    if (e.kind == Expectation::Kind::kPair) {
+      for (FeatureRef f : e.pair) CheckRef(f, "expectation pair");
+    }
+    for (std::size_t p : e.parts) CheckPart(p, "expectation part");
+  }
+}
+
+void Assembly::CheckPart(std::size_t part, const char* what) const {
+  if (part >= spec_.parts.size()) {
+    throw std::invalid_argument(std::string(what) + " refers to no part");
+  }
+}
+
+void Assembly::CheckRef(FeatureRef ref, const char* what) const {
+  CheckPart(ref.part, what);
+  if (ref.feature >= spec_.parts[ref.part].features.size()) {
+    throw std::invalid_argument(std::string(what) + " refers to no feature of part '" +
+                                spec_.parts[ref.part].id + "'");
+  }
+}
+
+std::optional<std::size_t> Assembly::FindPart(const std::string& id) const {
+  const auto it = part_index_.find(id);
+  if (it == part_index_.end()) return std::nullopt;
+  return it->second;
+}
+
+std::optional<FeatureRef> Assembly::FindFeature(const std::string& path) const {
+  const std::size_t slash = path.find('/');
+  if (slash == std::string::npos) return std::nullopt;
+  const auto part = FindPart(path.substr(0, slash));
+  if (!part) return std::nullopt;
+  const auto feature = spec_.parts[*part].FindFeature(path.substr(slash + 1));
+  if (!feature) return std::nullopt;
+  return FeatureRef{*part, *feature};
+}
+
+std::string Assembly::FeatureName(FeatureRef ref) const {
+  return spec_.parts.at(ref.part).id + "/" + feature(ref).id;
+}
+
+}  // namespace mechanist

@@ -1,0 +1,155 @@
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kernel/feature_ref.h"
+#include "kernel/pair_type.h"
+#include "kernel/part.h"
+
+namespace mechanist {
+
+/// The file's units: names as written and factors to millimetres and radians.
+struct Units {
+  std::string length = "mm";
+  std::string angle = "deg";
+  double mm_per_length = 1.0;
+  double rad_per_angle = 0.017453292519943295;
+};
+
+/// Recognition tolerances in mm and radians (file: `tolerance`, in the file's units).
+struct Tolerance {
+  double length = 0.05;
+  double angle = 0.008726646259971648;  ///< 0.5 degrees
+};
+
+/// A driver (spec, "Drivers"). Rotation rates are revolutions per second about the feature
+/// axis (right-hand rule); translation rates are mm/s along it. `amount` is revolutions or mm.
+struct Driver {
+  enum class Motion { kRotation, kTranslation };
+  std::string id;
+  FeatureRef feature;                      ///< the driven part's feature whose axis is used
+  std::optional<std::size_t> relative_to;  ///< part index; nothing: the ground
+  Motion motion = Motion::kRotation;
+  double rate = 1.0;
+  double amount = 1.0;
+};
+
+/// A bounded freedom the designer may use (spec, "Adjustments").
+struct Adjustment {
+  enum class Kind { kRotate, kTranslate };
+  std::string id;
+  std::size_t moves = 0;  ///< part index
+  Kind kind = Kind::kRotate;
+  FeatureRef axis;                  ///< the feature whose axis is the adjustment's axis
+  double lower = 0.0, upper = 0.0;  ///< radians or mm
+};
+
+/// A goal for the adjustments: two features must mesh or be coaxial.
+struct Goal {
+  enum class Kind { kMesh, kCoaxial };
+  Kind kind = Kind::kMesh;
+  std::array<FeatureRef, 2> features;
+};
+
+/// One step of an assembly sequence: insert one feature into another.
+struct AssemblyStep {
+  FeatureRef insert;
+  FeatureRef into;
+};
+
+/// A user override: force a pair type, or forbid any pair (`type` empty).
+struct PairOverride {
+  std::array<FeatureRef, 2> features;
+  std::optional<PairType> type;
+};
+
+/// A ratio as written in an expectation: exact `numerator/denominator` (reduced, positive
+/// denominator) or a decimal `value`.
+struct ExpectedRatio {
+  bool exact = false;
+  std::int64_t numerator = 0;
+  std::int64_t denominator = 1;
+  double value = 0.0;  ///< the number (also set for exact ratios)
+  std::string text;    ///< as written
+};
+
+/// One mechanism test of `expect` (spec, "Expectations").
+struct Expectation {
+  enum class Kind { kRatio, kMoves, kMobility, kPair, kSameSubassembly, kAssemblable, kDiagnostic };
+  Kind kind = Kind::kRatio;
+  std::string pointer;                ///< JSON pointer of the entry, for messages ("/expect/2")
+  std::optional<std::size_t> part;    ///< ratio, moves
+  std::optional<FeatureRef> feature;  ///< ratio: the axis the rate is measured about or along
+  ExpectedRatio ratio;
+  bool flag = false;  ///< moves, assemblable
+  int mobility = 0;
+  std::array<FeatureRef, 2> pair{};
+  std::optional<PairType> pair_type;  ///< pair: nothing means any pair
+  std::vector<std::size_t> parts;     ///< same_subassembly, diagnostic
+  std::string diagnostic;             ///< diagnostic: a code or a substring of the message
+};
+
+/// Everything an assembly file describes, as plain data; Assembly checks and indexes it.
+struct AssemblySpec {
+  std::string name;
+  std::string source;  ///< the file it was read from, if any
+  Units units;
+  Tolerance tolerance;
+  double friction = 0.1;
+  std::vector<Part> parts;
+  std::vector<Driver> drivers;
+  std::vector<Adjustment> adjustments;
+  std::vector<Goal> goals;
+  std::vector<AssemblyStep> steps;
+  std::vector<PairOverride> overrides;
+  std::vector<Expectation> expectations;
+};
+
+/// The immutable description of an assembly (Pinocchio's Model): parts, features and the
+/// file's drivers, adjustments, goals, steps, overrides and expectations. Changing state
+/// (poses during motion) lives in AssemblyState.
+class Assembly {
+ public:
+  /// Takes the description. Throws std::invalid_argument for duplicate part or feature ids,
+  /// a part without a mesh, or an index that refers to no part or feature.
+  explicit Assembly(AssemblySpec spec);
+
+  const std::string& name() const { return spec_.name; }
+  const std::string& source() const { return spec_.source; }
+  const Units& units() const { return spec_.units; }
+  const Tolerance& tolerance() const { return spec_.tolerance; }
+  double friction() const { return spec_.friction; }
+  const std::vector<Part>& parts() const { return spec_.parts; }
+  const Part& part(std::size_t index) const { return spec_.parts.at(index); }
+  const std::vector<Driver>& drivers() const { return spec_.drivers; }
+  const std::vector<Adjustment>& adjustments() const { return spec_.adjustments; }
+  const std::vector<Goal>& goals() const { return spec_.goals; }
+  const std::vector<AssemblyStep>& steps() const { return spec_.steps; }
+  const std::vector<PairOverride>& overrides() const { return spec_.overrides; }
+  const std::vector<Expectation>& expectations() const { return spec_.expectations; }
+
+  /// Index of the part `id`, or nothing.
+  std::optional<std::size_t> FindPart(const std::string& id) const;
+  /// The feature written "part_id/feature_id", or nothing.
+  std::optional<FeatureRef> FindFeature(const std::string& path) const;
+  const Feature& feature(FeatureRef ref) const {
+    return spec_.parts.at(ref.part).features.at(ref.feature);
+  }
+  /// "part_id/feature_id".
+  std::string FeatureName(FeatureRef ref) const;
+
+ private:
+  void CheckRef(FeatureRef ref, const char* what) const;
+  void CheckPart(std::size_t part, const char* what) const;
+
+  AssemblySpec spec_;
+  std::map<std::string, std::size_t, std::less<>> part_index_;
+};
+
+}  // namespace mechanist

@@ -1,0 +1,89 @@
+#include "kernel/assembly_check.h"
+
+#include <algorithm>
+#include <map>
+#include <string>
+
+#include "kernel/mesh_check.h"
+#include "kernel/number_format.h"
+
+namespace mechanist {
+
+std::string_view ToString(Severity severity) {
+  switch (severity) {
+    case Severity::kInfo:
+      return "info";
+    case Severity::kWarning:
+      return "warning";
+    case Severity::kError:
+      return "error";
+  }
+  return "?";
+}
+
+namespace {
+
+void AddMeshDiagnostics(const Part& part, const MeshCheck& check, std::vector<Diagnostic>& out) {
+  auto add = [&](const char* code, const std::string& message) {
+    out.push_back({Severity::kWarning, code, "part '" + part.id + "': " + message, {part.id}, {}});
+  };
+  if (check.non_finite_vertices > 0 || check.out_of_range_faces > 0 || check.face_count == 0) {
+    add("mesh_invalid", "mesh has invalid elements: " + check.Problems().front());
+  }
+  if (!check.closed()) {
+    add("mesh_not_closed", "mesh is not closed (" + std::to_string(check.boundary_edges) +
+                               " boundary edges, " + std::to_string(check.non_manifold_edges) +
+                               " edges shared by more than two faces)");
+  }
+  if (!check.consistently_oriented()) {
+    add("mesh_misoriented", "mesh faces are not consistently oriented (" +
+                                std::to_string(check.misoriented_edges) + " edges)");
+  }
+  if (check.closed() && check.consistently_oriented() && check.face_count > 0 &&
+      !(check.signed_volume > 0)) {
+    add("mesh_inward", "mesh faces point inward (negative volume)");
+  }
+  if (check.degenerate_faces > 0) {
+    add("mesh_degenerate_faces",
+        "mesh has " + std::to_string(check.degenerate_faces) + " degenerate faces");
+  }
+}
+
+}  // namespace
+
+std::vector<Diagnostic> CheckAssembly(const Assembly& assembly) {
+  std::vector<Diagnostic> out;
+  std::map<const TriangleMesh*, MeshCheck> checked;  // instances share one mesh
+  for (const Part& part : assembly.parts()) {
+    auto it = checked.find(part.mesh.get());
+    if (it == checked.end()) it = checked.emplace(part.mesh.get(), CheckMesh(*part.mesh)).first;
+    AddMeshDiagnostics(part, it->second, out);
+
+    const Aabb box = part.mesh->Bounds();
+    const double margin = std::max(1.0, box.size().norm());
+    for (const Feature& f : part.features) {
+      const Eigen::Vector3d outside =
+          (box.min - f.origin).cwiseMax(f.origin - box.max).cwiseMax(0.0);
+      if (!box.empty() && outside.norm() > margin) {
+        out.push_back({Severity::kWarning,
+                       "feature_outside_part",
+                       "feature '" + part.id + "/" + f.id + "' has its origin " +
+                           FormatNumber(outside.norm()) +
+                           " mm outside the part's mesh box (unit or frame mistake?)",
+                       {part.id},
+                       {part.id + "/" + f.id}});
+      }
+    }
+    if (!part.placement.empty()) {
+      out.push_back(
+          {Severity::kInfo,
+           "placement_unresolved",
+           "part '" + part.id + "' is placed by features; this build keeps it at the identity pose",
+           {part.id},
+           {}});
+    }
+  }
+  return out;
+}
+
+}  // namespace mechanist

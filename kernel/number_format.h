@@ -1,0 +1,12 @@
+#pragma once
+
+#include <string>
+
+namespace mechanist {
+
+/// `value` with at most `significant` significant digits, no trailing zeros (printf's %.*g);
+/// magnitudes below 1e-12 and "-0" print as "0": for messages and reports that must be
+/// identical across runs and free of rotation round-off.
+std::string FormatNumber(double value, int significant = 6);
+
+}  // namespace mechanist

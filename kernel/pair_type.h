@@ -1,0 +1,28 @@
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+namespace mechanist {
+
+/// The kinds of pair (kinematic relation) between two parts (spec, "Recognition").
+enum class PairType {
+  kFixed,
+  kRevolute,
+  kCylindrical,
+  kScrew,
+  kPrismatic,
+  kPinSlot,
+  kSpherical,
+  kPlanar,
+  kGear,
+  kWormGear,
+  kRackPinion,
+};
+
+/// The format's spelling ("worm_gear").
+std::string_view ToString(PairType type);
+/// The type spelled `name`, or nothing.
+std::optional<PairType> ParsePairType(std::string_view name);
+
+}  // namespace mechanist

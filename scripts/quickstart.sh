@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Quick start, step 1: install dependencies, build, and run the main job on a bundled example.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+scripts/build.sh
+example=${1:-examples/robot_hand_worm/assembly.json}
+build/cli/mechanist validate "$example"
+build/cli/mechanist info "$example"

@@ -1,0 +1,219 @@
+#include "kernel/assembly.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "kernel/assembly_state.h"
+
+namespace mechanist {
+namespace {
+
+std::shared_ptr<const TriangleMesh> UnitCube() {
+  auto mesh = std::make_shared<TriangleMesh>();
+  for (int i = 0; i < 8; ++i) mesh->vertices.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    mesh->faces.push_back({q[0], q[1], q[2]});
+    mesh->faces.push_back({q[0], q[2], q[3]});
+  }
+  return mesh;
+}
+
+Feature MakeFeature(const std::string& id, FeatureKind kind) {
+  Feature feature;
+  feature.id = id;
+  feature.kind = kind;
+  return feature;
+}
+
+/// Two parts sharing a cube mesh: "base" (ground, features "bore" and "top") and "gear"
+/// (features "axle" and "teeth", a quarter turn about z at (10, 0, 0)), and a driver on
+/// gear/axle.
+AssemblySpec ValidSpec() {
+  AssemblySpec spec;
+  spec.name = "test";
+  const auto cube = UnitCube();
+  Part base;
+  base.id = "base";
+  base.mesh = cube;
+  base.ground = true;
+  base.features = {MakeFeature("bore", FeatureKind::kHole), MakeFeature("top", FeatureKind::kFace)};
+  Part gear;
+  gear.id = "gear";
+  gear.mesh = cube;
+  gear.X_WP = RigidTransform::Translation(Eigen::Vector3d(10, 0, 0)) *
+              RigidTransform::AxisAngle(Eigen::Vector3d::UnitZ(), std::numbers::pi / 2);
+  gear.features = {MakeFeature("axle", FeatureKind::kShaft),
+                   MakeFeature("teeth", FeatureKind::kGear)};
+  spec.parts = {base, gear};
+  Driver driver;
+  driver.id = "motor";
+  driver.feature = {1, 0};
+  driver.relative_to = 0;
+  spec.drivers = {driver};
+  return spec;
+}
+
+/// The message of the std::invalid_argument that Assembly(spec) throws, or "" (a test failure).
+std::string ConstructionError(AssemblySpec spec) {
+  try {
+    Assembly assembly(std::move(spec));
+  } catch (const std::invalid_argument& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << "Assembly accepted the spec";
+  return "";
+}
+
+TEST(Assembly, KeepsTheDescription) {
+  const Assembly assembly(ValidSpec());
+  EXPECT_EQ(assembly.name(), "test");
+  ASSERT_EQ(assembly.parts().size(), 2u);
+  EXPECT_EQ(assembly.part(1).id, "gear");
+  EXPECT_EQ(assembly.drivers().size(), 1u);
+  EXPECT_EQ(assembly.feature({1, 1}).kind, FeatureKind::kGear);
+}
+
+TEST(Assembly, FindsPartsAndFeaturesByName) {
+  const Assembly assembly(ValidSpec());
+  EXPECT_EQ(assembly.FindPart("base"), 0u);
+  EXPECT_EQ(assembly.FindPart("gear"), 1u);
+  EXPECT_FALSE(assembly.FindPart("Gear"));
+  EXPECT_FALSE(assembly.FindPart(""));
+
+  EXPECT_EQ(assembly.FindFeature("gear/teeth"), (FeatureRef{1, 1}));
+  EXPECT_EQ(assembly.FindFeature("base/bore"), (FeatureRef{0, 0}));
+  EXPECT_FALSE(assembly.FindFeature("gear"));
+  EXPECT_FALSE(assembly.FindFeature("gear/"));
+  EXPECT_FALSE(assembly.FindFeature("gear/bore"));
+  EXPECT_FALSE(assembly.FindFeature("shaft/axle"));
+  EXPECT_FALSE(assembly.FindFeature("/axle"));
+}
+
+TEST(Assembly, FeatureNameRoundTrips) {
+  const Assembly assembly(ValidSpec());
+  EXPECT_EQ(assembly.FeatureName({0, 1}), "base/top");
+  EXPECT_EQ(assembly.FeatureName({1, 0}), "gear/axle");
+  for (const std::string name : {"base/bore", "base/top", "gear/axle", "gear/teeth"}) {
+    const auto ref = assembly.FindFeature(name);
+    ASSERT_TRUE(ref) << name;
+    EXPECT_EQ(assembly.FeatureName(*ref), name);
+  }
+}
+
+TEST(Assembly, SameFeatureIdInDifferentPartsIsAllowed) {
+  AssemblySpec spec = ValidSpec();
+  spec.parts[1].features[0].id = "bore";
+  const Assembly assembly(std::move(spec));
+  EXPECT_EQ(assembly.FindFeature("gear/bore"), (FeatureRef{1, 0}));
+  EXPECT_EQ(assembly.FindFeature("base/bore"), (FeatureRef{0, 0}));
+}
+
+TEST(Assembly, RejectsDuplicatePartIds) {
+  AssemblySpec spec = ValidSpec();
+  spec.parts[1].id = "base";
+  EXPECT_NE(ConstructionError(std::move(spec)).find("'base'"), std::string::npos);
+}
+
+TEST(Assembly, RejectsDuplicateFeatureIds) {
+  AssemblySpec spec = ValidSpec();
+  spec.parts[1].features[1].id = "axle";
+  const std::string message = ConstructionError(std::move(spec));
+  EXPECT_NE(message.find("'axle'"), std::string::npos) << message;
+  EXPECT_NE(message.find("'gear'"), std::string::npos) << message;
+}
+
+TEST(Assembly, RejectsAPartWithoutMesh) {
+  AssemblySpec spec = ValidSpec();
+  spec.parts[0].mesh.reset();
+  EXPECT_NE(ConstructionError(std::move(spec)).find("'base'"), std::string::npos);
+}
+
+TEST(Assembly, RejectsADriverOnAMissingPart) {
+  AssemblySpec spec = ValidSpec();
+  spec.drivers[0].feature = {2, 0};
+  EXPECT_NE(ConstructionError(std::move(spec)).find("driver"), std::string::npos);
+}
+
+TEST(Assembly, RejectsADriverOnAMissingFeature) {
+  AssemblySpec spec = ValidSpec();
+  spec.drivers[0].feature = {1, 2};
+  const std::string message = ConstructionError(std::move(spec));
+  EXPECT_NE(message.find("driver"), std::string::npos) << message;
+  EXPECT_NE(message.find("'gear'"), std::string::npos) << message;
+}
+
+TEST(Assembly, RejectsADriverRelativeToAMissingPart) {
+  AssemblySpec spec = ValidSpec();
+  spec.drivers[0].relative_to = 5;
+  EXPECT_NE(ConstructionError(std::move(spec)).find("relative_to"), std::string::npos);
+}
+
+TEST(Assembly, RejectsOtherBadReferences) {
+  {
+    AssemblySpec spec = ValidSpec();
+    spec.adjustments.push_back({"turn", 3, Adjustment::Kind::kRotate, {1, 0}, 0.0, 1.0});
+    ConstructionError(std::move(spec));
+  }
+  {
+    AssemblySpec spec = ValidSpec();
+    spec.goals.push_back({Goal::Kind::kMesh, {FeatureRef{1, 1}, FeatureRef{0, 9}}});
+    ConstructionError(std::move(spec));
+  }
+  {
+    AssemblySpec spec = ValidSpec();
+    spec.steps.push_back({FeatureRef{1, 0}, FeatureRef{7, 0}});
+    ConstructionError(std::move(spec));
+  }
+  {
+    AssemblySpec spec = ValidSpec();
+    PlacementCondition condition;
+    condition.feature = 2;  // the gear has two features
+    condition.target = {0, 0};
+    spec.parts[1].placement.push_back(condition);
+    ConstructionError(std::move(spec));
+  }
+  {
+    AssemblySpec spec = ValidSpec();
+    Expectation expectation;
+    expectation.kind = Expectation::Kind::kSameSubassembly;
+    expectation.parts = {0, 4};
+    spec.expectations.push_back(expectation);
+    ConstructionError(std::move(spec));
+  }
+}
+
+TEST(Assembly, InitialStateCopiesThePoses) {
+  const Assembly assembly(ValidSpec());
+  const AssemblyState state = InitialState(assembly);
+  ASSERT_EQ(state.X_WP.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_TRUE(state.X_WP[i].IsNearlyEqualTo(assembly.part(i).X_WP, 0.0, 0.0)) << i;
+  }
+  EXPECT_FALSE(state.X_WP[0].IsNearlyEqualTo(state.X_WP[1], 1.0, 1.0));
+}
+
+TEST(Assembly, WorldBoxPlacesTheMeshBoxAtTheStatePose) {
+  const Assembly assembly(ValidSpec());
+  AssemblyState state = InitialState(assembly);
+  const Aabb base = WorldBox(assembly, state, 0);
+  EXPECT_TRUE(base.min.isApprox(Eigen::Vector3d(0, 0, 0)));
+  EXPECT_TRUE(base.max.isApprox(Eigen::Vector3d(1, 1, 1)));
+  // A quarter turn about z takes the cube's x in [0, 1] to y in [0, 1] and y to x in [-1, 0].
+  const Aabb gear = WorldBox(assembly, state, 1);
+  EXPECT_LE((gear.min - Eigen::Vector3d(9, 0, 0)).norm(), 1e-12);
+  EXPECT_LE((gear.max - Eigen::Vector3d(10, 1, 1)).norm(), 1e-12);
+  // The state's pose counts, not the file's.
+  state.X_WP[1] = RigidTransform::Translation(Eigen::Vector3d(0, 0, 5));
+  const Aabb moved = WorldBox(assembly, state, 1);
+  EXPECT_LE((moved.min - Eigen::Vector3d(0, 0, 5)).norm(), 1e-12);
+  EXPECT_LE((moved.max - Eigen::Vector3d(1, 1, 6)).norm(), 1e-12);
+}
+
+}  // namespace
+}  // namespace mechanist

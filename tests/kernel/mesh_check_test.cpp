@@ -1,0 +1,156 @@
+#include "kernel/mesh_check.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace mechanist {
+namespace {
+
+/// The unit cube [0, 1]^3: 8 vertices (corner i at (i & 1, i & 2, i & 4) scaled to 0/1) and
+/// 12 outward-oriented triangles.
+TriangleMesh UnitCube() {
+  TriangleMesh mesh;
+  for (int i = 0; i < 8; ++i) mesh.vertices.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    mesh.faces.push_back({q[0], q[1], q[2]});
+    mesh.faces.push_back({q[0], q[2], q[3]});
+  }
+  return mesh;
+}
+
+void Flip(TriangleMesh::Face& face) { std::swap(face[1], face[2]); }
+
+/// Problems() describes exactly the meshes ok() rejects.
+void ExpectProblemsMatchOk(const MeshCheck& check) {
+  const std::vector<std::string> problems = check.Problems();
+  EXPECT_EQ(problems.empty(), check.ok()) << ::testing::PrintToString(problems);
+  for (const std::string& problem : problems) EXPECT_FALSE(problem.empty());
+}
+
+bool AnyProblemContains(const MeshCheck& check, const std::string& text) {
+  const std::vector<std::string> problems = check.Problems();
+  return std::any_of(problems.begin(), problems.end(),
+                     [&](const std::string& p) { return p.find(text) != std::string::npos; });
+}
+
+TEST(MeshCheck, CubeIsOk) {
+  const MeshCheck check = CheckMesh(UnitCube());
+  EXPECT_TRUE(check.ok());
+  EXPECT_TRUE(check.closed());
+  EXPECT_TRUE(check.consistently_oriented());
+  EXPECT_EQ(check.vertex_count, 8u);
+  EXPECT_EQ(check.face_count, 12u);
+  EXPECT_NEAR(check.signed_volume, 1.0, 1e-12);
+  EXPECT_EQ(check.degenerate_faces + check.boundary_edges + check.non_manifold_edges +
+                check.misoriented_edges + check.out_of_range_faces + check.non_finite_vertices,
+            0u);
+  ExpectProblemsMatchOk(check);
+}
+
+TEST(MeshCheck, FlippedFaceIsMisoriented) {
+  TriangleMesh mesh = UnitCube();
+  Flip(mesh.faces[5]);
+  const MeshCheck check = CheckMesh(mesh);
+  EXPECT_FALSE(check.ok());
+  EXPECT_TRUE(check.closed());
+  EXPECT_EQ(check.misoriented_edges, 3u);
+  ExpectProblemsMatchOk(check);
+  EXPECT_TRUE(AnyProblemContains(check, "consistently oriented"));
+}
+
+TEST(MeshCheck, RemovedFaceLeavesBoundaryEdges) {
+  TriangleMesh mesh = UnitCube();
+  mesh.faces.erase(mesh.faces.begin() + 3);
+  const MeshCheck check = CheckMesh(mesh);
+  EXPECT_FALSE(check.ok());
+  EXPECT_FALSE(check.closed());
+  EXPECT_EQ(check.boundary_edges, 3u);
+  EXPECT_EQ(check.misoriented_edges, 0u);
+  ExpectProblemsMatchOk(check);
+  EXPECT_TRUE(AnyProblemContains(check, "not closed"));
+}
+
+TEST(MeshCheck, AllFacesFlippedHasNegativeVolume) {
+  TriangleMesh mesh = UnitCube();
+  for (TriangleMesh::Face& face : mesh.faces) Flip(face);
+  const MeshCheck check = CheckMesh(mesh);
+  EXPECT_FALSE(check.ok());
+  EXPECT_TRUE(check.closed());
+  EXPECT_TRUE(check.consistently_oriented());
+  EXPECT_NEAR(check.signed_volume, -1.0, 1e-12);
+  ExpectProblemsMatchOk(check);
+  ASSERT_EQ(check.Problems().size(), 1u);
+  EXPECT_TRUE(AnyProblemContains(check, "negative volume"));
+}
+
+TEST(MeshCheck, EdgeSharedByThreeFacesIsNonManifold) {
+  TriangleMesh mesh = UnitCube();
+  mesh.vertices.emplace_back(0.5, -1, 0.5);
+  mesh.faces.push_back({0, 1, 8});  // a fin on the edge from corner 0 to corner 1
+  const MeshCheck check = CheckMesh(mesh);
+  EXPECT_FALSE(check.ok());
+  EXPECT_EQ(check.non_manifold_edges, 1u);
+  EXPECT_EQ(check.boundary_edges, 2u);
+  ExpectProblemsMatchOk(check);
+}
+
+TEST(MeshCheck, RepeatedIndexIsDegenerate) {
+  TriangleMesh mesh = UnitCube();
+  mesh.faces.push_back({2, 2, 5});
+  const MeshCheck check = CheckMesh(mesh);
+  EXPECT_FALSE(check.ok());
+  EXPECT_EQ(check.degenerate_faces, 1u);
+  ExpectProblemsMatchOk(check);
+  EXPECT_TRUE(AnyProblemContains(check, "degenerate"));
+}
+
+TEST(MeshCheck, ZeroAreaFaceIsDegenerate) {
+  // Two back-to-back triangles along the cube edge from corner 0 to corner 1.
+  TriangleMesh mesh = UnitCube();
+  mesh.vertices.emplace_back(0.5, 0, 0);
+  mesh.faces.push_back({0, 8, 1});
+  mesh.faces.push_back({0, 1, 8});
+  const MeshCheck check = CheckMesh(mesh);
+  EXPECT_EQ(check.degenerate_faces, 2u);
+  EXPECT_FALSE(check.ok());
+  ExpectProblemsMatchOk(check);
+}
+
+TEST(MeshCheck, OutOfRangeIndexIsReported) {
+  TriangleMesh mesh = UnitCube();
+  mesh.faces[0][2] = 99;
+  mesh.faces[1][0] = -1;
+  const MeshCheck check = CheckMesh(mesh);
+  EXPECT_FALSE(check.ok());
+  EXPECT_EQ(check.out_of_range_faces, 2u);
+  ExpectProblemsMatchOk(check);
+  EXPECT_TRUE(AnyProblemContains(check, "missing vertices"));
+}
+
+TEST(MeshCheck, NanVertexIsReported) {
+  TriangleMesh mesh = UnitCube();
+  mesh.vertices[7].x() = std::nan("");
+  const MeshCheck check = CheckMesh(mesh);
+  EXPECT_FALSE(check.ok());
+  EXPECT_EQ(check.non_finite_vertices, 1u);
+  // Only the six faces around the bad vertex lose their area.
+  EXPECT_EQ(check.degenerate_faces, 6u);
+  ExpectProblemsMatchOk(check);
+  EXPECT_TRUE(AnyProblemContains(check, "non-finite"));
+}
+
+TEST(MeshCheck, EmptyMeshHasNoFaces) {
+  const MeshCheck check = CheckMesh(TriangleMesh());
+  EXPECT_FALSE(check.ok());
+  EXPECT_EQ(check.face_count, 0u);
+  ExpectProblemsMatchOk(check);
+  EXPECT_TRUE(AnyProblemContains(check, "no faces"));
+}
+
+}  // namespace
+}  // namespace mechanist
