@@ -6,14 +6,19 @@
 #include <iostream>
 #include <string>
 
+#include "io/analysis_report.h"
 #include "io/assembly_reader.h"
+#include "io/atomic_file.h"
 #include "io/info_report.h"
 #include "io/input_error.h"
 #include "kernel/assembly_check.h"
+#include "reasoning/analysis.h"
+#include "reasoning/expectation_check.h"
 
 namespace {
 
 constexpr int kExitOk = 0;
+constexpr int kExitFailures = 1;
 constexpr int kExitUsage = 2;
 constexpr int kExitInternal = 3;
 
@@ -37,6 +42,30 @@ int Info(const std::string& file) {
   return kExitOk;
 }
 
+/// Outputs are written only after the whole analysis succeeded, each atomically.
+int Analyze(const std::string& file, const std::string& json, const std::string& dot) {
+  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const mechanist::Analysis analysis = mechanist::Analyze(assembly);
+  mechanist::WriteAnalysisSummary(assembly, analysis, std::cout);
+  if (!json.empty()) {
+    mechanist::WriteFileAtomically(json, mechanist::AnalysisJson(assembly, analysis), file);
+  }
+  if (!dot.empty()) {
+    mechanist::WriteFileAtomically(dot, mechanist::AnalysisDot(assembly, analysis), file);
+  }
+  return kExitOk;
+}
+
+int Check(const std::string& file) {
+  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const auto results = mechanist::CheckExpectations(assembly, mechanist::Analyze(assembly));
+  mechanist::WriteCheckResults(results, std::cout);
+  for (const auto& r : results) {
+    if (!r.passed) return kExitFailures;
+  }
+  return kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -54,6 +83,16 @@ int main(int argc, char** argv) {
       "info", "Parts, triangle counts, features, bounding boxes, units, drivers");
   info->add_option("FILE", file, "assembly file (.json)")->required();
 
+  std::string json, dot;
+  CLI::App* analyze = app.add_subcommand(
+      "analyze", "Recognise pairs and subassemblies; print a summary, optionally write reports");
+  analyze->add_option("FILE", file, "assembly file (.json)")->required();
+  analyze->add_option("--json", json, "write the JSON report to this file");
+  analyze->add_option("--dot", dot, "write the pair graph as Graphviz DOT to this file");
+  CLI::App* check =
+      app.add_subcommand("check", "Evaluate the file's expect entries; exit 1 if any fails");
+  check->add_option("FILE", file, "assembly file (.json)")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -66,6 +105,8 @@ int main(int argc, char** argv) {
   try {
     if (*validate) return Validate(file);
     if (*info) return Info(file);
+    if (*analyze) return Analyze(file, json, dot);
+    if (*check) return Check(file);
   } catch (const mechanist::InputError& e) {
     std::cerr << "mechanist: error: " << e.what() << "\n";
     return kExitUsage;

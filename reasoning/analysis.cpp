@@ -1,0 +1,24 @@
+#include "reasoning/analysis.h"
+
+#include "kernel/assembly_check.h"
+#include "kernel/assembly_state.h"
+#include "reasoning/pair_recognition.h"
+
+namespace mechanist {
+
+Analysis Analyze(const Assembly& assembly) {
+  Analysis analysis;
+  Recognition recognition = RecognizePairs(assembly, InitialState(assembly));
+  analysis.pairs = std::move(recognition.pairs);
+  analysis.subassemblies = PairGraph(assembly, analysis.pairs).Subassemblies();
+  analysis.subassembly_of.assign(assembly.parts().size(), 0);
+  for (std::size_t s = 0; s < analysis.subassemblies.size(); ++s) {
+    for (std::size_t part : analysis.subassemblies[s].parts) analysis.subassembly_of[part] = s;
+  }
+  analysis.diagnostics = CheckAssembly(assembly);
+  analysis.diagnostics.insert(analysis.diagnostics.end(), recognition.diagnostics.begin(),
+                              recognition.diagnostics.end());
+  return analysis;
+}
+
+}  // namespace mechanist

@@ -1,0 +1,132 @@
+#include "reasoning/expectation_check.h"
+
+#include <algorithm>
+
+namespace mechanist {
+namespace {
+
+std::string PartList(const Assembly& assembly, const std::vector<std::size_t>& parts) {
+  std::string s;
+  for (std::size_t p : parts) s += (s.empty() ? "" : ", ") + assembly.part(p).id;
+  return s;
+}
+
+ExpectationResult CheckPair(const Assembly& assembly, const Analysis& analysis,
+                            const Expectation& e) {
+  ExpectationResult r;
+  const std::string a = assembly.FeatureName(e.pair[0]);
+  const std::string b = assembly.FeatureName(e.pair[1]);
+  r.what = "pair " + a + " + " + b +
+           (e.pair_type ? " is " + std::string(ToString(*e.pair_type)) : std::string(""));
+  std::vector<std::string> found;
+  for (const Pair& p : analysis.pairs) {
+    if ((p.a == e.pair[0] && p.b == e.pair[1]) || (p.a == e.pair[1] && p.b == e.pair[0])) {
+      found.emplace_back(ToString(p.type));
+      if (!e.pair_type || *e.pair_type == p.type) r.passed = true;
+    }
+  }
+  if (found.empty()) {
+    r.detail = "no pair between these features";
+    for (const Diagnostic& d : analysis.diagnostics) {
+      if (std::find(d.features.begin(), d.features.end(), a) != d.features.end() &&
+          std::find(d.features.begin(), d.features.end(), b) != d.features.end()) {
+        r.detail += "; " + d.code + ": " + d.message;
+      }
+    }
+  } else {
+    r.detail = "found";
+    for (const std::string& t : found) r.detail += " " + t;
+  }
+  return r;
+}
+
+ExpectationResult CheckSameSubassembly(const Assembly& assembly, const Analysis& analysis,
+                                       const Expectation& e) {
+  ExpectationResult r;
+  r.what = "same subassembly: " + PartList(assembly, e.parts);
+  const std::size_t first = analysis.subassembly_of[e.parts.front()];
+  r.passed = std::all_of(e.parts.begin(), e.parts.end(),
+                         [&](std::size_t p) { return analysis.subassembly_of[p] == first; });
+  if (r.passed) {
+    r.detail = "all in subassembly S" + std::to_string(first + 1);
+  } else {
+    for (std::size_t p : e.parts) {
+      r.detail += (r.detail.empty() ? "" : ", ") + assembly.part(p).id + " in S" +
+                  std::to_string(analysis.subassembly_of[p] + 1);
+    }
+  }
+  return r;
+}
+
+ExpectationResult CheckDiagnostic(const Assembly& assembly, const Analysis& analysis,
+                                  const Expectation& e) {
+  ExpectationResult r;
+  r.what = "diagnostic \"" + e.diagnostic + "\"" +
+           (e.parts.empty() ? std::string("") : " about " + PartList(assembly, e.parts));
+  for (const Diagnostic& d : analysis.diagnostics) {
+    const bool text = d.code == e.diagnostic || d.message.find(e.diagnostic) != std::string::npos;
+    const bool parts = std::all_of(e.parts.begin(), e.parts.end(), [&](std::size_t p) {
+      return std::find(d.parts.begin(), d.parts.end(), assembly.part(p).id) != d.parts.end();
+    });
+    if (text && parts) {
+      r.passed = true;
+      r.detail = d.code + ": " + d.message;
+      return r;
+    }
+  }
+  r.detail = "no such diagnostic among " + std::to_string(analysis.diagnostics.size());
+  return r;
+}
+
+ExpectationResult NotBuilt(const Assembly& assembly, const Expectation& e) {
+  ExpectationResult r;
+  switch (e.kind) {
+    case Expectation::Kind::kRatio:
+      r.what = "ratio of " + assembly.part(*e.part).id +
+               (e.feature ? "/" + assembly.feature(*e.feature).id : std::string("")) + " is " +
+               e.ratio.text;
+      break;
+    case Expectation::Kind::kMoves:
+      r.what = assembly.part(*e.part).id + (e.flag ? " moves" : " does not move");
+      break;
+    case Expectation::Kind::kMobility:
+      r.what = "mobility " + std::to_string(e.mobility);
+      break;
+    default:
+      r.what = std::string("assemblable ") + (e.flag ? "true" : "false");
+      break;
+  }
+  r.detail = e.kind == Expectation::Kind::kAssemblable
+                 ? "not evaluated: this build has no assemblability check yet"
+                 : "not evaluated: this build has no motion analysis yet";
+  return r;
+}
+
+}  // namespace
+
+std::vector<ExpectationResult> CheckExpectations(const Assembly& assembly,
+                                                 const Analysis& analysis) {
+  std::vector<ExpectationResult> results;
+  for (const Expectation& e : assembly.expectations()) {
+    ExpectationResult r;
+    switch (e.kind) {
+      case Expectation::Kind::kPair:
+        r = CheckPair(assembly, analysis, e);
+        break;
+      case Expectation::Kind::kSameSubassembly:
+        r = CheckSameSubassembly(assembly, analysis, e);
+        break;
+      case Expectation::Kind::kDiagnostic:
+        r = CheckDiagnostic(assembly, analysis, e);
+        break;
+      default:
+        r = NotBuilt(assembly, e);
+        break;
+    }
+    r.pointer = e.pointer;
+    results.push_back(std::move(r));
+  }
+  return results;
+}
+
+}  // namespace mechanist

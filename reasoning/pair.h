@@ -1,0 +1,54 @@
+#pragma once
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "kernel/feature_ref.h"
+#include "kernel/pair_type.h"
+#include "reasoning/rational.h"
+
+namespace mechanist {
+
+/// Why a pair exists.
+enum class PairSource {
+  kRecognised,  ///< the features satisfy a row of the recognition table
+  kOverride,    ///< forced by the file's `overrides`
+  kClamp,       ///< a tight fastener through a clearance hole clamps the hole's part
+  kSetscrew,    ///< a tight setscrew's tip bears on a shaft
+};
+
+/// How a pair is held, where that matters to the user.
+enum class PairFastening { kNone, kPressFit, kTight, kLoose, kClamp, kSetscrew };
+
+std::string_view ToString(PairSource source);
+/// "", "press_fit", "tight", "loose", "clamp", "setscrew".
+std::string_view ToString(PairFastening fastening);
+
+/// A kinematic relation between features `a` and `b` of two parts. For recognised pairs `a`
+/// is the convex (inserted) feature, the worm, or the pinion; for gear pairs the one listed
+/// first in the file.
+struct Pair {
+  PairType type = PairType::kFixed;
+  FeatureRef a, b;
+  PairSource source = PairSource::kRecognised;
+  PairFastening fastening = PairFastening::kNone;
+  /// Relative degrees of freedom; empty for couplings (gear, worm_gear, rack_pinion).
+  std::optional<int> dof;
+  /// gear and worm_gear: b's angular rate about b's feature axis per unit rate of a about
+  /// a's feature axis, relative to the body that carries both axes (exact).
+  std::optional<Rational> ratio;
+  /// screw: mm a advances along its axis per revolution of a about its axis, relative to b
+  /// (positive for right-hand threads). rack_pinion: mm the rack (b) travels along its axis
+  /// per revolution of the pinion (a) about its axis.
+  std::optional<double> travel_per_revolution;
+  /// worm_gear: true when the wheel cannot drive the worm (lead angle below friction angle).
+  bool self_locking = false;
+  /// kClamp and kSetscrew: the fastener's thread that makes the pair.
+  std::optional<FeatureRef> via;
+};
+
+/// Relative DOF of a pair type (0 fixed ... 3 spherical/planar), empty for couplings.
+std::optional<int> DegreesOfFreedom(PairType type);
+
+}  // namespace mechanist

@@ -1,0 +1,703 @@
+#include "reasoning/pair_recognition.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <set>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include "kernel/line_geometry.h"
+#include "kernel/number_format.h"
+
+namespace mechanist {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+/// Beyond these the features do not touch, so they make no pair and no near miss (the spec is
+/// silent; the values are documented in the README): a shaft more than 5% of the hole's
+/// diameter smaller than its hole, a clearance hole more than 1.3 times the thread (ISO 273's
+/// coarse series is at most 1.25), a thread under 0.6 times a tapped hole (M3 in M4 is a near
+/// miss, M10 in M30 passes through).
+constexpr double kMaxShaftClearance = 0.05;
+constexpr double kMaxClearanceHoleRatio = 1.3;
+constexpr double kMinThreadDiameterRatio = 0.6;
+
+/// A feature at its world pose, with the box it can reach a partner from.
+struct WorldFeature {
+  FeatureRef ref;
+  const Feature* f = nullptr;
+  AxisSegment axis;  ///< world
+  Eigen::Vector3d normal_W = Eigen::Vector3d::Zero();
+  Aabb reach;
+};
+
+std::string Mm(double x) { return FormatNumber(x) + " mm"; }
+std::string Deg(double radians) { return FormatNumber(radians * 180.0 / kPi) + " deg"; }
+
+class Recognizer {
+ public:
+  Recognizer(const Assembly& assembly, const AssemblyState& state)
+      : assembly_(assembly),
+        L_(assembly.tolerance().length),
+        A_(assembly.tolerance().angle),
+        near_L_(std::max(4 * L_, 0.5)),
+        near_A_(std::max(4 * A_, 2.0 * kPi / 180.0)) {
+    for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
+      const Part& part = assembly.part(p);
+      const Aabb part_box_W = WorldBox(assembly, state, p);
+      for (std::size_t i = 0; i < part.features.size(); ++i) {
+        WorldFeature w;
+        w.ref = {p, i};
+        w.f = &part.features[i];
+        w.axis = w.f->WorldAxis(state.X_WP[p]);
+        w.normal_W = state.X_WP[p].RotateDirection(w.f->normal);
+        w.reach = ReachBox(w, part_box_W);
+        features_.push_back(w);
+      }
+    }
+  }
+
+  Recognition Run() {
+    ForEachCandidate([this](const WorldFeature& x, const WorldFeature& y) { Test(x, y); });
+    ApplyOverrides();
+    ApplyClamps();
+    ApplySetscrews();
+    ReportUnconnected();
+    Recognition out{std::move(pairs_), std::move(diagnostics_)};
+    Sort(out);
+    return out;
+  }
+
+ private:
+  // ---- broad phase ----
+
+  Aabb ReachBox(const WorldFeature& w, const Aabb& part_box_W) const {
+    const Feature& f = *w.f;
+    const double margin = near_L_ + L_;
+    double radius = 0.0;
+    switch (f.kind) {
+      case FeatureKind::kShaft:
+      case FeatureKind::kHole:
+      case FeatureKind::kThread:
+      case FeatureKind::kTappedHole:
+      case FeatureKind::kBall:
+      case FeatureKind::kSocket:
+        radius = f.diameter / 2;
+        break;
+      case FeatureKind::kSlot:
+      case FeatureKind::kKey:
+        radius = f.width / 2 + f.depth;
+        break;
+      case FeatureKind::kGear:
+      case FeatureKind::kWormWheel:
+        radius = f.module * f.teeth / 2 + 2 * f.module;
+        break;
+      case FeatureKind::kWorm:
+        radius = f.pitch_diameter / 2 + 2 * f.module;
+        break;
+      case FeatureKind::kRack:
+        radius = 2 * f.module;
+        break;
+      case FeatureKind::kFace:
+        if (f.width > 0 && f.height > 0) {
+          radius = std::hypot(f.width, f.height) / 2;
+        } else {
+          Aabb box = part_box_W;
+          box.min.array() -= margin;
+          box.max.array() += margin;
+          return box;
+        }
+        break;
+    }
+    Aabb box;
+    box.Extend(w.axis.origin);
+    box.Extend(w.axis.end());
+    box.min.array() -= radius + margin;
+    box.max.array() += radius + margin;
+    return box;
+  }
+
+  /// Calls `test` once for every pair of features of different parts whose reach boxes
+  /// overlap: a uniform grid, each box entered in the cells it covers, a pair reported only
+  /// in the cell of the maximum of their lower corners so that it is reported once.
+  template <typename Test>
+  void ForEachCandidate(Test test) const {
+    if (features_.empty()) return;
+    std::vector<double> extents;
+    extents.reserve(features_.size());
+    Aabb all;
+    for (const WorldFeature& w : features_) {
+      extents.push_back(w.reach.size().maxCoeff());
+      all.Extend(w.reach);
+    }
+    std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
+    const double cell = std::max(extents[extents.size() / 2], 1e-3);
+    auto coord = [&](double x, int axis) {
+      return static_cast<std::int64_t>(std::floor((x - all.min[axis]) / cell));
+    };
+    constexpr std::int64_t kMaxCellsPerBox = 512;
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
+    std::vector<std::uint32_t> large;  // boxes spanning too many cells: tested against all
+    std::vector<std::array<std::int64_t, 3>> low(features_.size());
+    for (std::uint32_t i = 0; i < features_.size(); ++i) {
+      const Aabb& b = features_[i].reach;
+      std::array<std::int64_t, 3> lo{}, hi{};
+      std::int64_t count = 1;
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = coord(b.min[k], k);
+        hi[k] = coord(b.max[k], k);
+        count *= hi[k] - lo[k] + 1;
+      }
+      low[i] = lo;
+      if (count > kMaxCellsPerBox || hi[0] >= (1 << 21) || hi[1] >= (1 << 21) ||
+          hi[2] >= (1 << 21)) {
+        large.push_back(i);
+        continue;
+      }
+      for (std::int64_t x = lo[0]; x <= hi[0]; ++x) {
+        for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
+          for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
+            entries.push_back({static_cast<std::uint64_t>(x) << 42 |
+                                   static_cast<std::uint64_t>(y) << 21 |
+                                   static_cast<std::uint64_t>(z),
+                               i});
+          }
+        }
+      }
+    }
+    std::sort(entries.begin(), entries.end());
+    auto candidate = [&](std::uint32_t i, std::uint32_t j) {
+      const WorldFeature& x = features_[i];
+      const WorldFeature& y = features_[j];
+      if (x.ref.part != y.ref.part && x.reach.Intersects(y.reach)) test(x, y);
+    };
+    for (std::size_t begin = 0; begin < entries.size();) {
+      std::size_t end = begin;
+      while (end < entries.size() && entries[end].first == entries[begin].first) ++end;
+      const std::uint64_t key = entries[begin].first;
+      const std::array<std::int64_t, 3> here{static_cast<std::int64_t>(key >> 42),
+                                             static_cast<std::int64_t>((key >> 21) & 0x1FFFFF),
+                                             static_cast<std::int64_t>(key & 0x1FFFFF)};
+      for (std::size_t a = begin; a < end; ++a) {
+        for (std::size_t b = a + 1; b < end; ++b) {
+          const std::uint32_t i = entries[a].second, j = entries[b].second;
+          bool owner = true;
+          for (int k = 0; k < 3; ++k) owner &= std::max(low[i][k], low[j][k]) == here[k];
+          if (owner) candidate(std::min(i, j), std::max(i, j));
+        }
+      }
+      begin = end;
+    }
+    std::vector<bool> is_large(features_.size(), false);
+    for (std::uint32_t i : large) is_large[i] = true;
+    for (std::uint32_t i : large) {
+      for (std::uint32_t j = 0; j < features_.size(); ++j) {
+        if (j == i || (is_large[j] && j < i)) continue;
+        candidate(std::min(i, j), std::max(i, j));
+      }
+    }
+  }
+
+  // ---- dispatch ----
+
+  void Test(const WorldFeature& x, const WorldFeature& y) {
+    using K = FeatureKind;
+    const K a = x.f->kind, b = y.f->kind;
+    auto is = [&](K p, K q) { return a == p && b == q; };
+    auto either = [&](K p, K q, auto rule) {
+      if (is(p, q))
+        rule(x, y);
+      else if (is(q, p))
+        rule(y, x);
+    };
+    either(K::kShaft, K::kHole, [this](auto& s, auto& h) { ShaftHole(s, h); });
+    either(K::kThread, K::kHole, [this](auto& t, auto& h) { ThreadHole(t, h); });
+    either(K::kThread, K::kTappedHole, [this](auto& t, auto& h) { ThreadTapped(t, h); });
+    either(K::kShaft, K::kSlot, [this](auto& s, auto& sl) { PinSlot(s, sl); });
+    either(K::kKey, K::kSlot, [this](auto& k, auto& sl) { KeySlot(k, sl); });
+    either(K::kWorm, K::kWormWheel, [this](auto& w, auto& g) { WormWheel(w, g); });
+    either(K::kGear, K::kRack, [this](auto& g, auto& r) { GearRack(g, r); });
+    either(K::kBall, K::kSocket, [this](auto& b, auto& s) { BallSocket(b, s); });
+    if (is(K::kGear, K::kGear)) GearGear(x, y);
+    if (is(K::kThread, K::kShaft)) setscrew_candidates_.emplace_back(&x, &y);
+    if (is(K::kShaft, K::kThread)) setscrew_candidates_.emplace_back(&y, &x);
+    if (is(K::kFace, K::kFace)) FaceFace(x, y);
+  }
+
+  // ---- output helpers ----
+
+  std::string Name(const WorldFeature& w) const { return assembly_.FeatureName(w.ref); }
+
+  void AddPair(PairType type, const WorldFeature& a, const WorldFeature& b,
+               PairFastening fastening = PairFastening::kNone) {
+    Pair p;
+    p.type = type;
+    p.a = a.ref;
+    p.b = b.ref;
+    p.fastening = fastening;
+    p.dof = DegreesOfFreedom(type);
+    pairs_.push_back(p);
+  }
+
+  void Near(const char* code, const WorldFeature& a, const WorldFeature& b,
+            const std::string& message) {
+    diagnostics_.push_back({Severity::kWarning,
+                            code,
+                            std::string(ToString(a.f->kind)) + " " + Name(a) + " and " +
+                                std::string(ToString(b.f->kind)) + " " + Name(b) + ": " + message,
+                            {assembly_.part(a.ref.part).id, assembly_.part(b.ref.part).id},
+                            {Name(a), Name(b)}});
+  }
+
+  // ---- axial fits ----
+
+  /// Common gate of the axial fits: true when the convex feature `c` sits in the concave
+  /// feature `h` (collinear, engaged, inserted with the right sense); reports the near
+  /// misses otherwise.
+  bool Seated(const WorldFeature& c, const WorldFeature& h) {
+    const double overlap = AxialOverlap(c.axis, h.axis);
+    if (overlap <= L_) return false;
+    const double angle = AngleBetweenLines(c.axis.direction, h.axis.direction);
+    const double offset = std::max(DistanceToLine(c.axis.origin, h.axis.origin, h.axis.direction),
+                                   DistanceToLine(h.axis.origin, c.axis.origin, c.axis.direction));
+    if (angle > A_ || offset > L_) {
+      if (angle <= near_A_ && offset <= near_L_) {
+        Near("axes_not_collinear", c, h,
+             "axes are almost but not quite collinear: angle " + Deg(angle) + ", offset " +
+                 Mm(offset) + " (required within " + Deg(A_) + " and " + Mm(L_) + ")");
+      }
+      return false;
+    }
+    if (c.axis.direction.dot(h.axis.direction) < 0 && !h.f->through) {
+      Near("feature_sense_reversed", c, h,
+           "collinear and overlapping, but the convex feature points out of the blind " +
+               std::string(ToString(h.f->kind)) +
+               " (a convex axis points toward its free end, a concave one into the material)");
+      return false;
+    }
+    return true;
+  }
+
+  void ShaftHole(const WorldFeature& s, const WorldFeature& h) {
+    // A shaft much thinner than the hole passes through it without touching it.
+    if (h.f->diameter - s.f->diameter > kMaxShaftClearance * h.f->diameter + L_) return;
+    if (!Seated(s, h)) return;
+    if (s.f->diameter <= h.f->diameter + L_) {
+      AddPair(s.f->retained || h.f->retained ? PairType::kRevolute : PairType::kCylindrical, s, h);
+    } else if (h.f->retained) {
+      Near("shaft_larger_than_hole", s, h,
+           "shaft diameter " + Mm(s.f->diameter) + " is larger than the retained hole's " +
+               Mm(h.f->diameter) + " (required at most hole + " + Mm(L_) +
+               " for a part meant to turn)");
+    } else {
+      AddPair(PairType::kFixed, s, h, PairFastening::kPressFit);
+    }
+  }
+
+  void ThreadHole(const WorldFeature& t, const WorldFeature& h) {
+    if (h.f->diameter > kMaxClearanceHoleRatio * t.f->diameter + L_) return;
+    if (!Seated(t, h)) return;
+    if (h.f->diameter + L_ >= t.f->diameter) {
+      AddPair(PairType::kCylindrical, t, h);
+    } else {
+      Near("hole_smaller_than_thread", t, h,
+           "hole diameter " + Mm(h.f->diameter) + " is smaller than the thread's " +
+               Mm(t.f->diameter) + " (required at least the thread's major diameter)");
+    }
+  }
+
+  void ThreadTapped(const WorldFeature& t, const WorldFeature& h) {
+    // A thread far smaller than the tapped hole passes through it (a spindle through the
+    // bonnet's seat): neither a pair nor a near miss.
+    if (std::min(t.f->diameter, h.f->diameter) <
+        kMinThreadDiameterRatio * std::max(t.f->diameter, h.f->diameter)) {
+      return;
+    }
+    if (!Seated(t, h)) return;
+    std::vector<std::string> mismatches;
+    if (std::abs(t.f->diameter - h.f->diameter) > L_) {
+      mismatches.push_back("diameter: thread M" + FormatNumber(t.f->diameter) + ", tapped hole M" +
+                           FormatNumber(h.f->diameter));
+    }
+    if (std::abs(t.f->pitch - h.f->pitch) > 1e-6 * std::max(t.f->pitch, h.f->pitch)) {
+      mismatches.push_back("pitch: thread " + Mm(t.f->pitch) + ", tapped hole " + Mm(h.f->pitch));
+    }
+    if (t.f->starts != h.f->starts) {
+      mismatches.push_back("starts: thread " + std::to_string(t.f->starts) + ", tapped hole " +
+                           std::to_string(h.f->starts));
+    }
+    if (t.f->hand != h.f->hand) {
+      mismatches.push_back(std::string("hand: thread ") +
+                           (t.f->hand == Hand::kRight ? "right" : "left") + ", tapped hole " +
+                           (h.f->hand == Hand::kRight ? "right" : "left"));
+    }
+    if (!mismatches.empty()) {
+      std::string message = "threads do not match (required equal)";
+      for (const std::string& m : mismatches) message += "; " + m;
+      Near("thread_mismatch", t, h, message);
+      return;
+    }
+    if (t.f->fastening == Fastening::kTight) {
+      AddPair(PairType::kFixed, t, h, PairFastening::kTight);
+    } else {
+      AddPair(PairType::kScrew, t, h, PairFastening::kLoose);
+      pairs_.back().travel_per_revolution =
+          t.f->starts * t.f->pitch * (t.f->hand == Hand::kRight ? 1.0 : -1.0);
+    }
+  }
+
+  // ---- slots ----
+
+  void PinSlot(const WorldFeature& s, const WorldFeature& sl) {
+    const Eigen::Vector3d& n = sl.normal_W;
+    if (AngleBetweenLines(s.axis.direction, n) > A_ || s.axis.direction.dot(n) <= 0) return;
+    const LineLineClosest c =
+        ClosestPointsOfLines(s.axis.origin, s.axis.direction, sl.axis.origin, sl.axis.direction);
+    if (c.distance > L_ || c.t < -L_ || c.t > sl.axis.length + L_) return;
+    if (c.s < -L_ - sl.f->depth || c.s > s.axis.length - L_) return;
+    if (s.f->diameter <= sl.f->width + L_) {
+      AddPair(PairType::kPinSlot, s, sl);
+    } else {
+      Near("pin_wider_than_slot", s, sl,
+           "pin diameter " + Mm(s.f->diameter) + " is wider than the slot's " + Mm(sl.f->width) +
+               " (required at most the slot width)");
+    }
+  }
+
+  void KeySlot(const WorldFeature& k, const WorldFeature& sl) {
+    if (AngleBetweenLines(k.axis.direction, sl.axis.direction) > A_) return;
+    if (AngleBetweenLines(k.normal_W, sl.normal_W) > A_ || k.normal_W.dot(sl.normal_W) <= 0) {
+      return;
+    }
+    const Eigen::Vector3d d = k.axis.origin - sl.axis.origin;
+    const Eigen::Vector3d side = sl.axis.direction.cross(sl.normal_W);
+    if (std::abs(d.dot(side)) > L_ || std::abs(d.dot(sl.normal_W)) > sl.f->depth + L_) return;
+    if (AxialOverlap(k.axis, sl.axis) <= L_) return;
+    if (k.f->width <= sl.f->width + L_) {
+      AddPair(PairType::kPrismatic, k, sl);
+    } else {
+      Near("key_wider_than_slot", k, sl,
+           "key width " + Mm(k.f->width) + " is wider than the slot's " + Mm(sl.f->width) +
+               " (required at most the slot width)");
+    }
+  }
+
+  // ---- gearing ----
+
+  bool SameModule(double m1, double m2) const {
+    return std::abs(m1 - m2) <= 1e-6 * std::max(m1, m2);
+  }
+
+  void GearGear(const WorldFeature& x, const WorldFeature& y) {
+    if (x.f->internal && y.f->internal) return;
+    // Order by name so that the pair and its ratio do not depend on the file's order.
+    const bool swap = Name(y) < Name(x);
+    const WorldFeature& g1 = swap ? y : x;
+    const WorldFeature& g2 = swap ? x : y;
+    if (AxialOverlap(g1.axis, g2.axis) <= L_) return;
+    const Feature& f1 = *g1.f;
+    const Feature& f2 = *g2.f;
+    const double angle = AngleBetweenLines(g1.axis.direction, g2.axis.direction);
+    const Eigen::Vector3d mid2 = g2.axis.origin + 0.5 * g2.axis.length * g2.axis.direction;
+    const double d = DistanceToLine(mid2, g1.axis.origin, g1.axis.direction);
+    auto required = [&](double m) {
+      if (!f1.internal && !f2.internal) return m * (f1.teeth + f2.teeth) / 2;
+      const int z_internal = f1.internal ? f1.teeth : f2.teeth;
+      const int z_external = f1.internal ? f2.teeth : f1.teeth;
+      return m * (z_internal - z_external) / 2;
+    };
+    const double m = f1.module;
+    if (f1.internal || f2.internal) {
+      const int z_internal = f1.internal ? f1.teeth : f2.teeth;
+      const int z_external = f1.internal ? f2.teeth : f1.teeth;
+      if (z_internal <= z_external) return;
+    }
+    if (!SameModule(f1.module, f2.module)) {
+      const double a_avg = required((f1.module + f2.module) / 2);
+      if (angle <= near_A_ && std::abs(d - a_avg) < std::max(f1.module, f2.module)) {
+        Near("gear_module_mismatch", g1, g2,
+             "modules differ: " + Mm(f1.module) + " and " + Mm(f2.module) + " (required equal)");
+      }
+      return;
+    }
+    const double a = required(m);
+    const double error = std::abs(d - a);
+    if (angle <= A_ && error <= L_) {
+      Pair p;
+      p.type = PairType::kGear;
+      p.a = g1.ref;
+      p.b = g2.ref;
+      const bool internal = f1.internal || f2.internal;
+      Rational ratio(f1.teeth, f2.teeth);
+      if (!internal) ratio = -ratio;
+      // Rates are about each feature's own axis: opposite axes flip the sign.
+      if (g1.axis.direction.dot(g2.axis.direction) < 0) ratio = -ratio;
+      p.ratio = ratio;
+      pairs_.push_back(p);
+      return;
+    }
+    if (error >= m) return;
+    const std::string formula = (f1.internal || f2.internal)
+                                    ? FormatNumber(m) + " x |" + std::to_string(f2.teeth) + " - " +
+                                          std::to_string(f1.teeth) + "| / 2"
+                                    : FormatNumber(m) + " x (" + std::to_string(f1.teeth) + " + " +
+                                          std::to_string(f2.teeth) + ") / 2";
+    if (angle > A_ && angle <= near_A_) {
+      Near("gear_axes_not_parallel", g1, g2,
+           "axes are " + Deg(angle) + " apart (required parallel within " + Deg(A_) + ")");
+    } else if (angle <= A_) {
+      Near("gear_center_distance", g1, g2,
+           "centre distance " + Mm(d) + ", required " + Mm(a) + " = " + formula + " (off by " +
+               Mm(d - a) + ", tolerance " + Mm(L_) + ")");
+    }
+  }
+
+  void WormWheel(const WorldFeature& w, const WorldFeature& g) {
+    const double angle = AngleBetweenLines(w.axis.direction, g.axis.direction);
+    const LineLineClosest c =
+        ClosestPointsOfLines(w.axis.origin, w.axis.direction, g.axis.origin, g.axis.direction);
+    if (c.s < -L_ || c.s > w.axis.length + L_ || c.t < -L_ || c.t > g.axis.length + L_) return;
+    const Feature& fw = *w.f;
+    const Feature& fg = *g.f;
+    if (!SameModule(fw.module, fg.module)) {
+      const double a_avg = (fw.pitch_diameter + (fw.module + fg.module) / 2 * fg.teeth) / 2;
+      if (angle >= kPi / 2 - near_A_ && std::abs(c.distance - a_avg) < fg.module * 2) {
+        Near("worm_module_mismatch", w, g,
+             "modules differ: " + Mm(fw.module) + " and " + Mm(fg.module) + " (required equal)");
+      }
+      return;
+    }
+    const double a = (fw.pitch_diameter + fw.module * fg.teeth) / 2;
+    const double error = std::abs(c.distance - a);
+    if (angle >= kPi / 2 - A_ && error <= L_) {
+      const Eigen::Vector3d p_worm = w.axis.origin + c.s * w.axis.direction;
+      const Eigen::Vector3d p_wheel = g.axis.origin + c.t * g.axis.direction;
+      const Eigen::Vector3d n = (p_wheel - p_worm).normalized();
+      // The wheel's teeth at the contact move like a nut on the worm: for a right-hand worm
+      // turning positively they move along -u_worm (derivation in the README).
+      const double side = g.axis.direction.cross(n).dot(w.axis.direction);
+      const int hand = fw.hand == Hand::kRight ? 1 : -1;
+      Pair p;
+      p.type = PairType::kWormGear;
+      p.a = w.ref;
+      p.b = g.ref;
+      p.ratio = Rational(hand * (side > 0 ? 1 : -1) * fw.starts, fg.teeth);
+      const double lead_angle = std::atan(fw.starts * fw.module / fw.pitch_diameter);
+      p.self_locking = lead_angle < std::atan(assembly_.friction());
+      pairs_.push_back(p);
+      return;
+    }
+    if (error >= fg.module) return;
+    if (angle < kPi / 2 - A_ && angle >= kPi / 2 - near_A_) {
+      Near("worm_axes_not_perpendicular", w, g,
+           "axes are " + Deg(angle) + " apart (required 90 deg within " + Deg(A_) + ")");
+    } else if (angle >= kPi / 2 - A_) {
+      Near("worm_center_distance", w, g,
+           "centre distance " + Mm(c.distance) + ", required " + Mm(a) + " = (" +
+               FormatNumber(fw.pitch_diameter) + " + " + FormatNumber(fw.module) + " x " +
+               std::to_string(fg.teeth) + ") / 2 (off by " + Mm(c.distance - a) + ", tolerance " +
+               Mm(L_) + ")");
+    }
+  }
+
+  void GearRack(const WorldFeature& g, const WorldFeature& r) {
+    if (g.f->internal) return;
+    const double to_axis = AngleBetweenLines(g.axis.direction, r.axis.direction);
+    const double to_normal = AngleBetweenLines(g.axis.direction, r.normal_W);
+    const LineLineClosest c =
+        ClosestPointsOfLines(g.axis.origin, g.axis.direction, r.axis.origin, r.axis.direction);
+    if (c.s < -L_ || c.s > g.axis.length + L_ || c.t < -L_ || c.t > r.axis.length + L_) return;
+    const Eigen::Vector3d p_gear = g.axis.origin + c.s * g.axis.direction;
+    const Eigen::Vector3d p_rack = r.axis.origin + c.t * r.axis.direction;
+    if ((p_gear - p_rack).dot(r.normal_W) <= 0) return;  // the pinion is on the other side
+    if (!SameModule(g.f->module, r.f->module)) {
+      if (std::abs(c.distance - (g.f->module + r.f->module) / 2 * g.f->teeth / 2) <
+          std::max(g.f->module, r.f->module)) {
+        Near(
+            "rack_module_mismatch", g, r,
+            "modules differ: " + Mm(g.f->module) + " and " + Mm(r.f->module) + " (required equal)");
+      }
+      return;
+    }
+    const double a = g.f->module * g.f->teeth / 2;
+    const double error = std::abs(c.distance - a);
+    const bool square = to_axis >= kPi / 2 - A_ && to_normal >= kPi / 2 - A_;
+    if (square && error <= L_) {
+      Pair p;
+      p.type = PairType::kRackPinion;
+      p.a = g.ref;
+      p.b = r.ref;
+      p.travel_per_revolution = -kPi * g.f->module * g.f->teeth *
+                                g.axis.direction.cross(r.normal_W).dot(r.axis.direction);
+      pairs_.push_back(p);
+    } else if (square && error < g.f->module) {
+      Near("rack_pitch_line_distance", g, r,
+           "pitch line at " + Mm(c.distance) + " from the pinion's axis, required " + Mm(a) +
+               " = " + FormatNumber(g.f->module) + " x " + std::to_string(g.f->teeth) +
+               " / 2 (off by " + Mm(c.distance - a) + ", tolerance " + Mm(L_) + ")");
+    }
+  }
+
+  // ---- spheres and faces ----
+
+  void BallSocket(const WorldFeature& b, const WorldFeature& s) {
+    const double offset = (b.axis.origin - s.axis.origin).norm();
+    const double difference = std::abs(b.f->diameter - s.f->diameter);
+    if (offset <= L_ && difference <= L_) {
+      AddPair(PairType::kSpherical, b, s);
+    } else if (offset < std::min(b.f->diameter, s.f->diameter) / 2) {
+      Near("ball_socket_mismatch", b, s,
+           "centres " + Mm(offset) + " apart and diameters " + Mm(b.f->diameter) + " and " +
+               Mm(s.f->diameter) + " (required same centre and diameter within " + Mm(L_) + ")");
+    }
+  }
+
+  void FaceFace(const WorldFeature& x, const WorldFeature& y) {
+    const Eigen::Vector3d& n1 = x.axis.direction;
+    const Eigen::Vector3d& n2 = y.axis.direction;
+    if (n1.dot(n2) >= 0 || AngleBetweenLines(n1, n2) > A_) return;
+    const Eigen::Vector3d d = y.axis.origin - x.axis.origin;
+    if (std::abs(d.dot(n1)) > L_) return;
+    auto extent = [](const Feature& f) { return std::hypot(f.width, f.height) / 2; };
+    if (x.f->width > 0 && x.f->height > 0 && y.f->width > 0 && y.f->height > 0) {
+      const double in_plane = (d - d.dot(n1) * n1).norm();
+      if (in_plane >= extent(*x.f) + extent(*y.f) - L_) return;
+    }
+    const bool swap = Name(y) < Name(x);
+    AddPair(PairType::kPlanar, swap ? y : x, swap ? x : y);
+  }
+
+  // ---- overrides and side effects ----
+
+  static bool SameFeatures(const Pair& p, FeatureRef f, FeatureRef g) {
+    return (p.a == f && p.b == g) || (p.a == g && p.b == f);
+  }
+
+  void ApplyOverrides() {
+    for (const PairOverride& o : assembly_.overrides()) {
+      std::erase_if(pairs_,
+                    [&](const Pair& p) { return SameFeatures(p, o.features[0], o.features[1]); });
+      if (!o.type) continue;
+      Pair p;
+      p.type = *o.type;
+      p.a = o.features[0];
+      p.b = o.features[1];
+      p.source = PairSource::kOverride;
+      p.dof = DegreesOfFreedom(p.type);
+      const Feature& fa = assembly_.feature(p.a);
+      const Feature& fb = assembly_.feature(p.b);
+      if (p.type == PairType::kGear && fa.teeth > 0 && fb.teeth > 0) {
+        p.ratio = (fa.internal || fb.internal) ? Rational(fa.teeth, fb.teeth)
+                                               : -Rational(fa.teeth, fb.teeth);
+      } else if (p.type == PairType::kWormGear && fb.teeth > 0) {
+        p.ratio = Rational(fa.starts, fb.teeth);
+      } else if (p.type == PairType::kScrew && fa.pitch > 0) {
+        p.travel_per_revolution = fa.starts * fa.pitch * (fa.hand == Hand::kRight ? 1.0 : -1.0);
+      }
+      pairs_.push_back(p);
+    }
+  }
+
+  /// A tight thread fixed in a nut or tapped hole clamps the parts of its clearance holes.
+  void ApplyClamps() {
+    std::set<FeatureRef> clamping;
+    for (const Pair& p : pairs_) {
+      if (p.type == PairType::kFixed && p.fastening == PairFastening::kTight) clamping.insert(p.a);
+    }
+    for (Pair& p : pairs_) {
+      if (p.type == PairType::kCylindrical && clamping.count(p.a) &&
+          assembly_.feature(p.a).kind == FeatureKind::kThread &&
+          assembly_.feature(p.b).kind == FeatureKind::kHole) {
+        p.type = PairType::kFixed;
+        p.dof = 0;
+        p.source = PairSource::kClamp;
+        p.fastening = PairFastening::kClamp;
+        p.via = p.a;
+      }
+    }
+  }
+
+  /// A tight thread in a tapped hole whose tip bears on a third part's shaft fixes the shaft.
+  void ApplySetscrews() {
+    std::map<FeatureRef, FeatureRef> screwed_into;  // tight thread -> its tapped hole
+    for (const Pair& p : pairs_) {
+      if (p.type == PairType::kFixed && p.fastening == PairFastening::kTight) {
+        screwed_into.emplace(p.a, p.b);
+      }
+    }
+    for (const auto& [thread, s] : setscrew_candidates_) {
+      const auto hole = screwed_into.find(thread->ref);
+      if (hole == screwed_into.end() || s->ref.part == hole->second.part) continue;
+      const Eigen::Vector3d tip = thread->axis.end();
+      if (AngleBetweenLines(thread->axis.direction, s->axis.direction) < kPi / 2 - A_) continue;
+      const double along = (tip - s->axis.origin).dot(s->axis.direction);
+      if (along < -L_ || along > s->axis.length + L_) continue;
+      const Eigen::Vector3d foot = s->axis.origin + along * s->axis.direction;
+      if ((foot - tip).dot(thread->axis.direction) <= 0) continue;  // pointing away
+      if (std::abs((foot - tip).norm() - s->f->diameter / 2) > L_) continue;
+      Pair fixed;
+      fixed.type = PairType::kFixed;
+      fixed.a = s->ref;
+      fixed.b = hole->second;
+      fixed.source = PairSource::kSetscrew;
+      fixed.fastening = PairFastening::kSetscrew;
+      fixed.dof = 0;
+      fixed.via = thread->ref;
+      pairs_.push_back(fixed);
+    }
+  }
+
+  void ReportUnconnected() {
+    std::vector<bool> connected(assembly_.parts().size(), false);
+    for (const Pair& p : pairs_) connected[p.a.part] = connected[p.b.part] = true;
+    for (std::size_t i = 0; i < connected.size(); ++i) {
+      const Part& part = assembly_.part(i);
+      if (connected[i] || part.ground) continue;
+      diagnostics_.push_back({Severity::kWarning,
+                              "part_unconnected",
+                              "part '" + part.id + "' is in no pair: nothing holds or guides it",
+                              {part.id},
+                              {}});
+    }
+  }
+
+  /// Orders by names, not indices, so that reordering the file changes nothing.
+  void Sort(Recognition& out) const {
+    std::vector<std::tuple<std::string, std::string, int, std::size_t>> keys;
+    keys.reserve(out.pairs.size());
+    for (std::size_t i = 0; i < out.pairs.size(); ++i) {
+      const Pair& p = out.pairs[i];
+      keys.emplace_back(assembly_.FeatureName(p.a), assembly_.FeatureName(p.b),
+                        static_cast<int>(p.source), i);
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<Pair> sorted;
+    sorted.reserve(out.pairs.size());
+    for (const auto& key : keys) sorted.push_back(out.pairs[std::get<3>(key)]);
+    out.pairs = std::move(sorted);
+    std::sort(out.diagnostics.begin(), out.diagnostics.end(),
+              [](const Diagnostic& x, const Diagnostic& y) {
+                return std::tie(x.code, x.features, x.parts, x.message) <
+                       std::tie(y.code, y.features, y.parts, y.message);
+              });
+  }
+
+  const Assembly& assembly_;
+  const double L_, A_, near_L_, near_A_;
+  std::vector<WorldFeature> features_;
+  std::vector<Pair> pairs_;
+  std::vector<Diagnostic> diagnostics_;
+  /// (thread, shaft) feature pairs whose reach boxes overlap: possible setscrew contacts.
+  std::vector<std::pair<const WorldFeature*, const WorldFeature*>> setscrew_candidates_;
+};
+
+}  // namespace
+
+Recognition RecognizePairs(const Assembly& assembly, const AssemblyState& state) {
+  return Recognizer(assembly, state).Run();
+}
+
+}  // namespace mechanist
