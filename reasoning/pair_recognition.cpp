@@ -416,8 +416,9 @@ class Recognizer {
       if (z_internal <= z_external) return;
     }
     if (!SameModule(f1.module, f2.module)) {
-      const double a_avg = required((f1.module + f2.module) / 2);
-      if (angle <= near_A_ && std::abs(d - a_avg) < std::max(f1.module, f2.module)) {
+      // Meant to mesh if the distance fits either gear's module.
+      if (angle <= near_A_ && (std::abs(d - required(f1.module)) < f1.module ||
+                               std::abs(d - required(f2.module)) < f2.module)) {
         Near("gear_module_mismatch", g1, g2,
              "modules differ: " + Mm(f1.module) + " and " + Mm(f2.module) + " (required equal)");
       }
@@ -463,8 +464,10 @@ class Recognizer {
     const Feature& fw = *w.f;
     const Feature& fg = *g.f;
     if (!SameModule(fw.module, fg.module)) {
-      const double a_avg = (fw.pitch_diameter + (fw.module + fg.module) / 2 * fg.teeth) / 2;
-      if (angle >= kPi / 2 - near_A_ && std::abs(c.distance - a_avg) < fg.module * 2) {
+      const double a_worm = (fw.pitch_diameter + fw.module * fg.teeth) / 2;
+      const double a_wheel = (fw.pitch_diameter + fg.module * fg.teeth) / 2;
+      if (angle >= kPi / 2 - near_A_ && (std::abs(c.distance - a_worm) < fw.module ||
+                                         std::abs(c.distance - a_wheel) < fg.module)) {
         Near("worm_module_mismatch", w, g,
              "modules differ: " + Mm(fw.module) + " and " + Mm(fg.module) + " (required equal)");
       }
@@ -514,8 +517,8 @@ class Recognizer {
     const Eigen::Vector3d p_rack = r.axis.origin + c.t * r.axis.direction;
     if ((p_gear - p_rack).dot(r.normal_W) <= 0) return;  // the pinion is on the other side
     if (!SameModule(g.f->module, r.f->module)) {
-      if (std::abs(c.distance - (g.f->module + r.f->module) / 2 * g.f->teeth / 2) <
-          std::max(g.f->module, r.f->module)) {
+      if (std::abs(c.distance - g.f->module * g.f->teeth / 2) < g.f->module ||
+          std::abs(c.distance - r.f->module * g.f->teeth / 2) < r.f->module) {
         Near(
             "rack_module_mismatch", g, r,
             "modules differ: " + Mm(g.f->module) + " and " + Mm(r.f->module) + " (required equal)");

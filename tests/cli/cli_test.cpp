@@ -79,4 +79,75 @@ TEST(Cli, BadInputExitsWithTwoAndNamesThePlace) {
   EXPECT_EQ(Mechanist("info /nonexistent/assembly.json").exit_code, 2);
 }
 
+TEST(Cli, AnalyzeWritesSummaryJsonAndDot) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "mechanist_cli_analyze";
+  std::filesystem::create_directories(dir);
+  const CommandResult run =
+      Mechanist("analyze " + Example("robot_hand_worm") + " --json " +
+                (dir / "report.json").string() + " --dot " + (dir / "graph.dot").string());
+  EXPECT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("worm_gear: worm/worm + worm_wheel/teeth, ratio -1/40, self-locking"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("S2: motor_shaft setscrew worm worm_sleeve"), std::string::npos)
+      << run.out;
+  std::ifstream json(dir / "report.json");
+  const std::string report((std::istreambuf_iterator<char>(json)),
+                           std::istreambuf_iterator<char>());
+  EXPECT_NE(report.find("\"type\": \"worm_gear\""), std::string::npos);
+  EXPECT_NE(report.find("\"ratio\": \"-1/40\""), std::string::npos);
+  EXPECT_NE(report.find("\"subassemblies\""), std::string::npos);
+  std::ifstream dot(dir / "graph.dot");
+  const std::string graph((std::istreambuf_iterator<char>(dot)), std::istreambuf_iterator<char>());
+  EXPECT_NE(graph.find("subgraph cluster_S1"), std::string::npos);
+  EXPECT_NE(graph.find("\"worm\" -- \"worm_wheel\" [label=\"worm_gear -1/40\"]"), std::string::npos)
+      << graph;
+  // No temporary files are left behind.
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
+                          std::filesystem::directory_iterator()),
+            2);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, AnalyzeNeverWritesOverItsInput) {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "mechanist_cli_self.json";
+  std::filesystem::copy_file(Example("bracket_plate_bolt_nut"), file,
+                             std::filesystem::copy_options::overwrite_existing);
+  const auto size = std::filesystem::file_size(file);
+  const CommandResult run = Mechanist("analyze " + file.string() + " --json " + file.string());
+  EXPECT_EQ(run.exit_code, 2) << run.out;
+  EXPECT_NE(run.out.find("refusing to write over the input"), std::string::npos) << run.out;
+  EXPECT_EQ(std::filesystem::file_size(file), size);
+  std::filesystem::remove(file);
+}
+
+TEST(Cli, CheckReportsEachExpectationAndExitsOneOnFailure) {
+  const CommandResult partial = Mechanist("check " + Example("bracket_plate_bolt_nut"));
+  EXPECT_EQ(partial.exit_code, 1);
+  EXPECT_NE(partial.out.find("PASS /expect/0: pair bolt_left/thread + nut_left/thread is fixed"),
+            std::string::npos)
+      << partial.out;
+  EXPECT_NE(partial.out.find("FAIL /expect/4: mobility 0 (not evaluated"), std::string::npos);
+  EXPECT_NE(partial.out.find("\n3 passed, 3 failed\n"), std::string::npos);
+
+  // A file whose expectations are all within reach passes, including a near miss.
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "mechanist_cli_check.json";
+  std::ofstream(file) << R"({"mechanist": 1, "parts": [
+    {"id": "g1", "library": {"kind": "spur_gear", "teeth": 20, "module": 1, "face_width": 5}},
+    {"id": "g2", "library": {"kind": "spur_gear", "teeth": 10, "module": 1, "face_width": 5},
+     "pose": {"position": [15.4, 0, 0]}},
+    {"id": "g3", "library": {"kind": "spur_gear", "teeth": 10, "module": 1, "face_width": 5},
+     "pose": {"position": [-15, 0, 0]}}],
+    "expect": [{"pair": ["g1/teeth", "g3/teeth"], "type": "gear"},
+               {"diagnostic": "gear_center_distance", "parts": ["g1", "g2"]},
+               {"diagnostic": "off by 0.4 mm"}]})";
+  const CommandResult run = Mechanist("check " + file.string());
+  EXPECT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("3 passed, 0 failed"), std::string::npos) << run.out;
+  std::filesystem::remove(file);
+}
+
 }  // namespace

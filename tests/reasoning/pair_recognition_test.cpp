@@ -1,0 +1,487 @@
+#include "reasoning/pair_recognition.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "reasoning/analysis.h"
+#include "test_assembly.h"
+
+namespace mechanist {
+namespace {
+
+using testing::MakeAssembly;
+using testing::MakeFeature;
+using testing::MakePart;
+using K = FeatureKind;
+using V = Eigen::Vector3d;
+
+constexpr double kPi = 3.14159265358979323846;
+
+Recognition Recognize(const Assembly& a) { return RecognizePairs(a, InitialState(a)); }
+
+Feature Shaft(double d, double length, V origin = V::Zero(), V axis = V::UnitZ()) {
+  return MakeFeature("s", K::kShaft, origin, axis, [&](Feature& f) {
+    f.diameter = d;
+    f.length = length;
+  });
+}
+
+Feature Hole(double d, double length, V origin = V(0, 0, 10), V axis = -V::UnitZ()) {
+  return MakeFeature("h", K::kHole, origin, axis, [&](Feature& f) {
+    f.diameter = d;
+    f.length = length;
+  });
+}
+
+/// The single pair of a recognition (a copy: recognitions here are temporaries).
+Pair Only(const Recognition& r) {
+  EXPECT_EQ(r.pairs.size(), 1u);
+  return r.pairs.empty() ? Pair{} : r.pairs.front();
+}
+
+const Diagnostic* FindDiagnostic(const Recognition& r, const std::string& code,
+                                 const std::string& text = "") {
+  for (const Diagnostic& d : r.diagnostics) {
+    if (d.code == code && d.message.find(text) != std::string::npos) return &d;
+  }
+  return nullptr;
+}
+
+bool HasDiagnostic(const Recognition& r, const std::string& code, const std::string& text = "") {
+  return FindDiagnostic(r, code, text) != nullptr;
+}
+
+/// Diagnostics other than part_unconnected (which every pairless test part gets).
+std::size_t NearMisses(const Recognition& r) {
+  std::size_t n = 0;
+  for (const Diagnostic& d : r.diagnostics) n += d.code != "part_unconnected" ? 1 : 0;
+  return n;
+}
+
+// A 5 mm shaft entering a hole from above: both axes along -z, the shaft's free end down.
+Assembly ShaftInHole(double shaft_d, double hole_d, bool retained_hole = false,
+                     V shaft_offset = V::Zero(), double tilt = 0.0) {
+  Feature s = Shaft(shaft_d, 20, V(0, 0, 15) + shaft_offset, V(std::sin(tilt), 0, -std::cos(tilt)));
+  Feature h = Hole(hole_d, 10);
+  h.retained = retained_hole;
+  return MakeAssembly({MakePart("block", {h}, RigidTransform(), true), MakePart("pin", {s})});
+}
+
+TEST(PairRecognition, ShaftInHoleIsCylindricalRevoluteOrPressFit) {
+  const Pair c = Only(Recognize(ShaftInHole(5.0, 5.02)));
+  EXPECT_EQ(c.type, PairType::kCylindrical);
+  EXPECT_EQ(*c.dof, 2);
+  EXPECT_EQ(c.a.part, 1u);  // the convex feature first
+  EXPECT_EQ(Only(Recognize(ShaftInHole(5.0, 5.02, true))).type, PairType::kRevolute);
+  const Pair press = Only(Recognize(ShaftInHole(5.1, 5.0)));
+  EXPECT_EQ(press.type, PairType::kFixed);
+  EXPECT_EQ(press.fastening, PairFastening::kPressFit);
+  // Within the tolerance (0.05 mm) a slightly larger shaft is a transition fit, not a press fit.
+  EXPECT_EQ(Only(Recognize(ShaftInHole(5.04, 5.0))).type, PairType::kCylindrical);
+}
+
+TEST(PairRecognition, ShaftInHoleNegatives) {
+  // Each condition of the table violated once.
+  EXPECT_TRUE(Recognize(ShaftInHole(5.0, 5.0, false, V(0.2, 0, 0))).pairs.empty());     // offset
+  EXPECT_TRUE(Recognize(ShaftInHole(5.0, 5.0, false, V::Zero(), 0.05)).pairs.empty());  // angle
+  EXPECT_TRUE(Recognize(ShaftInHole(5.0, 5.0, false, V(0, 0, 20))).pairs.empty());  // not engaged
+  EXPECT_TRUE(Recognize(ShaftInHole(3.0, 5.0)).pairs.empty());  // passes through, no contact
+  // Blind hole entered the wrong way round.
+  Feature s = Shaft(5, 20, V(0, 0, -5), V::UnitZ());
+  const Assembly reversed = MakeAssembly(
+      {MakePart("block", {Hole(5, 10)}, RigidTransform(), true), MakePart("pin", {s})});
+  const Recognition r = Recognize(reversed);
+  EXPECT_TRUE(r.pairs.empty());
+  EXPECT_TRUE(HasDiagnostic(r, "feature_sense_reversed"));
+  // A through hole accepts either sense.
+  Feature through = Hole(5, 10);
+  through.through = true;
+  EXPECT_EQ(Only(Recognize(MakeAssembly(
+                     {MakePart("block", {through}, RigidTransform(), true), MakePart("pin", {s})})))
+                .type,
+            PairType::kCylindrical);
+}
+
+TEST(PairRecognition, ShaftNearMissesNameTheQuantity) {
+  const Recognition big = Recognize(ShaftInHole(5.2, 5.0, true));
+  EXPECT_TRUE(big.pairs.empty());
+  const Diagnostic* larger = FindDiagnostic(big, "shaft_larger_than_hole", "5.2 mm");
+  ASSERT_NE(larger, nullptr);
+  EXPECT_EQ(larger->features, (std::vector<std::string>{"pin/s", "block/h"}));
+  EXPECT_EQ(larger->parts, (std::vector<std::string>{"pin", "block"}));
+  const Recognition offset = Recognize(ShaftInHole(5.0, 5.0, false, V(0.3, 0, 0)));
+  EXPECT_TRUE(HasDiagnostic(offset, "axes_not_collinear", "offset 0.3 mm"));
+  const Recognition tilt = Recognize(ShaftInHole(5.0, 5.0, false, V::Zero(), 1.0 * kPi / 180));
+  EXPECT_TRUE(HasDiagnostic(tilt, "axes_not_collinear", "angle 1 deg"));
+  // Far beyond the near-miss window: silence.
+  EXPECT_EQ(NearMisses(Recognize(ShaftInHole(5.0, 5.0, false, V(3, 0, 0)))), 0u);
+}
+
+Feature Thread(double d, double pitch, double length, V origin, V axis, Fastening fastening,
+               int starts = 1, Hand hand = Hand::kRight) {
+  return MakeFeature("t", K::kThread, origin, axis, [&](Feature& f) {
+    f.diameter = d;
+    f.pitch = pitch;
+    f.length = length;
+    f.fastening = fastening;
+    f.starts = starts;
+    f.hand = hand;
+  });
+}
+
+Feature Tapped(double d, double pitch, double length, V origin, V axis, int starts = 1,
+               Hand hand = Hand::kRight) {
+  return MakeFeature("th", K::kTappedHole, origin, axis, [&](Feature& f) {
+    f.diameter = d;
+    f.pitch = pitch;
+    f.length = length;
+    f.starts = starts;
+    f.hand = hand;
+  });
+}
+
+Recognition ScrewIn(const Feature& thread, const Feature& tapped) {
+  return Recognize(MakeAssembly(
+      {MakePart("nut", {tapped}, RigidTransform(), true), MakePart("screw", {thread})}));
+}
+
+TEST(PairRecognition, ThreadInTappedHoleIsScrewOrFixed) {
+  const V up = V::UnitZ();
+  const Pair loose = Only(ScrewIn(Thread(8, 1.25, 20, V::Zero(), up, Fastening::kLoose),
+                                  Tapped(8, 1.25, 8, V(0, 0, 5), up)));
+  EXPECT_EQ(loose.type, PairType::kScrew);
+  EXPECT_DOUBLE_EQ(*loose.travel_per_revolution, 1.25);
+  const Pair lead =
+      Only(ScrewIn(Thread(8, 1.5, 20, V::Zero(), up, Fastening::kLoose, 3, Hand::kLeft),
+                   Tapped(8, 1.5, 8, V(0, 0, 5), up, 3, Hand::kLeft)));
+  EXPECT_DOUBLE_EQ(*lead.travel_per_revolution, -4.5);  // 3 starts x 1.5, left hand
+  const Pair tight = Only(ScrewIn(Thread(8, 1.25, 20, V::Zero(), up, Fastening::kTight),
+                                  Tapped(8, 1.25, 8, V(0, 0, 5), up)));
+  EXPECT_EQ(tight.type, PairType::kFixed);
+  EXPECT_EQ(tight.fastening, PairFastening::kTight);
+}
+
+TEST(PairRecognition, ThreadMismatchesAreNearMisses) {
+  const V up = V::UnitZ();
+  const Recognition m3_in_m4 = ScrewIn(Thread(3, 0.5, 10, V::Zero(), up, Fastening::kTight),
+                                       Tapped(4, 0.7, 8, V(0, 0, 2), up));
+  EXPECT_TRUE(m3_in_m4.pairs.empty());
+  EXPECT_TRUE(HasDiagnostic(m3_in_m4, "thread_mismatch", "thread M3, tapped hole M4"));
+  EXPECT_TRUE(
+      HasDiagnostic(m3_in_m4, "thread_mismatch", "pitch: thread 0.5 mm, tapped hole 0.7 mm"));
+  EXPECT_TRUE(
+      HasDiagnostic(ScrewIn(Thread(4, 0.7, 10, V::Zero(), up, Fastening::kTight, 1, Hand::kLeft),
+                            Tapped(4, 0.7, 8, V(0, 0, 2), up)),
+                    "thread_mismatch", "hand: thread left, tapped hole right"));
+  EXPECT_TRUE(HasDiagnostic(ScrewIn(Thread(4, 0.7, 10, V::Zero(), up, Fastening::kTight, 2),
+                                    Tapped(4, 0.7, 8, V(0, 0, 2), up)),
+                            "thread_mismatch", "starts: thread 2"));
+}
+
+TEST(PairRecognition, ThreadInPlainHole) {
+  const V down = -V::UnitZ();
+  const Feature t = Thread(6, 1, 20, V(0, 0, 15), down, Fastening::kTight);
+  auto in_hole = [&](double d) {
+    Feature h = Hole(d, 10);
+    return Recognize(
+        MakeAssembly({MakePart("plate", {h}, RigidTransform(), true), MakePart("bolt", {t})}));
+  };
+  EXPECT_EQ(Only(in_hole(6.6)).type,
+            PairType::kCylindrical);  // clearance hole, no nut: not clamped
+  const Recognition small = in_hole(5.0);
+  EXPECT_TRUE(small.pairs.empty());
+  EXPECT_TRUE(HasDiagnostic(small, "hole_smaller_than_thread", "5 mm"));
+}
+
+// A bolt down through two plates into a nut under them.
+Assembly BoltedStack(Fastening fastening) {
+  const V down = -V::UnitZ();
+  Feature t = Thread(6, 1, 20, V(0, 0, 10), down, fastening);
+  Feature h1 = Hole(6.6, 5, V(0, 0, 10)), h2 = Hole(6.6, 5, V(0, 0, 5));
+  Feature nut = Tapped(6, 1, 5, V(0, 0, 0), down);
+  return MakeAssembly({MakePart("bottom", {h2}, RigidTransform(), true), MakePart("top", {h1}),
+                       MakePart("bolt", {t}), MakePart("nut", {nut})});
+}
+
+TEST(PairRecognition, TightBoltClampsEveryPartItPassesThrough) {
+  const Analysis tight = Analyze(BoltedStack(Fastening::kTight));
+  ASSERT_EQ(tight.subassemblies.size(), 1u);
+  EXPECT_EQ(tight.subassemblies[0].parts.size(), 4u);
+  int clamps = 0;
+  for (const Pair& p : tight.pairs) clamps += p.source == PairSource::kClamp ? 1 : 0;
+  EXPECT_EQ(clamps, 2);
+  // A loose thread is a screw pair and clamps nothing.
+  const Analysis loose = Analyze(BoltedStack(Fastening::kLoose));
+  EXPECT_EQ(loose.subassemblies.size(), 4u);  // bolt and nut make a screw pair: all separate
+}
+
+TEST(PairRecognition, SetscrewFixesTheShaftItBearsOn) {
+  // A hub on a shaft along x; a setscrew down the hub's radial tapped hole to the shaft.
+  Feature shaft = Shaft(6, 40, V(-20, 0, 0), V::UnitX());
+  Feature bore = MakeFeature("bore", K::kHole, V(-5, 0, 0), V::UnitX(), [](Feature& f) {
+    f.diameter = 6;
+    f.length = 10;
+    f.through = true;
+  });
+  Feature radial = Tapped(3, 0.5, 3, V(0, 0, 6), -V::UnitZ());
+  radial.id = "radial";
+  auto assembly = [&](double screw_length) {
+    Feature screw = Thread(3, 0.5, screw_length, V(0, 0, 6), -V::UnitZ(), Fastening::kTight);
+    return MakeAssembly({MakePart("shaft", {shaft}, RigidTransform(), true),
+                         MakePart("hub", {bore, radial}), MakePart("setscrew", {screw})});
+  };
+  const Analysis reaching = Analyze(assembly(3.0));  // tip at z = 3: on the shaft's surface
+  EXPECT_EQ(reaching.subassemblies.size(), 1u);
+  bool found = false;
+  for (const Pair& p : reaching.pairs) {
+    if (p.source == PairSource::kSetscrew) {
+      found = true;
+      EXPECT_EQ(p.type, PairType::kFixed);
+      EXPECT_EQ(p.a, (FeatureRef{0, 0}));
+      EXPECT_EQ(p.b, (FeatureRef{1, 1}));
+    }
+  }
+  EXPECT_TRUE(found);
+  const Analysis short_screw = Analyze(assembly(2.0));  // tip 1 mm short of the shaft
+  EXPECT_EQ(short_screw.subassemblies.size(), 2u);
+}
+
+Feature Gear(const std::string& id, int teeth, double module, V origin, V axis = V::UnitZ(),
+             bool internal = false, double width = 10) {
+  return MakeFeature(id, K::kGear, origin, axis, [&](Feature& f) {
+    f.teeth = teeth;
+    f.module = module;
+    f.length = width;
+    f.internal = internal;
+  });
+}
+
+Recognition GearPair(const Feature& g1, const Feature& g2) {
+  return Recognize(MakeAssembly({MakePart("g1", {g1}), MakePart("g2", {g2})}));
+}
+
+TEST(PairRecognition, ExternalAndInternalGearsWithExactRatios) {
+  const Pair external = Only(GearPair(Gear("t", 17, 1, V::Zero()), Gear("t", 31, 1, V(24, 0, 0))));
+  EXPECT_EQ(external.type, PairType::kGear);
+  EXPECT_EQ(*external.ratio, Rational(-17, 31));  // w2 = -(z1/z2) w1
+  EXPECT_FALSE(external.dof.has_value());
+  // Centre distance along any direction in the plane.
+  const double a = 1.5 * (20 + 30) / 2;
+  const Pair diagonal =
+      Only(GearPair(Gear("t", 20, 1.5, V::Zero()),
+                    Gear("t", 30, 1.5, V(a / std::sqrt(2.0), a / std::sqrt(2.0), 0))));
+  EXPECT_EQ(*diagonal.ratio, Rational(-2, 3));
+  // Internal: planet of 10 in a ring of 40, distance m (40 - 10) / 2 = 15, same sense.
+  const Pair internal =
+      Only(GearPair(Gear("t", 10, 1, V(15, 0, 0)), Gear("t", 40, 1, V::Zero(), V::UnitZ(), true)));
+  EXPECT_EQ(*internal.ratio, Rational(1, 4));  // ring per planet: +z_planet / z_ring
+  // Axes of opposite sense: the ratio about each feature's own axis flips.
+  EXPECT_EQ(
+      *Only(GearPair(Gear("t", 17, 1, V::Zero()), Gear("t", 31, 1, V(24, 0, 10), -V::UnitZ())))
+           .ratio,
+      Rational(17, 31));
+}
+
+TEST(PairRecognition, GearNearMisses) {
+  const Recognition off = GearPair(Gear("t", 20, 1, V::Zero()), Gear("t", 10, 1, V(15.4, 0, 0)));
+  EXPECT_TRUE(off.pairs.empty());
+  EXPECT_TRUE(
+      HasDiagnostic(off, "gear_center_distance", "centre distance 15.4 mm, required 15 mm"));
+  EXPECT_TRUE(HasDiagnostic(off, "gear_center_distance", "off by 0.4 mm"));
+  const Recognition module =
+      GearPair(Gear("t", 20, 1, V::Zero()), Gear("t", 10, 1.25, V(15, 0, 0)));
+  EXPECT_TRUE(module.pairs.empty());
+  EXPECT_TRUE(HasDiagnostic(module, "gear_module_mismatch", "1 mm and 1.25 mm"));
+  const double tilt = 1.0 * kPi / 180;
+  const Recognition skew =
+      GearPair(Gear("t", 20, 1, V::Zero()),
+               Gear("t", 10, 1, V(15, 0, 0), V(0, std::sin(tilt), std::cos(tilt))));
+  EXPECT_TRUE(skew.pairs.empty());
+  EXPECT_TRUE(HasDiagnostic(skew, "gear_axes_not_parallel"));
+  // Face widths apart along the axis: no pair, no near miss.
+  EXPECT_TRUE(GearPair(Gear("t", 20, 1, V::Zero()), Gear("t", 10, 1, V(15, 0, 20))).pairs.empty());
+  // Three modules off: silence.
+  const Recognition far = GearPair(Gear("t", 20, 1, V::Zero()), Gear("t", 10, 1, V(18, 0, 0)));
+  EXPECT_TRUE(far.pairs.empty());
+  EXPECT_EQ(NearMisses(far), 0u);
+}
+
+Recognition WormDrive(Hand hand, double worm_y, double friction = 0.1, double pitch_diameter = 10,
+                      double module_wheel = 1) {
+  Feature worm = MakeFeature("worm", K::kWorm, V(-10, worm_y, 4), V::UnitX(), [&](Feature& f) {
+    f.starts = 1;
+    f.module = 1;
+    f.pitch_diameter = pitch_diameter;
+    f.length = 20;
+    f.hand = hand;
+  });
+  Feature wheel = MakeFeature("teeth", K::kWormWheel, V::Zero(), V::UnitZ(), [&](Feature& f) {
+    f.teeth = 40;
+    f.module = module_wheel;
+    f.length = 8;
+  });
+  return Recognize(
+      MakeAssembly({MakePart("worm", {worm}), MakePart("wheel", {wheel})}, {}, friction));
+}
+
+TEST(PairRecognition, WormGearRatioFollowsHandAndSide) {
+  const Pair below = Only(WormDrive(Hand::kRight, -25));
+  EXPECT_EQ(below.type, PairType::kWormGear);
+  EXPECT_EQ(*below.ratio, Rational(-1, 40));
+  EXPECT_EQ(*Only(WormDrive(Hand::kRight, 25)).ratio, Rational(1, 40));
+  EXPECT_EQ(*Only(WormDrive(Hand::kLeft, -25)).ratio, Rational(1, 40));
+  EXPECT_EQ(*Only(WormDrive(Hand::kLeft, 25)).ratio, Rational(-1, 40));
+}
+
+TEST(PairRecognition, WormSelfLockingFollowsTheFrictionAngle) {
+  // Lead angle atan(1 / 10) = 5.71 deg; friction angle atan(0.05) = 2.9, atan(0.15) = 8.5 deg.
+  EXPECT_FALSE(Only(WormDrive(Hand::kRight, -25, 0.05)).self_locking);
+  EXPECT_TRUE(Only(WormDrive(Hand::kRight, -25, 0.15)).self_locking);
+}
+
+TEST(PairRecognition, WormNearMisses) {
+  EXPECT_TRUE(
+      HasDiagnostic(WormDrive(Hand::kRight, -25.3), "worm_center_distance", "off by 0.3 mm"));
+  EXPECT_TRUE(HasDiagnostic(WormDrive(Hand::kRight, -25, 0.1, 10, 1.25), "worm_module_mismatch"));
+}
+
+TEST(PairRecognition, RackAndPinionTravel) {
+  // Pinion of 20 teeth, module 2 at the origin; rack along +x below it, pitch line at y = -20.
+  Feature pinion = Gear("teeth", 20, 2, V(0, 0, -5));
+  auto rack_at = [&](double y) {
+    Feature rack = MakeFeature("rack", K::kRack, V(-50, y, 0), V::UnitX(), [](Feature& f) {
+      f.module = 2;
+      f.length = 100;
+      f.normal = V::UnitY();
+    });
+    return Recognize(MakeAssembly({MakePart("pinion", {pinion}), MakePart("rack", {rack})}));
+  };
+  const Pair p = Only(rack_at(-20));
+  EXPECT_EQ(p.type, PairType::kRackPinion);
+  EXPECT_NEAR(*p.travel_per_revolution, kPi * 2 * 20, 1e-9);  // +x for a positive turn about +z
+  EXPECT_TRUE(HasDiagnostic(rack_at(-20.5), "rack_pitch_line_distance", "off by 0.5 mm"));
+}
+
+TEST(PairRecognition, SlotsBallsAndFaces) {
+  Feature slot = MakeFeature("slot", K::kSlot, V(0, 0, 0), V::UnitX(), [](Feature& f) {
+    f.width = 4;
+    f.length = 30;
+    f.depth = 3;
+    f.normal = -V::UnitZ();
+  });
+  Feature pin = Shaft(4, 10, V(10, 0, 5), -V::UnitZ());
+  EXPECT_EQ(Only(Recognize(MakeAssembly({MakePart("guide", {slot}), MakePart("pin", {pin})}))).type,
+            PairType::kPinSlot);
+  Feature fat = Shaft(4.5, 10, V(10, 0, 5), -V::UnitZ());
+  EXPECT_TRUE(
+      HasDiagnostic(Recognize(MakeAssembly({MakePart("guide", {slot}), MakePart("pin", {fat})})),
+                    "pin_wider_than_slot"));
+  Feature key = MakeFeature("key", K::kKey, V(5, 0, 0), V::UnitX(), [](Feature& f) {
+    f.width = 4;
+    f.length = 10;
+    f.normal = -V::UnitZ();
+  });
+  EXPECT_EQ(
+      Only(Recognize(MakeAssembly({MakePart("guide", {slot}), MakePart("slider", {key})}))).type,
+      PairType::kPrismatic);
+
+  auto sphere = [](const std::string& id, K kind, double d, V at) {
+    return MakeFeature(id, kind, at, V::UnitZ(), [d](Feature& f) { f.diameter = d; });
+  };
+  EXPECT_EQ(Only(Recognize(MakeAssembly({MakePart("a", {sphere("b", K::kBall, 10, V::Zero())}),
+                                         MakePart("b", {sphere("s", K::kSocket, 10, V::Zero())})})))
+                .type,
+            PairType::kSpherical);
+  EXPECT_TRUE(HasDiagnostic(
+      Recognize(MakeAssembly({MakePart("a", {sphere("b", K::kBall, 10, V::Zero())}),
+                              MakePart("b", {sphere("s", K::kSocket, 12, V::Zero())})})),
+      "ball_socket_mismatch"));
+
+  auto face = [](const std::string& id, V at, V normal) {
+    return MakeFeature(id, K::kFace, at, normal, [](Feature& f) {
+      f.width = 10;
+      f.height = 10;
+    });
+  };
+  EXPECT_EQ(
+      Only(Recognize(MakeAssembly({MakePart("a", {face("top", V(0, 0, 1), V::UnitZ())}),
+                                   MakePart("b", {face("bottom", V(3, 0, 1), -V::UnitZ())})})))
+          .type,
+      PairType::kPlanar);
+  // Same-facing or separated faces: no pair.
+  EXPECT_TRUE(Recognize(MakeAssembly({MakePart("a", {face("top", V(0, 0, 1), V::UnitZ())}),
+                                      MakePart("b", {face("bottom", V(3, 0, 1), V::UnitZ())})}))
+                  .pairs.empty());
+  EXPECT_TRUE(Recognize(MakeAssembly({MakePart("a", {face("top", V(0, 0, 1), V::UnitZ())}),
+                                      MakePart("b", {face("bottom", V(3, 0, 1.5), -V::UnitZ())})}))
+                  .pairs.empty());
+}
+
+TEST(PairRecognition, OverridesForceOrForbidPairs) {
+  Feature s = Shaft(5, 20, V(0, 0, 15), -V::UnitZ());
+  const std::vector<Part> parts = {MakePart("block", {Hole(5, 10)}, RigidTransform(), true),
+                                   MakePart("pin", {s})};
+  const FeatureRef pin{1, 0}, hole{0, 0};
+  const Recognition forbidden =
+      Recognize(MakeAssembly(parts, {PairOverride{{pin, hole}, std::nullopt}}));
+  EXPECT_TRUE(forbidden.pairs.empty());
+  const Pair glued =
+      Only(Recognize(MakeAssembly(parts, {PairOverride{{hole, pin}, PairType::kFixed}})));
+  EXPECT_EQ(glued.type, PairType::kFixed);
+  EXPECT_EQ(glued.source, PairSource::kOverride);
+}
+
+TEST(PairRecognition, RigidMotionOfTheWholeAssemblyChangesNothing) {
+  const Assembly base = BoltedStack(Fastening::kTight);
+  const Recognition reference = Recognize(base);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int trial = 0; trial < 20; ++trial) {
+    const RigidTransform X =
+        RigidTransform::Translation(V(u(random), u(random), u(random)) * 500) *
+        RigidTransform::AxisAngle(V(u(random), u(random), u(random)), 3 * u(random));
+    AssemblyState moved = InitialState(base);
+    for (RigidTransform& X_WP : moved.X_WP) X_WP = X * X_WP;
+    const Recognition r = RecognizePairs(base, moved);
+    ASSERT_EQ(r.pairs.size(), reference.pairs.size());
+    for (std::size_t i = 0; i < r.pairs.size(); ++i) {
+      EXPECT_EQ(r.pairs[i].type, reference.pairs[i].type);
+      EXPECT_EQ(r.pairs[i].a, reference.pairs[i].a);
+      EXPECT_EQ(r.pairs[i].b, reference.pairs[i].b);
+    }
+  }
+}
+
+// Oracle for the broad phase: every candidate found by brute force over all feature pairs.
+TEST(PairRecognition, GridBroadPhaseMatchesAllPairsOnRandomGearField) {
+  std::mt19937 random(11);
+  std::uniform_int_distribution<int> teeth(10, 40);
+  std::uniform_real_distribution<double> coordinate(0, 300);
+  std::vector<Part> parts;
+  std::vector<Feature> gears;
+  for (int i = 0; i < 300; ++i) {
+    gears.push_back(Gear("t", teeth(random), 1, V(coordinate(random), coordinate(random), 0)));
+    parts.push_back(MakePart("g" + std::to_string(i), {gears.back()}));
+  }
+  // Place some exact meshes so that there is something to find.
+  for (int i = 0; i + 1 < 300; i += 10) {
+    const double a = (gears[i].teeth + gears[i + 1].teeth) / 2.0;
+    parts[i + 1].features[0].origin = gears[i].origin + V(a, 0, 0);
+    gears[i + 1].origin = parts[i + 1].features[0].origin;
+  }
+  const Recognition r = Recognize(MakeAssembly(parts));
+  std::size_t expected = 0;
+  for (int i = 0; i < 300; ++i) {
+    for (int j = i + 1; j < 300; ++j) {
+      const double d = (gears[i].origin - gears[j].origin).norm();
+      if (std::abs(d - (gears[i].teeth + gears[j].teeth) / 2.0) <= 0.05) ++expected;
+    }
+  }
+  EXPECT_GE(expected, 30u);
+  EXPECT_EQ(r.pairs.size(), expected);
+}
+
+}  // namespace
+}  // namespace mechanist
