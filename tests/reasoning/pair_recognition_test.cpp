@@ -419,6 +419,81 @@ TEST(PairRecognition, SlotsBallsAndFaces) {
                   .pairs.empty());
 }
 
+TEST(PairRecognition, EveryOtherConditionViolatedOnce) {
+  // Worm: axes parallel instead of perpendicular; wheel beyond the worm's length.
+  Feature wheel = MakeFeature("teeth", K::kWormWheel, V::Zero(), V::UnitZ(), [](Feature& f) {
+    f.teeth = 40;
+    f.module = 1;
+    f.length = 8;
+  });
+  auto worm_at = [](V origin, V axis) {
+    return MakeFeature("worm", K::kWorm, origin, axis, [](Feature& f) {
+      f.module = 1;
+      f.pitch_diameter = 10;
+      f.length = 20;
+    });
+  };
+  auto worm_pairs = [&](const Feature& worm) {
+    return Recognize(MakeAssembly({MakePart("worm", {worm}), MakePart("wheel", {wheel})})).pairs.size();
+  };
+  EXPECT_EQ(worm_pairs(worm_at(V(-10, -25, 4), V::UnitX())), 1u);
+  EXPECT_EQ(worm_pairs(worm_at(V(0, -25, 0), V::UnitZ())), 0u);
+  EXPECT_EQ(worm_pairs(worm_at(V(15, -25, 4), V::UnitX())), 0u);
+
+  // Rack: pinion axis along the rack's normal; pinion on the back of the rack.
+  auto rack_pairs = [](V gear_axis, V normal) {
+    Feature pinion = Gear("teeth", 20, 2, V(0, 0, -5), gear_axis);
+    Feature rack = MakeFeature("rack", K::kRack, V(-50, -20, 0), V::UnitX(), [&](Feature& f) {
+      f.module = 2;
+      f.length = 100;
+      f.normal = normal;
+    });
+    return Recognize(MakeAssembly({MakePart("pinion", {pinion}), MakePart("rack", {rack})})).pairs.size();
+  };
+  EXPECT_EQ(rack_pairs(V::UnitZ(), V::UnitY()), 1u);
+  EXPECT_EQ(rack_pairs(V::UnitY(), V::UnitZ()), 0u);
+  EXPECT_EQ(rack_pairs(V::UnitZ(), -V::UnitY()), 0u);
+
+  // Pin in slot: pin along the slot's axis; pin beside the slot.
+  Feature slot = MakeFeature("slot", K::kSlot, V(0, 0, 0), V::UnitX(), [](Feature& f) {
+    f.width = 4;
+    f.length = 30;
+    f.depth = 3;
+    f.normal = -V::UnitZ();
+  });
+  auto slot_pairs = [&](const Feature& other) {
+    return Recognize(MakeAssembly({MakePart("guide", {slot}), MakePart("other", {other})})).pairs.size();
+  };
+  EXPECT_EQ(slot_pairs(Shaft(4, 10, V(10, 0, 5), -V::UnitZ())), 1u);
+  EXPECT_EQ(slot_pairs(Shaft(4, 10, V(10, 0, 0), V::UnitX())), 0u);
+  EXPECT_EQ(slot_pairs(Shaft(4, 10, V(10, 1, 5), -V::UnitZ())), 0u);
+  EXPECT_EQ(slot_pairs(Shaft(4, 10, V(40, 0, 5), -V::UnitZ())), 0u);  // beyond the slot's end
+
+  // Key in slot: not parallel; normal reversed; key wider.
+  auto key = [](V axis, V normal, double width) {
+    return MakeFeature("key", K::kKey, V(5, 0, 0), axis, [&](Feature& f) {
+      f.width = width;
+      f.length = 10;
+      f.normal = normal;
+    });
+  };
+  EXPECT_EQ(slot_pairs(key(V::UnitX(), -V::UnitZ(), 4)), 1u);
+  EXPECT_EQ(slot_pairs(key(V::UnitY(), -V::UnitZ(), 4)), 0u);
+  EXPECT_EQ(slot_pairs(key(V::UnitX(), V::UnitZ(), 4)), 0u);
+  EXPECT_TRUE(HasDiagnostic(Recognize(MakeAssembly({MakePart("guide", {slot}),
+                                                    MakePart("other", {key(V::UnitX(), -V::UnitZ(), 5)})})),
+                            "key_wider_than_slot"));
+
+  // Ball and socket: centres apart.
+  auto sphere = [](const std::string& id, K kind, V at) {
+    return MakeFeature(id, kind, at, V::UnitZ(), [](Feature& f) { f.diameter = 10; });
+  };
+  const Recognition apart = Recognize(MakeAssembly({MakePart("a", {sphere("b", K::kBall, V::Zero())}),
+                                                    MakePart("b", {sphere("s", K::kSocket, V(2, 0, 0))})}));
+  EXPECT_TRUE(apart.pairs.empty());
+  EXPECT_TRUE(HasDiagnostic(apart, "ball_socket_mismatch", "centres 2 mm apart"));
+}
+
 TEST(PairRecognition, OverridesForceOrForbidPairs) {
   Feature s = Shaft(5, 20, V(0, 0, 15), -V::UnitZ());
   const std::vector<Part> parts = {MakePart("block", {Hole(5, 10)}, RigidTransform(), true),
