@@ -9,18 +9,6 @@
 
 namespace mechanist {
 
-std::string_view ToString(Severity severity) {
-  switch (severity) {
-    case Severity::kInfo:
-      return "info";
-    case Severity::kWarning:
-      return "warning";
-    case Severity::kError:
-      return "error";
-  }
-  return "?";
-}
-
 namespace {
 
 void AddMeshDiagnostics(const Part& part, const MeshCheck& check, std::vector<Diagnostic>& out) {

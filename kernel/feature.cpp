@@ -1,12 +1,11 @@
 #include "kernel/feature.h"
 
-#include <array>
-#include <utility>
+#include "kernel/enum_names.h"
 
 namespace mechanist {
 namespace {
 
-constexpr std::array<std::pair<FeatureKind, std::string_view>, 13> kNames = {{
+constexpr EnumNames<FeatureKind, 13> kNames = {{
     {FeatureKind::kShaft, "shaft"},
     {FeatureKind::kHole, "hole"},
     {FeatureKind::kThread, "thread"},
@@ -24,19 +23,9 @@ constexpr std::array<std::pair<FeatureKind, std::string_view>, 13> kNames = {{
 
 }  // namespace
 
-std::string_view ToString(FeatureKind kind) {
-  for (const auto& [k, name] : kNames) {
-    if (k == kind) return name;
-  }
-  return "?";
-}
+std::string_view ToString(FeatureKind kind) { return NameOf(kNames, kind); }
 
-std::optional<FeatureKind> ParseFeatureKind(std::string_view name) {
-  for (const auto& [k, n] : kNames) {
-    if (n == name) return k;
-  }
-  return std::nullopt;
-}
+std::optional<FeatureKind> ParseFeatureKind(std::string_view name) { return ValueOf(kNames, name); }
 
 bool IsConvex(FeatureKind kind) {
   switch (kind) {

@@ -1,12 +1,11 @@
 #include "kernel/pair_type.h"
 
-#include <array>
-#include <utility>
+#include "kernel/enum_names.h"
 
 namespace mechanist {
 namespace {
 
-constexpr std::array<std::pair<PairType, std::string_view>, 11> kNames = {{
+constexpr EnumNames<PairType, 11> kNames = {{
     {PairType::kFixed, "fixed"},
     {PairType::kRevolute, "revolute"},
     {PairType::kCylindrical, "cylindrical"},
@@ -22,18 +21,8 @@ constexpr std::array<std::pair<PairType, std::string_view>, 11> kNames = {{
 
 }  // namespace
 
-std::string_view ToString(PairType type) {
-  for (const auto& [t, name] : kNames) {
-    if (t == type) return name;
-  }
-  return "?";
-}
+std::string_view ToString(PairType type) { return NameOf(kNames, type); }
 
-std::optional<PairType> ParsePairType(std::string_view name) {
-  for (const auto& [t, n] : kNames) {
-    if (n == name) return t;
-  }
-  return std::nullopt;
-}
+std::optional<PairType> ParsePairType(std::string_view name) { return ValueOf(kNames, name); }
 
 }  // namespace mechanist

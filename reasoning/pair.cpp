@@ -1,38 +1,32 @@
 #include "reasoning/pair.h"
 
+#include "kernel/enum_names.h"
+
 namespace mechanist {
 
-std::string_view ToString(PairSource source) {
-  switch (source) {
-    case PairSource::kRecognised:
-      return "recognised";
-    case PairSource::kOverride:
-      return "override";
-    case PairSource::kClamp:
-      return "clamp";
-    case PairSource::kSetscrew:
-      return "setscrew";
-  }
-  return "?";
-}
+namespace {
 
-std::string_view ToString(PairFastening fastening) {
-  switch (fastening) {
-    case PairFastening::kNone:
-      return "";
-    case PairFastening::kPressFit:
-      return "press_fit";
-    case PairFastening::kTight:
-      return "tight";
-    case PairFastening::kLoose:
-      return "loose";
-    case PairFastening::kClamp:
-      return "clamp";
-    case PairFastening::kSetscrew:
-      return "setscrew";
-  }
-  return "?";
-}
+constexpr EnumNames<PairSource, 4> kSources = {{
+    {PairSource::kRecognised, "recognised"},
+    {PairSource::kOverride, "override"},
+    {PairSource::kClamp, "clamp"},
+    {PairSource::kSetscrew, "setscrew"},
+}};
+
+constexpr EnumNames<PairFastening, 6> kFastenings = {{
+    {PairFastening::kNone, ""},
+    {PairFastening::kPressFit, "press_fit"},
+    {PairFastening::kTight, "tight"},
+    {PairFastening::kLoose, "loose"},
+    {PairFastening::kClamp, "clamp"},
+    {PairFastening::kSetscrew, "setscrew"},
+}};
+
+}  // namespace
+
+std::string_view ToString(PairSource source) { return NameOf(kSources, source); }
+
+std::string_view ToString(PairFastening fastening) { return NameOf(kFastenings, fastening); }
 
 std::optional<int> DegreesOfFreedom(PairType type) {
   switch (type) {

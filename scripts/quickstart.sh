@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Quick start, step 1: install dependencies, build, and run the main job on a bundled example.
+# Quick start, step 1: install dependencies, build, and run the main job (validate, info,
+# analyze) on a bundled example.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -7,3 +8,4 @@ scripts/build.sh
 example=${1:-examples/robot_hand_worm/assembly.json}
 build/cli/mechanist validate "$example"
 build/cli/mechanist info "$example"
+build/cli/mechanist analyze "$example"
