@@ -1,5 +1,7 @@
 #include "kernel/diagnostic.h"
 
+#include <tuple>
+
 namespace mechanist {
 
 std::string_view ToString(Severity severity) {
@@ -12,6 +14,11 @@ std::string_view ToString(Severity severity) {
       return "error";
   }
   return "?";
+}
+
+bool DiagnosticLess(const Diagnostic& x, const Diagnostic& y) {
+  return std::tie(x.code, x.features, x.parts, x.message) <
+         std::tie(y.code, y.features, y.parts, y.message);
 }
 
 }  // namespace mechanist

@@ -21,4 +21,8 @@ struct Diagnostic {
   std::vector<std::string> features;
 };
 
+/// The report order of diagnostics: by code, then features, parts and message. It depends on
+/// names only, so reordering the input file does not reorder the report.
+bool DiagnosticLess(const Diagnostic& x, const Diagnostic& y);
+
 }  // namespace mechanist

@@ -1,5 +1,7 @@
 #include "reasoning/analysis.h"
 
+#include <algorithm>
+
 #include "kernel/assembly_check.h"
 #include "kernel/assembly_state.h"
 #include "reasoning/pair_recognition.h"
@@ -18,6 +20,7 @@ Analysis Analyze(const Assembly& assembly) {
   analysis.diagnostics = CheckAssembly(assembly);
   analysis.diagnostics.insert(analysis.diagnostics.end(), recognition.diagnostics.begin(),
                               recognition.diagnostics.end());
+  std::sort(analysis.diagnostics.begin(), analysis.diagnostics.end(), DiagnosticLess);
   return analysis;
 }
 

@@ -15,7 +15,7 @@ struct Analysis {
   std::vector<Pair> pairs;
   std::vector<Subassembly> subassemblies;
   std::vector<std::size_t> subassembly_of;  ///< per part: index into `subassemblies`
-  /// Description checks (meshes, features) first, then recognition's near misses.
+  /// Description checks (meshes, features) and recognition's near misses, in DiagnosticLess order.
   std::vector<Diagnostic> diagnostics;
 };
 

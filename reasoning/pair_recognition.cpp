@@ -681,11 +681,7 @@ class Recognizer {
     sorted.reserve(out.pairs.size());
     for (const auto& key : keys) sorted.push_back(out.pairs[std::get<3>(key)]);
     out.pairs = std::move(sorted);
-    std::sort(out.diagnostics.begin(), out.diagnostics.end(),
-              [](const Diagnostic& x, const Diagnostic& y) {
-                return std::tie(x.code, x.features, x.parts, x.message) <
-                       std::tie(y.code, y.features, y.parts, y.message);
-              });
+    std::sort(out.diagnostics.begin(), out.diagnostics.end(), DiagnosticLess);
   }
 
   const Assembly& assembly_;

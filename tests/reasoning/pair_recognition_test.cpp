@@ -434,7 +434,8 @@ TEST(PairRecognition, EveryOtherConditionViolatedOnce) {
     });
   };
   auto worm_pairs = [&](const Feature& worm) {
-    return Recognize(MakeAssembly({MakePart("worm", {worm}), MakePart("wheel", {wheel})})).pairs.size();
+    return Recognize(MakeAssembly({MakePart("worm", {worm}), MakePart("wheel", {wheel})}))
+        .pairs.size();
   };
   EXPECT_EQ(worm_pairs(worm_at(V(-10, -25, 4), V::UnitX())), 1u);
   EXPECT_EQ(worm_pairs(worm_at(V(0, -25, 0), V::UnitZ())), 0u);
@@ -448,7 +449,8 @@ TEST(PairRecognition, EveryOtherConditionViolatedOnce) {
       f.length = 100;
       f.normal = normal;
     });
-    return Recognize(MakeAssembly({MakePart("pinion", {pinion}), MakePart("rack", {rack})})).pairs.size();
+    return Recognize(MakeAssembly({MakePart("pinion", {pinion}), MakePart("rack", {rack})}))
+        .pairs.size();
   };
   EXPECT_EQ(rack_pairs(V::UnitZ(), V::UnitY()), 1u);
   EXPECT_EQ(rack_pairs(V::UnitY(), V::UnitZ()), 0u);
@@ -462,7 +464,8 @@ TEST(PairRecognition, EveryOtherConditionViolatedOnce) {
     f.normal = -V::UnitZ();
   });
   auto slot_pairs = [&](const Feature& other) {
-    return Recognize(MakeAssembly({MakePart("guide", {slot}), MakePart("other", {other})})).pairs.size();
+    return Recognize(MakeAssembly({MakePart("guide", {slot}), MakePart("other", {other})}))
+        .pairs.size();
   };
   EXPECT_EQ(slot_pairs(Shaft(4, 10, V(10, 0, 5), -V::UnitZ())), 1u);
   EXPECT_EQ(slot_pairs(Shaft(4, 10, V(10, 0, 0), V::UnitX())), 0u);
@@ -480,16 +483,18 @@ TEST(PairRecognition, EveryOtherConditionViolatedOnce) {
   EXPECT_EQ(slot_pairs(key(V::UnitX(), -V::UnitZ(), 4)), 1u);
   EXPECT_EQ(slot_pairs(key(V::UnitY(), -V::UnitZ(), 4)), 0u);
   EXPECT_EQ(slot_pairs(key(V::UnitX(), V::UnitZ(), 4)), 0u);
-  EXPECT_TRUE(HasDiagnostic(Recognize(MakeAssembly({MakePart("guide", {slot}),
-                                                    MakePart("other", {key(V::UnitX(), -V::UnitZ(), 5)})})),
-                            "key_wider_than_slot"));
+  EXPECT_TRUE(
+      HasDiagnostic(Recognize(MakeAssembly({MakePart("guide", {slot}),
+                                            MakePart("other", {key(V::UnitX(), -V::UnitZ(), 5)})})),
+                    "key_wider_than_slot"));
 
   // Ball and socket: centres apart.
   auto sphere = [](const std::string& id, K kind, V at) {
     return MakeFeature(id, kind, at, V::UnitZ(), [](Feature& f) { f.diameter = 10; });
   };
-  const Recognition apart = Recognize(MakeAssembly({MakePart("a", {sphere("b", K::kBall, V::Zero())}),
-                                                    MakePart("b", {sphere("s", K::kSocket, V(2, 0, 0))})}));
+  const Recognition apart =
+      Recognize(MakeAssembly({MakePart("a", {sphere("b", K::kBall, V::Zero())}),
+                              MakePart("b", {sphere("s", K::kSocket, V(2, 0, 0))})}));
   EXPECT_TRUE(apart.pairs.empty());
   EXPECT_TRUE(HasDiagnostic(apart, "ball_socket_mismatch", "centres 2 mm apart"));
 }
@@ -556,6 +561,29 @@ TEST(PairRecognition, GridBroadPhaseMatchesAllPairsOnRandomGearField) {
   }
   EXPECT_GE(expected, 30u);
   EXPECT_EQ(r.pairs.size(), expected);
+}
+
+}  // namespace
+}  // namespace mechanist
+
+namespace mechanist {
+namespace {
+
+TEST(Analysis, DiagnosticsDoNotDependOnThePartOrder) {
+  auto open_mesh = std::make_shared<TriangleMesh>(*testing::UnitCube());
+  open_mesh->faces.pop_back();
+  auto part = [&](const std::string& id) {
+    Part p = testing::MakePart(id, {});
+    p.mesh = open_mesh;
+    return p;
+  };
+  const Analysis ab = Analyze(testing::MakeAssembly({part("a"), part("b")}));
+  const Analysis ba = Analyze(testing::MakeAssembly({part("b"), part("a")}));
+  ASSERT_EQ(ab.diagnostics.size(), 4u);  // mesh_not_closed and part_unconnected for each
+  for (std::size_t i = 0; i < ab.diagnostics.size(); ++i) {
+    EXPECT_EQ(ab.diagnostics[i].code, ba.diagnostics[i].code);
+    EXPECT_EQ(ab.diagnostics[i].parts, ba.diagnostics[i].parts);
+  }
 }
 
 }  // namespace
