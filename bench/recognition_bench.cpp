@@ -100,7 +100,8 @@ int main(int argc, char** argv) {
       groups = PairGraph(assembly, r.pairs).Subassemblies().size();
       const auto t2 = std::chrono::steady_clock::now();
       pair_count = r.pairs.size();
-      best_recognise = std::min(best_recognise, std::chrono::duration<double, std::milli>(t1 - t0).count());
+      best_recognise =
+          std::min(best_recognise, std::chrono::duration<double, std::milli>(t1 - t0).count());
       best_graph = std::min(best_graph, std::chrono::duration<double, std::milli>(t2 - t1).count());
     }
     const double total = best_recognise + best_graph;
