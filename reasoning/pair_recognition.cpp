@@ -47,6 +47,7 @@ class Recognizer {
         near_A_(std::max(4 * A_, 2.0 * kPi / 180.0)) {
     for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
       const Part& part = assembly.part(p);
+      first_feature_.push_back(features_.size());
       const Aabb part_box_W = WorldBox(assembly, state, p);
       for (std::size_t i = 0; i < part.features.size(); ++i) {
         WorldFeature w;
@@ -239,7 +240,42 @@ class Recognizer {
     p.b = b.ref;
     p.fastening = fastening;
     p.dof = DegreesOfFreedom(type);
+    SetCoupling(p, a, b);
     pairs_.push_back(p);
+  }
+
+  /// The coupling parameters of a screw, gear, worm_gear or rack_pinion pair from its
+  /// features' kinds, parameters and world axes; the same for recognised and forced pairs.
+  /// Features of other kinds (a forced "gear" between two shafts) leave them unset.
+  void SetCoupling(Pair& p, const WorldFeature& a, const WorldFeature& b) const {
+    using K = FeatureKind;
+    const Feature& fa = *a.f;
+    const Feature& fb = *b.f;
+    if (p.type == PairType::kScrew && fa.kind == K::kThread) {
+      p.travel_per_revolution = fa.starts * fa.pitch * (fa.hand == Hand::kRight ? 1.0 : -1.0);
+    } else if (p.type == PairType::kGear && fa.kind == K::kGear && fb.kind == K::kGear) {
+      Rational ratio(fa.teeth, fb.teeth);
+      if (!fa.internal && !fb.internal) ratio = -ratio;
+      // Rates are about each feature's own axis: opposite axes flip the sign.
+      if (a.axis.direction.dot(b.axis.direction) < 0) ratio = -ratio;
+      p.ratio = ratio;
+    } else if (p.type == PairType::kWormGear && fa.kind == K::kWorm && fb.kind == K::kWormWheel) {
+      const LineLineClosest c =
+          ClosestPointsOfLines(a.axis.origin, a.axis.direction, b.axis.origin, b.axis.direction);
+      const Eigen::Vector3d n =
+          ((b.axis.origin + c.t * b.axis.direction) - (a.axis.origin + c.s * a.axis.direction))
+              .normalized();
+      // The wheel's teeth at the contact move like a nut on the worm: for a right-hand worm
+      // turning positively they move along -u_worm (derivation in the README).
+      const double side = b.axis.direction.cross(n).dot(a.axis.direction);
+      const int hand = fa.hand == Hand::kRight ? 1 : -1;
+      p.ratio = Rational(hand * (side > 0 ? 1 : -1) * fa.starts, fb.teeth);
+      const double lead_angle = std::atan(fa.starts * fa.module / fa.pitch_diameter);
+      p.self_locking = lead_angle < std::atan(assembly_.friction());
+    } else if (p.type == PairType::kRackPinion && fa.kind == K::kGear && fb.kind == K::kRack) {
+      p.travel_per_revolution =
+          -kPi * fa.module * fa.teeth * a.axis.direction.cross(b.normal_W).dot(b.axis.direction);
+    }
   }
 
   void Near(const char* code, const WorldFeature& a, const WorldFeature& b,
@@ -344,8 +380,6 @@ class Recognizer {
       AddPair(PairType::kFixed, t, h, PairFastening::kTight);
     } else {
       AddPair(PairType::kScrew, t, h, PairFastening::kLoose);
-      pairs_.back().travel_per_revolution =
-          t.f->starts * t.f->pitch * (t.f->hand == Hand::kRight ? 1.0 : -1.0);
     }
   }
 
@@ -403,18 +437,14 @@ class Recognizer {
     const double angle = AngleBetweenLines(g1.axis.direction, g2.axis.direction);
     const Eigen::Vector3d mid2 = g2.axis.origin + 0.5 * g2.axis.length * g2.axis.direction;
     const double d = DistanceToLine(mid2, g1.axis.origin, g1.axis.direction);
+    const bool internal = f1.internal || f2.internal;
+    const int z_internal = f1.internal ? f1.teeth : f2.teeth;
+    const int z_external = f1.internal ? f2.teeth : f1.teeth;
+    if (internal && z_internal <= z_external) return;  // a ring must be larger than its pinion
     auto required = [&](double m) {
-      if (!f1.internal && !f2.internal) return m * (f1.teeth + f2.teeth) / 2;
-      const int z_internal = f1.internal ? f1.teeth : f2.teeth;
-      const int z_external = f1.internal ? f2.teeth : f1.teeth;
-      return m * (z_internal - z_external) / 2;
+      return internal ? m * (z_internal - z_external) / 2 : m * (f1.teeth + f2.teeth) / 2;
     };
     const double m = f1.module;
-    if (f1.internal || f2.internal) {
-      const int z_internal = f1.internal ? f1.teeth : f2.teeth;
-      const int z_external = f1.internal ? f2.teeth : f1.teeth;
-      if (z_internal <= z_external) return;
-    }
     if (!SameModule(f1.module, f2.module)) {
       // Meant to mesh if the distance fits either gear's module.
       if (angle <= near_A_ && (std::abs(d - required(f1.module)) < f1.module ||
@@ -427,25 +457,14 @@ class Recognizer {
     const double a = required(m);
     const double error = std::abs(d - a);
     if (angle <= A_ && error <= L_) {
-      Pair p;
-      p.type = PairType::kGear;
-      p.a = g1.ref;
-      p.b = g2.ref;
-      const bool internal = f1.internal || f2.internal;
-      Rational ratio(f1.teeth, f2.teeth);
-      if (!internal) ratio = -ratio;
-      // Rates are about each feature's own axis: opposite axes flip the sign.
-      if (g1.axis.direction.dot(g2.axis.direction) < 0) ratio = -ratio;
-      p.ratio = ratio;
-      pairs_.push_back(p);
+      AddPair(PairType::kGear, g1, g2);
       return;
     }
     if (error >= m) return;
-    const std::string formula = (f1.internal || f2.internal)
-                                    ? FormatNumber(m) + " x |" + std::to_string(f2.teeth) + " - " +
-                                          std::to_string(f1.teeth) + "| / 2"
-                                    : FormatNumber(m) + " x (" + std::to_string(f1.teeth) + " + " +
-                                          std::to_string(f2.teeth) + ") / 2";
+    const std::string formula = internal ? FormatNumber(m) + " x |" + std::to_string(f2.teeth) +
+                                               " - " + std::to_string(f1.teeth) + "| / 2"
+                                         : FormatNumber(m) + " x (" + std::to_string(f1.teeth) +
+                                               " + " + std::to_string(f2.teeth) + ") / 2";
     if (angle > A_ && angle <= near_A_) {
       Near("gear_axes_not_parallel", g1, g2,
            "axes are " + Deg(angle) + " apart (required parallel within " + Deg(A_) + ")");
@@ -476,21 +495,7 @@ class Recognizer {
     const double a = (fw.pitch_diameter + fw.module * fg.teeth) / 2;
     const double error = std::abs(c.distance - a);
     if (angle >= kPi / 2 - A_ && error <= L_) {
-      const Eigen::Vector3d p_worm = w.axis.origin + c.s * w.axis.direction;
-      const Eigen::Vector3d p_wheel = g.axis.origin + c.t * g.axis.direction;
-      const Eigen::Vector3d n = (p_wheel - p_worm).normalized();
-      // The wheel's teeth at the contact move like a nut on the worm: for a right-hand worm
-      // turning positively they move along -u_worm (derivation in the README).
-      const double side = g.axis.direction.cross(n).dot(w.axis.direction);
-      const int hand = fw.hand == Hand::kRight ? 1 : -1;
-      Pair p;
-      p.type = PairType::kWormGear;
-      p.a = w.ref;
-      p.b = g.ref;
-      p.ratio = Rational(hand * (side > 0 ? 1 : -1) * fw.starts, fg.teeth);
-      const double lead_angle = std::atan(fw.starts * fw.module / fw.pitch_diameter);
-      p.self_locking = lead_angle < std::atan(assembly_.friction());
-      pairs_.push_back(p);
+      AddPair(PairType::kWormGear, w, g);
       return;
     }
     if (error >= fg.module) return;
@@ -529,13 +534,7 @@ class Recognizer {
     const double error = std::abs(c.distance - a);
     const bool square = to_axis >= kPi / 2 - A_ && to_normal >= kPi / 2 - A_;
     if (square && error <= L_) {
-      Pair p;
-      p.type = PairType::kRackPinion;
-      p.a = g.ref;
-      p.b = r.ref;
-      p.travel_per_revolution = -kPi * g.f->module * g.f->teeth *
-                                g.axis.direction.cross(r.normal_W).dot(r.axis.direction);
-      pairs_.push_back(p);
+      AddPair(PairType::kRackPinion, g, r);
     } else if (square && error < g.f->module) {
       Near("rack_pitch_line_distance", g, r,
            "pitch line at " + Mm(c.distance) + " from the pinion's axis, required " + Mm(a) +
@@ -575,6 +574,10 @@ class Recognizer {
 
   // ---- overrides and side effects ----
 
+  const WorldFeature& At(FeatureRef ref) const {
+    return features_[first_feature_[ref.part] + ref.feature];
+  }
+
   static bool SameFeatures(const Pair& p, FeatureRef f, FeatureRef g) {
     return (p.a == f && p.b == g) || (p.a == g && p.b == f);
   }
@@ -584,23 +587,16 @@ class Recognizer {
       std::erase_if(pairs_,
                     [&](const Pair& p) { return SameFeatures(p, o.features[0], o.features[1]); });
       if (!o.type) continue;
-      Pair p;
-      p.type = *o.type;
-      p.a = o.features[0];
-      p.b = o.features[1];
-      p.source = PairSource::kOverride;
-      p.dof = DegreesOfFreedom(p.type);
-      const Feature& fa = assembly_.feature(p.a);
-      const Feature& fb = assembly_.feature(p.b);
-      if (p.type == PairType::kGear && fa.teeth > 0 && fb.teeth > 0) {
-        p.ratio = (fa.internal || fb.internal) ? Rational(fa.teeth, fb.teeth)
-                                               : -Rational(fa.teeth, fb.teeth);
-      } else if (p.type == PairType::kWormGear && fb.teeth > 0) {
-        p.ratio = Rational(fa.starts, fb.teeth);
-      } else if (p.type == PairType::kScrew && fa.pitch > 0) {
-        p.travel_per_revolution = fa.starts * fa.pitch * (fa.hand == Hand::kRight ? 1.0 : -1.0);
+      const WorldFeature* a = &At(o.features[0]);
+      const WorldFeature* b = &At(o.features[1]);
+      // The convex feature, the worm or the pinion first, as for recognised pairs.
+      const auto kind_a = a->f->kind, kind_b = b->f->kind;
+      if ((IsConcave(kind_a) && IsConvex(kind_b)) || kind_b == FeatureKind::kWorm ||
+          kind_a == FeatureKind::kRack) {
+        std::swap(a, b);
       }
-      pairs_.push_back(p);
+      AddPair(*o.type, *a, *b);
+      pairs_.back().source = PairSource::kOverride;
     }
   }
 
@@ -686,7 +682,8 @@ class Recognizer {
 
   const Assembly& assembly_;
   const double L_, A_, near_L_, near_A_;
-  std::vector<WorldFeature> features_;
+  std::vector<WorldFeature> features_;      ///< in (part, feature) order
+  std::vector<std::size_t> first_feature_;  ///< per part: its first entry in features_
   std::vector<Pair> pairs_;
   std::vector<Diagnostic> diagnostics_;
   /// (thread, shaft) feature pairs whose reach boxes overlap: possible setscrew contacts.

@@ -110,8 +110,11 @@ TEST(AnalysisInvariance, ExamplesMeetTheirRecognitionExpectations) {
     SCOPED_TRACE(file.string());
     const Assembly assembly = ReadAssembly(file);
     const Analysis analysis = Analyze(assembly);
-    for (const ExpectationResult& r : CheckExpectations(assembly, analysis)) {
-      const Expectation::Kind kind = assembly.expectations()[std::stoi(r.pointer.substr(8))].kind;
+    const std::vector<ExpectationResult> results = CheckExpectations(assembly, analysis);
+    ASSERT_EQ(results.size(), assembly.expectations().size());
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      const ExpectationResult& r = results[i];
+      const Expectation::Kind kind = assembly.expectations()[i].kind;
       if (kind == Expectation::Kind::kPair || kind == Expectation::Kind::kSameSubassembly ||
           kind == Expectation::Kind::kDiagnostic) {
         EXPECT_TRUE(r.passed) << r.pointer << " " << r.what << ": " << r.detail;

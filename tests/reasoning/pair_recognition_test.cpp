@@ -511,6 +511,38 @@ TEST(PairRecognition, OverridesForceOrForbidPairs) {
       Only(Recognize(MakeAssembly(parts, {PairOverride{{hole, pin}, PairType::kFixed}})));
   EXPECT_EQ(glued.type, PairType::kFixed);
   EXPECT_EQ(glued.source, PairSource::kOverride);
+  EXPECT_EQ(glued.a, pin);  // the convex feature first, whatever the override's order
+}
+
+TEST(PairRecognition, ForcedCouplingsGetTheSameParametersAsRecognisedOnes) {
+  // Gears 2 mm too far apart to mesh, axes of opposite sense: forced into a gear pair, the
+  // ratio is what recognition gives for opposite axes.
+  const Feature g1 = Gear("t", 17, 1, V::Zero());
+  const Feature g2 = Gear("t", 31, 1, V(26, 0, 10), -V::UnitZ());
+  const Pair forced = Only(Recognize(
+      MakeAssembly({MakePart("g1", {g1}), MakePart("g2", {g2})},
+                   {PairOverride{{FeatureRef{0, 0}, FeatureRef{1, 0}}, PairType::kGear}})));
+  EXPECT_EQ(forced.source, PairSource::kOverride);
+  EXPECT_EQ(*forced.ratio, Rational(17, 31));
+  // A worm gear forced with the wheel named first: the worm becomes `a`, and the ratio's sign
+  // follows hand and side as for a recognised pair.
+  const Recognition natural = WormDrive(Hand::kRight, -25);
+  Feature worm = MakeFeature("worm", K::kWorm, V(-10, -25, 4), V::UnitX(), [](Feature& f) {
+    f.module = 1;
+    f.pitch_diameter = 10;
+    f.length = 20;
+  });
+  Feature wheel = MakeFeature("teeth", K::kWormWheel, V::Zero(), V::UnitZ(), [](Feature& f) {
+    f.teeth = 40;
+    f.module = 1;
+    f.length = 8;
+  });
+  const Pair worm_gear = Only(Recognize(
+      MakeAssembly({MakePart("worm", {worm}), MakePart("wheel", {wheel})},
+                   {PairOverride{{FeatureRef{1, 0}, FeatureRef{0, 0}}, PairType::kWormGear}})));
+  EXPECT_EQ(worm_gear.a, (FeatureRef{0, 0}));
+  EXPECT_EQ(*worm_gear.ratio, *Only(natural).ratio);
+  EXPECT_EQ(worm_gear.self_locking, Only(natural).self_locking);
 }
 
 TEST(PairRecognition, RigidMotionOfTheWholeAssemblyChangesNothing) {
