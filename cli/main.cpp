@@ -13,6 +13,7 @@
 #include "io/input_error.h"
 #include "kernel/assembly_check.h"
 #include "reasoning/analysis.h"
+#include "reasoning/drag.h"
 #include "reasoning/expectation_check.h"
 
 namespace {
@@ -56,6 +57,32 @@ int Analyze(const std::string& file, const std::string& json, const std::string&
   return kExitOk;
 }
 
+int Drag(const std::string& file, const std::string& part, const std::string& feature,
+         bool translate) {
+  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const auto index = assembly.FindPart(part);
+  if (!index) {
+    throw mechanist::InputError(file, "", 0, 0,
+                                "--part: expected a part id, found \"" + part + "\"");
+  }
+  mechanist::DragRequest request;
+  request.part = *index;
+  request.rotate = !translate;
+  if (!feature.empty()) {
+    const auto f = assembly.FindFeature(part + "/" + feature);
+    if (!f) {
+      throw mechanist::InputError(
+          file, "", 0, 0,
+          "--feature: expected a feature of part " + part + ", found \"" + feature + "\"");
+    }
+    request.feature = f->feature;
+  }
+  const mechanist::Analysis analysis = mechanist::Analyze(assembly);
+  const mechanist::DragResult result = mechanist::Drag(assembly, analysis, request);
+  mechanist::WriteDragReport(assembly, analysis, result, request.rotate, std::cout);
+  return result.motion.possible ? kExitOk : kExitFailures;
+}
+
 int Check(const std::string& file) {
   const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
   const auto results = mechanist::CheckExpectations(assembly, mechanist::Analyze(assembly));
@@ -93,6 +120,16 @@ int main(int argc, char** argv) {
       app.add_subcommand("check", "Evaluate the file's expect entries; exit 1 if any fails");
   check->add_option("FILE", file, "assembly file (.json)")->required();
 
+  std::string part, feature;
+  CLI::App* drag = app.add_subcommand(
+      "drag", "Turn or push one part: what moves with it, and which pair absorbs the motion");
+  drag->add_option("FILE", file, "assembly file (.json)")->required();
+  drag->add_option("--part", part, "the part to drag")->required();
+  drag->add_option("--feature", feature, "the feature whose axis to use (default: its first in a pair)");
+  bool rotate = false, translate = false;
+  CLI::Option* rotate_flag = drag->add_flag("--rotate", rotate, "turn about the axis (default)");
+  drag->add_flag("--translate", translate, "push along the axis")->excludes(rotate_flag);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -107,6 +144,7 @@ int main(int argc, char** argv) {
     if (*info) return Info(file);
     if (*analyze) return Analyze(file, json, dot);
     if (*check) return Check(file);
+    if (*drag) return Drag(file, part, feature, translate);
   } catch (const mechanist::InputError& e) {
     std::cerr << "mechanist: error: " << e.what() << "\n";
     return kExitUsage;

@@ -1,5 +1,6 @@
 #include "io/analysis_report.h"
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -29,6 +30,44 @@ std::string Dq(const std::string& s) {
   return q + "\"";
 }
 
+/// A world vector for reports: components below 1e-12 are 0, so that round-off never shows.
+std::vector<double> Clean(const Eigen::Vector3d& v) {
+  std::vector<double> c;
+  for (int i = 0; i < 3; ++i) c.push_back(std::abs(v(i)) < 1e-12 ? 0.0 : v(i));
+  return c;
+}
+
+std::string Vector(const Eigen::Vector3d& v) {
+  const std::vector<double> c = Clean(v);
+  return "(" + FormatNumber(c[0]) + ", " + FormatNumber(c[1]) + ", " + FormatNumber(c[2]) + ")";
+}
+
+std::string DrivenTitle(const Assembly& assembly, const DrivenMotion& m) {
+  if (!m.driver) return "all drivers at their rates";
+  const Driver& d = assembly.drivers()[*m.driver];
+  return "driver " + d.id + " (" + assembly.FeatureName(d.feature) + " " +
+         (d.motion == Driver::Motion::kRotation ? "rotation" : "translation") + ", per unit rate)";
+}
+
+std::string Describe(const Assembly& assembly, const PartMotion& m) {
+  const std::string axis =
+      (m.axis_feature ? assembly.FeatureName(*m.axis_feature) + " " : std::string("")) +
+      Vector(m.axis_W);
+  switch (m.kind) {
+    case MotionKind::kRotation:
+      return "turns " + m.rotation.ToString() + " rev about " + axis + " through " +
+             Vector(m.point_W);
+    case MotionKind::kScrew:
+      return "turns " + m.rotation.ToString() + " rev about " + axis + " and advances " +
+             m.translation.ToString() + " along it";
+    case MotionKind::kTranslation:
+      return "slides " + m.translation.ToString() + " along " + axis;
+    case MotionKind::kNone:
+      break;
+  }
+  return "still";
+}
+
 }  // namespace
 
 void WriteAnalysisSummary(const Assembly& assembly, const Analysis& analysis, std::ostream& out) {
@@ -49,6 +88,26 @@ void WriteAnalysisSummary(const Assembly& assembly, const Analysis& analysis, st
     if (p.via) out << " by " << assembly.FeatureName(*p.via);
     if (p.source != PairSource::kRecognised) out << ")";
     out << "\n";
+  }
+  const Mobility& mobility = analysis.motion.mobility;
+  out << "mobility: " << mobility.dof << " (" << mobility.redundant << " redundant constraints, "
+      << mobility.free_motions.size() << " free motions)\n";
+  for (const DrivenMotion& m : analysis.motion.driven) {
+    if (!m.driver && analysis.motion.driven.size() == 2) break;  // the same as the only driver
+    out << DrivenTitle(assembly, m) << ":\n";
+    if (!m.possible) {
+      out << "  cannot run: " << m.reason << "\n";
+      continue;
+    }
+    std::size_t still = 0;
+    for (std::size_t p = 0; p < m.parts.size(); ++p) {
+      if (m.parts[p].kind == MotionKind::kNone) {
+        ++still;
+        continue;
+      }
+      out << "  " << assembly.part(p).id << " " << Describe(assembly, m.parts[p]) << "\n";
+    }
+    out << "  " << still << " parts still\n";
   }
   out << "diagnostics: " << analysis.diagnostics.size() << "\n";
   for (const Diagnostic& d : analysis.diagnostics) {
@@ -92,6 +151,61 @@ std::string AnalysisJson(const Assembly& assembly, const Analysis& analysis) {
     groups.push_back({{"id", "S" + std::to_string(i + 1)}, {"parts", parts}, {"ground", s.ground}});
   }
   report["subassemblies"] = std::move(groups);
+
+  const Mobility& mobility = analysis.motion.mobility;
+  Json redundant = Json::array();
+  for (const RedundantConstraint& r : mobility.redundant_pairs) {
+    redundant.push_back({{"pair", "P" + std::to_string(r.pair + 1)}, {"count", r.count}});
+  }
+  Json free = Json::array();
+  for (const FreeMotion& f : mobility.free_motions) {
+    Json parts = Json::array();
+    for (std::size_t p : f.parts) parts.push_back(assembly.part(p).id);
+    free.push_back({{"part", assembly.part(f.part).id},
+                    {"pair", f.pair ? Json("P" + std::to_string(*f.pair + 1)) : Json(nullptr)},
+                    {"freedom", f.freedom},
+                    {"parts", parts}});
+  }
+  Json freedoms = Json::array();
+  for (std::size_t p = 0; p < mobility.part_freedoms.size(); ++p) {
+    if (mobility.part_freedoms[p] > 0) {
+      freedoms.push_back({{"part", assembly.part(p).id}, {"freedoms", mobility.part_freedoms[p]}});
+    }
+  }
+  report["mobility"] = {{"dof", mobility.dof},
+                        {"redundant", mobility.redundant},
+                        {"redundant_constraints", redundant},
+                        {"free_motions", free},
+                        {"part_freedoms", freedoms}};
+  Json motion = Json::array();
+  for (const DrivenMotion& m : analysis.motion.driven) {
+    Json parts = Json::array();
+    for (std::size_t p = 0; m.possible && p < m.parts.size(); ++p) {
+      const PartMotion& pm = m.parts[p];
+      Json j = {{"part", assembly.part(p).id}, {"kind", ToString(pm.kind)}};
+      if (pm.kind != MotionKind::kNone) {
+        const bool turns = pm.kind != MotionKind::kTranslation;
+        const ExactReal& ratio = turns ? pm.rotation : pm.translation;
+        j["axis"] = Clean(pm.axis_W);
+        if (turns) j["point"] = Clean(pm.point_W);
+        j["axis_feature"] =
+            pm.axis_feature ? Json(assembly.FeatureName(*pm.axis_feature)) : Json(nullptr);
+        j["ratio"] = ratio.ToString();
+        j["ratio_value"] = ratio.value();
+        j["exact"] = ratio.is_exact();
+        if (pm.kind == MotionKind::kScrew) {
+          j["translation"] = pm.translation.ToString();
+          j["translation_value"] = pm.translation.value();
+        }
+      }
+      parts.push_back(std::move(j));
+    }
+    motion.push_back({{"driver", m.driver ? Json(assembly.drivers()[*m.driver].id) : Json(nullptr)},
+                      {"possible", m.possible},
+                      {"reason", m.reason},
+                      {"parts", parts}});
+  }
+  report["motion"] = std::move(motion);
   Json diagnostics = Json::array();
   for (const Diagnostic& d : analysis.diagnostics) {
     diagnostics.push_back({{"severity", ToString(d.severity)},
@@ -124,6 +238,30 @@ std::string AnalysisDot(const Assembly& assembly, const Analysis& analysis) {
   }
   dot << "}\n";
   return dot.str();
+}
+
+void WriteDragReport(const Assembly& assembly, const Analysis& analysis, const DragResult& drag,
+                     bool rotate, std::ostream& out) {
+  auto pair_line = [&](std::size_t i) {
+    const Pair& p = analysis.pairs[i];
+    return "P" + std::to_string(i + 1) + " " + std::string(ToString(p.type)) + ": " +
+           assembly.FeatureName(p.a) + " + " + assembly.FeatureName(p.b);
+  };
+  out << "drag " << assembly.part(drag.axis.part).id << (rotate ? " about " : " along ")
+      << assembly.FeatureName(drag.axis) << ": allowable motion " << drag.part_freedoms
+      << (drag.part_freedoms == 1 ? " freedom" : " freedoms") << "\n";
+  if (!drag.motion.possible) {
+    out << "blocked: " << drag.motion.reason << "\nheld by:\n";
+    for (std::size_t i : drag.holding_pairs) out << "  " << pair_line(i) << "\n";
+    return;
+  }
+  out << "moves:\n";
+  for (std::size_t p = 0; p < drag.motion.parts.size(); ++p) {
+    if (drag.motion.parts[p].kind == MotionKind::kNone) continue;
+    out << "  " << assembly.part(p).id << " " << Describe(assembly, drag.motion.parts[p]) << "\n";
+  }
+  out << "absorbed by:\n";
+  for (std::size_t i : drag.absorbing_pairs) out << "  " << pair_line(i) << "\n";
 }
 
 void WriteCheckResults(const std::vector<ExpectationResult>& results, std::ostream& out) {

@@ -17,9 +17,12 @@ Analysis Analyze(const Assembly& assembly) {
   for (std::size_t s = 0; s < analysis.subassemblies.size(); ++s) {
     for (std::size_t part : analysis.subassemblies[s].parts) analysis.subassembly_of[part] = s;
   }
+  analysis.motion = AnalyzeMotion(assembly, analysis.pairs, analysis.subassemblies,
+                                  analysis.subassembly_of);
   analysis.diagnostics = CheckAssembly(assembly);
-  analysis.diagnostics.insert(analysis.diagnostics.end(), recognition.diagnostics.begin(),
-                              recognition.diagnostics.end());
+  for (const auto* found : {&recognition.diagnostics, &analysis.motion.diagnostics}) {
+    analysis.diagnostics.insert(analysis.diagnostics.end(), found->begin(), found->end());
+  }
   std::sort(analysis.diagnostics.begin(), analysis.diagnostics.end(), DiagnosticLess);
   return analysis;
 }

@@ -5,6 +5,7 @@
 
 #include "kernel/assembly.h"
 #include "kernel/diagnostic.h"
+#include "reasoning/motion.h"
 #include "reasoning/pair.h"
 #include "reasoning/pair_graph.h"
 
@@ -15,11 +16,15 @@ struct Analysis {
   std::vector<Pair> pairs;
   std::vector<Subassembly> subassemblies;
   std::vector<std::size_t> subassembly_of;  ///< per part: index into `subassemblies`
-  /// Description checks (meshes, features) and recognition's near misses, in DiagnosticLess order.
+  /// Mobility and the drivers' motion.
+  MotionAnalysis motion;
+  /// Description checks (meshes, features), recognition's near misses and the motion
+  /// analysis' findings, in DiagnosticLess order.
   std::vector<Diagnostic> diagnostics;
 };
 
-/// Recognises the pairs at the file's poses and groups the parts into subassemblies.
+/// Recognises the pairs at the file's poses, groups the parts into subassemblies and analyses
+/// the motion.
 Analysis Analyze(const Assembly& assembly);
 
 }  // namespace mechanist

@@ -1,6 +1,9 @@
 #include "reasoning/expectation_check.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include "kernel/number_format.h"
 
 namespace mechanist {
 namespace {
@@ -78,27 +81,68 @@ ExpectationResult CheckDiagnostic(const Assembly& assembly, const Analysis& anal
   return r;
 }
 
-ExpectationResult NotBuilt(const Assembly& assembly, const Expectation& e) {
+ExpectationResult CheckRatio(const Assembly& assembly, const Analysis& analysis,
+                             const Expectation& e) {
   ExpectationResult r;
-  switch (e.kind) {
-    case Expectation::Kind::kRatio:
-      r.what = "ratio of " + assembly.part(*e.part).id +
-               (e.feature ? "/" + assembly.feature(*e.feature).id : std::string("")) + " is " +
-               e.ratio.text;
-      break;
-    case Expectation::Kind::kMoves:
-      r.what = assembly.part(*e.part).id + (e.flag ? " moves" : " does not move");
-      break;
-    case Expectation::Kind::kMobility:
-      r.what = "mobility " + std::to_string(e.mobility);
-      break;
-    default:
-      r.what = std::string("assemblable ") + (e.flag ? "true" : "false");
-      break;
+  const std::size_t part = *e.part;
+  r.what = "ratio of " + assembly.part(part).id +
+           (e.feature ? "/" + assembly.feature(*e.feature).id : std::string("")) + " is " +
+           e.ratio.text;
+  const DrivenMotion* motion = analysis.motion.ForExpectations();
+  if (!motion) {
+    r.detail = "the file has no drivers";
+    return r;
   }
-  r.detail = e.kind == Expectation::Kind::kAssemblable
-                 ? "not evaluated: this build has no assemblability check yet"
-                 : "not evaluated: this build has no motion analysis yet";
+  if (!motion->possible) {
+    r.detail = motion->reason;
+    return r;
+  }
+  const PartMotion& m = motion->parts[part];
+  const bool turns = m.kind == MotionKind::kRotation || m.kind == MotionKind::kScrew;
+  const ExactReal& found =
+      e.feature ? motion->features[part][e.feature->feature].Ratio(turns)
+                : (turns ? m.rotation : m.translation);
+  if (e.ratio.exact) {
+    const Rational expected(e.ratio.numerator, e.ratio.denominator);
+    r.passed = found.is_exact() && *found.exact() == expected;
+    r.detail = "found " + found.ToString() + (found.is_exact() ? "" : " (not exact)");
+  } else {
+    r.passed = std::abs(found.value() - e.ratio.value) <=
+               std::max(1e-9 * std::abs(e.ratio.value), 1e-12);
+    r.detail = "found " + FormatNumber(found.value(), 12);
+  }
+  return r;
+}
+
+ExpectationResult CheckMoves(const Assembly& assembly, const Analysis& analysis,
+                             const Expectation& e) {
+  ExpectationResult r;
+  const std::size_t part = *e.part;
+  r.what = assembly.part(part).id + (e.flag ? " moves" : " does not move");
+  std::string moved_by;
+  for (const DrivenMotion& m : analysis.motion.driven) {
+    if (!m.driver || !m.possible || m.parts[part].kind == MotionKind::kNone) continue;
+    moved_by += (moved_by.empty() ? "" : ", ") + assembly.drivers()[*m.driver].id;
+  }
+  r.passed = moved_by.empty() != e.flag;
+  r.detail = moved_by.empty() ? "no driver moves it" : "moved by driver " + moved_by;
+  return r;
+}
+
+ExpectationResult CheckMobility(const Analysis& analysis, const Expectation& e) {
+  ExpectationResult r;
+  r.what = "mobility " + std::to_string(e.mobility);
+  const Mobility& m = analysis.motion.mobility;
+  r.passed = m.dof == e.mobility;
+  r.detail = "found " + std::to_string(m.dof) + " (" + std::to_string(m.redundant) +
+             " redundant constraints)";
+  return r;
+}
+
+ExpectationResult NotBuilt(const Expectation& e) {
+  ExpectationResult r;
+  r.what = std::string("assemblable ") + (e.flag ? "true" : "false");
+  r.detail = "not evaluated: this build has no assemblability check yet";
   return r;
 }
 
@@ -119,8 +163,17 @@ std::vector<ExpectationResult> CheckExpectations(const Assembly& assembly,
       case Expectation::Kind::kDiagnostic:
         r = CheckDiagnostic(assembly, analysis, e);
         break;
-      default:
-        r = NotBuilt(assembly, e);
+      case Expectation::Kind::kRatio:
+        r = CheckRatio(assembly, analysis, e);
+        break;
+      case Expectation::Kind::kMoves:
+        r = CheckMoves(assembly, analysis, e);
+        break;
+      case Expectation::Kind::kMobility:
+        r = CheckMobility(analysis, e);
+        break;
+      case Expectation::Kind::kAssemblable:
+        r = NotBuilt(e);
         break;
     }
     r.pointer = e.pointer;

@@ -19,8 +19,10 @@ struct ExpectationResult {
 /// Evaluates the file's expectations against `analysis`, in file order. Evaluated: `pair`
 /// (either feature order; with `type`, the pair of those features must have it),
 /// `same_subassembly`, `diagnostic` (a diagnostic whose code equals the text or whose message
-/// contains it, concerning every listed part). `ratio`, `moves`, `mobility` and `assemblable`
-/// need analyses this build does not have: they fail and say so.
+/// contains it, concerning every listed part), `ratio` (exactly, or within a relative 1e-9
+/// for a decimal; of the only driver at unit rate, or all drivers at their rates), `moves` (for
+/// any driver alone), `mobility`. `assemblable` needs the assemblability check this build does
+/// not have: it fails and says so.
 std::vector<ExpectationResult> CheckExpectations(const Assembly& assembly,
                                                  const Analysis& analysis);
 

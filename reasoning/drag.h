@@ -1,0 +1,40 @@
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "kernel/assembly.h"
+#include "reasoning/analysis.h"
+#include "reasoning/motion.h"
+
+namespace mechanist {
+
+/// The seeds' forward and backward propagation: take hold of one part and turn it about, or
+/// push it along, one of its feature axes.
+struct DragRequest {
+  std::size_t part = 0;
+  /// The feature whose axis is used; empty: the part's first feature in a pair with another
+  /// subassembly, else its first feature.
+  std::optional<std::size_t> feature;
+  bool rotate = true;
+};
+
+/// What a drag moves.
+struct DragResult {
+  FeatureRef axis;      ///< the feature whose axis the part was dragged about or along
+  DrivenMotion motion;  ///< per part; `possible` false when the pairs forbid the motion
+  /// Pairs across which the motion stops: one side moves, the other stays (the pair that
+  /// absorbs the motion), ascending.
+  std::vector<std::size_t> absorbing_pairs;
+  /// When the motion is impossible: the dragged part's pairs with other subassemblies, which
+  /// hold it, ascending.
+  std::vector<std::size_t> holding_pairs;
+  int part_freedoms = 0;  ///< dimension of the dragged part's allowable motion
+};
+
+/// Drags a part (at unit rate) with every other freedom held still. Throws
+/// std::invalid_argument when the part has no feature to take the axis from.
+DragResult Drag(const Assembly& assembly, const Analysis& analysis, const DragRequest& request);
+
+}  // namespace mechanist

@@ -1,0 +1,478 @@
+#include "reasoning/kinematic_model.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <deque>
+
+#include "kernel/line_geometry.h"
+
+namespace mechanist {
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
+// Carriers are looked for among a body's joints only up to this many: a frame that holds
+// thousands of shafts is found through the shafts' own joints instead.
+constexpr std::size_t kCarrierScanLimit = 64;
+
+bool IsLowerPair(PairType t) {
+  switch (t) {
+    case PairType::kRevolute:
+    case PairType::kCylindrical:
+    case PairType::kScrew:
+    case PairType::kPrismatic:
+    case PairType::kPinSlot:
+    case PairType::kSpherical:
+    case PairType::kPlanar:
+      return true;
+    default:
+      return false;
+  }
+}
+
+/// Unit vectors e1, e2 completing `u` to a right-handed frame, chosen from the world axis least
+/// aligned with u so that the choice is deterministic.
+void Complete(const Eigen::Vector3d& u, Eigen::Vector3d& e1, Eigen::Vector3d& e2) {
+  Eigen::Vector3d w = Eigen::Vector3d::UnitX();
+  if (std::abs(u.y()) < std::abs(u(0)) && std::abs(u.y()) <= std::abs(u.z())) {
+    w = Eigen::Vector3d::UnitY();
+  } else if (std::abs(u.z()) < std::abs(u(0))) {
+    w = Eigen::Vector3d::UnitZ();
+  }
+  e1 = u.cross(w).normalized();
+  e2 = u.cross(e1);
+}
+
+void Append(LinearSystem::Row& to, const LinearSystem::Row& from, const ExactReal& scale) {
+  for (const LinearSystem::Term& t : from) to.push_back({t.variable, scale * t.coefficient});
+}
+
+}  // namespace
+
+KinematicModel::KinematicModel(const Assembly& assembly, const std::vector<Pair>& pairs,
+                               const std::vector<Subassembly>& subassemblies,
+                               const std::vector<std::size_t>& subassembly_of)
+    : assembly_(assembly),
+      cos_tol_(std::cos(assembly.tolerance().angle)),
+      sin_tol_(std::sin(assembly.tolerance().angle)),
+      length_tol_(assembly.tolerance().length),
+      body_of_part_(subassembly_of) {
+  const bool has_ground = !subassemblies.empty() && subassemblies.front().ground;
+  const std::size_t bodies = subassemblies.size() + (has_ground ? 0 : 1);
+  ground_ = has_ground ? 0 : subassemblies.size();
+  parent_joint_.assign(bodies, std::nullopt);
+  BuildJoints(pairs);
+  BuildTree();
+  joints_of_.assign(bodies, {});
+  for (std::size_t k = 0; k < joints_.size(); ++k) {
+    if (!joints_[k].pair) continue;
+    joints_of_[joints_[k].body_a].push_back(k);
+    joints_of_[joints_[k].body_b].push_back(k);
+  }
+  BuildRows(pairs);
+}
+
+AxisSegment KinematicModel::WorldAxis(FeatureRef f) const {
+  return assembly_.feature(f).WorldAxis(assembly_.part(f.part).X_WP);
+}
+
+ExactReal KinematicModel::Dot(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
+  const double d = a.dot(b);
+  if (d >= cos_tol_) return Rational(1);
+  if (d <= -cos_tol_) return Rational(-1);
+  if (std::abs(d) <= sin_tol_) return Rational(0);
+  return ExactReal::Approximate(d);
+}
+
+void KinematicModel::BuildJoints(const std::vector<Pair>& pairs) {
+  std::vector<std::vector<std::size_t>> joints_of(parent_joint_.size());
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const Pair& p = pairs[i];
+    if (!IsLowerPair(p.type)) continue;
+    Joint j;
+    j.pair = i;
+    j.type = p.type;
+    j.body_a = body_of_part_[p.a.part];
+    j.body_b = body_of_part_[p.b.part];
+    if (j.body_a == j.body_b) continue;
+    const AxisSegment a = WorldAxis(p.a);
+    const AxisSegment b = WorldAxis(p.b);
+    j.point_W = a.origin;
+    j.axis_W = a.direction;
+    if (p.type == PairType::kPrismatic) j.axis_W = b.direction.dot(a.direction) < 0 ? -b.direction
+                                                                                  : b.direction;
+    if (p.type == PairType::kPinSlot) j.slide_W = b.direction;
+    if (p.type == PairType::kScrew) {
+      j.lead = ExactReal::FromDecimal(p.travel_per_revolution.value_or(0.0));
+    }
+    // A shaft in two coaxial bearings of one part is one joint, not a redundant pair.
+    bool duplicate = false;
+    for (std::size_t k : joints_of[j.body_a]) {
+      const Joint& o = joints_[k];
+      const bool same_bodies = (o.body_a == j.body_a && o.body_b == j.body_b) ||
+                               (o.body_a == j.body_b && o.body_b == j.body_a);
+      if (!same_bodies || o.type != j.type) continue;
+      if (std::abs(o.axis_W.dot(j.axis_W)) < cos_tol_) continue;
+      if (p.type != PairType::kPrismatic &&
+          DistanceToLine(j.point_W, o.point_W, o.axis_W) > length_tol_) {
+        continue;
+      }
+      if (p.type == PairType::kScrew) continue;  // two threads on one axis: leads must agree
+      duplicate = true;
+      break;
+    }
+    if (duplicate) continue;
+    joints_of[j.body_a].push_back(joints_.size());
+    joints_of[j.body_b].push_back(joints_.size());
+    joints_.push_back(j);
+  }
+}
+
+void KinematicModel::AddFreedoms(Joint& j) {
+  auto add = [&](Freedom::Kind kind, const Eigen::Vector3d& point, const Eigen::Vector3d& dir) {
+    Freedom f;
+    f.kind = kind;
+    f.point_W = point;
+    f.direction_W = dir;
+    f.lead = kind == Freedom::Kind::kScrew ? j.lead : ExactReal();
+    f.joint = static_cast<std::size_t>(&j - joints_.data());
+    j.freedoms.push_back(freedoms_.size());
+    freedoms_.push_back(f);
+  };
+  using K = Freedom::Kind;
+  const Eigen::Vector3d& p = j.point_W;
+  const Eigen::Vector3d& u = j.axis_W;
+  Eigen::Vector3d e1, e2;
+  Complete(u, e1, e2);
+  if (!j.pair) {  // floating
+    for (int i = 0; i < 3; ++i) add(K::kRotation, p, Eigen::Vector3d::Unit(i));
+    for (int i = 0; i < 3; ++i) add(K::kTranslation, p, Eigen::Vector3d::Unit(i));
+    return;
+  }
+  switch (j.type) {
+    case PairType::kRevolute:
+      add(K::kRotation, p, u);
+      break;
+    case PairType::kCylindrical:
+      add(K::kRotation, p, u);
+      add(K::kTranslation, p, u);
+      break;
+    case PairType::kScrew:
+      add(K::kScrew, p, u);
+      break;
+    case PairType::kPrismatic:
+      add(K::kTranslation, p, u);
+      break;
+    case PairType::kPinSlot:
+      add(K::kRotation, p, u);
+      add(K::kTranslation, p, j.slide_W);
+      break;
+    case PairType::kSpherical:
+      for (int i = 0; i < 3; ++i) add(K::kRotation, p, Eigen::Vector3d::Unit(i));
+      break;
+    case PairType::kPlanar:
+      add(K::kRotation, p, u);
+      add(K::kTranslation, p, e1);
+      add(K::kTranslation, p, e2);
+      break;
+    default:
+      break;
+  }
+}
+
+void KinematicModel::BuildTree() {
+  const std::size_t bodies = parent_joint_.size();
+  std::vector<std::vector<std::size_t>> adjacent(bodies);
+  for (std::size_t k = 0; k < joints_.size(); ++k) {
+    adjacent[joints_[k].body_a].push_back(k);
+    adjacent[joints_[k].body_b].push_back(k);
+  }
+  std::vector<bool> seen(bodies, false);
+  joints_.reserve(joints_.size() + bodies);  // floating joints: AddFreedoms keeps addresses
+  auto grow = [&](std::size_t root) {
+    std::deque<std::size_t> queue{root};
+    seen[root] = true;
+    while (!queue.empty()) {
+      const std::size_t body = queue.front();
+      queue.pop_front();
+      order_.push_back(body);
+      for (std::size_t k : adjacent[body]) {
+        Joint& j = joints_[k];
+        const std::size_t other = j.body_a == body ? j.body_b : j.body_a;
+        if (seen[other]) continue;
+        seen[other] = true;
+        j.in_tree = true;
+        parent_joint_[other] = k;
+        AddFreedoms(j);
+        queue.push_back(other);
+      }
+    }
+  };
+  grow(ground_);
+  for (std::size_t body = 0; body < bodies; ++body) {
+    if (seen[body]) continue;
+    // Nothing holds this body to the ground: it floats, six freedoms about its first part.
+    Joint j;
+    j.body_a = body;
+    j.body_b = ground_;
+    j.in_tree = true;
+    for (std::size_t part = 0; part < body_of_part_.size(); ++part) {
+      if (body_of_part_[part] == body) {
+        j.point_W = assembly_.part(part).X_WP.translation();
+        break;
+      }
+    }
+    joints_.push_back(j);
+    parent_joint_[body] = joints_.size() - 1;
+    AddFreedoms(joints_.back());
+    grow(body);
+  }
+}
+
+template <typename Measure>
+void KinematicModel::AddPath(std::size_t body, double sign, const Measure& measure,
+                             LinearSystem::Row& terms) const {
+  while (parent_joint_[body]) {
+    const Joint& j = joints_[*parent_joint_[body]];
+    const bool forward = body == j.body_a;  // twist(a) = twist(b) + freedoms
+    const ExactReal s = Rational(forward == (sign > 0) ? 1 : -1);
+    for (std::size_t f : j.freedoms) terms.push_back({f, s * measure(freedoms_[f])});
+    body = forward ? j.body_b : j.body_a;
+  }
+}
+
+ExactReal KinematicModel::AngularOf(const Freedom& f, const Eigen::Vector3d& d) const {
+  return f.kind == Freedom::Kind::kTranslation ? ExactReal() : Dot(f.direction_W, d);
+}
+
+ExactReal KinematicModel::LinearOf(const Freedom& f, const Eigen::Vector3d& p,
+                                   const Eigen::Vector3d& d) const {
+  if (f.kind == Freedom::Kind::kTranslation) return Dot(f.direction_W, d);
+  // The velocity of p along d from one revolution per second about the line (q, u):
+  // 2 pi (u x (p - q)) . d, exactly zero when p is on the line or d is along it.
+  const Eigen::Vector3d& u = f.direction_W;
+  const Eigen::Vector3d r = p - f.point_W;
+  ExactReal lever;
+  const double value = u.cross(r).dot(d);
+  if (std::abs(u.dot(d)) < cos_tol_ && (r - r.dot(u) * u).norm() > length_tol_ &&
+      std::abs(value) > length_tol_) {
+    lever = ExactReal::Approximate(kTwoPi * value);
+  }
+  if (f.kind == Freedom::Kind::kScrew) lever += f.lead * Dot(u, d);
+  return lever;
+}
+
+LinearSystem::Row KinematicModel::Angular(std::size_t a, std::size_t b,
+                                          const Eigen::Vector3d& d) const {
+  LinearSystem::Row terms;
+  auto measure = [&](const Freedom& f) { return AngularOf(f, d); };
+  AddPath(a, 1, measure, terms);
+  AddPath(b, -1, measure, terms);
+  return terms;
+}
+
+LinearSystem::Row KinematicModel::Linear(std::size_t a, std::size_t b, const Eigen::Vector3d& p,
+                                         const Eigen::Vector3d& d) const {
+  LinearSystem::Row terms;
+  auto measure = [&](const Freedom& f) { return LinearOf(f, p, d); };
+  AddPath(a, 1, measure, terms);
+  AddPath(b, -1, measure, terms);
+  return terms;
+}
+
+std::vector<LinearSystem::Row> KinematicModel::JointConstraints(const Joint& j, std::size_t a,
+                                                                std::size_t b) const {
+  const Eigen::Vector3d& p = j.point_W;
+  const Eigen::Vector3d& u = j.axis_W;
+  Eigen::Vector3d e1, e2;
+  Complete(u, e1, e2);
+  std::vector<LinearSystem::Row> rows;
+  auto angular = [&](const Eigen::Vector3d& d) { rows.push_back(Angular(a, b, d)); };
+  auto linear = [&](const Eigen::Vector3d& d) { rows.push_back(Linear(a, b, p, d)); };
+  switch (j.type) {
+    case PairType::kRevolute:
+      angular(e1), angular(e2), linear(e1), linear(e2), linear(u);
+      break;
+    case PairType::kCylindrical:
+      angular(e1), angular(e2), linear(e1), linear(e2);
+      break;
+    case PairType::kScrew: {
+      angular(e1), angular(e2), linear(e1), linear(e2);
+      LinearSystem::Row advance = Linear(a, b, p, u);
+      Append(advance, Angular(a, b, u), -j.lead);
+      rows.push_back(std::move(advance));
+      break;
+    }
+    case PairType::kPrismatic:
+      angular(u), angular(e1), angular(e2), linear(e1), linear(e2);
+      break;
+    case PairType::kPinSlot: {
+      const Eigen::Vector3d m = u.cross(j.slide_W).normalized();
+      angular(j.slide_W), angular(m), linear(u), linear(m);
+      break;
+    }
+    case PairType::kSpherical:
+      for (int i = 0; i < 3; ++i) linear(Eigen::Vector3d::Unit(i));
+      break;
+    case PairType::kPlanar:
+      angular(e1), angular(e2), linear(u);
+      break;
+    default:
+      break;
+  }
+  return rows;
+}
+
+bool KinematicModel::Carries(std::size_t body, FeatureRef f) const {
+  if (body == body_of_part_[f.part]) return true;
+  const AxisSegment axis = WorldAxis(f);
+  const bool slides = assembly_.feature(f).kind == FeatureKind::kRack;
+  auto carried_by = [&](const Joint& j) {
+    if (std::abs(j.axis_W.dot(axis.direction)) < cos_tol_) return false;
+    if (slides) return j.type == PairType::kPrismatic;
+    if (j.type != PairType::kRevolute && j.type != PairType::kCylindrical &&
+        j.type != PairType::kScrew && j.type != PairType::kPinSlot) {
+      return false;
+    }
+    return DistanceToLine(j.point_W, axis.origin, axis.direction) <= length_tol_;
+  };
+  const std::vector<std::size_t>& own = joints_of_[body];
+  for (std::size_t i = 0; i < own.size() && i < kCarrierScanLimit; ++i) {
+    if (carried_by(joints_[own[i]])) return true;
+  }
+  return false;
+}
+
+std::optional<std::size_t> KinematicModel::CommonCarrier(FeatureRef f, FeatureRef g) const {
+  std::vector<std::size_t> candidates{ground_, body_of_part_[f.part], body_of_part_[g.part]};
+  for (std::size_t own : {body_of_part_[f.part], body_of_part_[g.part]}) {
+    const std::vector<std::size_t>& js = joints_of_[own];
+    for (std::size_t i = 0; i < js.size() && i < kCarrierScanLimit; ++i) {
+      const Joint& j = joints_[js[i]];
+      candidates.push_back(j.body_a == own ? j.body_b : j.body_a);
+    }
+  }
+  for (std::size_t c : candidates) {
+    if (Carries(c, f) && Carries(c, g)) return c;
+  }
+  return std::nullopt;
+}
+
+void KinematicModel::BuildRows(const std::vector<Pair>& pairs) {
+  std::vector<const Joint*> off_tree(pairs.size(), nullptr);
+  for (const Joint& j : joints_) {
+    if (j.pair && !j.in_tree) off_tree[*j.pair] = &j;
+  }
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const Pair& p = pairs[i];
+    if (off_tree[i]) {
+      for (auto& row : JointConstraints(*off_tree[i], off_tree[i]->body_a, off_tree[i]->body_b)) {
+        rows_.push_back({std::move(row), i});
+      }
+      continue;
+    }
+    const bool gear = p.type == PairType::kGear || p.type == PairType::kWormGear;
+    const bool rack = p.type == PairType::kRackPinion;
+    if ((!gear || !p.ratio) && (!rack || !p.travel_per_revolution)) continue;
+    const std::size_t A = body_of_part_[p.a.part];
+    const std::size_t B = body_of_part_[p.b.part];
+    if (A == B) continue;
+    const AxisSegment a = WorldAxis(p.a);
+    const AxisSegment b = WorldAxis(p.b);
+    if (const auto C = CommonCarrier(p.a, p.b)) {
+      // Willis: rates relative to the carrier are in the pair's exact ratio.
+      LinearSystem::Row row = rack ? Linear(B, *C, b.origin, b.direction)
+                                   : Angular(B, *C, b.direction);
+      const ExactReal ratio = rack ? ExactReal::Approximate(*p.travel_per_revolution)
+                                   : ExactReal(*p.ratio);
+      Append(row, Angular(A, *C, a.direction), -ratio);
+      rows_.push_back({std::move(row), i});
+      continue;
+    }
+    if (p.type == PairType::kWormGear) {
+      diagnostics_.push_back(
+          {Severity::kWarning,
+           "coupling_without_carrier",
+           "worm gear " + assembly_.FeatureName(p.a) + " + " + assembly_.FeatureName(p.b) +
+               ": no part carries both axes, so the motion analysis leaves this coupling out",
+           {assembly_.part(p.a.part).id, assembly_.part(p.b.part).id},
+           {assembly_.FeatureName(p.a), assembly_.FeatureName(p.b)}});
+      continue;
+    }
+    // No common carrier: the pitch points of both members move together along the tangent.
+    const Feature& fa = assembly_.feature(p.a);
+    const double r = fa.module * fa.teeth / 2.0;
+    Eigen::Vector3d n, tangent;
+    if (rack) {
+      const Eigen::Vector3d normal_W =
+          assembly_.part(p.b.part).X_WP.RotateDirection(assembly_.feature(p.b).normal);
+      n = -normal_W;
+      tangent = b.direction;
+    } else {
+      const LineLineClosest c = ClosestPointsOfLines(a.origin, a.direction, b.origin, b.direction);
+      n = ((b.origin + c.t * b.direction) - (a.origin + c.s * a.direction)).normalized();
+      // A pinion inside a ring touches it on the side away from the ring's centre.
+      if (assembly_.feature(p.b).internal) n = -n;
+      tangent = a.direction.cross(n);
+    }
+    rows_.push_back({Linear(A, B, a.origin + r * n, tangent), i});
+  }
+}
+
+namespace {
+
+/// The twist of one joint's freedoms at their rates: (rev/s; velocity of the world origin).
+Eigen::Matrix<double, 6, 1> JointTwist(const std::vector<Freedom>& freedoms, const Joint& j,
+                                       const std::function<double(std::size_t)>& rate) {
+  Eigen::Matrix<double, 6, 1> twist = Eigen::Matrix<double, 6, 1>::Zero();
+  for (std::size_t k : j.freedoms) {
+    const Freedom& f = freedoms[k];
+    const double q = rate(k);
+    if (q == 0.0) continue;
+    if (f.kind == Freedom::Kind::kTranslation) {
+      twist.tail<3>() += q * f.direction_W;
+      continue;
+    }
+    twist.head<3>() += q * f.direction_W;
+    twist.tail<3>() += q * kTwoPi * f.point_W.cross(f.direction_W);
+    if (f.kind == Freedom::Kind::kScrew) twist.tail<3>() += q * f.lead.value() * f.direction_W;
+  }
+  return twist;
+}
+
+}  // namespace
+
+void KinematicModel::Twists(const std::vector<ExactReal>& x, std::vector<Eigen::Vector3d>& omega_W,
+                            std::vector<Eigen::Vector3d>& v_WO) const {
+  omega_W.assign(body_count(), Eigen::Vector3d::Zero());
+  v_WO.assign(body_count(), Eigen::Vector3d::Zero());
+  const auto rate = [&](std::size_t k) { return x[k].value(); };
+  for (std::size_t body : order_) {
+    if (!parent_joint_[body]) continue;
+    const Joint& j = joints_[*parent_joint_[body]];
+    const bool forward = body == j.body_a;
+    const std::size_t parent = forward ? j.body_b : j.body_a;
+    const Eigen::Matrix<double, 6, 1> t = (forward ? 1.0 : -1.0) * JointTwist(freedoms_, j, rate);
+    omega_W[body] = omega_W[parent] + t.head<3>();
+    v_WO[body] = v_WO[parent] + t.tail<3>();
+  }
+}
+
+Eigen::Matrix<double, 6, 1> KinematicModel::BodyTwist(
+    std::size_t body, const std::function<double(std::size_t)>& rate) const {
+  Eigen::Matrix<double, 6, 1> twist = Eigen::Matrix<double, 6, 1>::Zero();
+  while (parent_joint_[body]) {
+    const Joint& j = joints_[*parent_joint_[body]];
+    const bool forward = body == j.body_a;
+    twist += (forward ? 1.0 : -1.0) * JointTwist(freedoms_, j, rate);
+    body = forward ? j.body_b : j.body_a;
+  }
+  return twist;
+}
+
+ExactReal KinematicModel::Evaluate(const LinearSystem::Row& row, const std::vector<ExactReal>& x) {
+  ExactReal sum;
+  for (const LinearSystem::Term& t : row) sum += t.coefficient * x[t.variable];
+  return sum;
+}
+
+}  // namespace mechanist

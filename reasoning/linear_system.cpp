@@ -1,0 +1,185 @@
+#include "reasoning/linear_system.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+namespace mechanist {
+namespace {
+
+using Terms = std::map<std::size_t, ExactReal>;
+
+/// Scales so that the largest |coefficient| is 1; the rhs with it.
+void Normalise(Terms& terms, ExactReal& rhs) {
+  const ExactReal* largest = nullptr;
+  for (const auto& [v, c] : terms) {
+    if (!largest || std::abs(c.value()) > std::abs(largest->value())) largest = &c;
+  }
+  if (!largest) return;
+  const ExactReal scale = largest->value() < 0 ? -*largest : *largest;
+  for (auto& [v, c] : terms) c = c / scale;
+  rhs = rhs / scale;
+}
+
+}  // namespace
+
+LinearSystem::LinearSystem(std::size_t variable_count, double tolerance)
+    : tolerance_(tolerance),
+      parent_(variable_count),
+      factor_(variable_count, ExactReal(Rational(1))),
+      size_(variable_count, 1),
+      in_pivot_(variable_count, false),
+      pivot_of_(variable_count, -1) {
+  std::iota(parent_.begin(), parent_.end(), std::size_t{0});
+}
+
+LinearSystem::Root LinearSystem::Find(std::size_t v) const {
+  std::vector<std::size_t> path;
+  while (parent_[v] != v) {
+    path.push_back(v);
+    v = parent_[v];
+  }
+  // Compress from the top down so that each factor composes with its parent's final factor.
+  for (auto it = path.rbegin(); it != path.rend(); ++it) {
+    const std::size_t p = parent_[*it];
+    if (p != v) factor_[*it] = factor_[*it] * factor_[p];
+    parent_[*it] = v;
+  }
+  return {v, path.empty() ? ExactReal(Rational(1)) : factor_[path.front()]};
+}
+
+LinearSystem::Outcome LinearSystem::AddRow(const Row& row, const ExactReal& rhs) {
+  Terms terms;
+  for (const Term& t : row) {
+    const Root r = Find(t.variable);
+    terms[r.root] += t.coefficient * r.factor;
+  }
+  ExactReal b = rhs;
+  std::erase_if(terms, [](const auto& t) { return t.second.IsZero(0.0); });
+  Normalise(terms, b);
+  std::erase_if(terms, [&](const auto& t) { return t.second.IsZero(tolerance_); });
+  if (terms.size() == 2 && b.IsZero(tolerance_)) {
+    auto x = terms.begin();
+    auto y = std::next(x);
+    if (!in_pivot_[x->first] && !in_pivot_[y->first]) {
+      // a X + b Y = 0: the smaller group joins the larger one.
+      if (size_[x->first] < size_[y->first]) std::swap(x, y);
+      parent_[y->first] = x->first;
+      factor_[y->first] = -(x->second / y->second);
+      size_[x->first] += size_[y->first];
+      ++rank_;
+      return Outcome::kIndependent;
+    }
+  }
+  Row reduced;
+  for (auto& [v, c] : terms) reduced.push_back({v, c});
+  return Eliminate(std::move(reduced), b);
+}
+
+LinearSystem::Outcome LinearSystem::Eliminate(Row row, ExactReal rhs) {
+  Terms work;
+  for (Term& t : row) work.emplace(t.variable, t.coefficient);
+  for (auto it = work.begin(); it != work.end();) {
+    const long p = pivot_of_[it->first];
+    if (p < 0) {
+      ++it;
+      continue;
+    }
+    const Pivot& pivot = pivots_[static_cast<std::size_t>(p)];
+    const ExactReal scale = it->second / pivot.terms.front().coefficient;
+    const std::size_t column = it->first;
+    for (const Term& t : pivot.terms) work[t.variable] += -(scale * t.coefficient);
+    rhs += -(scale * pivot.rhs);
+    work.erase(column);
+    std::erase_if(work, [&](const auto& t) { return t.second.IsZero(tolerance_); });
+    it = work.upper_bound(column);
+  }
+  if (work.empty()) {
+    return rhs.IsZero(tolerance_) ? Outcome::kRedundant : Outcome::kInconsistent;
+  }
+  Pivot pivot;
+  for (auto& [v, c] : work) {
+    pivot.terms.push_back({v, c});
+    in_pivot_[v] = true;
+  }
+  pivot.rhs = rhs;
+  pivot_of_[pivot.terms.front().variable] = static_cast<long>(pivots_.size());
+  pivots_.push_back(std::move(pivot));
+  ++rank_;
+  return Outcome::kIndependent;
+}
+
+void LinearSystem::BackSubstitute(const std::vector<std::size_t>& columns, bool homogeneous,
+                                  std::vector<ExactReal>& x) const {
+  for (std::size_t column : columns) {
+    const Pivot& pivot = pivots_[static_cast<std::size_t>(pivot_of_[column])];
+    ExactReal sum = homogeneous ? ExactReal() : pivot.rhs;
+    for (std::size_t i = 1; i < pivot.terms.size(); ++i) {
+      sum += -(pivot.terms[i].coefficient * x[pivot.terms[i].variable]);
+    }
+    x[column] = sum / pivot.terms.front().coefficient;
+  }
+}
+
+std::vector<ExactReal> LinearSystem::Solve() const {
+  std::vector<ExactReal> x(variable_count());
+  std::vector<std::size_t> columns;
+  for (std::size_t c = variable_count(); c-- > 0;) {
+    if (pivot_of_[c] >= 0) columns.push_back(c);
+  }
+  BackSubstitute(columns, false, x);
+  for (std::size_t v = 0; v < x.size(); ++v) {
+    const Root r = Find(v);
+    if (r.root != v) x[v] = r.factor * x[r.root];
+  }
+  return x;
+}
+
+std::vector<LinearSystem::Row> LinearSystem::NullSpace() const {
+  const std::size_t n = variable_count();
+  // Components of the eliminated rows, so that each basis vector back-substitutes only the
+  // pivots it can reach.
+  std::vector<std::size_t> component(n);
+  std::iota(component.begin(), component.end(), std::size_t{0});
+  auto top = [&](std::size_t v) {
+    while (component[v] != v) v = component[v] = component[component[v]];
+    return v;
+  };
+  for (const Pivot& p : pivots_) {
+    for (const Term& t : p.terms) component[top(t.variable)] = top(p.terms.front().variable);
+  }
+  std::map<std::size_t, std::vector<std::size_t>> pivots_in;  // component -> columns, descending
+  for (std::size_t c = n; c-- > 0;) {
+    if (pivot_of_[c] >= 0) pivots_in[top(c)].push_back(c);
+  }
+  std::vector<std::vector<std::size_t>> members(n);  // root -> the variables it stands for
+  for (std::size_t v = 0; v < n; ++v) members[Find(v).root].push_back(v);
+
+  std::vector<Row> basis;
+  std::vector<ExactReal> x(n);
+  for (std::size_t f = 0; f < n; ++f) {
+    if (parent_[f] != f || pivot_of_[f] >= 0) continue;
+    x[f] = ExactReal(Rational(1));
+    const auto it = pivots_in.find(top(f));
+    static const std::vector<std::size_t> kNone;
+    const std::vector<std::size_t>& columns = it == pivots_in.end() ? kNone : it->second;
+    for (std::size_t c : columns) x[c] = ExactReal();
+    BackSubstitute(columns, true, x);
+    Row vector;
+    auto emit = [&](std::size_t root) {
+      if (x[root].IsZero(tolerance_)) return;
+      for (std::size_t v : members[root]) vector.push_back({v, Find(v).factor * x[root]});
+    };
+    emit(f);
+    for (std::size_t c : columns) emit(c);
+    std::sort(vector.begin(), vector.end(),
+              [](const Term& a, const Term& b) { return a.variable < b.variable; });
+    basis.push_back(std::move(vector));
+    x[f] = ExactReal();
+    for (std::size_t c : columns) x[c] = ExactReal();
+  }
+  return basis;
+}
+
+}  // namespace mechanist

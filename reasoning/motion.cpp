@@ -1,0 +1,448 @@
+#include "reasoning/motion.h"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <map>
+
+#include "kernel/enum_names.h"
+#include "reasoning/kinematic_model.h"
+#include "reasoning/linear_system.h"
+
+namespace mechanist {
+namespace {
+
+constexpr double kTolerance = 1e-9;
+constexpr double kTwoPi = 6.283185307179586;
+
+constexpr EnumNames<MotionKind, 4> kMotionKindNames{{
+    {MotionKind::kNone, "none"},
+    {MotionKind::kRotation, "rotation"},
+    {MotionKind::kTranslation, "translation"},
+    {MotionKind::kScrew, "screw"},
+}};
+
+/// The velocity analysis of one assembly: its model, its constraint rows reduced once, and
+/// the scenarios (drivers, drags) solved on copies of that reduction.
+class Solver {
+ public:
+  Solver(const Assembly& assembly, const std::vector<Pair>& pairs,
+         const std::vector<Subassembly>& subassemblies,
+         const std::vector<std::size_t>& subassembly_of)
+      : assembly_(assembly),
+        pairs_(pairs),
+        model_(assembly, pairs, subassemblies, subassembly_of),
+        structural_(model_.freedoms().size(), kTolerance),
+        parts_of_body_(model_.body_count()) {
+    for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
+      parts_of_body_[model_.body_of_part(p)].push_back(p);
+    }
+    for (const ConstraintRow& row : model_.rows()) {
+      outcomes_.push_back(structural_.AddRow(row.terms));
+    }
+  }
+
+  const KinematicModel& model() const { return model_; }
+  const LinearSystem& structural() const { return structural_; }
+  const std::vector<LinearSystem::Outcome>& outcomes() const { return outcomes_; }
+
+  /// Solves `imposed` (with the given labels for messages); `system` receives the scenario's
+  /// system, for its free motions.
+  DrivenMotion Solve(const std::vector<ImposedMotion>& imposed,
+                     const std::vector<std::string>& labels, LinearSystem* system = nullptr) const {
+    DrivenMotion motion;
+    LinearSystem s = structural_;
+    std::vector<std::size_t> locked_worms = BackDrivenWorms(imposed);
+    for (std::size_t w : locked_worms) s.AddRow(WormLock(w));
+    for (std::size_t i = 0; i < imposed.size() && motion.possible; ++i) {
+      const LinearSystem::Row row = ImposedRow(imposed[i]);
+      if (s.AddRow(row, ExactReal::FromDecimal(imposed[i].rate)) !=
+          LinearSystem::Outcome::kInconsistent) {
+        continue;
+      }
+      motion.possible = false;
+      LinearSystem free = structural_;
+      LinearSystem unlocked = structural_;
+      for (std::size_t w : locked_worms) unlocked.AddRow(WormLock(w));
+      if (free.AddRow(row, Rational(1)) == LinearSystem::Outcome::kInconsistent) {
+        motion.reason = labels[i] + " cannot move: the pairs lock its motion";
+      } else if (unlocked.AddRow(row, Rational(1)) == LinearSystem::Outcome::kInconsistent) {
+        motion.reason = labels[i] + " cannot move: it would drive worm gear " +
+                        PairName(locked_worms.front()) +
+                        " from its wheel, and that worm gear is not back-drivable";
+      } else {
+        motion.contradiction = true;
+        motion.reason = labels[i] + " contradicts " + (i == 1 ? labels[0] : "the other drivers") +
+                        ": they drive the same freedom";
+      }
+    }
+    const std::vector<ExactReal> x =
+        motion.possible ? s.Solve() : std::vector<ExactReal>(model_.freedoms().size());
+    Describe(x, motion);
+    if (system) *system = std::move(s);
+    return motion;
+  }
+
+  std::string PairName(std::size_t pair) const {
+    return assembly_.FeatureName(pairs_[pair].a) + " + " + assembly_.FeatureName(pairs_[pair].b);
+  }
+
+  /// The parts of a body, ascending.
+  const std::vector<std::size_t>& PartsOf(std::size_t body) const { return parts_of_body_[body]; }
+
+ private:
+  LinearSystem::Row ImposedRow(const ImposedMotion& m) const {
+    const std::size_t body = model_.body_of_part(m.feature.part);
+    const std::size_t reference =
+        m.relative_to ? model_.body_of_part(*m.relative_to) : model_.ground();
+    const AxisSegment axis = model_.WorldAxis(m.feature);
+    return m.rotation ? model_.Angular(body, reference, axis.direction)
+                      : model_.Linear(body, reference, axis.origin, axis.direction);
+  }
+
+  /// The worm's rotation relative to the body carrying both axes, held at zero.
+  LinearSystem::Row WormLock(std::size_t pair) const {
+    const Pair& p = pairs_[pair];
+    const std::size_t carrier = *model_.CommonCarrier(p.a, p.b);
+    return model_.Angular(model_.body_of_part(p.a.part), carrier,
+                          model_.WorldAxis(p.a).direction);
+  }
+
+  /// Self-locking worm gears that the imposed motions would reach from the wheel's side first:
+  /// breadth-first from the driven bodies over joints and couplings, not through the ground.
+  std::vector<std::size_t> BackDrivenWorms(const std::vector<ImposedMotion>& imposed) const {
+    const std::size_t bodies = model_.body_count();
+    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> edges(bodies);  // body, pair
+    for (std::size_t i = 0; i < pairs_.size(); ++i) {
+      const std::size_t a = model_.body_of_part(pairs_[i].a.part);
+      const std::size_t b = model_.body_of_part(pairs_[i].b.part);
+      if (a == b || pairs_[i].type == PairType::kFixed) continue;
+      edges[a].push_back({b, i});
+      edges[b].push_back({a, i});
+    }
+    std::vector<bool> seen(bodies, false);
+    std::deque<std::size_t> queue;
+    for (const ImposedMotion& m : imposed) {
+      const std::size_t body = model_.body_of_part(m.feature.part);
+      if (!seen[body]) seen[body] = true, queue.push_back(body);
+    }
+    std::vector<std::size_t> locked;
+    while (!queue.empty()) {
+      const std::size_t body = queue.front();
+      queue.pop_front();
+      if (body == model_.ground()) continue;
+      for (const auto& [other, pair] : edges[body]) {
+        const Pair& p = pairs_[pair];
+        const bool into_worm = p.type == PairType::kWormGear && p.self_locking &&
+                               body == model_.body_of_part(p.b.part) &&
+                               other == model_.body_of_part(p.a.part);
+        if (into_worm && !seen[other] && model_.CommonCarrier(p.a, p.b)) {
+          locked.push_back(pair);
+          continue;
+        }
+        if (!seen[other]) seen[other] = true, queue.push_back(other);
+      }
+    }
+    std::sort(locked.begin(), locked.end());
+    return locked;
+  }
+
+  void Describe(const std::vector<ExactReal>& x, DrivenMotion& motion) const {
+    std::vector<Eigen::Vector3d> omega, v;
+    model_.Twists(x, omega, v);
+    const std::size_t ground = model_.ground();
+    const std::size_t parts = assembly_.parts().size();
+    motion.parts.resize(parts);
+    motion.features.resize(parts);
+    for (std::size_t p = 0; p < parts; ++p) {
+      const std::size_t body = model_.body_of_part(p);
+      const Part& part = assembly_.part(p);
+      std::vector<FeatureRate>& rates = motion.features[p];
+      for (std::size_t f = 0; f < part.features.size(); ++f) {
+        const AxisSegment axis = model_.WorldAxis({p, f});
+        rates.push_back(
+            {KinematicModel::Evaluate(model_.Angular(body, ground, axis.direction), x),
+             KinematicModel::Evaluate(model_.Linear(body, ground, axis.origin, axis.direction),
+                                      x)});
+      }
+      motion.parts[p] = Classify(p, omega[body], v[body], rates);
+    }
+  }
+
+  PartMotion Classify(std::size_t p, const Eigen::Vector3d& omega, const Eigen::Vector3d& v_WO,
+                      const std::vector<FeatureRate>& rates) const {
+    PartMotion m;
+    const bool turns = omega.norm() > kTolerance;
+    if (!turns && v_WO.norm() <= kTolerance) return m;
+    const Eigen::Vector3d axis = turns ? omega.normalized() : v_WO.normalized();
+    const Part& part = assembly_.part(p);
+    for (std::size_t f = 0; f < part.features.size(); ++f) {
+      const AxisSegment a = model_.WorldAxis({p, f});
+      const ExactReal along = model_.Dot(a.direction, axis);
+      if (!along.is_exact() || along.exact()->is_zero()) continue;
+      m.axis_feature = FeatureRef{p, f};
+      m.axis_W = a.direction;
+      m.rotation = rates[f].rotation;
+      m.translation = rates[f].translation;
+      break;
+    }
+    if (!m.axis_feature) {
+      // No feature along the motion: the axis with its largest component positive.
+      Eigen::Index largest;
+      axis.cwiseAbs().maxCoeff(&largest);
+      m.axis_W = axis(largest) < 0 ? -axis : axis;
+      m.rotation = ExactReal::Approximate(omega.dot(m.axis_W));
+      m.translation = ExactReal::Approximate(v_WO.dot(m.axis_W));
+    }
+    if (turns) {
+      const Eigen::Vector3d w = kTwoPi * omega;
+      m.point_W = w.cross(v_WO) / w.squaredNorm();
+      m.kind = m.translation.IsZero(kTolerance) ? MotionKind::kRotation : MotionKind::kScrew;
+    } else {
+      m.kind = MotionKind::kTranslation;
+      m.point_W = part.X_WP.translation();
+    }
+    return m;
+  }
+
+  const Assembly& assembly_;
+  const std::vector<Pair>& pairs_;
+  KinematicModel model_;
+  LinearSystem structural_;
+  std::vector<LinearSystem::Outcome> outcomes_;
+  std::vector<std::vector<std::size_t>> parts_of_body_;
+};
+
+std::vector<ImposedMotion> DriverMotions(const Assembly& assembly) {
+  std::vector<ImposedMotion> imposed;
+  for (const Driver& d : assembly.drivers()) {
+    imposed.push_back(
+        {d.feature, d.motion == Driver::Motion::kRotation, d.rate, d.relative_to});
+  }
+  return imposed;
+}
+
+/// The bodies that a sparse velocity vector moves: the subtrees below its joints.
+std::vector<std::size_t> MovedBodies(const KinematicModel& model,
+                                     const std::vector<std::vector<std::size_t>>& children,
+                                     const LinearSystem::Row& vector) {
+  std::vector<std::size_t> bodies;
+  std::vector<std::size_t> stack;
+  for (const LinearSystem::Term& t : vector) {
+    const Joint& j = model.joints()[model.freedoms()[t.variable].joint];
+    const std::size_t child =
+        model.parent_joint(j.body_a) &&
+                &model.joints()[*model.parent_joint(j.body_a)] == &j
+            ? j.body_a
+            : j.body_b;
+    stack.push_back(child);
+  }
+  while (!stack.empty()) {
+    const std::size_t b = stack.back();
+    stack.pop_back();
+    bodies.push_back(b);
+    for (std::size_t c : children[b]) stack.push_back(c);
+  }
+  std::sort(bodies.begin(), bodies.end());
+  bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());
+  return bodies;
+}
+
+std::string FreedomWords(const Assembly& assembly, const std::vector<Pair>& pairs,
+                         const KinematicModel& model, std::size_t variable) {
+  const Freedom& f = model.freedoms()[variable];
+  const Joint& j = model.joints()[f.joint];
+  static const char* kAxes[] = {"x", "y", "z"};
+  std::string axis;
+  if (!j.pair) {
+    Eigen::Index i;
+    f.direction_W.cwiseAbs().maxCoeff(&i);
+    axis = std::string("the world ") + kAxes[i] + " axis";
+  } else {
+    axis = assembly.FeatureName(pairs[*j.pair].a) + "'s axis";
+  }
+  switch (f.kind) {
+    case Freedom::Kind::kRotation:
+      return "turns about " + axis;
+    case Freedom::Kind::kTranslation:
+      return "slides along " + axis;
+    case Freedom::Kind::kScrew:
+      return "screws along " + axis;
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string_view ToString(MotionKind kind) { return NameOf(kMotionKindNames, kind); }
+
+const DrivenMotion* MotionAnalysis::ForExpectations() const {
+  if (driven.empty()) return nullptr;
+  return driven.size() == 2 ? &driven.front() : &driven.back();
+}
+
+DrivenMotion SolveImposed(const Assembly& assembly, const std::vector<Pair>& pairs,
+                          const std::vector<Subassembly>& subassemblies,
+                          const std::vector<std::size_t>& subassembly_of,
+                          const std::vector<ImposedMotion>& imposed) {
+  const Solver solver(assembly, pairs, subassemblies, subassembly_of);
+  std::vector<std::string> labels;
+  for (const ImposedMotion& m : imposed) labels.push_back(assembly.FeatureName(m.feature));
+  return solver.Solve(imposed, labels);
+}
+
+MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& pairs,
+                             const std::vector<Subassembly>& subassemblies,
+                             const std::vector<std::size_t>& subassembly_of) {
+  const Solver solver(assembly, pairs, subassemblies, subassembly_of);
+  const KinematicModel& model = solver.model();
+  MotionAnalysis result;
+  result.diagnostics = model.diagnostics();
+  Mobility& mobility = result.mobility;
+  mobility.dof = static_cast<int>(solver.structural().nullity());
+
+  auto part_ids = [&](const std::vector<std::size_t>& parts) {
+    std::vector<std::string> ids;
+    for (std::size_t p : parts) ids.push_back(assembly.part(p).id);
+    return ids;
+  };
+  auto pair_parts = [&](std::size_t pair) {
+    return std::vector<std::string>{assembly.part(pairs[pair].a.part).id,
+                                    assembly.part(pairs[pair].b.part).id};
+  };
+  auto pair_features = [&](std::size_t pair) {
+    return std::vector<std::string>{assembly.FeatureName(pairs[pair].a),
+                                    assembly.FeatureName(pairs[pair].b)};
+  };
+
+  // Redundant constraints, per pair.
+  std::map<std::size_t, int> redundant;
+  for (std::size_t r = 0; r < model.rows().size(); ++r) {
+    if (solver.outcomes()[r] == LinearSystem::Outcome::kRedundant) ++redundant[model.rows()[r].pair];
+  }
+  for (const auto& [pair, count] : redundant) {
+    mobility.redundant += count;
+    mobility.redundant_pairs.push_back({pair, count});
+    result.diagnostics.push_back(
+        {Severity::kInfo, "redundant_constraints",
+         std::string(ToString(pairs[pair].type)) + " pair " + solver.PairName(pair) + ": " +
+             std::to_string(count) + (count == 1 ? " of its constraints is" : " of its constraints are") +
+             " implied by the other pairs (over-constrained: it must be made accurately)",
+         pair_parts(pair), pair_features(pair)});
+  }
+
+  // Allowable motion per part and jams, from the undriven motions.
+  std::vector<std::vector<std::size_t>> children(model.body_count());
+  for (std::size_t body : model.order()) {
+    if (const auto& j = model.parent_joint(body)) {
+      const Joint& joint = model.joints()[*j];
+      children[joint.body_a == body ? joint.body_b : joint.body_a].push_back(body);
+    }
+  }
+  std::vector<bool> moves(model.freedoms().size(), false);
+  std::vector<std::vector<Eigen::Matrix<double, 6, 1>>> body_twists(model.body_count());
+  for (const LinearSystem::Row& n : solver.structural().NullSpace()) {
+    std::map<std::size_t, double> x;
+    for (const LinearSystem::Term& t : n) {
+      moves[t.variable] = true;
+      x[t.variable] = t.coefficient.value();
+    }
+    const auto rate = [&](std::size_t k) {
+      const auto it = x.find(k);
+      return it == x.end() ? 0.0 : it->second;
+    };
+    for (std::size_t body : MovedBodies(model, children, n)) {
+      const Eigen::Matrix<double, 6, 1> twist = model.BodyTwist(body, rate);
+      if (twist.norm() > kTolerance) body_twists[body].push_back(twist.normalized());
+    }
+  }
+  std::vector<int> body_freedoms(model.body_count(), 0);
+  for (std::size_t b = 0; b < model.body_count(); ++b) {
+    if (body_twists[b].empty()) continue;
+    Eigen::MatrixXd m(static_cast<Eigen::Index>(body_twists[b].size()), 6);
+    for (std::size_t i = 0; i < body_twists[b].size(); ++i) {
+      m.row(static_cast<Eigen::Index>(i)) = body_twists[b][i].transpose();
+    }
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(m);
+    lu.setThreshold(1e-9);
+    body_freedoms[b] = static_cast<int>(lu.rank());
+  }
+  for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
+    mobility.part_freedoms.push_back(body_freedoms[model.body_of_part(p)]);
+  }
+  for (std::size_t k = 0; k < model.freedoms().size(); ++k) {
+    const Joint& j = model.joints()[model.freedoms()[k].joint];
+    if (moves[k] || !j.pair) continue;
+    result.diagnostics.push_back(
+        {Severity::kWarning, "jam",
+         std::string(ToString(pairs[*j.pair].type)) + " pair " + solver.PairName(*j.pair) +
+             " cannot move as it allows (" + FreedomWords(assembly, pairs, model, k) +
+             "): the other pairs lock it",
+         pair_parts(*j.pair), pair_features(*j.pair)});
+  }
+
+  // Drivers: each alone at unit rate, then all at their rates.
+  const std::vector<ImposedMotion> imposed = DriverMotions(assembly);
+  std::vector<std::string> labels;
+  for (const Driver& d : assembly.drivers()) labels.push_back("driver " + d.id);
+  for (std::size_t i = 0; i < imposed.size(); ++i) {
+    std::vector<ImposedMotion> alone = imposed;
+    for (std::size_t k = 0; k < alone.size(); ++k) alone[k].rate = k == i ? 1.0 : 0.0;
+    std::rotate(alone.begin(), alone.begin() + static_cast<long>(i),
+                alone.begin() + static_cast<long>(i) + 1);
+    std::vector<std::string> names = labels;
+    std::rotate(names.begin(), names.begin() + static_cast<long>(i),
+                names.begin() + static_cast<long>(i) + 1);
+    DrivenMotion m = solver.Solve(alone, names);
+    m.driver = i;
+    result.driven.push_back(std::move(m));
+  }
+  LinearSystem driven_system = solver.structural();
+  if (!imposed.empty()) {
+    result.driven.push_back(solver.Solve(imposed, labels, &driven_system));
+  }
+  for (const DrivenMotion& m : result.driven) {
+    // Per driver, a locked driver; together, contradicting drivers (a driver held still while
+    // another drives its freedom is no finding of its own).
+    if (m.possible || (m.driver.has_value() == m.contradiction)) continue;
+    std::vector<std::string> parts;
+    if (m.driver) parts.push_back(assembly.part(assembly.drivers()[*m.driver].feature.part).id);
+    result.diagnostics.push_back({Severity::kError,
+                                  m.contradiction ? "drivers_contradict" : "driver_locked",
+                                  m.reason,
+                                  parts,
+                                  {}});
+  }
+
+  // Free motions: what the drivers leave undetermined.
+  for (const LinearSystem::Row& n : driven_system.NullSpace()) {
+    if (n.empty()) continue;
+    FreeMotion free;
+    const Freedom& f = model.freedoms()[n.front().variable];
+    const Joint& j = model.joints()[f.joint];
+    free.pair = j.pair;
+    free.freedom = FreedomWords(assembly, pairs, model, n.front().variable);
+    const std::size_t child = model.parent_joint(j.body_a) &&
+                                      *model.parent_joint(j.body_a) == f.joint
+                                  ? j.body_a
+                                  : j.body_b;
+    const std::vector<std::size_t> own = solver.PartsOf(child);
+    free.part = own.empty() ? 0 : own.front();
+    for (std::size_t body : MovedBodies(model, children, n)) {
+      for (std::size_t p : solver.PartsOf(body)) free.parts.push_back(p);
+    }
+    std::sort(free.parts.begin(), free.parts.end());
+    std::string message = assembly.part(free.part).id + " " + free.freedom;
+    if (free.pair) message += " (" + std::string(ToString(pairs[*free.pair].type)) + " pair)";
+    message += ": nothing drives or holds this motion";
+    result.diagnostics.push_back({Severity::kWarning, "free_motion", message,
+                                  part_ids(free.parts),
+                                  free.pair ? pair_features(*free.pair)
+                                            : std::vector<std::string>{}});
+    mobility.free_motions.push_back(std::move(free));
+  }
+  return result;
+}
+
+}  // namespace mechanist

@@ -1,0 +1,120 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "kernel/assembly.h"
+#include "kernel/diagnostic.h"
+#include "reasoning/exact_real.h"
+#include "reasoning/pair.h"
+#include "reasoning/pair_graph.h"
+
+namespace mechanist {
+
+/// How a part moves relative to the ground: not at all, turning about a line, sliding along a
+/// direction, turning and advancing along one line (screw), or as a twist of a floating body.
+enum class MotionKind { kNone, kRotation, kTranslation, kScrew };
+
+/// "none", "rotation", "translation", "screw".
+std::string_view ToString(MotionKind kind);
+
+/// A feature's rates per unit driver rate (world frame, relative to the ground): revolutions
+/// about its axis (right-hand rule) and length units of its origin along its axis.
+struct FeatureRate {
+  ExactReal rotation;
+  ExactReal translation;
+  /// The expectation's "ratio" of a part that turns (rotation), else its translation.
+  const ExactReal& Ratio(bool part_turns) const { return part_turns ? rotation : translation; }
+};
+
+/// A part's motion per unit driver rate.
+struct PartMotion {
+  MotionKind kind = MotionKind::kNone;
+  /// Rotation axis or translation direction (unit, world). When a feature of the part has
+  /// this axis, it is that feature's axis with its sense, and `axis_feature` names it.
+  Eigen::Vector3d axis_W = Eigen::Vector3d::Zero();
+  Eigen::Vector3d point_W = Eigen::Vector3d::Zero();  ///< on the rotation or screw axis
+  std::optional<FeatureRef> axis_feature;
+  ExactReal rotation;     ///< revolutions about axis_W
+  ExactReal translation;  ///< length units along axis_W
+};
+
+/// The motion of every part when one driver runs at unit rate and the others are held, or when
+/// all drivers run at their own rates (`driver` empty).
+struct DrivenMotion {
+  std::optional<std::size_t> driver;
+  /// False when the drivers cannot run so (a locked driver, drivers that contradict each
+  /// other, a worm gear driven from its wheel); `reason` says why and the parts stay still.
+  bool possible = true;
+  bool contradiction = false;  ///< not possible because drivers contradict each other
+  std::string reason;
+  std::vector<PartMotion> parts;                   ///< per part
+  std::vector<std::vector<FeatureRate>> features;  ///< per part, per feature
+};
+
+/// Constraints of a pair implied by the other pairs (an over-constrained mechanism).
+struct RedundantConstraint {
+  std::size_t pair = 0;
+  int count = 0;
+};
+
+/// A freedom that nothing drives or holds: one basis motion of the undriven mechanism.
+struct FreeMotion {
+  std::size_t part = 0;             ///< the part that makes the motion
+  std::optional<std::size_t> pair;  ///< the pair that allows it; empty: the part floats
+  std::string freedom;              ///< "turns about shaft/axis", "slides along ..."
+  std::vector<std::size_t> parts;   ///< parts that move with it, ascending
+};
+
+/// Mobility by the rank of the velocity constraints, which stays right for over-constrained
+/// mechanisms where the Gruebler-Kutzbach count is wrong (a train with three planets).
+struct Mobility {
+  int dof = 0;        ///< independent freedoms with the drivers released
+  int redundant = 0;  ///< constraints implied by others: dof = 6 n - constraints + redundant
+  std::vector<RedundantConstraint> redundant_pairs;
+  std::vector<FreeMotion> free_motions;  ///< with the drivers applied
+  std::vector<int> part_freedoms;        ///< per part: dimension of its allowable motion
+};
+
+/// The motion analysis of an assembly at its file poses.
+struct MotionAnalysis {
+  Mobility mobility;
+  /// One entry per driver (unit rate, others held), then the drivers together; empty without
+  /// drivers.
+  std::vector<DrivenMotion> driven;
+  /// Jams, free motions, redundant constraints, locked drivers, non-back-drivable worms.
+  std::vector<Diagnostic> diagnostics;
+
+  /// The motion an expectation's "ratio" refers to: the only driver's at unit rate, or all
+  /// drivers at their rates; nullptr without drivers.
+  const DrivenMotion* ForExpectations() const;
+};
+
+/// A motion imposed on a part, as a driver or by `mechanist drag`.
+struct ImposedMotion {
+  FeatureRef feature;  ///< the axis (the feature's, at the file pose)
+  bool rotation = true;
+  double rate = 1.0;                       ///< rev or length units per second
+  std::optional<std::size_t> relative_to;  ///< part; empty: the ground
+};
+
+/// Velocity analysis (joint space, see KinematicModel) of the recognised `pairs`: mobility,
+/// redundant constraints, jams, free motions and each driver's motion, exact where the
+/// mechanism's ratios are rational (tooth counts, thread leads).
+MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& pairs,
+                             const std::vector<Subassembly>& subassemblies,
+                             const std::vector<std::size_t>& subassembly_of);
+
+/// The motion when `imposed` run together (the first at its rate, the others as given) and
+/// every free motion is held still. Worm gears that are not back-drivable lock when the motion
+/// enters them from the wheel.
+DrivenMotion SolveImposed(const Assembly& assembly, const std::vector<Pair>& pairs,
+                          const std::vector<Subassembly>& subassemblies,
+                          const std::vector<std::size_t>& subassembly_of,
+                          const std::vector<ImposedMotion>& imposed);
+
+}  // namespace mechanist
