@@ -1,5 +1,6 @@
 #include "io/analysis_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -68,6 +69,16 @@ std::string Describe(const Assembly& assembly, const PartMotion& m) {
   return "still";
 }
 
+/// Part indices ordered by id, so that reordering the file's parts never reorders a report.
+std::vector<std::size_t> ById(const Assembly& assembly) {
+  std::vector<std::size_t> order(assembly.parts().size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return assembly.part(a).id < assembly.part(b).id;
+  });
+  return order;
+}
+
 }  // namespace
 
 void WriteAnalysisSummary(const Assembly& assembly, const Analysis& analysis, std::ostream& out) {
@@ -100,7 +111,7 @@ void WriteAnalysisSummary(const Assembly& assembly, const Analysis& analysis, st
       continue;
     }
     std::size_t still = 0;
-    for (std::size_t p = 0; p < m.parts.size(); ++p) {
+    for (std::size_t p : ById(assembly)) {
       if (m.parts[p].kind == MotionKind::kNone) {
         ++still;
         continue;
@@ -167,7 +178,7 @@ std::string AnalysisJson(const Assembly& assembly, const Analysis& analysis) {
                     {"parts", parts}});
   }
   Json freedoms = Json::array();
-  for (std::size_t p = 0; p < mobility.part_freedoms.size(); ++p) {
+  for (std::size_t p : ById(assembly)) {
     if (mobility.part_freedoms[p] > 0) {
       freedoms.push_back({{"part", assembly.part(p).id}, {"freedoms", mobility.part_freedoms[p]}});
     }
@@ -180,7 +191,8 @@ std::string AnalysisJson(const Assembly& assembly, const Analysis& analysis) {
   Json motion = Json::array();
   for (const DrivenMotion& m : analysis.motion.driven) {
     Json parts = Json::array();
-    for (std::size_t p = 0; m.possible && p < m.parts.size(); ++p) {
+    for (std::size_t p : ById(assembly)) {
+      if (!m.possible) break;
       const PartMotion& pm = m.parts[p];
       Json j = {{"part", assembly.part(p).id}, {"kind", ToString(pm.kind)}};
       if (pm.kind != MotionKind::kNone) {
@@ -256,7 +268,7 @@ void WriteDragReport(const Assembly& assembly, const Analysis& analysis, const D
     return;
   }
   out << "moves:\n";
-  for (std::size_t p = 0; p < drag.motion.parts.size(); ++p) {
+  for (std::size_t p : ById(assembly)) {
     if (drag.motion.parts[p].kind == MotionKind::kNone) continue;
     out << "  " << assembly.part(p).id << " " << Describe(assembly, drag.motion.parts[p]) << "\n";
   }

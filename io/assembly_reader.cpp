@@ -1057,24 +1057,15 @@ class Reader {
       Fail(p, "expected a ratio (an integer, \"p/q\" or a decimal), found " + Describe(v));
     }
     r.text = v.get<std::string>();
-    static const std::regex kFraction(R"(\s*([+-]?\d{1,18})\s*(?:/\s*(\d{1,18})\s*)?)");
-    static const std::regex kDecimal(R"(\s*[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\s*)");
-    std::smatch m;
-    if (std::regex_match(r.text, m, kFraction)) {
-      r.exact = true;
-      r.numerator = std::stoll(m[1].str());
-      r.denominator = m[2].matched ? std::stoll(m[2].str()) : 1;
-      if (r.denominator == 0) Fail(p, "expected a non-zero denominator, found \"" + r.text + "\"");
-      const std::int64_t g = std::gcd(r.numerator, r.denominator);
-      r.numerator /= g;
-      r.denominator /= g;
-      r.value = static_cast<double>(r.numerator) / static_cast<double>(r.denominator);
-    } else if (std::regex_match(r.text, kDecimal)) {
-      r.value = std::stod(r.text);
-    } else {
+    const std::optional<ExpectedRatio> parsed = ParseRatio(r.text);
+    static const std::regex kZeroDenominator(R"(\s*[+-]?\d{1,18}\s*/\s*0+\s*)");
+    if (!parsed && std::regex_match(r.text, kZeroDenominator)) {
+      Fail(p, "expected a non-zero denominator, found \"" + r.text + "\"");
+    }
+    if (!parsed) {
       Fail(p, "expected a ratio (an integer, \"p/q\" or a decimal), found \"" + r.text + "\"");
     }
-    return r;
+    return *parsed;
   }
 
   const JsonSource& src_;
@@ -1094,6 +1085,29 @@ std::string ReadText(const std::filesystem::path& file) {
 }
 
 }  // namespace
+
+std::optional<ExpectedRatio> ParseRatio(const std::string& text) {
+  static const std::regex kFraction(R"(\s*([+-]?\d{1,18})\s*(?:/\s*(\d{1,18})\s*)?)");
+  static const std::regex kDecimal(R"(\s*[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\s*)");
+  ExpectedRatio r;
+  r.text = text;
+  std::smatch m;
+  if (std::regex_match(text, m, kFraction)) {
+    r.exact = true;
+    r.numerator = std::stoll(m[1].str());
+    r.denominator = m[2].matched ? std::stoll(m[2].str()) : 1;
+    if (r.denominator == 0) return std::nullopt;
+    const std::int64_t g = std::gcd(r.numerator, r.denominator);
+    r.numerator /= g;
+    r.denominator /= g;
+    r.value = static_cast<double>(r.numerator) / static_cast<double>(r.denominator);
+  } else if (std::regex_match(text, kDecimal)) {
+    r.value = std::stod(text);
+  } else {
+    return std::nullopt;
+  }
+  return r;
+}
 
 Assembly ParseAssembly(std::string_view text, const std::filesystem::path& file) {
   const JsonSource source = internal::ParseJson(text, file.string());

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <string_view>
 
 #include "kernel/assembly.h"
@@ -19,5 +21,9 @@ Assembly ReadAssembly(const std::filesystem::path& file);
 /// As ReadAssembly, for `text` that stands for the file `file` (used to resolve mesh paths
 /// and in messages).
 Assembly ParseAssembly(std::string_view text, const std::filesystem::path& file);
+
+/// An expectation's ratio written as text: an integer or "p/q" (exact, reduced) or a decimal;
+/// nothing for anything else or a zero denominator.
+std::optional<ExpectedRatio> ParseRatio(const std::string& text);
 
 }  // namespace mechanist

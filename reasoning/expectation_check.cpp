@@ -148,36 +148,41 @@ ExpectationResult NotBuilt(const Expectation& e) {
 
 }  // namespace
 
+ExpectationResult CheckExpectation(const Assembly& assembly, const Analysis& analysis,
+                                   const Expectation& e) {
+  ExpectationResult r;
+  switch (e.kind) {
+    case Expectation::Kind::kPair:
+      r = CheckPair(assembly, analysis, e);
+      break;
+    case Expectation::Kind::kSameSubassembly:
+      r = CheckSameSubassembly(assembly, analysis, e);
+      break;
+    case Expectation::Kind::kDiagnostic:
+      r = CheckDiagnostic(assembly, analysis, e);
+      break;
+    case Expectation::Kind::kRatio:
+      r = CheckRatio(assembly, analysis, e);
+      break;
+    case Expectation::Kind::kMoves:
+      r = CheckMoves(assembly, analysis, e);
+      break;
+    case Expectation::Kind::kMobility:
+      r = CheckMobility(analysis, e);
+      break;
+    case Expectation::Kind::kAssemblable:
+      r = NotBuilt(e);
+      break;
+  }
+  r.pointer = e.pointer;
+  return r;
+}
+
 std::vector<ExpectationResult> CheckExpectations(const Assembly& assembly,
                                                  const Analysis& analysis) {
   std::vector<ExpectationResult> results;
   for (const Expectation& e : assembly.expectations()) {
-    ExpectationResult r;
-    switch (e.kind) {
-      case Expectation::Kind::kPair:
-        r = CheckPair(assembly, analysis, e);
-        break;
-      case Expectation::Kind::kSameSubassembly:
-        r = CheckSameSubassembly(assembly, analysis, e);
-        break;
-      case Expectation::Kind::kDiagnostic:
-        r = CheckDiagnostic(assembly, analysis, e);
-        break;
-      case Expectation::Kind::kRatio:
-        r = CheckRatio(assembly, analysis, e);
-        break;
-      case Expectation::Kind::kMoves:
-        r = CheckMoves(assembly, analysis, e);
-        break;
-      case Expectation::Kind::kMobility:
-        r = CheckMobility(analysis, e);
-        break;
-      case Expectation::Kind::kAssemblable:
-        r = NotBuilt(e);
-        break;
-    }
-    r.pointer = e.pointer;
-    results.push_back(std::move(r));
+    results.push_back(CheckExpectation(assembly, analysis, e));
   }
   return results;
 }

@@ -23,6 +23,10 @@ struct ExpectationResult {
 /// for a decimal; of the only driver at unit rate, or all drivers at their rates), `moves` (for
 /// any driver alone), `mobility`. `assemblable` needs the assemblability check this build does
 /// not have: it fails and says so.
+/// Evaluates one expectation (as CheckExpectations does), for the C++ testing API.
+ExpectationResult CheckExpectation(const Assembly& assembly, const Analysis& analysis,
+                                   const Expectation& expectation);
+
 std::vector<ExpectationResult> CheckExpectations(const Assembly& assembly,
                                                  const Analysis& analysis);
 

@@ -34,7 +34,8 @@ class Solver {
         pairs_(pairs),
         model_(assembly, pairs, subassemblies, subassembly_of),
         structural_(model_.freedoms().size(), kTolerance),
-        parts_of_body_(model_.body_count()) {
+        parts_of_body_(model_.body_count()),
+        mm_per_length_(ExactReal::FromDecimal(assembly.units().mm_per_length)) {
     for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
       parts_of_body_[model_.body_of_part(p)].push_back(p);
     }
@@ -164,7 +165,8 @@ class Solver {
         rates.push_back(
             {KinematicModel::Evaluate(model_.Angular(body, ground, axis.direction), x),
              KinematicModel::Evaluate(model_.Linear(body, ground, axis.origin, axis.direction),
-                                      x)});
+                                      x) /
+                 mm_per_length_});
       }
       motion.parts[p] = Classify(p, omega[body], v[body], rates);
     }
@@ -193,7 +195,7 @@ class Solver {
       axis.cwiseAbs().maxCoeff(&largest);
       m.axis_W = axis(largest) < 0 ? -axis : axis;
       m.rotation = ExactReal::Approximate(omega.dot(m.axis_W));
-      m.translation = ExactReal::Approximate(v_WO.dot(m.axis_W));
+      m.translation = ExactReal::Approximate(v_WO.dot(m.axis_W)) / mm_per_length_;
     }
     if (turns) {
       const Eigen::Vector3d w = kTwoPi * omega;
@@ -212,6 +214,7 @@ class Solver {
   LinearSystem structural_;
   std::vector<LinearSystem::Outcome> outcomes_;
   std::vector<std::vector<std::size_t>> parts_of_body_;
+  ExactReal mm_per_length_;  // reports give lengths in the file's units
 };
 
 std::vector<ImposedMotion> DriverMotions(const Assembly& assembly) {
@@ -388,7 +391,10 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   for (const Driver& d : assembly.drivers()) labels.push_back("driver " + d.id);
   for (std::size_t i = 0; i < imposed.size(); ++i) {
     std::vector<ImposedMotion> alone = imposed;
-    for (std::size_t k = 0; k < alone.size(); ++k) alone[k].rate = k == i ? 1.0 : 0.0;
+    // Unit rate: one revolution, or one of the file's length units (rates are in mm inside).
+    for (std::size_t k = 0; k < alone.size(); ++k) {
+      alone[k].rate = k != i ? 0.0 : alone[k].rotation ? 1.0 : assembly.units().mm_per_length;
+    }
     std::rotate(alone.begin(), alone.begin() + static_cast<long>(i),
                 alone.begin() + static_cast<long>(i) + 1);
     std::vector<std::string> names = labels;
@@ -415,31 +421,42 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
                                   {}});
   }
 
-  // Free motions: what the drivers leave undetermined.
+  // Free motions: what the drivers leave undetermined. A floating body is one free motion
+  // with all its freedoms; a body with no pair at all is reported as unconnected already.
+  std::vector<bool> has_pair(model.body_count(), false);
+  for (const Pair& p : pairs) {
+    has_pair[model.body_of_part(p.a.part)] = has_pair[model.body_of_part(p.b.part)] = true;
+  }
+  std::vector<bool> reported(model.joints().size(), false);
   for (const LinearSystem::Row& n : driven_system.NullSpace()) {
     if (n.empty()) continue;
-    FreeMotion free;
     const Freedom& f = model.freedoms()[n.front().variable];
     const Joint& j = model.joints()[f.joint];
+    if (!j.pair && reported[f.joint]) continue;
+    reported[f.joint] = true;
+    FreeMotion free;
     free.pair = j.pair;
-    free.freedom = FreedomWords(assembly, pairs, model, n.front().variable);
+    free.freedom = j.pair ? FreedomWords(assembly, pairs, model, n.front().variable)
+                          : "floats: no pair holds it";
     const std::size_t child = model.parent_joint(j.body_a) &&
                                       *model.parent_joint(j.body_a) == f.joint
                                   ? j.body_a
                                   : j.body_b;
-    const std::vector<std::size_t> own = solver.PartsOf(child);
+    const std::vector<std::size_t>& own = solver.PartsOf(child);
     free.part = own.empty() ? 0 : own.front();
     for (std::size_t body : MovedBodies(model, children, n)) {
       for (std::size_t p : solver.PartsOf(body)) free.parts.push_back(p);
     }
     std::sort(free.parts.begin(), free.parts.end());
-    std::string message = assembly.part(free.part).id + " " + free.freedom;
-    if (free.pair) message += " (" + std::string(ToString(pairs[*free.pair].type)) + " pair)";
-    message += ": nothing drives or holds this motion";
-    result.diagnostics.push_back({Severity::kWarning, "free_motion", message,
-                                  part_ids(free.parts),
-                                  free.pair ? pair_features(*free.pair)
-                                            : std::vector<std::string>{}});
+    if (has_pair[child]) {
+      std::string message = assembly.part(free.part).id + " " + free.freedom;
+      if (free.pair) message += " (" + std::string(ToString(pairs[*free.pair].type)) + " pair)";
+      message += ": nothing drives or holds this motion";
+      result.diagnostics.push_back({Severity::kWarning, "free_motion", message,
+                                    part_ids(free.parts),
+                                    free.pair ? pair_features(*free.pair)
+                                              : std::vector<std::string>{}});
+    }
     mobility.free_motions.push_back(std::move(free));
   }
   return result;

@@ -23,7 +23,7 @@ enum class MotionKind { kNone, kRotation, kTranslation, kScrew };
 std::string_view ToString(MotionKind kind);
 
 /// A feature's rates per unit driver rate (world frame, relative to the ground): revolutions
-/// about its axis (right-hand rule) and length units of its origin along its axis.
+/// about its axis (right-hand rule) and the file's length units of its origin along its axis.
 struct FeatureRate {
   ExactReal rotation;
   ExactReal translation;
@@ -37,10 +37,10 @@ struct PartMotion {
   /// Rotation axis or translation direction (unit, world). When a feature of the part has
   /// this axis, it is that feature's axis with its sense, and `axis_feature` names it.
   Eigen::Vector3d axis_W = Eigen::Vector3d::Zero();
-  Eigen::Vector3d point_W = Eigen::Vector3d::Zero();  ///< on the rotation or screw axis
+  Eigen::Vector3d point_W = Eigen::Vector3d::Zero();  ///< on the rotation or screw axis, mm
   std::optional<FeatureRef> axis_feature;
   ExactReal rotation;     ///< revolutions about axis_W
-  ExactReal translation;  ///< length units along axis_W
+  ExactReal translation;  ///< the file's length units along axis_W
 };
 
 /// The motion of every part when one driver runs at unit rate and the others are held, or when
@@ -98,7 +98,7 @@ struct MotionAnalysis {
 struct ImposedMotion {
   FeatureRef feature;  ///< the axis (the feature's, at the file pose)
   bool rotation = true;
-  double rate = 1.0;                       ///< rev or length units per second
+  double rate = 1.0;                       ///< rev/s or mm/s
   std::optional<std::size_t> relative_to;  ///< part; empty: the ground
 };
 

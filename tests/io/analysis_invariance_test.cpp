@@ -77,6 +77,7 @@ TEST(AnalysisInvariance, RenamingPartsChangesOnlyNames) {
     spec.tolerance = original.tolerance();
     spec.friction = original.friction();
     spec.parts = original.parts();
+    spec.drivers = original.drivers();
     for (Part& part : spec.parts) {
       part.id = "renamed_" + part.id;
       for (Feature& f : part.features) f.id = "f_" + f.id;

@@ -1,0 +1,314 @@
+// Motion analysis against textbook answers: gear trains (simple, idler, compound), planetary
+// and differential trains, rack and pinion, multi-start lead screw, worm drive and its
+// a gear triangle jam, free motions; scale and renaming change no ratio. The examples' motion
+// (worm back-drive, reversal, three planets) is tested in tests/io/motion_examples_test.cpp.
+
+#include "reasoning/motion.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "reasoning/analysis.h"
+#include "test_assembly.h"
+
+namespace mechanist {
+namespace {
+
+using testing::MakeFeature;
+using testing::MakePart;
+using K = FeatureKind;
+const Eigen::Vector3d kZ = Eigen::Vector3d::UnitZ();
+
+/// Parts and drivers built in code: gears on shafts turning in a ground frame's bearings.
+class Builder {
+ public:
+  Builder() { frame_ = MakePart("frame", {}, RigidTransform(), true); }
+
+  /// A gear part at (x, y) with gear features {teeth, z0} and a shaft (diameter 4, at
+  /// z in [shaft_z, shaft_z + 10]) in a frame hole; `retained`: revolute, else cylindrical.
+  Builder& Gear(const std::string& id, double x, double y, std::vector<std::pair<int, double>> gears,
+                double module = 1, bool retained = true, double shaft_z = -20) {
+    std::vector<Feature> f;
+    for (std::size_t i = 0; i < gears.size(); ++i) {
+      f.push_back(MakeFeature(i == 0 ? "teeth" : "teeth" + std::to_string(i + 1), K::kGear,
+                              {0, 0, gears[i].second}, kZ, [&](Feature& g) {
+                                g.teeth = gears[i].first;
+                                g.module = module;
+                                g.length = 5;
+                              }));
+    }
+    f.push_back(MakeFeature("shaft", K::kShaft, {0, 0, shaft_z}, kZ, [&](Feature& s) {
+      s.diameter = 4;
+      s.length = 10;
+      s.retained = retained;
+    }));
+    parts_.push_back(MakePart(id, f, RigidTransform::Translation({x, y, 0})));
+    frame_.features.push_back(
+        MakeFeature("bearing_" + id, K::kHole, {x, y, shaft_z}, kZ, [](Feature& h) {
+          h.diameter = 4;
+          h.length = 10;
+          h.through = true;
+        }));
+    return *this;
+  }
+  Builder& Part(mechanist::Part p) {
+    parts_.push_back(std::move(p));
+    return *this;
+  }
+  Builder& FrameFeature(Feature f) {
+    frame_.features.push_back(std::move(f));
+    return *this;
+  }
+  Builder& Drive(const std::string& part, const std::string& feature, double rate = 1,
+                 bool rotation = true) {
+    drives_.push_back({part, feature, rate, rotation});
+    return *this;
+  }
+  Builder& Override(const std::string& a, const std::string& b, PairType type) {
+    overrides_.push_back({a, b, type});
+    return *this;
+  }
+  Builder& Friction(double mu) {
+    friction_ = mu;
+    return *this;
+  }
+  Assembly Build() const {
+    AssemblySpec spec;
+    spec.name = "test";
+    spec.friction = friction_;
+    spec.parts = parts_;
+    spec.parts.insert(spec.parts.begin(), frame_);
+    auto ref = [&](const std::string& path) {
+      const auto slash = path.find('/');
+      for (std::size_t p = 0; p < spec.parts.size(); ++p) {
+        if (spec.parts[p].id != path.substr(0, slash)) continue;
+        for (std::size_t f = 0; f < spec.parts[p].features.size(); ++f) {
+          if (spec.parts[p].features[f].id == path.substr(slash + 1)) return FeatureRef{p, f};
+        }
+      }
+      ADD_FAILURE() << "no feature " << path;
+      return FeatureRef{};
+    };
+    for (const Drive_& d : drives_) {
+      Driver driver;
+      driver.id = d.part;
+      driver.feature = ref(d.part + "/" + d.feature);
+      driver.rate = d.rate;
+      driver.motion = d.rotation ? Driver::Motion::kRotation : Driver::Motion::kTranslation;
+      spec.drivers.push_back(driver);
+    }
+    for (const auto& o : overrides_) {
+      spec.overrides.push_back({{ref(o.a), ref(o.b)}, o.type});
+    }
+    return Assembly(std::move(spec));
+  }
+
+ private:
+  struct Drive_ {
+    std::string part, feature;
+    double rate;
+    bool rotation;
+  };
+  struct Override_ {
+    std::string a, b;
+    PairType type;
+  };
+  mechanist::Part frame_;
+  std::vector<mechanist::Part> parts_;
+  std::vector<Drive_> drives_;
+  std::vector<Override_> overrides_;
+  double friction_ = 0.1;
+};
+
+/// The rate about (or along) a feature's axis in the expectations' motion.
+ExactReal Rate(const Assembly& a, const Analysis& an, const std::string& path,
+               bool rotation = true, const DrivenMotion* motion = nullptr) {
+  const auto f = a.FindFeature(path);
+  EXPECT_TRUE(f.has_value()) << path;
+  if (!motion) motion = an.motion.ForExpectations();
+  EXPECT_NE(motion, nullptr);
+  const FeatureRate& r = motion->features[f->part][f->feature];
+  return rotation ? r.rotation : r.translation;
+}
+
+std::string Exact(const ExactReal& r) { return r.is_exact() ? r.ToString() : "inexact " + r.ToString(); }
+
+bool HasCode(const Analysis& an, const std::string& code) {
+  for (const Diagnostic& d : an.diagnostics) {
+    if (d.code == code) return true;
+  }
+  return false;
+}
+
+TEST(Motion, SimplePairTurnsBackwardsInTheToothRatio) {
+  const Assembly a = Builder().Gear("g1", 0, 0, {{20, 0}}).Gear("g2", 30, 0, {{40, 0}})
+                         .Drive("g1", "teeth").Build();
+  const Analysis an = Analyze(a);
+  EXPECT_EQ(Exact(Rate(a, an, "g2/teeth")), "-1/2");
+  EXPECT_EQ(an.motion.mobility.dof, 1);
+  EXPECT_EQ(an.motion.mobility.redundant, 0);
+  EXPECT_FALSE(HasCode(an, "free_motion"));
+}
+
+TEST(Motion, IdlerChangesDirectionNotRatio) {
+  const Assembly a = Builder().Gear("g1", 0, 0, {{20, 0}}).Gear("idler", 17.5, 0, {{15, 0}})
+                         .Gear("g3", 40, 0, {{30, 0}}).Drive("g1", "teeth").Build();
+  const Analysis an = Analyze(a);
+  EXPECT_EQ(Exact(Rate(a, an, "g3/teeth")), "2/3");
+  EXPECT_EQ(Exact(Rate(a, an, "idler/teeth")), "-4/3");
+}
+
+TEST(Motion, CompoundTrainMultipliesStageRatios) {
+  // 20 -> 40, then 10 on the same shaft -> 30: (-20/40) (-10/30) = 1/6.
+  const Assembly a = Builder().Gear("g1", 0, 0, {{20, 0}}).Gear("g23", 30, 0, {{40, 0}, {10, 10}})
+                         .Gear("g4", 50, 0, {{30, 10}}).Drive("g1", "teeth").Build();
+  const Analysis an = Analyze(a);
+  EXPECT_EQ(Exact(Rate(a, an, "g4/teeth")), "1/6");
+  EXPECT_EQ(Exact(Rate(a, an, "g23/teeth2")), "-1/2");
+}
+
+TEST(Motion, GearTriangleJams) {
+  const Assembly a = Builder().Gear("g1", 0, 0, {{20, 0}}).Gear("g2", 20, 0, {{20, 0}})
+                         .Gear("g3", 10, 10 * std::sqrt(3.0), {{20, 0}}).Drive("g1", "teeth").Build();
+  const Analysis an = Analyze(a);
+  EXPECT_EQ(an.motion.mobility.dof, 0);
+  EXPECT_TRUE(HasCode(an, "jam"));
+  EXPECT_TRUE(HasCode(an, "driver_locked"));
+  ASSERT_FALSE(an.motion.driven.front().possible);
+}
+
+TEST(Motion, DifferentialAddsItsInputsByWillis) {
+  // Sun 20 and ring 40 both driven; the carrier turns at (20 w_s + 40 w_r) / 60.
+  Builder b;
+  b.Gear("sun", 0, 0, {{20, 0}}, 1, true, -20)
+      .Gear("carrier", 0, 0, {}, 1, true, -40)
+      .Gear("ring", 0, 0, {{40, 0}}, 1, true, -60);
+  b.Part(MakePart("planet",
+                  {MakeFeature("teeth", K::kGear, {0, 0, 0}, kZ,
+                               [](Feature& g) { g.teeth = 10, g.module = 1, g.length = 5; }),
+                   MakeFeature("pin", K::kShaft, {0, 0, -8}, kZ,
+                               [](Feature& s) { s.diameter = 3, s.length = 3, s.retained = true; })},
+                  RigidTransform::Translation({15, 0, 0})));
+  const Assembly base = b.Build();
+  // The ring is internal and the carrier needs a bore for the planet's pin: edit the spec.
+  AssemblySpec spec;
+  spec.name = "differential";
+  spec.parts = base.parts();
+  for (mechanist::Part& p : spec.parts) {
+    if (p.id == "ring") p.features[0].internal = true;
+    if (p.id == "carrier") {
+      p.features.push_back(MakeFeature("pin_bore", K::kHole, {15, 0, -8}, kZ, [](Feature& h) {
+        h.diameter = 3, h.length = 3, h.through = true;
+      }));
+    }
+  }
+  auto driver = [&](const std::string& part, double rate) {
+    Driver d;
+    d.id = part;
+    for (std::size_t p = 0; p < spec.parts.size(); ++p) {
+      if (spec.parts[p].id == part) d.feature = {p, 0};
+    }
+    d.rate = rate;
+    return d;
+  };
+  spec.drivers = {driver("sun", 1), driver("ring", 2)};
+  const Assembly a(spec);
+  const Analysis an = Analyze(a);
+  EXPECT_EQ(an.motion.mobility.dof, 2);
+  ASSERT_EQ(an.motion.driven.size(), 3u);
+  EXPECT_EQ(Exact(Rate(a, an, "carrier/shaft", true, &an.motion.driven[0])), "1/3");
+  EXPECT_EQ(Exact(Rate(a, an, "carrier/shaft", true, &an.motion.driven[1])), "2/3");
+  EXPECT_EQ(Exact(Rate(a, an, "carrier/shaft")), "5/3");
+  // Relative to the carrier the planet turns -(20/10)(1 - 1/3) per unit sun rate.
+  EXPECT_EQ(Exact(Rate(a, an, "planet/teeth", true, &an.motion.driven[0])), "-1");
+}
+
+TEST(Motion, RackTravelsPiTimesPitchDiameterPerRevolution) {
+  Builder b;
+  b.Gear("pinion", 0, 0, {{20, 0}});
+  b.Part(MakePart("rack",
+                  {MakeFeature("teeth", K::kRack, {-20, -10, 0}, Eigen::Vector3d::UnitX(),
+                               [](Feature& r) {
+                                 r.module = 1, r.length = 40, r.normal = {0, 1, 0};
+                               }),
+                   MakeFeature("key", K::kKey, {-20, -20, 0}, Eigen::Vector3d::UnitX(),
+                               [](Feature& k) { k.width = 4, k.length = 40, k.normal = {0, -1, 0}; })}));
+  b.FrameFeature(MakeFeature("way", K::kSlot, {-40, -20, 0}, Eigen::Vector3d::UnitX(),
+                             [](Feature& s) {
+                               s.width = 4, s.length = 80, s.depth = 2, s.normal = {0, 1, 0};
+                             }));
+  b.Override("rack/key", "frame/way", PairType::kPrismatic).Drive("pinion", "teeth");
+  const Assembly a = b.Build();
+  const Analysis an = Analyze(a);
+  const ExactReal v = Rate(a, an, "rack/teeth", false);
+  EXPECT_FALSE(v.is_exact());  // pi
+  EXPECT_NEAR(v.value(), 20 * M_PI, 1e-9);
+  EXPECT_EQ(an.motion.mobility.dof, 1);
+}
+
+TEST(Motion, TwoStartLeadScrewAdvancesItsNutByTheLead) {
+  Builder b;
+  b.Gear("spindle", 0, 0, {});
+  b.Part(MakePart("nut",
+                  {MakeFeature("thread", K::kTappedHole, {0, 0, 10}, kZ,
+                               [](Feature& t) {
+                                 t.diameter = 8, t.pitch = 1.5, t.starts = 2, t.length = 10,
+                                 t.through = true;
+                               }),
+                   MakeFeature("key", K::kKey, {10, 0, 10}, kZ,
+                               [](Feature& k) { k.width = 3, k.length = 10, k.normal = {1, 0, 0}; })}));
+  b.FrameFeature(MakeFeature("way", K::kSlot, {10, 0, 0}, kZ, [](Feature& s) {
+    s.width = 3, s.length = 40, s.depth = 2, s.normal = {-1, 0, 0};
+  }));
+  const Assembly base = b.Build();
+  AssemblySpec spec;
+  spec.parts = base.parts();
+  for (mechanist::Part& p : spec.parts) {
+    if (p.id == "spindle") {
+      p.features.push_back(MakeFeature("thread", K::kThread, {0, 0, 0}, kZ, [](Feature& t) {
+        t.diameter = 8, t.pitch = 1.5, t.starts = 2, t.length = 30,
+        t.fastening = Fastening::kLoose;
+      }));
+    }
+  }
+  const std::size_t spindle = 1, nut = 2;
+  spec.overrides.push_back({{FeatureRef{nut, 1}, FeatureRef{0, 1}}, PairType::kPrismatic});
+  Driver d;
+  d.id = "crank";
+  d.feature = {spindle, 1};
+  spec.drivers = {d};
+  const Assembly a(spec);
+  const Analysis an = Analyze(a);
+  EXPECT_EQ(Exact(Rate(a, an, "nut/thread", false)), "-3");
+  EXPECT_EQ(an.motion.mobility.dof, 1);
+}
+
+TEST(Motion, ScaleAndNamesChangeNoRatio) {
+  auto train = [](double s, const std::string& prefix) {
+    return Builder()
+        .Gear(prefix + "1", 0, 0, {{20, 0}}, s)
+        .Gear(prefix + "23", 30 * s, 0, {{40, 0}, {10, 10}}, s)
+        .Gear(prefix + "4", 50 * s, 0, {{30, 10}}, s)
+        .Drive(prefix + "1", "teeth")
+        .Build();
+  };
+  const Assembly a = train(1, "g"), b = train(2.5, "wheel_");
+  const Analysis aa = Analyze(a), ab = Analyze(b);
+  EXPECT_EQ(Exact(Rate(a, aa, "g4/teeth")), Exact(Rate(b, ab, "wheel_4/teeth")));
+  EXPECT_EQ(aa.motion.mobility.dof, ab.motion.mobility.dof);
+}
+
+TEST(Motion, GearFreeToSlideOnItsShaftIsAFreeMotion) {
+  const Assembly a = Builder().Gear("g1", 0, 0, {{20, 0}}).Gear("g2", 30, 0, {{40, 0}}, 1, false)
+                         .Drive("g1", "teeth").Build();
+  const Analysis an = Analyze(a);
+  EXPECT_EQ(an.motion.mobility.dof, 2);
+  ASSERT_EQ(an.motion.mobility.free_motions.size(), 1u);
+  EXPECT_EQ(a.part(an.motion.mobility.free_motions[0].part).id, "g2");
+  EXPECT_NE(an.motion.mobility.free_motions[0].freedom.find("slides along"), std::string::npos);
+  EXPECT_EQ(Exact(Rate(a, an, "g2/teeth")), "-1/2");
+}
+
+}  // namespace
+}  // namespace mechanist
