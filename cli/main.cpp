@@ -125,7 +125,8 @@ int main(int argc, char** argv) {
       "drag", "Turn or push one part: what moves with it, and which pair absorbs the motion");
   drag->add_option("FILE", file, "assembly file (.json)")->required();
   drag->add_option("--part", part, "the part to drag")->required();
-  drag->add_option("--feature", feature, "the feature whose axis to use (default: its first in a pair)");
+  drag->add_option("--feature", feature,
+                   "the feature whose axis to use (default: its first in a pair)");
   bool rotate = false, translate = false;
   CLI::Option* rotate_flag = drag->add_flag("--rotate", rotate, "turn about the axis (default)");
   drag->add_flag("--translate", translate, "push along the axis")->excludes(rotate_flag);

@@ -17,8 +17,8 @@ Analysis Analyze(const Assembly& assembly) {
   for (std::size_t s = 0; s < analysis.subassemblies.size(); ++s) {
     for (std::size_t part : analysis.subassemblies[s].parts) analysis.subassembly_of[part] = s;
   }
-  analysis.motion = AnalyzeMotion(assembly, analysis.pairs, analysis.subassemblies,
-                                  analysis.subassembly_of);
+  analysis.motion =
+      AnalyzeMotion(assembly, analysis.pairs, analysis.subassemblies, analysis.subassembly_of);
   analysis.diagnostics = CheckAssembly(assembly);
   for (const auto* found : {&recognition.diagnostics, &analysis.motion.diagnostics}) {
     analysis.diagnostics.insert(analysis.diagnostics.end(), found->begin(), found->end());

@@ -65,14 +65,16 @@ ExactReal ExactReal::operator-() const {
 }
 
 ExactReal ExactReal::operator+(const ExactReal& o) const {
-  auto exact = Exactly(exact_, o.exact_, [](const Rational& a, const Rational& b) { return a + b; });
+  auto exact =
+      Exactly(exact_, o.exact_, [](const Rational& a, const Rational& b) { return a + b; });
   return ExactReal(exact ? exact->ToDouble() : value_ + o.value_, exact);
 }
 
 ExactReal ExactReal::operator*(const ExactReal& o) const {
   // An exact zero annihilates even an approximate factor: a structural zero stays exact.
   if ((exact_ && exact_->is_zero()) || (o.exact_ && o.exact_->is_zero())) return ExactReal();
-  auto exact = Exactly(exact_, o.exact_, [](const Rational& a, const Rational& b) { return a * b; });
+  auto exact =
+      Exactly(exact_, o.exact_, [](const Rational& a, const Rational& b) { return a * b; });
   return ExactReal(exact ? exact->ToDouble() : value_ * o.value_, exact);
 }
 
@@ -81,7 +83,8 @@ ExactReal ExactReal::operator/(const ExactReal& o) const {
     throw std::domain_error("division by zero");
   }
   if (exact_ && exact_->is_zero()) return ExactReal();
-  auto exact = Exactly(exact_, o.exact_, [](const Rational& a, const Rational& b) { return a / b; });
+  auto exact =
+      Exactly(exact_, o.exact_, [](const Rational& a, const Rational& b) { return a / b; });
   return ExactReal(exact ? exact->ToDouble() : value_ / o.value_, exact);
 }
 

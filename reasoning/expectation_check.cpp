@@ -99,16 +99,15 @@ ExpectationResult CheckRatio(const Assembly& assembly, const Analysis& analysis,
   }
   const PartMotion& m = motion->parts[part];
   const bool turns = m.kind == MotionKind::kRotation || m.kind == MotionKind::kScrew;
-  const ExactReal& found =
-      e.feature ? motion->features[part][e.feature->feature].Ratio(turns)
-                : (turns ? m.rotation : m.translation);
+  const ExactReal& found = e.feature ? motion->features[part][e.feature->feature].Ratio(turns)
+                                     : (turns ? m.rotation : m.translation);
   if (e.ratio.exact) {
     const Rational expected(e.ratio.numerator, e.ratio.denominator);
     r.passed = found.is_exact() && *found.exact() == expected;
     r.detail = "found " + found.ToString() + (found.is_exact() ? "" : " (not exact)");
   } else {
-    r.passed = std::abs(found.value() - e.ratio.value) <=
-               std::max(1e-9 * std::abs(e.ratio.value), 1e-12);
+    r.passed =
+        std::abs(found.value() - e.ratio.value) <= std::max(1e-9 * std::abs(e.ratio.value), 1e-12);
     r.detail = "found " + FormatNumber(found.value(), 12);
   }
   return r;

@@ -98,8 +98,8 @@ void KinematicModel::BuildJoints(const std::vector<Pair>& pairs) {
     const AxisSegment b = WorldAxis(p.b);
     j.point_W = a.origin;
     j.axis_W = a.direction;
-    if (p.type == PairType::kPrismatic) j.axis_W = b.direction.dot(a.direction) < 0 ? -b.direction
-                                                                                  : b.direction;
+    if (p.type == PairType::kPrismatic)
+      j.axis_W = b.direction.dot(a.direction) < 0 ? -b.direction : b.direction;
     if (p.type == PairType::kPinSlot) j.slide_W = b.direction;
     if (p.type == PairType::kScrew) {
       j.lead = ExactReal::FromDecimal(p.travel_per_revolution.value_or(0.0));
@@ -380,10 +380,10 @@ void KinematicModel::BuildRows(const std::vector<Pair>& pairs) {
     const AxisSegment b = WorldAxis(p.b);
     if (const auto C = CommonCarrier(p.a, p.b)) {
       // Willis: rates relative to the carrier are in the pair's exact ratio.
-      LinearSystem::Row row = rack ? Linear(B, *C, b.origin, b.direction)
-                                   : Angular(B, *C, b.direction);
-      const ExactReal ratio = rack ? ExactReal::Approximate(*p.travel_per_revolution)
-                                   : ExactReal(*p.ratio);
+      LinearSystem::Row row =
+          rack ? Linear(B, *C, b.origin, b.direction) : Angular(B, *C, b.direction);
+      const ExactReal ratio =
+          rack ? ExactReal::Approximate(*p.travel_per_revolution) : ExactReal(*p.ratio);
       Append(row, Angular(A, *C, a.direction), -ratio);
       rows_.push_back({std::move(row), i});
       continue;

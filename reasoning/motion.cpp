@@ -106,8 +106,7 @@ class Solver {
   LinearSystem::Row WormLock(std::size_t pair) const {
     const Pair& p = pairs_[pair];
     const std::size_t carrier = *model_.CommonCarrier(p.a, p.b);
-    return model_.Angular(model_.body_of_part(p.a.part), carrier,
-                          model_.WorldAxis(p.a).direction);
+    return model_.Angular(model_.body_of_part(p.a.part), carrier, model_.WorldAxis(p.a).direction);
   }
 
   /// Self-locking worm gears that the imposed motions would reach from the wheel's side first:
@@ -164,8 +163,7 @@ class Solver {
         const AxisSegment axis = model_.WorldAxis({p, f});
         rates.push_back(
             {KinematicModel::Evaluate(model_.Angular(body, ground, axis.direction), x),
-             KinematicModel::Evaluate(model_.Linear(body, ground, axis.origin, axis.direction),
-                                      x) /
+             KinematicModel::Evaluate(model_.Linear(body, ground, axis.origin, axis.direction), x) /
                  mm_per_length_});
       }
       motion.parts[p] = Classify(p, omega[body], v[body], rates);
@@ -220,8 +218,7 @@ class Solver {
 std::vector<ImposedMotion> DriverMotions(const Assembly& assembly) {
   std::vector<ImposedMotion> imposed;
   for (const Driver& d : assembly.drivers()) {
-    imposed.push_back(
-        {d.feature, d.motion == Driver::Motion::kRotation, d.rate, d.relative_to});
+    imposed.push_back({d.feature, d.motion == Driver::Motion::kRotation, d.rate, d.relative_to});
   }
   return imposed;
 }
@@ -235,8 +232,7 @@ std::vector<std::size_t> MovedBodies(const KinematicModel& model,
   for (const LinearSystem::Term& t : vector) {
     const Joint& j = model.joints()[model.freedoms()[t.variable].joint];
     const std::size_t child =
-        model.parent_joint(j.body_a) &&
-                &model.joints()[*model.parent_joint(j.body_a)] == &j
+        model.parent_joint(j.body_a) && &model.joints()[*model.parent_joint(j.body_a)] == &j
             ? j.body_a
             : j.body_b;
     stack.push_back(child);
@@ -322,7 +318,8 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   // Redundant constraints, per pair.
   std::map<std::size_t, int> redundant;
   for (std::size_t r = 0; r < model.rows().size(); ++r) {
-    if (solver.outcomes()[r] == LinearSystem::Outcome::kRedundant) ++redundant[model.rows()[r].pair];
+    if (solver.outcomes()[r] == LinearSystem::Outcome::kRedundant)
+      ++redundant[model.rows()[r].pair];
   }
   for (const auto& [pair, count] : redundant) {
     mobility.redundant += count;
@@ -330,7 +327,8 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     result.diagnostics.push_back(
         {Severity::kInfo, "redundant_constraints",
          std::string(ToString(pairs[pair].type)) + " pair " + solver.PairName(pair) + ": " +
-             std::to_string(count) + (count == 1 ? " of its constraints is" : " of its constraints are") +
+             std::to_string(count) +
+             (count == 1 ? " of its constraints is" : " of its constraints are") +
              " implied by the other pairs (over-constrained: it must be made accurately)",
          pair_parts(pair), pair_features(pair)});
   }
@@ -377,12 +375,12 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   for (std::size_t k = 0; k < model.freedoms().size(); ++k) {
     const Joint& j = model.joints()[model.freedoms()[k].joint];
     if (moves[k] || !j.pair) continue;
-    result.diagnostics.push_back(
-        {Severity::kWarning, "jam",
-         std::string(ToString(pairs[*j.pair].type)) + " pair " + solver.PairName(*j.pair) +
-             " cannot move as it allows (" + FreedomWords(assembly, pairs, model, k) +
-             "): the other pairs lock it",
-         pair_parts(*j.pair), pair_features(*j.pair)});
+    result.diagnostics.push_back({Severity::kWarning, "jam",
+                                  std::string(ToString(pairs[*j.pair].type)) + " pair " +
+                                      solver.PairName(*j.pair) + " cannot move as it allows (" +
+                                      FreedomWords(assembly, pairs, model, k) +
+                                      "): the other pairs lock it",
+                                  pair_parts(*j.pair), pair_features(*j.pair)});
   }
 
   // Drivers: each alone at unit rate, then all at their rates.
@@ -438,10 +436,9 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     free.pair = j.pair;
     free.freedom = j.pair ? FreedomWords(assembly, pairs, model, n.front().variable)
                           : "floats: no pair holds it";
-    const std::size_t child = model.parent_joint(j.body_a) &&
-                                      *model.parent_joint(j.body_a) == f.joint
-                                  ? j.body_a
-                                  : j.body_b;
+    const std::size_t child =
+        model.parent_joint(j.body_a) && *model.parent_joint(j.body_a) == f.joint ? j.body_a
+                                                                                 : j.body_b;
     const std::vector<std::size_t>& own = solver.PartsOf(child);
     free.part = own.empty() ? 0 : own.front();
     for (std::size_t body : MovedBodies(model, children, n)) {
@@ -452,10 +449,9 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
       std::string message = assembly.part(free.part).id + " " + free.freedom;
       if (free.pair) message += " (" + std::string(ToString(pairs[*free.pair].type)) + " pair)";
       message += ": nothing drives or holds this motion";
-      result.diagnostics.push_back({Severity::kWarning, "free_motion", message,
-                                    part_ids(free.parts),
-                                    free.pair ? pair_features(*free.pair)
-                                              : std::vector<std::string>{}});
+      result.diagnostics.push_back(
+          {Severity::kWarning, "free_motion", message, part_ids(free.parts),
+           free.pair ? pair_features(*free.pair) : std::vector<std::string>{}});
     }
     mobility.free_motions.push_back(std::move(free));
   }

@@ -24,7 +24,9 @@ ExactReal Rate(const Assembly& a, const Analysis& an, const std::string& path) {
   return an.motion.ForExpectations()->features[f->part][f->feature].rotation;
 }
 
-std::string Exact(const ExactReal& r) { return r.is_exact() ? r.ToString() : "inexact " + r.ToString(); }
+std::string Exact(const ExactReal& r) {
+  return r.is_exact() ? r.ToString() : "inexact " + r.ToString();
+}
 
 std::string ReadText(const std::string& path) {
   std::ifstream in(path);
@@ -40,7 +42,8 @@ std::string Replace(std::string text, const std::string& from, const std::string
   return text;
 }
 
-const std::string kWorm = std::string(MECHANIST_SOURCE_DIR) + "/examples/robot_hand_worm/assembly.json";
+const std::string kWorm =
+    std::string(MECHANIST_SOURCE_DIR) + "/examples/robot_hand_worm/assembly.json";
 
 TEST(Motion, SelfLockingWormCannotBeDrivenFromItsWheel) {
   const std::string text = Replace(ReadText(kWorm), R"("part": "motor_shaft", "feature": "shaft")",
@@ -52,7 +55,8 @@ TEST(Motion, SelfLockingWormCannotBeDrivenFromItsWheel) {
   EXPECT_NE(an.motion.driven[0].reason.find("not back-drivable"), std::string::npos)
       << an.motion.driven[0].reason;
   // Without friction the lead angle exceeds the friction angle: the wheel drives the worm.
-  const Assembly free = ParseAssembly(Replace(text, R"("friction": 0.15)", R"("friction": 0.01)"), kWorm);
+  const Assembly free =
+      ParseAssembly(Replace(text, R"("friction": 0.15)", R"("friction": 0.01)"), kWorm);
   const Analysis an_free = Analyze(free);
   ASSERT_TRUE(an_free.motion.driven[0].possible) << an_free.motion.driven[0].reason;
   EXPECT_EQ(Exact(Rate(free, an_free, "worm/worm")), "-40");

@@ -40,7 +40,8 @@ TEST(LinearSystem, RankAndSolutionsMatchDenseOracleExactly) {
         row.clear();
         dense.row(i) = dense.row(i - 1) - 2 * dense.row(i - 2);
         for (int v = 0; v < n; ++v) {
-          if (dense(i, v) != 0) row.push_back({static_cast<std::size_t>(v), Rational(static_cast<int>(dense(i, v)))});
+          if (dense(i, v) != 0)
+            row.push_back({static_cast<std::size_t>(v), Rational(static_cast<int>(dense(i, v)))});
         }
       }
       rows.push_back(row);

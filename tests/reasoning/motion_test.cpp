@@ -27,8 +27,9 @@ class Builder {
 
   /// A gear part at (x, y) with gear features {teeth, z0} and a shaft (diameter 4, at
   /// z in [shaft_z, shaft_z + 10]) in a frame hole; `retained`: revolute, else cylindrical.
-  Builder& Gear(const std::string& id, double x, double y, std::vector<std::pair<int, double>> gears,
-                double module = 1, bool retained = true, double shaft_z = -20) {
+  Builder& Gear(const std::string& id, double x, double y,
+                std::vector<std::pair<int, double>> gears, double module = 1, bool retained = true,
+                double shaft_z = -20) {
     std::vector<Feature> f;
     for (std::size_t i = 0; i < gears.size(); ++i) {
       f.push_back(MakeFeature(i == 0 ? "teeth" : "teeth" + std::to_string(i + 1), K::kGear,
@@ -122,8 +123,8 @@ class Builder {
 };
 
 /// The rate about (or along) a feature's axis in the expectations' motion.
-ExactReal Rate(const Assembly& a, const Analysis& an, const std::string& path,
-               bool rotation = true, const DrivenMotion* motion = nullptr) {
+ExactReal Rate(const Assembly& a, const Analysis& an, const std::string& path, bool rotation = true,
+               const DrivenMotion* motion = nullptr) {
   const auto f = a.FindFeature(path);
   EXPECT_TRUE(f.has_value()) << path;
   if (!motion) motion = an.motion.ForExpectations();
@@ -132,7 +133,9 @@ ExactReal Rate(const Assembly& a, const Analysis& an, const std::string& path,
   return rotation ? r.rotation : r.translation;
 }
 
-std::string Exact(const ExactReal& r) { return r.is_exact() ? r.ToString() : "inexact " + r.ToString(); }
+std::string Exact(const ExactReal& r) {
+  return r.is_exact() ? r.ToString() : "inexact " + r.ToString();
+}
 
 bool HasCode(const Analysis& an, const std::string& code) {
   for (const Diagnostic& d : an.diagnostics) {
@@ -142,8 +145,11 @@ bool HasCode(const Analysis& an, const std::string& code) {
 }
 
 TEST(Motion, SimplePairTurnsBackwardsInTheToothRatio) {
-  const Assembly a = Builder().Gear("g1", 0, 0, {{20, 0}}).Gear("g2", 30, 0, {{40, 0}})
-                         .Drive("g1", "teeth").Build();
+  const Assembly a = Builder()
+                         .Gear("g1", 0, 0, {{20, 0}})
+                         .Gear("g2", 30, 0, {{40, 0}})
+                         .Drive("g1", "teeth")
+                         .Build();
   const Analysis an = Analyze(a);
   EXPECT_EQ(Exact(Rate(a, an, "g2/teeth")), "-1/2");
   EXPECT_EQ(an.motion.mobility.dof, 1);
@@ -152,8 +158,12 @@ TEST(Motion, SimplePairTurnsBackwardsInTheToothRatio) {
 }
 
 TEST(Motion, IdlerChangesDirectionNotRatio) {
-  const Assembly a = Builder().Gear("g1", 0, 0, {{20, 0}}).Gear("idler", 17.5, 0, {{15, 0}})
-                         .Gear("g3", 40, 0, {{30, 0}}).Drive("g1", "teeth").Build();
+  const Assembly a = Builder()
+                         .Gear("g1", 0, 0, {{20, 0}})
+                         .Gear("idler", 17.5, 0, {{15, 0}})
+                         .Gear("g3", 40, 0, {{30, 0}})
+                         .Drive("g1", "teeth")
+                         .Build();
   const Analysis an = Analyze(a);
   EXPECT_EQ(Exact(Rate(a, an, "g3/teeth")), "2/3");
   EXPECT_EQ(Exact(Rate(a, an, "idler/teeth")), "-4/3");
@@ -161,16 +171,24 @@ TEST(Motion, IdlerChangesDirectionNotRatio) {
 
 TEST(Motion, CompoundTrainMultipliesStageRatios) {
   // 20 -> 40, then 10 on the same shaft -> 30: (-20/40) (-10/30) = 1/6.
-  const Assembly a = Builder().Gear("g1", 0, 0, {{20, 0}}).Gear("g23", 30, 0, {{40, 0}, {10, 10}})
-                         .Gear("g4", 50, 0, {{30, 10}}).Drive("g1", "teeth").Build();
+  const Assembly a = Builder()
+                         .Gear("g1", 0, 0, {{20, 0}})
+                         .Gear("g23", 30, 0, {{40, 0}, {10, 10}})
+                         .Gear("g4", 50, 0, {{30, 10}})
+                         .Drive("g1", "teeth")
+                         .Build();
   const Analysis an = Analyze(a);
   EXPECT_EQ(Exact(Rate(a, an, "g4/teeth")), "1/6");
   EXPECT_EQ(Exact(Rate(a, an, "g23/teeth2")), "-1/2");
 }
 
 TEST(Motion, GearTriangleJams) {
-  const Assembly a = Builder().Gear("g1", 0, 0, {{20, 0}}).Gear("g2", 20, 0, {{20, 0}})
-                         .Gear("g3", 10, 10 * std::sqrt(3.0), {{20, 0}}).Drive("g1", "teeth").Build();
+  const Assembly a = Builder()
+                         .Gear("g1", 0, 0, {{20, 0}})
+                         .Gear("g2", 20, 0, {{20, 0}})
+                         .Gear("g3", 10, 10 * std::sqrt(3.0), {{20, 0}})
+                         .Drive("g1", "teeth")
+                         .Build();
   const Analysis an = Analyze(a);
   EXPECT_EQ(an.motion.mobility.dof, 0);
   EXPECT_TRUE(HasCode(an, "jam"));
@@ -184,12 +202,13 @@ TEST(Motion, DifferentialAddsItsInputsByWillis) {
   b.Gear("sun", 0, 0, {{20, 0}}, 1, true, -20)
       .Gear("carrier", 0, 0, {}, 1, true, -40)
       .Gear("ring", 0, 0, {{40, 0}}, 1, true, -60);
-  b.Part(MakePart("planet",
-                  {MakeFeature("teeth", K::kGear, {0, 0, 0}, kZ,
-                               [](Feature& g) { g.teeth = 10, g.module = 1, g.length = 5; }),
-                   MakeFeature("pin", K::kShaft, {0, 0, -8}, kZ,
-                               [](Feature& s) { s.diameter = 3, s.length = 3, s.retained = true; })},
-                  RigidTransform::Translation({15, 0, 0})));
+  b.Part(
+      MakePart("planet",
+               {MakeFeature("teeth", K::kGear, {0, 0, 0}, kZ,
+                            [](Feature& g) { g.teeth = 10, g.module = 1, g.length = 5; }),
+                MakeFeature("pin", K::kShaft, {0, 0, -8}, kZ,
+                            [](Feature& s) { s.diameter = 3, s.length = 3, s.retained = true; })},
+               RigidTransform::Translation({15, 0, 0})));
   const Assembly base = b.Build();
   // The ring is internal and the carrier needs a bore for the planet's pin: edit the spec.
   AssemblySpec spec;
@@ -227,17 +246,18 @@ TEST(Motion, DifferentialAddsItsInputsByWillis) {
 TEST(Motion, RackTravelsPiTimesPitchDiameterPerRevolution) {
   Builder b;
   b.Gear("pinion", 0, 0, {{20, 0}});
-  b.Part(MakePart("rack",
-                  {MakeFeature("teeth", K::kRack, {-20, -10, 0}, Eigen::Vector3d::UnitX(),
-                               [](Feature& r) {
-                                 r.module = 1, r.length = 40, r.normal = {0, 1, 0};
-                               }),
-                   MakeFeature("key", K::kKey, {-20, -20, 0}, Eigen::Vector3d::UnitX(),
-                               [](Feature& k) { k.width = 4, k.length = 40, k.normal = {0, -1, 0}; })}));
-  b.FrameFeature(MakeFeature("way", K::kSlot, {-40, -20, 0}, Eigen::Vector3d::UnitX(),
-                             [](Feature& s) {
-                               s.width = 4, s.length = 80, s.depth = 2, s.normal = {0, 1, 0};
-                             }));
+  b.Part(MakePart(
+      "rack", {MakeFeature("teeth", K::kRack, {-20, -10, 0}, Eigen::Vector3d::UnitX(),
+                           [](Feature& r) {
+                             r.module = 1, r.length = 40, r.normal = {0, 1, 0};
+                           }),
+               MakeFeature("key", K::kKey, {-20, -20, 0}, Eigen::Vector3d::UnitX(), [](Feature& k) {
+                 k.width = 4, k.length = 40, k.normal = {0, -1, 0};
+               })}));
+  b.FrameFeature(
+      MakeFeature("way", K::kSlot, {-40, -20, 0}, Eigen::Vector3d::UnitX(), [](Feature& s) {
+        s.width = 4, s.length = 80, s.depth = 2, s.normal = {0, 1, 0};
+      }));
   b.Override("rack/key", "frame/way", PairType::kPrismatic).Drive("pinion", "teeth");
   const Assembly a = b.Build();
   const Analysis an = Analyze(a);
@@ -250,14 +270,14 @@ TEST(Motion, RackTravelsPiTimesPitchDiameterPerRevolution) {
 TEST(Motion, TwoStartLeadScrewAdvancesItsNutByTheLead) {
   Builder b;
   b.Gear("spindle", 0, 0, {});
-  b.Part(MakePart("nut",
-                  {MakeFeature("thread", K::kTappedHole, {0, 0, 10}, kZ,
-                               [](Feature& t) {
-                                 t.diameter = 8, t.pitch = 1.5, t.starts = 2, t.length = 10,
-                                 t.through = true;
-                               }),
-                   MakeFeature("key", K::kKey, {10, 0, 10}, kZ,
-                               [](Feature& k) { k.width = 3, k.length = 10, k.normal = {1, 0, 0}; })}));
+  b.Part(MakePart("nut", {MakeFeature("thread", K::kTappedHole, {0, 0, 10}, kZ,
+                                      [](Feature& t) {
+                                        t.diameter = 8, t.pitch = 1.5, t.starts = 2, t.length = 10,
+                                        t.through = true;
+                                      }),
+                          MakeFeature("key", K::kKey, {10, 0, 10}, kZ, [](Feature& k) {
+                            k.width = 3, k.length = 10, k.normal = {1, 0, 0};
+                          })}));
   b.FrameFeature(MakeFeature("way", K::kSlot, {10, 0, 0}, kZ, [](Feature& s) {
     s.width = 3, s.length = 40, s.depth = 2, s.normal = {-1, 0, 0};
   }));
@@ -267,8 +287,7 @@ TEST(Motion, TwoStartLeadScrewAdvancesItsNutByTheLead) {
   for (mechanist::Part& p : spec.parts) {
     if (p.id == "spindle") {
       p.features.push_back(MakeFeature("thread", K::kThread, {0, 0, 0}, kZ, [](Feature& t) {
-        t.diameter = 8, t.pitch = 1.5, t.starts = 2, t.length = 30,
-        t.fastening = Fastening::kLoose;
+        t.diameter = 8, t.pitch = 1.5, t.starts = 2, t.length = 30, t.fastening = Fastening::kLoose;
       }));
     }
   }
@@ -300,8 +319,11 @@ TEST(Motion, ScaleAndNamesChangeNoRatio) {
 }
 
 TEST(Motion, GearFreeToSlideOnItsShaftIsAFreeMotion) {
-  const Assembly a = Builder().Gear("g1", 0, 0, {{20, 0}}).Gear("g2", 30, 0, {{40, 0}}, 1, false)
-                         .Drive("g1", "teeth").Build();
+  const Assembly a = Builder()
+                         .Gear("g1", 0, 0, {{20, 0}})
+                         .Gear("g2", 30, 0, {{40, 0}}, 1, false)
+                         .Drive("g1", "teeth")
+                         .Build();
   const Analysis an = Analyze(a);
   EXPECT_EQ(an.motion.mobility.dof, 2);
   ASSERT_EQ(an.motion.mobility.free_motions.size(), 1u);

@@ -1,8 +1,8 @@
 // The C++ mechanism-testing API, used as a GoogleTest user would.
 
-#include "mechanist/testing.h"
-
 #include <gtest/gtest.h>
+
+#include "mechanist/testing.h"
 
 namespace mechanist {
 namespace {
@@ -31,8 +31,7 @@ TEST(TestingApi, FailuresSayWhatWasFound) {
   const Mechanism hand = Mechanism::Load(Example("robot_hand_worm"));
   const ::testing::AssertionResult wrong = HasRatio(hand, "worm_wheel/teeth", "1/40");
   EXPECT_FALSE(wrong);
-  EXPECT_NE(std::string(wrong.message()).find("found -1/40"), std::string::npos)
-      << wrong.message();
+  EXPECT_NE(std::string(wrong.message()).find("found -1/40"), std::string::npos) << wrong.message();
   const ::testing::AssertionResult missing = HasMobility(hand, 2);
   EXPECT_FALSE(missing);
   EXPECT_NE(std::string(missing.message()).find("found 1"), std::string::npos);
