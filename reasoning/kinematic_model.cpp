@@ -110,13 +110,13 @@ void KinematicModel::BuildJoints(const std::vector<Pair>& pairs) {
       const Joint& o = joints_[k];
       const bool same_bodies = (o.body_a == j.body_a && o.body_b == j.body_b) ||
                                (o.body_a == j.body_b && o.body_b == j.body_a);
-      if (!same_bodies || o.type != j.type) continue;
+      // Two threads on one axis are two constraints unless their leads agree: never merged.
+      if (!same_bodies || o.type != j.type || p.type == PairType::kScrew) continue;
       if (std::abs(o.axis_W.dot(j.axis_W)) < cos_tol_) continue;
       if (p.type != PairType::kPrismatic &&
           DistanceToLine(j.point_W, o.point_W, o.axis_W) > length_tol_) {
         continue;
       }
-      if (p.type == PairType::kScrew) continue;  // two threads on one axis: leads must agree
       duplicate = true;
       break;
     }
@@ -127,14 +127,15 @@ void KinematicModel::BuildJoints(const std::vector<Pair>& pairs) {
   }
 }
 
-void KinematicModel::AddFreedoms(Joint& j) {
+void KinematicModel::AddFreedoms(std::size_t joint) {
+  Joint& j = joints_[joint];
   auto add = [&](Freedom::Kind kind, const Eigen::Vector3d& point, const Eigen::Vector3d& dir) {
     Freedom f;
     f.kind = kind;
     f.point_W = point;
     f.direction_W = dir;
     f.lead = kind == Freedom::Kind::kScrew ? j.lead : ExactReal();
-    f.joint = static_cast<std::size_t>(&j - joints_.data());
+    f.joint = joint;
     j.freedoms.push_back(freedoms_.size());
     freedoms_.push_back(f);
   };
@@ -187,7 +188,6 @@ void KinematicModel::BuildTree() {
     adjacent[joints_[k].body_b].push_back(k);
   }
   std::vector<bool> seen(bodies, false);
-  joints_.reserve(joints_.size() + bodies);  // floating joints: AddFreedoms keeps addresses
   auto grow = [&](std::size_t root) {
     std::deque<std::size_t> queue{root};
     seen[root] = true;
@@ -201,8 +201,9 @@ void KinematicModel::BuildTree() {
         if (seen[other]) continue;
         seen[other] = true;
         j.in_tree = true;
+        j.child = other;
         parent_joint_[other] = k;
-        AddFreedoms(j);
+        AddFreedoms(k);
         queue.push_back(other);
       }
     }
@@ -215,6 +216,7 @@ void KinematicModel::BuildTree() {
     j.body_a = body;
     j.body_b = ground_;
     j.in_tree = true;
+    j.child = body;
     for (std::size_t part = 0; part < body_of_part_.size(); ++part) {
       if (body_of_part_[part] == body) {
         j.point_W = assembly_.part(part).X_WP.translation();
@@ -223,7 +225,7 @@ void KinematicModel::BuildTree() {
     }
     joints_.push_back(j);
     parent_joint_[body] = joints_.size() - 1;
-    AddFreedoms(joints_.back());
+    AddFreedoms(joints_.size() - 1);
     grow(body);
   }
 }

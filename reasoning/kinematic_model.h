@@ -36,6 +36,7 @@ struct Joint {
   std::size_t body_a = 0, body_b = 0;
   std::vector<std::size_t> freedoms;  ///< unknown indices, when the joint is in the tree
   bool in_tree = false;
+  std::size_t child = 0;  ///< in the tree: the body it holds to its parent
   Eigen::Vector3d point_W = Eigen::Vector3d::Zero();  ///< on its axis (or the ball's centre)
   Eigen::Vector3d axis_W = Eigen::Vector3d::UnitZ();  ///< rotation axis, slide or face normal
   Eigen::Vector3d slide_W = Eigen::Vector3d::Zero();  ///< pin_slot: the slot's direction
@@ -119,7 +120,7 @@ class KinematicModel {
   ExactReal LinearOf(const Freedom& f, const Eigen::Vector3d& p, const Eigen::Vector3d& d) const;
   void BuildJoints(const std::vector<Pair>& pairs);
   void BuildTree();
-  void AddFreedoms(Joint& joint);
+  void AddFreedoms(std::size_t joint);
   void BuildRows(const std::vector<Pair>& pairs);
   bool Carries(std::size_t body, FeatureRef f) const;
 

@@ -42,6 +42,14 @@ class Solver {
     for (const ConstraintRow& row : model_.rows()) {
       outcomes_.push_back(structural_.AddRow(row.terms));
     }
+    edges_.resize(model_.body_count());
+    for (std::size_t i = 0; i < pairs_.size(); ++i) {
+      const std::size_t a = model_.body_of_part(pairs_[i].a.part);
+      const std::size_t b = model_.body_of_part(pairs_[i].b.part);
+      if (a == b) continue;
+      edges_[a].push_back({b, i});
+      edges_[b].push_back({a, i});
+    }
   }
 
   const KinematicModel& model() const { return model_; }
@@ -113,14 +121,6 @@ class Solver {
   /// breadth-first from the driven bodies over joints and couplings, not through the ground.
   std::vector<std::size_t> BackDrivenWorms(const std::vector<ImposedMotion>& imposed) const {
     const std::size_t bodies = model_.body_count();
-    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> edges(bodies);  // body, pair
-    for (std::size_t i = 0; i < pairs_.size(); ++i) {
-      const std::size_t a = model_.body_of_part(pairs_[i].a.part);
-      const std::size_t b = model_.body_of_part(pairs_[i].b.part);
-      if (a == b || pairs_[i].type == PairType::kFixed) continue;
-      edges[a].push_back({b, i});
-      edges[b].push_back({a, i});
-    }
     std::vector<bool> seen(bodies, false);
     std::deque<std::size_t> queue;
     for (const ImposedMotion& m : imposed) {
@@ -132,7 +132,7 @@ class Solver {
       const std::size_t body = queue.front();
       queue.pop_front();
       if (body == model_.ground()) continue;
-      for (const auto& [other, pair] : edges[body]) {
+      for (const auto& [other, pair] : edges_[body]) {
         const Pair& p = pairs_[pair];
         const bool into_worm = p.type == PairType::kWormGear && p.self_locking &&
                                body == model_.body_of_part(p.b.part) &&
@@ -212,6 +212,7 @@ class Solver {
   LinearSystem structural_;
   std::vector<LinearSystem::Outcome> outcomes_;
   std::vector<std::vector<std::size_t>> parts_of_body_;
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> edges_;  // body: (body, pair)
   ExactReal mm_per_length_;  // reports give lengths in the file's units
 };
 
@@ -388,16 +389,17 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   std::vector<std::string> labels;
   for (const Driver& d : assembly.drivers()) labels.push_back("driver " + d.id);
   for (std::size_t i = 0; i < imposed.size(); ++i) {
-    std::vector<ImposedMotion> alone = imposed;
-    // Unit rate: one revolution, or one of the file's length units (rates are in mm inside).
-    for (std::size_t k = 0; k < alone.size(); ++k) {
-      alone[k].rate = k != i ? 0.0 : alone[k].rotation ? 1.0 : assembly.units().mm_per_length;
+    // Driver i first, at unit rate (one revolution, or one of the file's length units: rates
+    // are mm inside), then the others held still.
+    std::vector<ImposedMotion> alone{imposed[i]};
+    std::vector<std::string> names{labels[i]};
+    alone.front().rate = imposed[i].rotation ? 1.0 : assembly.units().mm_per_length;
+    for (std::size_t k = 0; k < imposed.size(); ++k) {
+      if (k == i) continue;
+      alone.push_back(imposed[k]);
+      alone.back().rate = 0.0;
+      names.push_back(labels[k]);
     }
-    std::rotate(alone.begin(), alone.begin() + static_cast<long>(i),
-                alone.begin() + static_cast<long>(i) + 1);
-    std::vector<std::string> names = labels;
-    std::rotate(names.begin(), names.begin() + static_cast<long>(i),
-                names.begin() + static_cast<long>(i) + 1);
     DrivenMotion m = solver.Solve(alone, names);
     m.driver = i;
     result.driven.push_back(std::move(m));

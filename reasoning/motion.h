@@ -74,7 +74,7 @@ struct FreeMotion {
 /// mechanisms where the Gruebler-Kutzbach count is wrong (a train with three planets).
 struct Mobility {
   int dof = 0;        ///< independent freedoms with the drivers released
-  int redundant = 0;  ///< constraints implied by others: dof = 6 n - constraints + redundant
+  int redundant = 0;  ///< constraint rows implied by the rows before them
   std::vector<RedundantConstraint> redundant_pairs;
   std::vector<FreeMotion> free_motions;  ///< with the drivers applied
   std::vector<int> part_freedoms;        ///< per part: dimension of its allowable motion
@@ -89,8 +89,9 @@ struct MotionAnalysis {
   /// Jams, free motions, redundant constraints, locked drivers, non-back-drivable worms.
   std::vector<Diagnostic> diagnostics;
 
-  /// The motion an expectation's "ratio" refers to: the only driver's at unit rate, or all
-  /// drivers at their rates; nullptr without drivers.
+  /// The motion an expectation's "ratio" refers to: the only driver's at unit rate (`driven`
+  /// then holds it and the combined entry), or all drivers at their rates; nullptr without
+  /// drivers.
   const DrivenMotion* ForExpectations() const;
 };
 
