@@ -4,15 +4,20 @@
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
+#include <optional>
 #include <string>
 
 #include "io/analysis_report.h"
+#include "io/assembly_report.h"
 #include "io/assembly_reader.h"
 #include "io/atomic_file.h"
 #include "io/info_report.h"
 #include "io/input_error.h"
 #include "kernel/assembly_check.h"
+#include "kernel/assembly_state.h"
+#include "kernel/collision_model.h"
 #include "reasoning/analysis.h"
+#include "reasoning/assembly_plan.h"
 #include "reasoning/drag.h"
 #include "reasoning/expectation_check.h"
 
@@ -83,9 +88,48 @@ int Drag(const std::string& file, const std::string& part, const std::string& fe
   return result.motion.possible ? kExitOk : kExitFailures;
 }
 
+int Interference(const std::string& file, const std::string& json) {
+  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const mechanist::Analysis analysis = mechanist::Analyze(assembly);
+  const mechanist::CollisionModel model(assembly);
+  const auto contacts = mechanist::FindContacts(assembly, mechanist::InitialState(assembly), model,
+                                                analysis.pairs);
+  mechanist::WriteInterferenceSummary(assembly, analysis, contacts, std::cout);
+  if (!json.empty()) {
+    mechanist::WriteFileAtomically(
+        json, mechanist::InterferenceJson(assembly, analysis, contacts), file);
+  }
+  for (const auto& c : contacts) {
+    if (c.verdict == mechanist::ContactVerdict::kClash) return kExitFailures;
+  }
+  return kExitOk;
+}
+
+int Assemble(const std::string& file, const std::string& json) {
+  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const mechanist::Analysis analysis = mechanist::Analyze(assembly);
+  const mechanist::CollisionModel model(assembly);
+  const mechanist::AssemblyPlan plan = mechanist::PlanAssembly(assembly, analysis, model);
+  mechanist::WriteAssemblySummary(assembly, analysis, plan, std::cout);
+  if (!json.empty()) {
+    mechanist::WriteFileAtomically(json, mechanist::AssemblyPlanJson(assembly, analysis, plan),
+                                   file);
+  }
+  return plan.assemblable ? kExitOk : kExitFailures;
+}
+
 int Check(const std::string& file) {
   const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
-  const auto results = mechanist::CheckExpectations(assembly, mechanist::Analyze(assembly));
+  const mechanist::Analysis analysis = mechanist::Analyze(assembly);
+  // The assembly plan sweeps every part; it runs only when an entry asks for it.
+  std::optional<mechanist::AssemblyPlan> plan;
+  for (const auto& e : assembly.expectations()) {
+    if (e.kind == mechanist::Expectation::Kind::kAssemblable && !plan) {
+      plan = mechanist::PlanAssembly(assembly, analysis, mechanist::CollisionModel(assembly));
+    }
+  }
+  const auto results =
+      mechanist::CheckExpectations(assembly, analysis, plan ? &*plan : nullptr);
   mechanist::WriteCheckResults(results, std::cout);
   for (const auto& r : results) {
     if (!r.passed) return kExitFailures;
@@ -120,6 +164,16 @@ int main(int argc, char** argv) {
       app.add_subcommand("check", "Evaluate the file's expect entries; exit 1 if any fails");
   check->add_option("FILE", file, "assembly file (.json)")->required();
 
+  CLI::App* interference = app.add_subcommand(
+      "interference", "Parts that penetrate in the assembled state; exit 1 if any clash");
+  interference->add_option("FILE", file, "assembly file (.json)")->required();
+  interference->add_option("--json", json, "write the JSON report to this file");
+  CLI::App* assemble = app.add_subcommand(
+      "assemble",
+      "Check the file's steps, or find an assembly sequence; exit 1 if it cannot be assembled");
+  assemble->add_option("FILE", file, "assembly file (.json)")->required();
+  assemble->add_option("--json", json, "write the JSON report to this file");
+
   std::string part, feature;
   CLI::App* drag = app.add_subcommand(
       "drag", "Turn or push one part: what moves with it, and which pair absorbs the motion");
@@ -145,6 +199,8 @@ int main(int argc, char** argv) {
     if (*info) return Info(file);
     if (*analyze) return Analyze(file, json, dot);
     if (*check) return Check(file);
+    if (*interference) return Interference(file, json);
+    if (*assemble) return Assemble(file, json);
     if (*drag) return Drag(file, part, feature, translate);
   } catch (const mechanist::InputError& e) {
     std::cerr << "mechanist: error: " << e.what() << "\n";

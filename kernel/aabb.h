@@ -38,4 +38,9 @@ struct Aabb {
 /// corners (the seeds' tight box: computed in the part's frame, then transformed).
 Aabb TransformBox(const RigidTransform& X_WP, const Aabb& box_P);
 
+/// True when box_A (in frame A) and box_B (in frame B) overlap once B is placed in A by
+/// X_AB, each grown by `margin` (mm) on every side: the separating-axis test of two oriented
+/// boxes over their 15 candidate axes (Gottschalk, Lin and Manocha, OBBTree, 1996).
+bool BoxesOverlap(const Aabb& box_A, const Aabb& box_B, const RigidTransform& X_AB, double margin);
+
 }  // namespace mechanist

@@ -4,6 +4,7 @@
 
 #include "kernel/assembly_check.h"
 #include "kernel/assembly_state.h"
+#include "reasoning/fastener_check.h"
 #include "reasoning/pair_recognition.h"
 
 namespace mechanist {
@@ -20,7 +21,10 @@ Analysis Analyze(const Assembly& assembly) {
   analysis.motion =
       AnalyzeMotion(assembly, analysis.pairs, analysis.subassemblies, analysis.subassembly_of);
   analysis.diagnostics = CheckAssembly(assembly);
-  for (const auto* found : {&recognition.diagnostics, &analysis.motion.diagnostics}) {
+  const auto fasteners = CheckFasteners(assembly, analysis.pairs);
+  const std::vector<Diagnostic>* findings[] = {&recognition.diagnostics, &fasteners,
+                                                &analysis.motion.diagnostics};
+  for (const std::vector<Diagnostic>* found : findings) {
     analysis.diagnostics.insert(analysis.diagnostics.end(), found->begin(), found->end());
   }
   std::sort(analysis.diagnostics.begin(), analysis.diagnostics.end(), DiagnosticLess);

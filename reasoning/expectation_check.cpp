@@ -138,17 +138,35 @@ ExpectationResult CheckMobility(const Analysis& analysis, const Expectation& e) 
   return r;
 }
 
-ExpectationResult NotBuilt(const Expectation& e) {
+ExpectationResult CheckAssemblable(const Assembly& assembly, const AssemblyPlan* plan,
+                                   const Expectation& e) {
   ExpectationResult r;
   r.what = std::string("assemblable ") + (e.flag ? "true" : "false");
-  r.detail = "not evaluated: this build has no assemblability check yet";
+  if (plan == nullptr) {
+    r.detail = "not evaluated: no assembly plan was given";
+    return r;
+  }
+  r.passed = plan->assemblable == e.flag;
+  std::size_t blocked = plan->unplaced.size();
+  for (const InsertionStep& s : plan->steps) blocked += s.clear ? 0 : 1;
+  if (plan->assemblable) {
+    r.detail = "found assemblable (" + std::to_string(plan->steps.size()) + " insertions" +
+               (plan->from_steps ? " from the file's steps" : " found by disassembly") + ")";
+  } else {
+    r.detail = "found not assemblable: " + std::to_string(plan->clashes.size()) + " clashes, " +
+               std::to_string(blocked) + " blocked insertions";
+    if (!plan->clashes.empty()) {
+      r.detail += " (first clash: " + assembly.part(plan->clashes.front().part_a).id + " and " +
+                  assembly.part(plan->clashes.front().part_b).id + ")";
+    }
+  }
   return r;
 }
 
 }  // namespace
 
 ExpectationResult CheckExpectation(const Assembly& assembly, const Analysis& analysis,
-                                   const Expectation& e) {
+                                   const Expectation& e, const AssemblyPlan* plan) {
   ExpectationResult r;
   switch (e.kind) {
     case Expectation::Kind::kPair:
@@ -170,7 +188,7 @@ ExpectationResult CheckExpectation(const Assembly& assembly, const Analysis& ana
       r = CheckMobility(analysis, e);
       break;
     case Expectation::Kind::kAssemblable:
-      r = NotBuilt(e);
+      r = CheckAssemblable(assembly, plan, e);
       break;
   }
   r.pointer = e.pointer;
@@ -178,10 +196,11 @@ ExpectationResult CheckExpectation(const Assembly& assembly, const Analysis& ana
 }
 
 std::vector<ExpectationResult> CheckExpectations(const Assembly& assembly,
-                                                 const Analysis& analysis) {
+                                                 const Analysis& analysis,
+                                                 const AssemblyPlan* plan) {
   std::vector<ExpectationResult> results;
   for (const Expectation& e : assembly.expectations()) {
-    results.push_back(CheckExpectation(assembly, analysis, e));
+    results.push_back(CheckExpectation(assembly, analysis, e, plan));
   }
   return results;
 }

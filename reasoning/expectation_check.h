@@ -5,6 +5,7 @@
 
 #include "kernel/assembly.h"
 #include "reasoning/analysis.h"
+#include "reasoning/assembly_plan.h"
 
 namespace mechanist {
 
@@ -21,13 +22,15 @@ struct ExpectationResult {
 /// `same_subassembly`, `diagnostic` (a diagnostic whose code equals the text or whose message
 /// contains it, concerning every listed part), `ratio` (exactly, or within a relative 1e-9
 /// for a decimal; of the only driver at unit rate, or all drivers at their rates), `moves` (for
-/// any driver alone), `mobility`. `assemblable` needs the assemblability check this build does
-/// not have: it fails and says so.
+/// any driver alone), `mobility`, and `assemblable` against `plan` (PlanAssembly); without a
+/// plan an `assemblable` entry fails with "not evaluated".
+std::vector<ExpectationResult> CheckExpectations(const Assembly& assembly,
+                                                 const Analysis& analysis,
+                                                 const AssemblyPlan* plan = nullptr);
+
 /// Evaluates one expectation (as CheckExpectations does), for the C++ testing API.
 ExpectationResult CheckExpectation(const Assembly& assembly, const Analysis& analysis,
-                                   const Expectation& expectation);
-
-std::vector<ExpectationResult> CheckExpectations(const Assembly& assembly,
-                                                 const Analysis& analysis);
+                                   const Expectation& expectation,
+                                   const AssemblyPlan* plan = nullptr);
 
 }  // namespace mechanist

@@ -7,6 +7,8 @@ packages=(
   build-essential cmake
   libeigen3-dev libboost-graph-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libcgal-dev libgmp-dev libmpfr-dev
+  libfcl-dev
 )
 
 missing=()

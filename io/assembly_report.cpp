@@ -1,0 +1,177 @@
+#include "io/assembly_report.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "kernel/number_format.h"
+
+namespace mechanist {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Report numbers carry 9 significant digits, so that rounding noise never shows and the same
+// input gives byte-identical reports.
+double Num(double x) {
+  if (!std::isfinite(x)) return x;
+  return std::stod(FormatNumber(x, 9));
+}
+
+Json Point(const Eigen::Vector3d& p) { return Json::array({Num(p.x()), Num(p.y()), Num(p.z())}); }
+
+std::string Text(const Eigen::Vector3d& p) {
+  return "(" + FormatNumber(p.x()) + ", " + FormatNumber(p.y()) + ", " + FormatNumber(p.z()) +
+         ")";
+}
+
+std::string PairText(const Assembly& assembly, const Analysis& analysis, std::size_t k) {
+  const Pair& p = analysis.pairs.at(k);
+  return std::string(ToString(p.type)) + " " + assembly.FeatureName(p.a) + " - " +
+         assembly.FeatureName(p.b);
+}
+
+Json ContactJson(const Assembly& assembly, const Analysis& analysis, const PartContact& c) {
+  Json j;
+  j["parts"] = Json::array({assembly.part(c.part_a).id, assembly.part(c.part_b).id});
+  j["verdict"] = std::string(ToString(c.verdict));
+  j["depth"] = std::isfinite(c.measure.depth) ? Json(Num(c.measure.depth)) : Json(nullptr);
+  j["depth_bound"] = Num(c.measure.depth_bound);
+  j["location"] = Point(c.measure.p_W);
+  j["contained"] = c.measure.contained == 0
+                       ? Json(nullptr)
+                       : Json(assembly.part(c.measure.contained == 1 ? c.part_a : c.part_b).id);
+  j["pair"] = c.pair ? Json(PairText(assembly, analysis, *c.pair)) : Json(nullptr);
+  return j;
+}
+
+std::string ContactText(const Assembly& assembly, const Analysis& analysis, const PartContact& c) {
+  std::string s = assembly.part(c.part_a).id + " and " + assembly.part(c.part_b).id + ": " +
+                  std::string(ToString(c.verdict));
+  s += std::isfinite(c.measure.depth) ? ", depth " + FormatNumber(c.measure.depth) + " mm"
+                                      : ", depth unknown (a mesh is not closed)";
+  s += " at " + Text(c.measure.p_W);
+  if (c.measure.contained != 0) {
+    s += ", " + assembly.part(c.measure.contained == 1 ? c.part_a : c.part_b).id +
+         " lies entirely inside the other";
+  }
+  if (c.pair) s += " (" + PairText(assembly, analysis, *c.pair) + ")";
+  return s;
+}
+
+Json StepJson(const Assembly& assembly, const Analysis& analysis, const InsertionStep& s) {
+  Json j;
+  j["part"] = assembly.part(s.part).id;
+  Json carried = Json::array();
+  for (const std::size_t c : s.carried) carried.push_back(assembly.part(c).id);
+  j["carried"] = carried;
+  j["feature"] = s.feature ? Json(assembly.FeatureName(*s.feature)) : Json(nullptr);
+  j["into"] = s.into ? Json(assembly.FeatureName(*s.into)) : Json(nullptr);
+  j["direction"] = Point(s.direction_W);
+  j["travel"] = Num(s.travel);
+  j["clear"] = s.clear;
+  Json blocked = Json::array();
+  for (const InsertionObstacle& o : s.blocked_by) {
+    blocked.push_back({{"part", assembly.part(o.part).id},
+                       {"travel", Num(o.travel)},
+                       {"short_by", Num(o.short_by)},
+                       {"location", Point(o.p_W)}});
+  }
+  j["blocked_by"] = blocked;
+  j["pair"] = s.pair ? Json(PairText(assembly, analysis, *s.pair)) : Json(nullptr);
+  return j;
+}
+
+std::string StepText(const Assembly& assembly, const Analysis& analysis, const InsertionStep& s) {
+  std::string t = assembly.part(s.part).id;
+  for (const std::size_t c : s.carried) t += " + " + assembly.part(c).id;
+  if (s.feature) t += " (" + assembly.FeatureName(*s.feature) + ")";
+  if (s.into) t += " into " + assembly.FeatureName(*s.into);
+  t += " along " + Text(s.direction_W) + ", " + FormatNumber(s.travel) + " mm: ";
+  if (s.clear) {
+    t += "clear";
+  } else {
+    t += "blocked by ";
+    for (std::size_t k = 0; k < s.blocked_by.size(); ++k) {
+      const InsertionObstacle& o = s.blocked_by[k];
+      t += (k ? "; " : "") + assembly.part(o.part).id + " after " + FormatNumber(o.travel) +
+           " mm (" + FormatNumber(o.short_by) + " mm short of its place) at " + Text(o.p_W);
+    }
+  }
+  if (s.pair) t += "; makes " + PairText(assembly, analysis, *s.pair);
+  return t;
+}
+
+}  // namespace
+
+void WriteInterferenceSummary(const Assembly& assembly, const Analysis& analysis,
+                              const std::vector<PartContact>& contacts, std::ostream& out) {
+  std::size_t clashes = 0, fits = 0, touching = 0;
+  for (const PartContact& c : contacts) {
+    clashes += c.verdict == ContactVerdict::kClash;
+    fits += c.verdict == ContactVerdict::kDesignedFit;
+    touching += c.verdict == ContactVerdict::kTouching;
+  }
+  out << "interference: " << clashes << " clashes, " << fits << " designed fits, " << touching
+      << " touching contacts (tolerance " << FormatNumber(assembly.tolerance().length)
+      << " mm)\n";
+  for (const ContactVerdict v : {ContactVerdict::kClash, ContactVerdict::kDesignedFit}) {
+    for (const PartContact& c : contacts) {
+      if (c.verdict == v) out << "  " << ContactText(assembly, analysis, c) << "\n";
+    }
+  }
+}
+
+std::string InterferenceJson(const Assembly& assembly, const Analysis& analysis,
+                             const std::vector<PartContact>& contacts) {
+  Json report;
+  report["assembly"] = assembly.name();
+  std::size_t clashes = 0;
+  Json list = Json::array();
+  for (const PartContact& c : contacts) {
+    clashes += c.verdict == ContactVerdict::kClash;
+    list.push_back(ContactJson(assembly, analysis, c));
+  }
+  report["clashes"] = clashes;
+  report["contacts"] = list;
+  return report.dump(2) + "\n";
+}
+
+void WriteAssemblySummary(const Assembly& assembly, const Analysis& analysis,
+                          const AssemblyPlan& plan, std::ostream& out) {
+  out << "assemblable: " << (plan.assemblable ? "yes" : "no") << " ("
+      << (plan.from_steps ? "the file's steps" : "sequence found by disassembly") << ")\n";
+  out << "in place first:";
+  for (const std::size_t p : plan.base) out << " " << assembly.part(p).id;
+  out << "\n";
+  for (std::size_t k = 0; k < plan.steps.size(); ++k) {
+    out << "  " << k + 1 << ". " << StepText(assembly, analysis, plan.steps[k]) << "\n";
+  }
+  for (const InsertionStep& s : plan.unplaced) {
+    out << "  cannot be placed: " << StepText(assembly, analysis, s) << "\n";
+  }
+  for (const PartContact& c : plan.clashes) {
+    out << "  clash: " << ContactText(assembly, analysis, c) << "\n";
+  }
+}
+
+std::string AssemblyPlanJson(const Assembly& assembly, const Analysis& analysis,
+                             const AssemblyPlan& plan) {
+  Json report;
+  report["assembly"] = assembly.name();
+  report["assemblable"] = plan.assemblable;
+  report["source"] = plan.from_steps ? "steps" : "search";
+  Json base = Json::array();
+  for (const std::size_t p : plan.base) base.push_back(assembly.part(p).id);
+  report["base"] = base;
+  Json steps = Json::array(), unplaced = Json::array(), clashes = Json::array();
+  for (const InsertionStep& s : plan.steps) steps.push_back(StepJson(assembly, analysis, s));
+  for (const InsertionStep& s : plan.unplaced) unplaced.push_back(StepJson(assembly, analysis, s));
+  for (const PartContact& c : plan.clashes) clashes.push_back(ContactJson(assembly, analysis, c));
+  report["steps"] = steps;
+  report["unplaced"] = unplaced;
+  report["clashes"] = clashes;
+  return report.dump(2) + "\n";
+}
+
+}  // namespace mechanist

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "kernel/assembly.h"
+#include "reasoning/analysis.h"
+#include "reasoning/assembly_plan.h"
+#include "reasoning/interference.h"
+
+namespace mechanist {
+
+/// `mechanist interference` summary: one line per pair of parts that penetrate (clashes, then
+/// designed fits), with depth (mm) and location (world), then a count of touching contacts.
+void WriteInterferenceSummary(const Assembly& assembly, const Analysis& analysis,
+                              const std::vector<PartContact>& contacts, std::ostream& out);
+
+/// The interference JSON report: {"assembly", "clashes": n, "contacts": [{"parts", "verdict",
+/// "depth", "depth_bound", "location", "contained", "pair"}]}; numbers to 9 significant digits.
+std::string InterferenceJson(const Assembly& assembly, const Analysis& analysis,
+                             const std::vector<PartContact>& contacts);
+
+/// `mechanist assemble` summary: the verdict, the base, each insertion (clear, or its
+/// obstacles with the travel at contact), the parts that could not be placed, the clashes.
+void WriteAssemblySummary(const Assembly& assembly, const Analysis& analysis,
+                          const AssemblyPlan& plan, std::ostream& out);
+
+/// The assembly JSON report: {"assembly", "assemblable", "source": "steps"|"search", "base",
+/// "steps": [{"part", "carried", "feature", "into", "direction", "travel", "clear",
+/// "blocked_by": [{"part", "travel", "short_by", "location"}], "pair"}], "unplaced" (same
+/// shape), "clashes": [...]}.
+std::string AssemblyPlanJson(const Assembly& assembly, const Analysis& analysis,
+                             const AssemblyPlan& plan);
+
+}  // namespace mechanist

@@ -1,0 +1,444 @@
+#include "reasoning/assembly_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "kernel/assembly_state.h"
+#include "kernel/translational_sweep.h"
+
+namespace mechanist {
+namespace {
+
+bool HasDirection(FeatureKind kind) {
+  return kind != FeatureKind::kFace && kind != FeatureKind::kBall && kind != FeatureKind::kSocket;
+}
+
+// Pairs that hold parts together so that they travel as one: press fits and forced fixes.
+bool Carries(const Pair& pair) {
+  return pair.type == PairType::kFixed &&
+         (pair.fastening == PairFastening::kPressFit || pair.source == PairSource::kOverride);
+}
+
+class Planner {
+ public:
+  Planner(const Assembly& assembly, const Analysis& analysis, const CollisionModel& model)
+      : assembly_(assembly),
+        analysis_(analysis),
+        model_(model),
+        state_(InitialState(assembly)),
+        tolerance_(assembly.tolerance().length),
+        min_approach_(std::sin(assembly.tolerance().angle)) {
+    for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
+      boxes_.push_back(TransformBox(state_.X_WP[p], model.part_mesh(p).bounds()));
+    }
+  }
+
+  AssemblyPlan Plan() {
+    AssemblyPlan plan;
+    for (PartContact& c : FindContacts(assembly_, state_, model_, analysis_.pairs)) {
+      if (c.verdict == ContactVerdict::kClash) plan.clashes.push_back(c);
+    }
+    if (assembly_.steps().empty()) {
+      Search(&plan);
+    } else {
+      plan.from_steps = true;
+      CheckSteps(&plan);
+    }
+    bool all_clear = plan.unplaced.empty();
+    for (const InsertionStep& s : plan.steps) all_clear = all_clear && s.clear;
+    plan.assemblable = all_clear && plan.clashes.empty();
+    return plan;
+  }
+
+ private:
+  // The parts carried along with `part`: reachable through carrying pairs, among `eligible`.
+  std::vector<std::size_t> Carried(std::size_t part, const std::vector<bool>& eligible) const {
+    std::vector<std::size_t> found = {part};
+    std::vector<bool> seen(assembly_.parts().size(), false);
+    seen[part] = true;
+    for (std::size_t k = 0; k < found.size(); ++k) {
+      for (const Pair& pair : analysis_.pairs) {
+        if (!Carries(pair)) continue;
+        for (const auto& [x, y] : {std::pair{pair.a.part, pair.b.part},
+                                   std::pair{pair.b.part, pair.a.part}}) {
+          if (x == found[k] && !seen[y] && eligible[y]) {
+            seen[y] = true;
+            found.push_back(y);
+          }
+        }
+      }
+    }
+    std::sort(found.begin() + 1, found.end());
+    return {found.begin() + 1, found.end()};
+  }
+
+  Eigen::Vector3d WorldAxis(FeatureRef ref) const {
+    return state_.X_WP[ref.part].RotateDirection(assembly_.feature(ref).axis);
+  }
+
+  std::optional<std::size_t> PairOf(FeatureRef x, FeatureRef y) const {
+    for (std::size_t k = 0; k < analysis_.pairs.size(); ++k) {
+      const Pair& p = analysis_.pairs[k];
+      if ((p.a == x && p.b == y) || (p.a == y && p.b == x)) return k;
+    }
+    return std::nullopt;
+  }
+
+  // Contacts inside the engagement region of a pair between the moving part and the obstacle
+  // are the designed engagement: for meshing teeth always (the meshes only approximate the
+  // tooth flanks), for axial fits when the motion runs along the pair's axis (a thread
+  // entering its nut); across the axis they are real obstacles (a bolt in a sliding part's way).
+  std::function<bool(const Eigen::Vector3d&)> IgnoreFor(std::size_t moving, std::size_t obstacle,
+                                                        const Eigen::Vector3d& d) const {
+    std::vector<FeatureRef> regions;
+    for (const Pair& p : analysis_.pairs) {
+      const bool between = (p.a.part == moving && p.b.part == obstacle) ||
+                           (p.b.part == moving && p.a.part == obstacle);
+      if (!between) continue;
+      const FeatureRef theirs = p.a.part == obstacle ? p.a : p.b;
+      const bool teeth = p.type == PairType::kGear || p.type == PairType::kWormGear ||
+                         p.type == PairType::kRackPinion;
+      if (!teeth &&
+          std::abs(WorldAxis(theirs).dot(d)) < std::cos(assembly_.tolerance().angle)) {
+        continue;
+      }
+      regions.push_back(theirs);
+    }
+    if (regions.empty()) return {};
+    return [this, regions](const Eigen::Vector3d& p_W) {
+      for (const FeatureRef& r : regions) {
+        if (InEngagementRegion(assembly_.feature(r), state_.X_WP[r.part], p_W, tolerance_)) {
+          return true;
+        }
+      }
+      return false;
+    };
+  }
+
+  // A feature of `obstacle` in an axial fit (shaft, hole or thread pair) with `moving` whose
+  // axis is not along d: the fit holds the part against that motion, whatever the meshes show
+  // (tapped holes are rarely modelled, so a bolt sits inside its part's mesh).
+  std::optional<FeatureRef> HeldAcross(std::size_t moving, std::size_t obstacle,
+                                       const Eigen::Vector3d& d) const {
+    for (const Pair& p : analysis_.pairs) {
+      const bool between = (p.a.part == moving && p.b.part == obstacle) ||
+                           (p.b.part == moving && p.a.part == obstacle);
+      if (!between) continue;
+      const FeatureKind ka = assembly_.feature(p.a).kind, kb = assembly_.feature(p.b).kind;
+      auto axial = [](FeatureKind k) {
+        return k == FeatureKind::kShaft || k == FeatureKind::kHole || k == FeatureKind::kThread ||
+               k == FeatureKind::kTappedHole;
+      };
+      if (!axial(ka) || !axial(kb)) continue;
+      const FeatureRef theirs = p.a.part == obstacle ? p.a : p.b;
+      if (std::abs(WorldAxis(theirs).dot(d)) < std::cos(assembly_.tolerance().angle)) {
+        return theirs;
+      }
+    }
+    return std::nullopt;
+  }
+
+  // Sweeps `group` (at its final poses shifted by `start_shift` along d) by up to `travel`
+  // along the unit `d` against `obstacles`; fills `blocked_by`, sorted by travel. Contacts
+  // within the tolerance of `seat_travel` or beyond are the seat and do not count.
+  std::vector<InsertionObstacle> Sweep(const std::vector<std::size_t>& group,
+                                       const std::vector<std::size_t>& obstacles,
+                                       const Eigen::Vector3d& d, double start_shift,
+                                       double travel, double seat_travel) const {
+    Aabb swept;
+    for (const std::size_t m : group) {
+      Aabb box = boxes_[m];
+      box.min += start_shift * d;
+      box.max += start_shift * d;
+      swept.Extend(box);
+      box.min += travel * d;
+      box.max += travel * d;
+      swept.Extend(box);
+    }
+    std::vector<InsertionObstacle> blocked;
+    for (const std::size_t o : obstacles) {
+      Aabb grown = boxes_[o];
+      grown.min.array() -= tolerance_;
+      grown.max.array() += tolerance_;
+      if (!grown.Intersects(swept)) continue;
+      std::optional<InsertionObstacle> first;
+      for (const std::size_t m : group) {
+        if (const auto held = HeldAcross(m, o, d)) {
+          // Held from the start of a removal, or at the very end of an insertion.
+          const double at = std::isfinite(seat_travel) ? seat_travel : 0.0;
+          const Eigen::Vector3d p_W = state_.X_WP[held->part] * assembly_.feature(*held).origin;
+          first = InsertionObstacle{o, at, 0.0, p_W};
+          break;
+        }
+        SweepOptions options;
+        options.max_travel = travel;
+        options.min_approach = min_approach_;
+        options.ignore = IgnoreFor(m, o, d);
+        const RigidTransform X_WM =
+            RigidTransform::Translation(start_shift * d) * state_.X_WP[m];
+        const auto contact = FirstBlockingContact(model_.part_mesh(m), X_WM, model_.part_mesh(o),
+                                                  state_.X_WP[o], d, options);
+        if (!contact || contact->travel >= seat_travel - tolerance_) continue;
+        if (!first || contact->travel < first->travel) {
+          first = InsertionObstacle{o, contact->travel, seat_travel - contact->travel,
+                                    contact->p_W};
+        }
+      }
+      if (first) blocked.push_back(*first);
+    }
+    std::sort(blocked.begin(), blocked.end(),
+              [&](const InsertionObstacle& x, const InsertionObstacle& y) {
+                return x.travel < y.travel ||
+                       (x.travel == y.travel &&
+                        assembly_.part(x.part).id < assembly_.part(y.part).id);
+              });
+    return blocked;
+  }
+
+  // Distance along d that takes `group`'s boxes clear of `others`' boxes (plus a margin).
+  double ClearingDistance(const std::vector<std::size_t>& group,
+                          const std::vector<std::size_t>& others, const Eigen::Vector3d& d) const {
+    auto extent = [&](const Aabb& box, bool max) {
+      double best = max ? -std::numeric_limits<double>::infinity()
+                        : std::numeric_limits<double>::infinity();
+      for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3d p((corner & 1) ? box.max.x() : box.min.x(),
+                                (corner & 2) ? box.max.y() : box.min.y(),
+                                (corner & 4) ? box.max.z() : box.min.z());
+        best = max ? std::max(best, p.dot(d)) : std::min(best, p.dot(d));
+      }
+      return best;
+    };
+    double group_min = std::numeric_limits<double>::infinity();
+    for (const std::size_t m : group) group_min = std::min(group_min, extent(boxes_[m], false));
+    double others_max = -std::numeric_limits<double>::infinity();
+    for (const std::size_t o : others) others_max = std::max(others_max, extent(boxes_[o], true));
+    if (!std::isfinite(others_max)) return 0.0;
+    return std::max(0.0, others_max - group_min) + 1.0 + tolerance_;
+  }
+
+  void CheckSteps(AssemblyPlan* plan) const {
+    const std::size_t n = assembly_.parts().size();
+    std::vector<bool> stepped(n, false);
+    for (const AssemblyStep& s : assembly_.steps()) stepped[s.insert.part] = true;
+    std::vector<bool> eligible(n);
+    for (std::size_t p = 0; p < n; ++p) eligible[p] = !stepped[p] && !assembly_.part(p).ground;
+    std::vector<bool> placed(n, true);
+    std::vector<std::vector<std::size_t>> carried_by(assembly_.steps().size());
+    for (std::size_t k = 0; k < assembly_.steps().size(); ++k) {
+      const std::size_t part = assembly_.steps()[k].insert.part;
+      placed[part] = false;
+      carried_by[k] = Carried(part, eligible);
+      for (const std::size_t c : carried_by[k]) {
+        placed[c] = false;
+        eligible[c] = false;
+      }
+    }
+    for (std::size_t p = 0; p < n; ++p) {
+      if (placed[p]) plan->base.push_back(p);
+    }
+    for (std::size_t k = 0; k < assembly_.steps().size(); ++k) {
+      const AssemblyStep& s = assembly_.steps()[k];
+      InsertionStep step;
+      step.part = s.insert.part;
+      step.carried = carried_by[k];
+      step.feature = s.insert;
+      step.into = s.into;
+      const bool convex = IsConvex(assembly_.feature(s.insert).kind);
+      step.direction_W = convex ? WorldAxis(s.insert) : Eigen::Vector3d(-WorldAxis(s.insert));
+      step.pair = PairOf(s.insert, s.into);
+      std::vector<std::size_t> group = {step.part};
+      group.insert(group.end(), step.carried.begin(), step.carried.end());
+      std::vector<std::size_t> obstacles;
+      for (std::size_t p = 0; p < n; ++p) {
+        if (placed[p] && std::find(group.begin(), group.end(), p) == group.end()) {
+          obstacles.push_back(p);
+        }
+      }
+      step.travel = ClearingDistance(group, obstacles, -step.direction_W);
+      step.blocked_by =
+          Sweep(group, obstacles, step.direction_W, -step.travel, step.travel, step.travel);
+      step.clear = step.blocked_by.empty();
+      for (const std::size_t m : group) placed[m] = true;
+      plan->steps.push_back(step);
+    }
+  }
+
+  // Candidate directions in which `unit` may leave, in order of preference, each with the
+  // feature that suggests it.
+  std::vector<std::pair<Eigen::Vector3d, std::optional<FeatureRef>>> RemovalDirections(
+      const std::vector<std::size_t>& unit) const {
+    std::vector<std::pair<Eigen::Vector3d, std::optional<FeatureRef>>> dirs;
+    auto add = [&](const Eigen::Vector3d& r, std::optional<FeatureRef> f) {
+      for (const auto& [q, g] : dirs) {
+        if (q.dot(r) >= std::cos(assembly_.tolerance().angle)) return;
+      }
+      dirs.emplace_back(r.normalized(), f);
+    };
+    for (const std::size_t p : unit) {
+      const Part& part = assembly_.part(p);
+      for (std::size_t f = 0; f < part.features.size(); ++f) {
+        if (!HasDirection(part.features[f].kind)) continue;
+        const FeatureRef ref{p, f};
+        add(-WorldAxis(ref), ref);
+        add(WorldAxis(ref), ref);
+      }
+    }
+    for (int k = 0; k < 3; ++k) {
+      add(Eigen::Vector3d::Unit(k), std::nullopt);
+      add(-Eigen::Vector3d::Unit(k), std::nullopt);
+    }
+    return dirs;
+  }
+
+  void Search(AssemblyPlan* plan) const {
+    const std::size_t n = assembly_.parts().size();
+    // Units: parts that travel together (press fits, forced fixes).
+    std::vector<bool> all(n, true);
+    std::vector<std::size_t> unit_of(n, n);
+    std::vector<std::vector<std::size_t>> units;
+    for (std::size_t p = 0; p < n; ++p) {
+      if (unit_of[p] != n) continue;
+      std::vector<std::size_t> unit = {p};
+      const auto carried = Carried(p, all);
+      unit.insert(unit.end(), carried.begin(), carried.end());
+      for (const std::size_t q : unit) unit_of[q] = units.size();
+      units.push_back(unit);
+    }
+    std::vector<bool> base_unit(units.size(), false);
+    bool any_ground = false;
+    for (std::size_t p = 0; p < n; ++p) {
+      if (assembly_.part(p).ground) {
+        base_unit[unit_of[p]] = true;
+        any_ground = true;
+      }
+    }
+    if (!any_ground && n > 0) {
+      std::size_t largest = 0;
+      auto volume = [&](std::size_t p) { return boxes_[p].size().prod(); };
+      for (std::size_t p = 1; p < n; ++p) {
+        if (volume(p) > volume(largest)) largest = p;
+      }
+      base_unit[unit_of[largest]] = true;
+    }
+    std::vector<bool> present(n, true);
+    std::vector<InsertionStep> removed;  // in removal order
+    std::vector<bool> done(units.size(), false);
+    for (bool progress = true; progress;) {
+      progress = false;
+      for (std::size_t u = 0; u < units.size(); ++u) {
+        if (done[u] || base_unit[u]) continue;
+        std::optional<InsertionStep> step = TryRemove(units[u], present);
+        if (!step) continue;
+        for (const std::size_t p : units[u]) present[p] = false;
+        done[u] = true;
+        removed.push_back(*step);
+        progress = true;
+      }
+    }
+    for (std::size_t u = 0; u < units.size(); ++u) {
+      if (base_unit[u]) {
+        plan->base.insert(plan->base.end(), units[u].begin(), units[u].end());
+      } else if (!done[u]) {
+        plan->unplaced.push_back(BestAttempt(units[u], present));
+      }
+    }
+    std::sort(plan->base.begin(), plan->base.end());
+    plan->steps.assign(removed.rbegin(), removed.rend());
+  }
+
+  InsertionStep MakeStep(const std::vector<std::size_t>& unit, const Eigen::Vector3d& r,
+                         const std::optional<FeatureRef>& feature,
+                         const std::vector<bool>& present) const {
+    InsertionStep step;
+    step.part = unit.front();
+    step.carried.assign(unit.begin() + 1, unit.end());
+    step.direction_W = -r;
+    step.feature = feature;
+    if (feature) {
+      // The relation this insertion creates: a pair of the feature with a part in place.
+      for (std::size_t k = 0; k < analysis_.pairs.size(); ++k) {
+        const Pair& p = analysis_.pairs[k];
+        const FeatureRef other = p.a == *feature ? p.b : p.b == *feature ? p.a : *feature;
+        if (other == *feature || !present[other.part]) continue;
+        if (std::find(unit.begin(), unit.end(), other.part) != unit.end()) continue;
+        step.into = other;
+        step.pair = k;
+        break;
+      }
+    }
+    return step;
+  }
+
+  std::vector<std::size_t> Others(const std::vector<std::size_t>& unit,
+                                  const std::vector<bool>& present) const {
+    std::vector<std::size_t> others;
+    for (std::size_t p = 0; p < present.size(); ++p) {
+      if (present[p] && std::find(unit.begin(), unit.end(), p) == unit.end()) {
+        others.push_back(p);
+      }
+    }
+    return others;
+  }
+
+  std::optional<InsertionStep> TryRemove(const std::vector<std::size_t>& unit,
+                                         const std::vector<bool>& present) const {
+    const std::vector<std::size_t> others = Others(unit, present);
+    for (const auto& [r, feature] : RemovalDirections(unit)) {
+      const double travel = ClearingDistance(unit, others, r);
+      // Leaving: no seat at the far end, so every contact counts.
+      const auto blocked =
+          Sweep(unit, others, r, 0.0, travel, std::numeric_limits<double>::infinity());
+      if (!blocked.empty()) continue;
+      InsertionStep step = MakeStep(unit, r, feature, present);
+      step.travel = travel;
+      step.clear = true;
+      return step;
+    }
+    return std::nullopt;
+  }
+
+  // The removal direction that gets furthest, reported as the insertion it would be.
+  InsertionStep BestAttempt(const std::vector<std::size_t>& unit,
+                            const std::vector<bool>& present) const {
+    const std::vector<std::size_t> others = Others(unit, present);
+    std::optional<InsertionStep> best;
+    double best_free = -1.0;
+    for (const auto& [r, feature] : RemovalDirections(unit)) {
+      const double travel = ClearingDistance(unit, others, r);
+      auto blocked = Sweep(unit, others, r, 0.0, travel, std::numeric_limits<double>::infinity());
+      const double free = blocked.empty() ? travel : blocked.front().travel;
+      if (free <= best_free) continue;
+      best_free = free;
+      InsertionStep step = MakeStep(unit, r, feature, present);
+      step.travel = travel;
+      // As an insertion: the obstacle is met `travel - free` after the start.
+      for (InsertionObstacle& o : blocked) {
+        o.short_by = o.travel;
+        o.travel = travel - o.travel;
+      }
+      step.blocked_by = std::move(blocked);
+      best = step;
+    }
+    return *best;
+  }
+
+  const Assembly& assembly_;
+  const Analysis& analysis_;
+  const CollisionModel& model_;
+  AssemblyState state_;
+  double tolerance_;
+  double min_approach_;
+  std::vector<Aabb> boxes_;
+};
+
+}  // namespace
+
+AssemblyPlan PlanAssembly(const Assembly& assembly, const Analysis& analysis,
+                          const CollisionModel& model) {
+  return Planner(assembly, analysis, model).Plan();
+}
+
+}  // namespace mechanist

@@ -1,0 +1,78 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+#include "kernel/assembly.h"
+#include "kernel/collision_model.h"
+#include "kernel/diagnostic.h"
+#include "kernel/feature_ref.h"
+#include "reasoning/analysis.h"
+#include "reasoning/interference.h"
+
+namespace mechanist {
+
+/// A part already in place that stops an insertion.
+struct InsertionObstacle {
+  std::size_t part = 0;
+  /// mm travelled from the start of the insertion (outside every part in place) to the
+  /// first blocking contact.
+  double travel = 0.0;
+  double short_by = 0.0;                          ///< mm still to go to the final pose
+  Eigen::Vector3d p_W = Eigen::Vector3d::Zero();  ///< contact point at that travel
+};
+
+/// One insertion: a part (and what travels with it) moving in a straight line into its pose.
+struct InsertionStep {
+  std::size_t part = 0;
+  std::vector<std::size_t> carried;  ///< parts press-fitted or forced fixed to it, moving along
+  std::optional<FeatureRef> feature;  ///< the inserted feature, when the direction comes from one
+  std::optional<FeatureRef> into;     ///< the feature it goes into
+  Eigen::Vector3d direction_W = Eigen::Vector3d::UnitZ();  ///< unit direction of travel
+  double travel = 0.0;  ///< mm from the start outside everything in place to the final pose
+  bool clear = false;
+  std::vector<InsertionObstacle> blocked_by;  ///< first contact per obstacle, by travel
+  std::optional<std::size_t> pair;  ///< index into Analysis::pairs of the relation created
+};
+
+/// Whether and how the assembly can be put together.
+struct AssemblyPlan {
+  bool assemblable = false;
+  bool from_steps = false;          ///< the file's `steps` were checked (else a search ran)
+  std::vector<std::size_t> base;    ///< parts in place before the first step
+  std::vector<InsertionStep> steps;
+  /// Search only: parts that no straight insertion brings into place, with the attempt that
+  /// got furthest (its blockers).
+  std::vector<InsertionStep> unplaced;
+  /// Penetrations in the assembled state that the pairs do not explain.
+  std::vector<PartContact> clashes;
+  std::vector<Diagnostic> diagnostics;
+};
+
+/// Checks the file's steps in order, or searches a sequence by disassembly when there are
+/// none.
+///
+/// Steps: parts that no step inserts are in place first (the base). Each step moves its part,
+/// with the parts press-fitted or forced fixed to it that no step inserts, along the concave
+/// feature's axis (the convex feature's axis when the inserted feature is convex, which is
+/// the same line with the sense of travel) from where it is clear of every part in place to
+/// its pose in the file; the exact translational sweep (FirstBlockingContact) finds what
+/// stops it. Contacts in the engagement region of a pair between the moving part and the
+/// obstacle (a thread entering its nut) and contacts within the length tolerance of the final
+/// pose (the seat) do not block; nor do contacts that approach slower than the sine of the
+/// angular tolerance (sliding).
+///
+/// Search: ground parts (or, without any, the part with the largest box) form the base; the
+/// other parts are removed one at a time, in the order of the file, each along the first of
+/// its feature axes (the sense that withdraws a convex feature first) or of the world's
+/// principal directions that is clear; the sequence is the reverse. Parts that cannot leave
+/// are `unplaced`.
+///
+/// The assembly is assemblable when there are no clashes and every step is clear (or every
+/// part is placed).
+AssemblyPlan PlanAssembly(const Assembly& assembly, const Analysis& analysis,
+                          const CollisionModel& model);
+
+}  // namespace mechanist

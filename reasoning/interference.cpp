@@ -1,0 +1,151 @@
+#include "reasoning/interference.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernel/broad_phase.h"
+
+namespace mechanist {
+
+std::string_view ToString(ContactVerdict verdict) {
+  switch (verdict) {
+    case ContactVerdict::kTouching:
+      return "touching";
+    case ContactVerdict::kDesignedFit:
+      return "designed_fit";
+    case ContactVerdict::kClash:
+      return "clash";
+  }
+  return "";
+}
+
+namespace {
+
+// As InEngagementRegion, with cylinders at least `min_radius` wide.
+bool InRegion(const Feature& f, const RigidTransform& X_WP, const Eigen::Vector3d& p_W,
+              double tolerance, double min_radius) {
+  const Eigen::Vector3d origin_W = X_WP * f.origin;
+  const Eigen::Vector3d axis_W = X_WP.RotateDirection(f.axis);
+  const Eigen::Vector3d r = p_W - origin_W;
+  const double along = r.dot(axis_W);
+  const double radial = (r - along * axis_W).norm();
+  auto in_cylinder = [&](double radius, double start, double end) {
+    return along >= start - tolerance && along <= end + tolerance &&
+           radial <= std::max(radius, min_radius) + tolerance;
+  };
+  switch (f.kind) {
+    case FeatureKind::kShaft:
+    case FeatureKind::kHole:
+    case FeatureKind::kThread:
+    case FeatureKind::kTappedHole:
+      return in_cylinder(0.5 * f.diameter, 0.0, f.length);
+    case FeatureKind::kGear:
+      // Teeth reach one module beyond the pitch circle (inward for a ring gear, whose region
+      // still has to include its mating pinion's tips, hence the outer bound for both).
+      return in_cylinder(0.5 * f.module * f.teeth + f.module, 0.0, f.length);
+    case FeatureKind::kWormWheel:
+      return in_cylinder(0.5 * f.module * f.teeth + f.module, 0.0, f.length);
+    case FeatureKind::kWorm:
+      return in_cylinder(0.5 * f.pitch_diameter + f.module, 0.0, f.length);
+    case FeatureKind::kRack: {
+      // A band one module either side of the pitch line.
+      const Eigen::Vector3d n_W = X_WP.RotateDirection(f.normal);
+      return along >= -tolerance && along <= f.length + tolerance &&
+             std::abs(r.dot(n_W)) <= f.module + tolerance;
+    }
+    case FeatureKind::kBall:
+    case FeatureKind::kSocket:
+      return r.norm() <= 0.5 * f.diameter + tolerance;
+    case FeatureKind::kSlot:
+    case FeatureKind::kKey:
+      return along >= -tolerance && along <= f.length + tolerance &&
+             radial <= std::max(f.width, f.depth) + tolerance;
+    case FeatureKind::kFace:
+      return false;
+  }
+  return false;
+}
+
+bool IsAxialFit(FeatureKind kind) {
+  return kind == FeatureKind::kShaft || kind == FeatureKind::kHole ||
+         kind == FeatureKind::kThread || kind == FeatureKind::kTappedHole;
+}
+
+}  // namespace
+
+bool InEngagementRegion(const Feature& f, const RigidTransform& X_WP, const Eigen::Vector3d& p_W,
+                        double tolerance) {
+  return InRegion(f, X_WP, p_W, tolerance, 0.0);
+}
+
+bool OverlapIsDesigned(const Pair& pair) {
+  switch (pair.type) {
+    case PairType::kGear:
+    case PairType::kWormGear:
+    case PairType::kRackPinion:
+      return true;
+    case PairType::kScrew:
+      return true;
+    case PairType::kFixed:
+      return pair.fastening == PairFastening::kPressFit ||
+             pair.fastening == PairFastening::kTight ||
+             pair.fastening == PairFastening::kSetscrew;
+    default:
+      return false;
+  }
+}
+
+bool InPairRegion(const Assembly& assembly, const AssemblyState& state, const Pair& pair,
+                  const Eigen::Vector3d& p_W, double tolerance) {
+  const Feature& a = assembly.feature(pair.a);
+  const Feature& b = assembly.feature(pair.b);
+  // An axial fit overlaps between the two diameters: each cylinder is taken at the larger.
+  const double min_radius =
+      IsAxialFit(a.kind) && IsAxialFit(b.kind) ? 0.5 * std::max(a.diameter, b.diameter) : 0.0;
+  return InRegion(a, state.X_WP.at(pair.a.part), p_W, tolerance, min_radius) &&
+         InRegion(b, state.X_WP.at(pair.b.part), p_W, tolerance, min_radius);
+}
+
+std::vector<PartContact> FindContacts(const Assembly& assembly, const AssemblyState& state,
+                                      const CollisionModel& model,
+                                      const std::vector<Pair>& pairs) {
+  const double tolerance = assembly.tolerance().length;
+  std::vector<Aabb> boxes;
+  for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
+    boxes.push_back(TransformBox(state.X_WP[p], model.part_mesh(p).bounds()));
+  }
+  std::vector<PartContact> contacts;
+  for (const auto& [i, j] : OverlappingBoxes(boxes, tolerance)) {
+    PartContact contact;
+    contact.part_a = i;
+    contact.part_b = j;
+    contact.measure = MeasureContact(model.part_mesh(i), state.X_WP[i], model.part_mesh(j),
+                                     state.X_WP[j], tolerance);
+    if (contact.measure.kind == ContactMeasure::Kind::kSeparate) continue;
+    if (contact.measure.kind == ContactMeasure::Kind::kPenetrating) {
+      contact.verdict = ContactVerdict::kClash;
+      for (std::size_t k = 0; k < pairs.size(); ++k) {
+        const Pair& pair = pairs[k];
+        const bool between = (pair.a.part == i && pair.b.part == j) ||
+                             (pair.a.part == j && pair.b.part == i);
+        if (between && OverlapIsDesigned(pair) && InPairRegion(assembly, state, pair, contact.measure.p_W, tolerance)) {
+          contact.verdict = ContactVerdict::kDesignedFit;
+          contact.pair = k;
+          break;
+        }
+      }
+    }
+    contacts.push_back(contact);
+  }
+  std::sort(contacts.begin(), contacts.end(), [&](const PartContact& x, const PartContact& y) {
+    const auto key = [&](const PartContact& c) {
+      const std::string& a = assembly.part(c.part_a).id;
+      const std::string& b = assembly.part(c.part_b).id;
+      return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+    };
+    return key(x) < key(y);
+  });
+  return contacts;
+}
+
+}  // namespace mechanist
