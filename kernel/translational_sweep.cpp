@@ -46,6 +46,27 @@ Eigen::Vector3d EdgeNormalSum(const CollisionMesh& mesh, std::int32_t edge) {
   return sum;
 }
 
+// True when a point travelling along d through the boundary of `face` (the edges whose
+// orientation with the travel segment [p, q] is zero) enters the solid there: across a convex
+// edge it must also approach the neighbouring face (`sense` +1 for the obstacle, whose faces
+// are approached against their normal; -1 for the moving mesh, whose faces approach along
+// theirs). Contacts that only graze a convex edge slide along the neighbour and do not block.
+bool EntersAcrossBoundary(const CollisionMesh& mesh, std::int32_t face,
+                          const std::array<Eigen::Vector3d, 3>& corners, const Eigen::Vector3d& p,
+                          const Eigen::Vector3d& q, const Eigen::Vector3d& d_mesh, double sense,
+                          double min_approach) {
+  for (int k = 0; k < 3; ++k) {
+    if (Orient3d(p, q, corners[k], corners[(k + 1) % 3]) != 0) continue;
+    const std::int32_t e = mesh.face_edges()[face][k];
+    if (e < 0) continue;
+    const auto& edge = mesh.edges()[e];
+    const std::int32_t other = edge.faces[0] == face ? edge.faces[1] : edge.faces[0];
+    if (other < 0 || mesh.EdgeConvexity(e) != 1) continue;
+    if (-sense * mesh.face_normals()[other].dot(d_mesh) <= min_approach) return false;
+  }
+  return true;
+}
+
 struct Best {
   std::optional<SweepContact> contact;
   void Offer(SweepContact::Kind kind, double travel, const Eigen::Vector3d& p_W,
@@ -86,6 +107,9 @@ std::optional<SweepContact> FirstBlockingContact(const CollisionMesh& moving,
   const auto& vo = mesh_o.vertices;
   const double margin = 1e-9 * (1.0 + L + obstacle.bounds().size().norm() +
                                 moving.bounds().size().norm() + X_OM.translation().norm());
+  // Orientation tells entering from leaving only for solids; an open mesh (a surface, a soup)
+  // is two-sided and every contact with it counts.
+  const bool solids = moving.closed() && obstacle.closed();
   auto ignored = [&](const Eigen::Vector3d& p_O) {
     return options.ignore && options.ignore(X_WO * p_O);
   };
@@ -99,14 +123,28 @@ std::optional<SweepContact> FirstBlockingContact(const CollisionMesh& moving,
   if (!swept_O.Intersects(obstacle.bounds())) return best.contact;
 
   // Vertices of the moving mesh reaching faces of the obstacle.
-  for (const Eigen::Vector3d& v : vm) {
-    const Eigen::Vector3d end = v + sweep;
+  // Surface points that lead a contact: the vertices, and the centroid of every face, which
+  // is what meets the other solid first when faces meet face to face with their corners on
+  // each other's corners (the common CAD mate), where every vertex only grazes an edge.
+  std::vector<Eigen::Vector3d> leading_m = vm;
+  for (const auto& f : mesh_m.faces) leading_m.push_back((vm[f[0]] + vm[f[1]] + vm[f[2]]) / 3.0);
+  std::vector<Eigen::Vector3d> leading_o = vo;
+  for (const auto& f : mesh_o.faces) leading_o.push_back((vo[f[0]] + vo[f[1]] + vo[f[2]]) / 3.0);
+
+  for (const Eigen::Vector3d& v : leading_m) {
+    // Only travels below the best contact so far matter.
+    const Eigen::Vector3d end = v + best.limit(L) * d;
     ForEachFaceNear(obstacle, SegmentBox(v, end), margin, [&](std::int32_t f) {
       const Eigen::Vector3d& n = obstacle.face_normals()[f];
-      const double approach = -n.dot(d);
+      const double approach = obstacle.closed() ? -n.dot(d) : std::abs(n.dot(d));
       if (approach <= options.min_approach) return;
-      const auto [a, b, c] = obstacle.Triangle(f);
+      const auto corners = obstacle.Triangle(f);
+      const auto& [a, b, c] = corners;
       if (!SegmentIntersectsTriangle(v, end, a, b, c)) return;
+      if (obstacle.closed() &&
+          !EntersAcrossBoundary(obstacle, f, corners, v, end, d, 1.0, options.min_approach)) {
+        return;
+      }
       const double s = std::clamp(n.dot(a - v) / n.dot(d), 0.0, L);
       if (s >= best.limit(L) && best.contact) return;
       const Eigen::Vector3d p = v + s * d;
@@ -116,17 +154,22 @@ std::optional<SweepContact> FirstBlockingContact(const CollisionMesh& moving,
   }
 
   // Vertices of the obstacle reached by faces of the moving mesh.
-  for (std::size_t i = 0; i < vo.size(); ++i) {
-    const Eigen::Vector3d& w = vo[i];
+  for (const Eigen::Vector3d& w : leading_o) {
     if (!swept_O.Intersects(Aabb{w, w})) continue;
     const Eigen::Vector3d w_M = X_MO * w;
-    ForEachFaceNear(moving, SegmentBox(w_M, w_M - L * d_M), margin, [&](std::int32_t g) {
+    ForEachFaceNear(moving, SegmentBox(w_M, w_M - best.limit(L) * d_M), margin,
+                    [&](std::int32_t g) {
       const Eigen::Vector3d n = X_OM.RotateDirection(moving.face_normals()[g]);
-      const double approach = n.dot(d);
+      const double approach = moving.closed() ? n.dot(d) : std::abs(n.dot(d));
       if (approach <= options.min_approach) return;
       const auto& face = mesh_m.faces[g];
       const Eigen::Vector3d &a = vm[face[0]], &b = vm[face[1]], &c = vm[face[2]];
       if (!SegmentIntersectsTriangle(w, w - sweep, a, b, c)) return;
+      // In the moving mesh's frame the obstacle's vertex travels along -d.
+      if (moving.closed() && !EntersAcrossBoundary(moving, g, moving.Triangle(g), w_M, w_M - L * d_M, -d_M, 1.0,
+                                options.min_approach)) {
+        return;
+      }
       const double s = std::clamp(n.dot(w - a) / n.dot(d), 0.0, L);
       if (s >= best.limit(L) && best.contact) return;
       if (ignored(w)) return;
@@ -134,37 +177,48 @@ std::optional<SweepContact> FirstBlockingContact(const CollisionMesh& moving,
     });
   }
 
-  // Convex edges of the moving mesh crossing convex edges of the obstacle.
+  // Convex edges of the moving mesh crossing convex edges of the obstacle (any edges when a
+  // mesh is open).
   std::vector<int> convex_o(obstacle.edges().size(), 2);  // 2: not computed yet
   for (std::size_t e = 0; e < moving.edges().size(); ++e) {
     const auto ei = static_cast<std::int32_t>(e);
-    if (moving.EdgeConvexity(ei) != 1) continue;
+    if (solids && moving.EdgeConvexity(ei) != 1) continue;
     const auto& edge = moving.edges()[e];
     const Eigen::Vector3d &a = vm[edge.vertices[0]], &b = vm[edge.vertices[1]];
     const Eigen::Vector3d moving_normals = X_OM.RotateDirection(EdgeNormalSum(moving, ei));
     Aabb box = SegmentBox(a, b);
-    box.Extend(a + sweep);
-    box.Extend(b + sweep);
+    box.Extend(a + best.limit(L) * d);
+    box.Extend(b + best.limit(L) * d);
     ForEachFaceNear(obstacle, box, margin, [&](std::int32_t f) {
       for (const std::int32_t g : obstacle.face_edges()[f]) {
         if (g < 0) continue;
         // Each edge is visited from its first face only.
         if (obstacle.edges()[g].faces[0] != f) continue;
         if (convex_o[g] == 2) convex_o[g] = obstacle.EdgeConvexity(g);
-        if (convex_o[g] != 1) continue;
+        if (solids && convex_o[g] != 1) continue;
         const auto& other = obstacle.edges()[g];
         const Eigen::Vector3d &c = vo[other.vertices[0]], &e2 = vo[other.vertices[1]];
         Eigen::Vector3d m = (b - a).cross(e2 - c);
         const double m_norm = m.norm();
         if (m_norm <= 1e-12 * (b - a).norm() * (e2 - c).norm()) continue;  // parallel edges
         m /= m_norm;
-        // Orient the common normal out of the obstacle, across its edge.
-        if (m.dot(EdgeNormalSum(obstacle, g)) < 0.0) m = -m;
-        if (m.dot(moving_normals) >= 0.0) continue;  // the solids would not meet here first
+        if (solids) {
+          // Orient the common normal out of the obstacle, across its edge.
+          if (m.dot(EdgeNormalSum(obstacle, g)) < 0.0) m = -m;
+          if (m.dot(moving_normals) >= 0.0) continue;  // the solids would not meet here first
+        } else if (m.dot(d) > 0.0) {
+          m = -m;
+        }
         const double approach = -m.dot(d);
         if (approach <= options.min_approach) continue;
         if (!SegmentIntersectsTriangle(c, e2, a, b, b + sweep) &&
             !SegmentIntersectsTriangle(c, e2, a, b + sweep, a + sweep)) {
+          continue;
+        }
+        // A crossing at an end of either edge is a vertex touching an edge: the vertex-face
+        // tests decide those (entering, or grazing along the neighbouring face).
+        if (Orient3d(c, e2, a, a + sweep) == 0 || Orient3d(c, e2, b, b + sweep) == 0 ||
+            Orient3d(a, b, a + sweep, c) == 0 || Orient3d(a, b, a + sweep, e2) == 0) {
           continue;
         }
         const double s = std::clamp(m.dot(c - a) / m.dot(d), 0.0, L);

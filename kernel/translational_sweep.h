@@ -24,8 +24,8 @@ struct SweepOptions {
 /// The first contact that blocks a sweep.
 struct SweepContact {
   enum class Kind {
-    kVertexFace,  ///< a vertex of the moving mesh reaches a face of the obstacle
-    kFaceVertex,  ///< a face of the moving mesh reaches a vertex of the obstacle
+    kVertexFace,  ///< a vertex (or face centroid) of the moving mesh reaches a face of the obstacle
+    kFaceVertex,  ///< a face of the moving mesh reaches a vertex (or face centroid) of the obstacle
     kEdgeEdge     ///< an edge of the moving mesh crosses an edge of the obstacle
   };
   Kind kind = Kind::kVertexFace;
@@ -38,7 +38,9 @@ struct SweepContact {
 /// `obstacle` (at X_WO) and returns the first contact that blocks, or nothing when the path is
 /// free. d_W must be a unit vector.
 ///
-/// Contact conditions are linear in the travel (vertex-face: the vertex's line meets the face;
+/// Contact conditions are linear in the travel (vertex-face: the vertex's line meets the face,
+/// tested for every vertex and every face centroid, so that faces meeting face to face with
+/// their corners on each other's corners are seen;
 /// edge-edge: the two edge lines meet) and are decided with exact predicates on the moving
 /// mesh's vertices expressed in the obstacle's frame (double precision), so no contact is
 /// missed between samples: there are none. The travel itself is then computed in double
@@ -46,7 +48,9 @@ struct SweepContact {
 /// entering a face from outside, a face reaching a vertex, or two convex edges crossing with
 /// their solids on opposite sides; contacts that separate or slide (approach at or below
 /// `min_approach`) do not block, so a part resting on a face can leave it. Edges between
-/// coplanar faces are not edges of the solid and take no part.
+/// coplanar faces are not edges of the solid and take no part. When either mesh is not
+/// closed (a surface or a triangle soup, no inside), faces are two-sided and every contact
+/// that approaches blocks.
 std::optional<SweepContact> FirstBlockingContact(const CollisionMesh& moving,
                                                  const RigidTransform& X_WM,
                                                  const CollisionMesh& obstacle,

@@ -246,8 +246,10 @@ class Planner {
       step.carried = carried_by[k];
       step.feature = s.insert;
       step.into = s.into;
-      const bool convex = IsConvex(assembly_.feature(s.insert).kind);
-      step.direction_W = convex ? WorldAxis(s.insert) : Eigen::Vector3d(-WorldAxis(s.insert));
+      // Convex features and faces lead along their axis; a concave feature goes onto its
+      // partner, against its own axis.
+      const bool concave = IsConcave(assembly_.feature(s.insert).kind);
+      step.direction_W = concave ? Eigen::Vector3d(-WorldAxis(s.insert)) : WorldAxis(s.insert);
       step.pair = PairOf(s.insert, s.into);
       std::vector<std::size_t> group = {step.part};
       group.insert(group.end(), step.carried.begin(), step.carried.end());

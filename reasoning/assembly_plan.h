@@ -55,9 +55,10 @@ struct AssemblyPlan {
 /// none.
 ///
 /// Steps: parts that no step inserts are in place first (the base). Each step moves its part,
-/// with the parts press-fitted or forced fixed to it that no step inserts, along the concave
-/// feature's axis (the convex feature's axis when the inserted feature is convex, which is
-/// the same line with the sense of travel) from where it is clear of every part in place to
+/// with the parts press-fitted or forced fixed to it that no step inserts, along the inserted
+/// feature's axis (a convex feature or a face leads along its axis, which for a convex
+/// feature going into a concave one is the concave feature's axis; a concave feature going
+/// onto its partner travels against its own axis) from where it is clear of every part in place to
 /// its pose in the file; the exact translational sweep (FirstBlockingContact) finds what
 /// stops it. Contacts in the engagement region of a pair between the moving part and the
 /// obstacle (a thread entering its nut) and contacts within the length tolerance of the final

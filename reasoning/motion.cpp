@@ -177,15 +177,19 @@ class Solver {
     if (!turns && v_WO.norm() <= kTolerance) return m;
     const Eigen::Vector3d axis = turns ? omega.normalized() : v_WO.normalized();
     const Part& part = assembly_.part(p);
+    // Of the features along the motion, the first by id, so that the file's order of features
+    // does not change the report.
     for (std::size_t f = 0; f < part.features.size(); ++f) {
       const AxisSegment a = model_.WorldAxis({p, f});
       const ExactReal along = model_.Dot(a.direction, axis);
       if (!along.is_exact() || along.exact()->is_zero()) continue;
+      if (m.axis_feature && part.features[m.axis_feature->feature].id <= part.features[f].id) {
+        continue;
+      }
       m.axis_feature = FeatureRef{p, f};
       m.axis_W = a.direction;
       m.rotation = rates[f].rotation;
       m.translation = rates[f].translation;
-      break;
     }
     if (!m.axis_feature) {
       // No feature along the motion: the axis with its largest component positive.

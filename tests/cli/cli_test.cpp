@@ -124,14 +124,16 @@ TEST(Cli, AnalyzeNeverWritesOverItsInput) {
 }
 
 TEST(Cli, CheckReportsEachExpectationAndExitsOneOnFailure) {
-  const CommandResult partial = Mechanist("check " + Example("bracket_plate_bolt_nut"));
-  EXPECT_EQ(partial.exit_code, 1);
-  EXPECT_NE(partial.out.find("PASS /expect/0: pair bolt_left/thread + nut_left/thread is fixed"),
+  const CommandResult all = Mechanist("check " + Example("bracket_plate_bolt_nut"));
+  EXPECT_EQ(all.exit_code, 0) << all.out;
+  EXPECT_NE(all.out.find("PASS /expect/0: pair bolt_left/thread + nut_left/thread is fixed"),
             std::string::npos)
-      << partial.out;
-  EXPECT_NE(partial.out.find("PASS /expect/4: mobility 0 (found 0"), std::string::npos);
-  EXPECT_NE(partial.out.find("FAIL /expect/5: assemblable true (not evaluated"), std::string::npos);
-  EXPECT_NE(partial.out.find("\n5 passed, 1 failed\n"), std::string::npos);
+      << all.out;
+  EXPECT_NE(all.out.find("PASS /expect/4: mobility 0 (found 0"), std::string::npos);
+  EXPECT_NE(all.out.find("PASS /expect/5: assemblable true (found assemblable (2 insertions"),
+            std::string::npos)
+      << all.out;
+  EXPECT_NE(all.out.find("\n6 passed, 0 failed\n"), std::string::npos);
 
   // A file whose expectations are all within reach passes, including a near miss.
   const std::filesystem::path file =
@@ -148,7 +150,60 @@ TEST(Cli, CheckReportsEachExpectationAndExitsOneOnFailure) {
   const CommandResult run = Mechanist("check " + file.string());
   EXPECT_EQ(run.exit_code, 0) << run.out;
   EXPECT_NE(run.out.find("3 passed, 0 failed"), std::string::npos) << run.out;
+  std::ofstream(file) << R"({"mechanist": 1, "parts": [
+    {"id": "g1", "library": {"kind": "spur_gear", "teeth": 20, "module": 1, "face_width": 5}}],
+    "expect": [{"mobility": 5}]})";
+  const CommandResult failing = Mechanist("check " + file.string());
+  EXPECT_EQ(failing.exit_code, 1) << failing.out;
+  EXPECT_NE(failing.out.find("0 passed, 1 failed"), std::string::npos) << failing.out;
   std::filesystem::remove(file);
+}
+
+TEST(Cli, InterferenceAndAssembleOnAnExampleAndOnAClash) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_cli_asm";
+  std::filesystem::create_directories(dir);
+  const CommandResult clean = Mechanist("interference " + Example("robot_hand_worm") +
+                                        " --json " + (dir / "contacts.json").string());
+  EXPECT_EQ(clean.exit_code, 0) << clean.out;
+  EXPECT_NE(clean.out.find("interference: 0 clashes, 6 designed fits"), std::string::npos)
+      << clean.out;
+  EXPECT_NE(clean.out.find("worm and worm_wheel: designed_fit"), std::string::npos) << clean.out;
+  std::ifstream contacts(dir / "contacts.json");
+  const std::string report((std::istreambuf_iterator<char>(contacts)),
+                           std::istreambuf_iterator<char>());
+  EXPECT_NE(report.find("\"clashes\": 0"), std::string::npos) << report;
+  EXPECT_NE(report.find("\"verdict\": \"designed_fit\""), std::string::npos);
+
+  const CommandResult plan = Mechanist("assemble " + Example("bracket_plate_bolt_nut") +
+                                       " --json " + (dir / "plan.json").string());
+  EXPECT_EQ(plan.exit_code, 0) << plan.out;
+  EXPECT_NE(plan.out.find("1. bolt_left (bolt_left/thread) into bracket_left/base_hole1 along "
+                          "(0, 0, -1)"),
+            std::string::npos)
+      << plan.out;
+  std::ifstream plan_json(dir / "plan.json");
+  const std::string steps((std::istreambuf_iterator<char>(plan_json)),
+                          std::istreambuf_iterator<char>());
+  for (const char* key : {"\"assemblable\": true", "\"part\": \"bolt_left\"",
+                          "\"feature\": \"bolt_left/thread\"",
+                          "\"into\": \"bracket_left/base_hole1\"", "\"clear\": true",
+                          "\"blocked_by\": []", "\"travel\": "}) {
+    EXPECT_NE(steps.find(key), std::string::npos) << key << "\n" << steps;
+  }
+
+  // Two plates in the same place: a clash, and no way to assemble them.
+  const std::filesystem::path file = dir / "clash.json";
+  std::ofstream(file) << R"({"mechanist": 1, "parts": [
+    {"id": "a", "ground": true, "library": {"kind": "plate", "length": 10, "width": 10, "thickness": 2}},
+    {"id": "b", "library": {"kind": "plate", "length": 10, "width": 10, "thickness": 2},
+     "pose": {"position": [3, 0, 1]}}]})";
+  const CommandResult clash = Mechanist("interference " + file.string());
+  EXPECT_EQ(clash.exit_code, 1) << clash.out;
+  EXPECT_NE(clash.out.find("a and b: clash, depth 1 mm"), std::string::npos) << clash.out;
+  const CommandResult blocked = Mechanist("assemble " + file.string());
+  EXPECT_EQ(blocked.exit_code, 1) << blocked.out;
+  EXPECT_NE(blocked.out.find("assemblable: no"), std::string::npos) << blocked.out;
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

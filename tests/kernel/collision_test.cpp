@@ -1,0 +1,321 @@
+// Collision kernel: static intersection and contact classification against a brute-force
+// oracle over all triangle pairs, analytic depths, and the translational sweep against the
+// static test on either side of the contact it reports.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+
+#include "kernel/broad_phase.h"
+#include "kernel/collision_mesh.h"
+#include "kernel/exact_predicates.h"
+#include "kernel/mesh_builder.h"
+#include "kernel/mesh_contact.h"
+#include "kernel/translational_sweep.h"
+
+namespace mechanist {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::shared_ptr<const CollisionMesh> Box(double x, double y, double z) {
+  Region2d r;
+  r.outer = {{-x / 2, -y / 2}, {x / 2, -y / 2}, {x / 2, y / 2}, {-x / 2, y / 2}};
+  return std::make_shared<CollisionMesh>(
+      std::make_shared<TriangleMesh>(ExtrudeRegion(r, -z / 2, z / 2)));
+}
+
+std::shared_ptr<const CollisionMesh> Cylinder(double radius, double z0, double z1, int segments,
+                                              double phase = 0.0) {
+  Region2d r;
+  for (int i = 0; i < segments; ++i) {
+    const double a = phase + 2 * kPi * i / segments;
+    r.outer.push_back({radius * std::cos(a), radius * std::sin(a)});
+  }
+  return std::make_shared<CollisionMesh>(std::make_shared<TriangleMesh>(ExtrudeRegion(r, z0, z1)));
+}
+
+// A plate with a round hole through it (z in [0, t]).
+std::shared_ptr<const CollisionMesh> HoledPlate(double size, double t, double radius,
+                                                int segments) {
+  Region2d r;
+  r.outer = {{-size / 2, -size / 2}, {size / 2, -size / 2}, {size / 2, size / 2},
+             {-size / 2, size / 2}};
+  r.holes.push_back(CircleRing({0, 0}, radius, segments));
+  return std::make_shared<CollisionMesh>(std::make_shared<TriangleMesh>(ExtrudeRegion(r, 0, t)));
+}
+
+// The oracle: every triangle pair, exact, on the same coordinates as the contract says.
+bool BruteForceIntersect(const CollisionMesh& a, const RigidTransform& X_WA,
+                         const CollisionMesh& b, const RigidTransform& X_WB) {
+  const auto vb = ExpressVertices(b.mesh(), X_WA.inverse() * X_WB);
+  const auto& va = a.mesh().vertices;
+  for (const auto& f : a.mesh().faces) {
+    for (const auto& g : b.mesh().faces) {
+      if (TrianglesIntersect(va[f[0]], va[f[1]], va[f[2]], vb[g[0]], vb[g[1]], vb[g[2]])) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+RigidTransform RandomPose(std::mt19937& rng, double spread) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const Eigen::Vector3d axis(u(rng), u(rng), u(rng) + 1e-3);
+  return RigidTransform::Translation(spread * Eigen::Vector3d(u(rng), u(rng), u(rng))) *
+         RigidTransform::AxisAngle(axis, kPi * u(rng));
+}
+
+TEST(CollisionMesh, ClosedBoxHasConvexEdgesAndContainsItsCentre) {
+  const auto box = Box(2, 3, 4);
+  EXPECT_TRUE(box->closed());
+  EXPECT_TRUE(box->Contains({0.1, 0.2, 0.3}));
+  EXPECT_FALSE(box->Contains({1.2, 0, 0}));
+  EXPECT_FALSE(box->Contains({1.0, 0.5, 0.5})) << "a point on a face is not inside";
+  int convex = 0, flat = 0;
+  for (std::size_t e = 0; e < box->edges().size(); ++e) {
+    const int c = box->EdgeConvexity(static_cast<std::int32_t>(e));
+    convex += c == 1;
+    flat += c == 0;
+    EXPECT_NE(c, -1);
+  }
+  EXPECT_EQ(convex, 12);  // the cube's edges; the others are face diagonals
+  EXPECT_EQ(flat, static_cast<int>(box->edges().size()) - 12);
+  EXPECT_NEAR(box->ClosestPoint({0, 0, 5}).distance, 3.0, 1e-12);
+  EXPECT_NEAR(box->ClosestPoint({0.5, 0, 0}).distance, 0.5, 1e-12);
+}
+
+TEST(CollisionMesh, HoledPlateContainsMaterialButNotTheHole) {
+  const auto plate = HoledPlate(20, 5, 3, 32);
+  EXPECT_TRUE(plate->closed());
+  EXPECT_FALSE(plate->Contains({0, 0, 2.5}));
+  EXPECT_FALSE(plate->Contains({0, 0, 5})) << "in the hole's mouth, on the top face's plane";
+  EXPECT_TRUE(plate->Contains({6, 0, 2.5}));
+  EXPECT_TRUE(plate->Contains({-9, 9, 0.1}));
+}
+
+TEST(MeshContact, AgreesWithBruteForceOnRandomPoses) {
+  std::mt19937 rng(7);
+  const auto a = Box(4, 2, 1);
+  const auto b = Cylinder(1, -1, 1, 12);
+  int hits = 0;
+  for (int i = 0; i < 400; ++i) {
+    const RigidTransform X_WA = RandomPose(rng, 1.0), X_WB = RandomPose(rng, 3.0);
+    const bool expected = BruteForceIntersect(*a, X_WA, *b, X_WB);
+    ASSERT_EQ(SurfacesIntersect(*a, X_WA, *b, X_WB), expected) << "pose " << i;
+    hits += expected;
+  }
+  EXPECT_GT(hits, 40);
+  EXPECT_LT(hits, 360);
+}
+
+TEST(MeshContact, TouchingConfigurationsAgreeWithBruteForce) {
+  // Coincident faces, shared edges and corners: exactly representable poses.
+  const auto a = Box(2, 2, 2);
+  const std::vector<Eigen::Vector3d> offsets = {
+      {2, 0, 0}, {2, 2, 0}, {2, 2, 2}, {2, 1, 0.5}, {2.0000001, 0, 0}, {1.9999999, 0, 0},
+      {0, 0, 2}, {1, 1, 2}, {0.5, -0.25, 2}};
+  for (const auto& o : offsets) {
+    const RigidTransform X_WB = RigidTransform::Translation(o);
+    EXPECT_EQ(SurfacesIntersect(*a, {}, *a, X_WB), BruteForceIntersect(*a, {}, *a, X_WB))
+        << o.transpose();
+  }
+  EXPECT_TRUE(SurfacesIntersect(*a, {}, *a, RigidTransform::Translation({2, 0, 0})));
+  EXPECT_FALSE(SurfacesIntersect(*a, {}, *a, RigidTransform::Translation({2.0000001, 0, 0})));
+}
+
+TEST(MeshContact, FaceContactIsTouchingAndOverlapIsPenetratingByItsDepth) {
+  const auto a = Box(2, 2, 2);
+  const double tol = 0.05;
+  const ContactMeasure touch = MeasureContact(*a, {}, *a, RigidTransform::Translation({2, 0, 0}), tol);
+  EXPECT_EQ(touch.kind, ContactMeasure::Kind::kTouching);
+  EXPECT_LE(touch.depth, 1e-9);
+
+  const ContactMeasure deep =
+      MeasureContact(*a, {}, *a, RigidTransform::Translation({1.3, 0.2, 0.1}), tol);
+  EXPECT_EQ(deep.kind, ContactMeasure::Kind::kPenetrating);
+  // The overlap is 0.7 thick along x: the deepest surface point inside the other box lies
+  // 0.7 from its surface (a corner region at most 0.7 deep), never more.
+  EXPECT_LE(deep.depth, 0.7 + 1e-9);
+  EXPECT_GE(deep.depth, 0.7 - deep.depth_bound - 1e-9);
+
+  const ContactMeasure shallow =
+      MeasureContact(*a, {}, *a, RigidTransform::Translation({1.97, 0, 0}), tol);
+  EXPECT_EQ(shallow.kind, ContactMeasure::Kind::kTouching) << shallow.depth;
+  EXPECT_NEAR(shallow.depth, 0.03, 1e-9);
+}
+
+TEST(MeshContact, ContainedPartIsPenetratingEvenWithoutSurfaceContact) {
+  const auto big = Box(10, 10, 10);
+  const auto small = Box(1, 1, 1);
+  const RigidTransform X_WS = RigidTransform::Translation({1, 0.5, 0});
+  EXPECT_FALSE(SurfacesIntersect(*big, {}, *small, X_WS));
+  const ContactMeasure m = MeasureContact(*big, {}, *small, X_WS, 0.05);
+  EXPECT_EQ(m.contained, 2);
+  EXPECT_EQ(m.kind, ContactMeasure::Kind::kPenetrating);
+  // Deepest vertex of the small box: (-0.5+1, ...) corners; distance to the big box's surface
+  // is 5 - max(|x|,|y|,|z|) minimised over axes: the corner (1.5, 1, 0.5) is 3.5 from x = 5;
+  // the corner (0.5, 0, -0.5) is 4.5 from the nearest face.
+  EXPECT_NEAR(m.depth, 4.5, 1e-9);
+  EXPECT_EQ(MeasureContact(*small, X_WS, *big, {}, 0.05).contained, 1);
+}
+
+TEST(MeshContact, FacetedPinInHoleOfItsDiameterIsTouching) {
+  // Same nominal diameter, different facet counts: the facets cross by r (1 - cos(pi/n)).
+  const auto pin = Cylinder(3, -2, 8, 24, 0.1);
+  const auto plate = HoledPlate(20, 5, 3, 32);
+  const ContactMeasure m = MeasureContact(*pin, {}, *plate, {}, 0.05);
+  EXPECT_GT(m.crossing_pairs, 0u);
+  EXPECT_EQ(m.kind, ContactMeasure::Kind::kTouching) << m.depth;
+  EXPECT_LT(m.depth, 3 * (1 - std::cos(kPi / 24)) + 1e-9);
+  // A pin 0.4 mm too large is a penetration of about 0.2 mm.
+  const auto fat = Cylinder(3.2, -2, 8, 64);
+  const ContactMeasure f = MeasureContact(*fat, {}, *plate, {}, 0.05);
+  EXPECT_EQ(f.kind, ContactMeasure::Kind::kPenetrating);
+  EXPECT_NEAR(f.depth, 0.2, 0.02);
+}
+
+TEST(TranslationalSweep, FirstContactOfBoxesIsTheGap) {
+  const auto a = Box(2, 2, 2);
+  SweepOptions options;
+  options.max_travel = 10;
+  const auto c = FirstBlockingContact(*a, {}, *a, RigidTransform::Translation({5, 0.3, 0.2}),
+                                      Eigen::Vector3d::UnitX(), options);
+  ASSERT_TRUE(c);
+  EXPECT_NEAR(c->travel, 3.0, 1e-12);
+  EXPECT_NEAR(c->approach, 1.0, 1e-12);
+  // Moving away, or sliding past with a face in common, is free.
+  EXPECT_FALSE(FirstBlockingContact(*a, {}, *a, RigidTransform::Translation({5, 0, 0}),
+                                    -Eigen::Vector3d::UnitX(), options));
+  EXPECT_FALSE(FirstBlockingContact(*a, {}, *a, RigidTransform::Translation({0, 2, 0}),
+                                    Eigen::Vector3d::UnitX(), options));
+  // Too short a travel.
+  options.max_travel = 2.9;
+  EXPECT_FALSE(FirstBlockingContact(*a, {}, *a, RigidTransform::Translation({5, 0.3, 0.2}),
+                                    Eigen::Vector3d::UnitX(), options));
+}
+
+TEST(TranslationalSweep, EdgeMeetsEdgeWhereTheGeometrySays) {
+  // A box turned 45 degrees about z moves along x toward a box turned 45 degrees about x... the
+  // first contact is edge on edge: the moving box's vertical edge at x = sqrt(2) meets the
+  // other's horizontal edge along x at y = 0.
+  const auto a = Box(2, 2, 2);
+  const RigidTransform X_WM = RigidTransform::AxisAngle(Eigen::Vector3d::UnitZ(), kPi / 4);
+  const RigidTransform X_WO = RigidTransform::Translation({6, 0, 0}) *
+                              RigidTransform::AxisAngle(Eigen::Vector3d::UnitZ(), kPi / 4) *
+                              RigidTransform::AxisAngle(Eigen::Vector3d::UnitX(), kPi / 4);
+  SweepOptions options;
+  options.max_travel = 10;
+  const auto c = FirstBlockingContact(*a, X_WM, *a, X_WO, Eigen::Vector3d::UnitX(), options);
+  ASSERT_TRUE(c);
+  EXPECT_FALSE(SurfacesIntersect(*a, RigidTransform::Translation({c->travel - 1e-6, 0, 0}) * X_WM,
+                                 *a, X_WO));
+  EXPECT_TRUE(SurfacesIntersect(*a, RigidTransform::Translation({c->travel + 1e-6, 0, 0}) * X_WM,
+                                *a, X_WO));
+}
+
+// Property against the exact static test: just before the reported travel the meshes are
+// apart, just after they intersect; with no contact reported, no sampled travel intersects.
+TEST(TranslationalSweep, AgreesWithStaticTestOnRandomSweeps) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const auto moving = Cylinder(0.8, -1, 1, 10);
+  const auto obstacle = Box(3, 1, 2);
+  int contacts = 0;
+  for (int i = 0; i < 150; ++i) {
+    const RigidTransform X_WO = RandomPose(rng, 1.0);
+    RigidTransform X_WM = RandomPose(rng, 6.0);
+    if (SurfacesIntersect(*moving, X_WM, *obstacle, X_WO) ||
+        MeasureContact(*moving, X_WM, *obstacle, X_WO, 0).contained) {
+      continue;
+    }
+    // Aim roughly at the obstacle so that about half of the sweeps hit.
+    Eigen::Vector3d d = (X_WO.translation() - X_WM.translation()).normalized() +
+                        0.4 * Eigen::Vector3d(u(rng), u(rng), u(rng));
+    d.normalize();
+    SweepOptions options;
+    options.max_travel = 15;
+    const auto c = FirstBlockingContact(*moving, X_WM, *obstacle, X_WO, d, options);
+    auto at = [&](double s) { return RigidTransform::Translation(s * d) * X_WM; };
+    if (c) {
+      ++contacts;
+      EXPECT_FALSE(SurfacesIntersect(*moving, at(c->travel - 1e-7), *obstacle, X_WO)) << i;
+      EXPECT_TRUE(SurfacesIntersect(*moving, at(c->travel + 1e-7), *obstacle, X_WO)) << i;
+    } else {
+      for (int k = 0; k <= 300; ++k) {
+        ASSERT_FALSE(SurfacesIntersect(*moving, at(15.0 * k / 300), *obstacle, X_WO))
+            << "sweep " << i << " missed a contact at travel " << 15.0 * k / 300;
+      }
+    }
+  }
+  EXPECT_GT(contacts, 20);
+}
+
+TEST(TranslationalSweep, IgnoredRegionLetsAThreadIntoItsNut) {
+  const auto pin = Cylinder(3, 0, 10, 24);
+  const auto plate = HoledPlate(20, 5, 3, 32);
+  // The pin starts above the plate and moves down into the hole: its rim crosses the hole's
+  // facets, a contact of about 0.01 mm.
+  const RigidTransform X_WM = RigidTransform::Translation({0, 0, 8});
+  SweepOptions options;
+  options.max_travel = 6;
+  const auto blocked =
+      FirstBlockingContact(*pin, X_WM, *plate, {}, -Eigen::Vector3d::UnitZ(), options);
+  ASSERT_TRUE(blocked);
+  EXPECT_NEAR(blocked->travel, 3.0, 1e-9);
+  options.ignore = [](const Eigen::Vector3d& p_W) { return p_W.head<2>().norm() <= 3.05; };
+  EXPECT_FALSE(FirstBlockingContact(*pin, X_WM, *plate, {}, -Eigen::Vector3d::UnitZ(), options));
+}
+
+TEST(BroadPhase, MatchesAllPairsOnRandomBoxes) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 100.0), s(0.1, 8.0);
+  std::vector<Aabb> boxes(300);
+  for (Aabb& b : boxes) {
+    const Eigen::Vector3d p(u(rng), u(rng), u(rng));
+    b.Extend(p);
+    b.Extend(p + Eigen::Vector3d(s(rng), s(rng), s(rng)));
+  }
+  boxes[17] = Aabb{};  // empty boxes never overlap
+  std::vector<std::pair<std::size_t, std::size_t>> expected;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+      Aabb gi = boxes[i];
+      if (!gi.empty()) {
+        gi.min.array() -= 0.5;
+        gi.max.array() += 0.5;
+      }
+      Aabb gj = boxes[j];
+      if (!gj.empty()) {
+        gj.min.array() -= 0.5;
+        gj.max.array() += 0.5;
+      }
+      if (gi.Intersects(gj)) expected.emplace_back(i, j);
+    }
+  }
+  EXPECT_EQ(OverlappingBoxes(boxes, 0.5), expected);
+  EXPECT_GT(expected.size(), 10u);
+}
+
+// Two box meshes are exactly their boxes: the separating-axis test must say "overlap" exactly
+// when the solids meet (surfaces intersect, or one contains the other).
+TEST(BoxesOverlap, IsExactForBoxSolids) {
+  std::mt19937 rng(5);
+  const auto a = Box(2, 4, 6);
+  const auto b = Box(3, 1, 2);
+  int overlaps = 0;
+  for (int i = 0; i < 500; ++i) {
+    const RigidTransform X_WA = RandomPose(rng, 2.0), X_WB = RandomPose(rng, 5.0);
+    const bool meet = BruteForceIntersect(*a, X_WA, *b, X_WB) ||
+                      MeasureContact(*a, X_WA, *b, X_WB, 0).contained != 0;
+    ASSERT_EQ(BoxesOverlap(a->bounds(), b->bounds(), X_WA.inverse() * X_WB, 0), meet) << i;
+    overlaps += meet;
+  }
+  EXPECT_GT(overlaps, 50);
+  EXPECT_LT(overlaps, 450);
+}
+
+}  // namespace
+}  // namespace mechanist
