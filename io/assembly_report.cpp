@@ -21,8 +21,7 @@ double Num(double x) {
 Json Point(const Eigen::Vector3d& p) { return Json::array({Num(p.x()), Num(p.y()), Num(p.z())}); }
 
 std::string Text(const Eigen::Vector3d& p) {
-  return "(" + FormatNumber(p.x()) + ", " + FormatNumber(p.y()) + ", " + FormatNumber(p.z()) +
-         ")";
+  return "(" + FormatNumber(p.x()) + ", " + FormatNumber(p.y()) + ", " + FormatNumber(p.z()) + ")";
 }
 
 std::string PairText(const Assembly& assembly, const Analysis& analysis, std::size_t k) {
@@ -113,8 +112,7 @@ void WriteInterferenceSummary(const Assembly& assembly, const Analysis& analysis
     touching += c.verdict == ContactVerdict::kTouching;
   }
   out << "interference: " << clashes << " clashes, " << fits << " designed fits, " << touching
-      << " touching contacts (tolerance " << FormatNumber(assembly.tolerance().length)
-      << " mm)\n";
+      << " touching contacts (tolerance " << FormatNumber(assembly.tolerance().length) << " mm)\n";
   for (const ContactVerdict v : {ContactVerdict::kClash, ContactVerdict::kDesignedFit}) {
     for (const PartContact& c : contacts) {
       if (c.verdict == v) out << "  " << ContactText(assembly, analysis, c) << "\n";

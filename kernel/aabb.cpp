@@ -16,8 +16,7 @@ Aabb TransformBox(const RigidTransform& X_WP, const Aabb& box_P) {
   return box_W;
 }
 
-bool BoxesOverlap(const Aabb& box_A, const Aabb& box_B, const RigidTransform& X_AB,
-                  double margin) {
+bool BoxesOverlap(const Aabb& box_A, const Aabb& box_B, const RigidTransform& X_AB, double margin) {
   if (box_A.empty() || box_B.empty()) return false;
   const Eigen::Vector3d a = 0.5 * box_A.size() + Eigen::Vector3d::Constant(margin);
   const Eigen::Vector3d b = 0.5 * box_B.size() + Eigen::Vector3d::Constant(margin);

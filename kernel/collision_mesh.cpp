@@ -43,8 +43,7 @@ bool SegmentMayHitBox(const Eigen::Vector3d& p, const Eigen::Vector3d& d, const 
 }
 
 double BoxDistanceSquared(const Eigen::Vector3d& p, const Aabb& box) {
-  const Eigen::Vector3d d =
-      (box.min - p).cwiseMax(Eigen::Vector3d::Zero()).cwiseMax(p - box.max);
+  const Eigen::Vector3d d = (box.min - p).cwiseMax(Eigen::Vector3d::Zero()).cwiseMax(p - box.max);
   return d.squaredNorm();
 }
 
@@ -58,7 +57,8 @@ CollisionMesh::CollisionMesh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(s
 
   normals_.resize(F.size());
   std::vector<Eigen::Vector3d> centroids(F.size());
-  std::vector<Aabb> boxes(F.size());
+  std::vector<Aabb>& boxes = face_boxes_;
+  boxes.resize(F.size());
   for (std::int32_t f = 0; f < n; ++f) {
     const auto& [a, b, c] = Triangle(f);
     const Eigen::Vector3d cross = (b - a).cross(c - a);
@@ -85,6 +85,8 @@ CollisionMesh::CollisionMesh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(s
       centers.Extend(centroids[order_[i]]);
     }
     nodes_[node].box_M = box;
+    nodes_[node].center_M = box.center();
+    nodes_[node].half_M = 0.5 * box.size();
     const Eigen::Vector3d extent = centers.size();
     int axis = 0;
     extent.maxCoeff(&axis);
@@ -117,10 +119,9 @@ CollisionMesh::CollisionMesh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(s
   if (!closed_) {
     std::map<std::array<double, 3>, std::int32_t> canonical_of;
     for (std::size_t i = 0; i < V.size(); ++i) {
-      canonical[i] = canonical_of
-                         .try_emplace({V[i].x(), V[i].y(), V[i].z()},
-                                      static_cast<std::int32_t>(i))
-                         .first->second;
+      canonical[i] =
+          canonical_of.try_emplace({V[i].x(), V[i].y(), V[i].z()}, static_cast<std::int32_t>(i))
+              .first->second;
     }
     BuildEdges(canonical);
   }

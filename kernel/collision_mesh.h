@@ -22,10 +22,12 @@ class CollisionMesh {
   /// One BVH node: a box and either two children or a range of `order()`.
   struct Node {
     Aabb box_M;
-    std::int32_t left = -1;   ///< child index, -1 for a leaf
-    std::int32_t right = -1;  ///< child index
-    std::int32_t first = 0;   ///< leaf: first index into order()
-    std::int32_t count = 0;   ///< leaf: number of triangles
+    Eigen::Vector3d center_M = Eigen::Vector3d::Zero();  ///< of box_M
+    Eigen::Vector3d half_M = Eigen::Vector3d::Zero();    ///< half extents of box_M
+    std::int32_t left = -1;                              ///< child index, -1 for a leaf
+    std::int32_t right = -1;                             ///< child index
+    std::int32_t first = 0;                              ///< leaf: first index into order()
+    std::int32_t count = 0;                              ///< leaf: number of triangles
     bool leaf() const { return left < 0; }
   };
   /// An edge of the mesh and the faces on either side (-1 when the edge is a boundary).
@@ -43,6 +45,8 @@ class CollisionMesh {
   const std::vector<Node>& nodes() const { return nodes_; }
   /// Triangle indices in leaf order.
   const std::vector<std::int32_t>& order() const { return order_; }
+  /// Bounding box of each face in frame M.
+  const std::vector<Aabb>& face_boxes() const { return face_boxes_; }
   /// Unit outward normal of each face (zero for a degenerate face).
   const std::vector<Eigen::Vector3d>& face_normals() const { return normals_; }
   const std::vector<Edge>& edges() const { return edges_; }
@@ -63,8 +67,8 @@ class CollisionMesh {
 
   /// True when the point p_M lies strictly inside the closed mesh, by the parity of exact ray
   /// crossings (a ray that grazes an edge or vertex is replaced by the next of a fixed list of
-  /// directions). Points on the surface (exactly, on a face) are not inside. Meaningful only for closed()
-  /// meshes; for others it reports the parity anyway.
+  /// directions). Points on the surface (exactly, on a face) are not inside. Meaningful only for
+  /// closed() meshes; for others it reports the parity anyway.
   bool Contains(const Eigen::Vector3d& p_M) const;
 
   /// The point of the surface closest to p_M, its distance (mm) and face.
@@ -83,6 +87,7 @@ class CollisionMesh {
   std::vector<Node> nodes_;
   std::vector<std::int32_t> order_;
   std::vector<Eigen::Vector3d> normals_;
+  std::vector<Aabb> face_boxes_;
   std::vector<Edge> edges_;
   std::vector<std::array<std::int32_t, 3>> face_edges_;
   bool closed_ = false;

@@ -20,6 +20,15 @@ bool TrianglesIntersect(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
                         const Eigen::Vector3d& a2, const Eigen::Vector3d& b0,
                         const Eigen::Vector3d& b1, const Eigen::Vector3d& b2);
 
+/// True when the double-precision test proves the triangles apart: all three corners of one
+/// triangle lie strictly on one side of the other's plane by more than a forward error bound
+/// of the double computation (64 times Shewchuk's orient3d bound, far above this evaluation's
+/// error of about 8 eps times the permanent). False means "maybe": ask
+/// TrianglesIntersect. A cheap filter in front of the exact test (Moller 1997's plane test).
+bool TrianglesSurelyApart(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
+                          const Eigen::Vector3d& a2, const Eigen::Vector3d& b0,
+                          const Eigen::Vector3d& b1, const Eigen::Vector3d& b2);
+
 /// True when the closed segment [p, q] and the closed triangle (a, b, c) share a point.
 bool SegmentIntersectsTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& q,
                                const Eigen::Vector3d& a, const Eigen::Vector3d& b,

@@ -63,26 +63,73 @@ void DeepestInside(const std::vector<Eigen::Vector3d>& samples_S, const RigidTra
 
 }  // namespace
 
-std::vector<Eigen::Vector3d> ExpressVertices(const TriangleMesh& mesh,
-                                             const RigidTransform& X_AM) {
+std::vector<Eigen::Vector3d> ExpressVertices(const TriangleMesh& mesh, const RigidTransform& X_AM) {
   std::vector<Eigen::Vector3d> out;
   out.reserve(mesh.vertices.size());
   for (const Eigen::Vector3d& p_M : mesh.vertices) out.push_back(X_AM * p_M);
   return out;
 }
 
-std::vector<std::pair<std::int32_t, std::int32_t>> IntersectingTriangles(
-    const CollisionMesh& a, const RigidTransform& X_WA, const CollisionMesh& b,
-    const RigidTransform& X_WB, std::size_t max_pairs) {
+std::vector<std::pair<std::int32_t, std::int32_t>> IntersectingTriangles(const CollisionMesh& a,
+                                                                         const RigidTransform& X_WA,
+                                                                         const CollisionMesh& b,
+                                                                         const RigidTransform& X_WB,
+                                                                         std::size_t max_pairs) {
   std::vector<std::pair<std::int32_t, std::int32_t>> result;
   if (a.mesh().faces.empty() || b.mesh().faces.empty() || max_pairs == 0) return result;
   const RigidTransform X_AB = X_WA.inverse() * X_WB;
   const double margin = PruneMargin(a, b, X_AB);
-  if (!BoxesOverlap(a.bounds(), b.bounds(), X_AB, margin)) return result;
-  const std::vector<Eigen::Vector3d> vb_A = ExpressVertices(b.mesh(), X_AB);
+  const Eigen::Matrix3d& R = X_AB.rotation();
+  const Eigen::Vector3d& p = X_AB.translation();
+  // A small epsilon keeps near-parallel edge axes from producing false separations.
+  const Eigen::Matrix3d absR = R.cwiseAbs().array() + 1e-12;
+  const Eigen::Vector3d grow = Eigen::Vector3d::Constant(margin);
+  // Separating-axis test of two nodes (as BoxesOverlap), with the rotation's terms shared.
+  auto overlap = [&](const CollisionMesh::Node& na, const CollisionMesh::Node& nb) {
+    const Eigen::Vector3d ha = na.half_M + grow, hb = nb.half_M + grow;
+    const Eigen::Vector3d t = R * nb.center_M + p - na.center_M;
+    for (int i = 0; i < 3; ++i) {
+      if (std::abs(t[i]) > ha[i] + absR.row(i).dot(hb)) return false;
+    }
+    for (int j = 0; j < 3; ++j) {
+      if (std::abs(R.col(j).dot(t)) > absR.col(j).dot(ha) + hb[j]) return false;
+    }
+    for (int i = 0; i < 3; ++i) {
+      const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+      for (int j = 0; j < 3; ++j) {
+        const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+        const double ra = ha[i1] * absR(i2, j) + ha[i2] * absR(i1, j);
+        const double rb = hb[j1] * absR(i, j2) + hb[j2] * absR(i, j1);
+        if (std::abs(t[i2] * R(i1, j) - t[i1] * R(i2, j)) > ra + rb) return false;
+      }
+    }
+    return true;
+  };
+  if (!overlap(a.nodes().front(), b.nodes().front())) return result;
+
+  // B's vertices and face boxes in A's frame, computed when a leaf first needs them.
+  const auto& vb_M = b.mesh().vertices;
+  std::vector<Eigen::Vector3d> vb(vb_M.size());
+  std::vector<char> vb_done(vb_M.size(), 0);
+  std::vector<Aabb> box_b(b.mesh().faces.size());
+  std::vector<char> box_b_done(b.mesh().faces.size(), 0);
   const auto& fa = a.mesh().faces;
   const auto& fb = b.mesh().faces;
   const auto& va = a.mesh().vertices;
+  auto vertex_b = [&](std::int32_t v) -> const Eigen::Vector3d& {
+    if (!vb_done[v]) {
+      vb[v] = X_AB * vb_M[v];
+      vb_done[v] = 1;
+    }
+    return vb[v];
+  };
+  auto face_box_b = [&](std::int32_t g) -> const Aabb& {
+    if (!box_b_done[g]) {
+      box_b[g] = TriangleBox(vertex_b(fb[g][0]), vertex_b(fb[g][1]), vertex_b(fb[g][2]));
+      box_b_done[g] = 1;
+    }
+    return box_b[g];
+  };
 
   std::vector<std::pair<std::int32_t, std::int32_t>> stack = {{0, 0}};
   while (!stack.empty()) {
@@ -90,11 +137,11 @@ std::vector<std::pair<std::int32_t, std::int32_t>> IntersectingTriangles(
     stack.pop_back();
     const auto& na = a.nodes()[ia];
     const auto& nb = b.nodes()[ib];
-    if (!BoxesOverlap(na.box_M, nb.box_M, X_AB, margin)) continue;
+    if ((ia != 0 || ib != 0) && !overlap(na, nb)) continue;
     if (!na.leaf() || !nb.leaf()) {
       // Descend into the larger box (or the only inner node).
-      const bool split_a = !na.leaf() && (nb.leaf() || na.box_M.size().squaredNorm() >=
-                                                           nb.box_M.size().squaredNorm());
+      const bool split_a =
+          !na.leaf() && (nb.leaf() || na.half_M.squaredNorm() >= nb.half_M.squaredNorm());
       if (split_a) {
         stack.push_back({na.right, ib});
         stack.push_back({na.left, ib});
@@ -106,12 +153,13 @@ std::vector<std::pair<std::int32_t, std::int32_t>> IntersectingTriangles(
     }
     for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
       const std::int32_t f = a.order()[i];
-      const Eigen::Vector3d &a0 = va[fa[f][0]], &a1 = va[fa[f][1]], &a2 = va[fa[f][2]];
-      const Aabb box_a = TriangleBox(a0, a1, a2);
+      const Aabb& box_a = a.face_boxes()[f];
       for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
         const std::int32_t g = b.order()[j];
-        const Eigen::Vector3d &b0 = vb_A[fb[g][0]], &b1 = vb_A[fb[g][1]], &b2 = vb_A[fb[g][2]];
-        if (!box_a.Intersects(TriangleBox(b0, b1, b2))) continue;
+        if (!box_a.Intersects(face_box_b(g))) continue;
+        const Eigen::Vector3d &a0 = va[fa[f][0]], &a1 = va[fa[f][1]], &a2 = va[fa[f][2]];
+        const Eigen::Vector3d &b0 = vb[fb[g][0]], &b1 = vb[fb[g][1]], &b2 = vb[fb[g][2]];
+        if (TrianglesSurelyApart(a0, a1, a2, b0, b1, b2)) continue;
         if (TrianglesIntersect(a0, a1, a2, b0, b1, b2)) {
           result.push_back({f, g});
           if (result.size() >= max_pairs) return result;

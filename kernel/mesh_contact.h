@@ -56,7 +56,6 @@ struct ContactMeasure {
 /// Classifies the contact of A and B: separate, touching (depth <= `tolerance`, mm) or
 /// penetrating. Containment is tested only for closed meshes.
 ContactMeasure MeasureContact(const CollisionMesh& a, const RigidTransform& X_WA,
-                              const CollisionMesh& b, const RigidTransform& X_WB,
-                              double tolerance);
+                              const CollisionMesh& b, const RigidTransform& X_WB, double tolerance);
 
 }  // namespace mechanist

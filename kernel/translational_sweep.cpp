@@ -69,8 +69,7 @@ bool EntersAcrossBoundary(const CollisionMesh& mesh, std::int32_t face,
 
 struct Best {
   std::optional<SweepContact> contact;
-  void Offer(SweepContact::Kind kind, double travel, const Eigen::Vector3d& p_W,
-             double approach) {
+  void Offer(SweepContact::Kind kind, double travel, const Eigen::Vector3d& p_W, double approach) {
     if (contact && travel >= contact->travel) return;
     contact = SweepContact{kind, travel, p_W, approach};
   }
@@ -79,12 +78,9 @@ struct Best {
 
 }  // namespace
 
-std::optional<SweepContact> FirstBlockingContact(const CollisionMesh& moving,
-                                                 const RigidTransform& X_WM,
-                                                 const CollisionMesh& obstacle,
-                                                 const RigidTransform& X_WO,
-                                                 const Eigen::Vector3d& d_W,
-                                                 const SweepOptions& options) {
+std::optional<SweepContact> FirstBlockingContact(
+    const CollisionMesh& moving, const RigidTransform& X_WM, const CollisionMesh& obstacle,
+    const RigidTransform& X_WO, const Eigen::Vector3d& d_W, const SweepOptions& options) {
   if (!(options.max_travel >= 0.0) || !std::isfinite(options.max_travel)) {
     throw std::invalid_argument("FirstBlockingContact: max_travel must be finite and >= 0");
   }
@@ -130,6 +126,14 @@ std::optional<SweepContact> FirstBlockingContact(const CollisionMesh& moving,
   for (const auto& f : mesh_m.faces) leading_m.push_back((vm[f[0]] + vm[f[1]] + vm[f[2]]) / 3.0);
   std::vector<Eigen::Vector3d> leading_o = vo;
   for (const auto& f : mesh_o.faces) leading_o.push_back((vo[f[0]] + vo[f[1]] + vo[f[2]]) / 3.0);
+  // The points furthest ahead (moving) and nearest (obstacle) first: an early contact shrinks
+  // every later query to the travel before it.
+  std::sort(
+      leading_m.begin(), leading_m.end(),
+      [&](const Eigen::Vector3d& x, const Eigen::Vector3d& y) { return x.dot(d) > y.dot(d); });
+  std::sort(
+      leading_o.begin(), leading_o.end(),
+      [&](const Eigen::Vector3d& x, const Eigen::Vector3d& y) { return x.dot(d) < y.dot(d); });
 
   for (const Eigen::Vector3d& v : leading_m) {
     // Only travels below the best contact so far matter.
@@ -159,22 +163,23 @@ std::optional<SweepContact> FirstBlockingContact(const CollisionMesh& moving,
     const Eigen::Vector3d w_M = X_MO * w;
     ForEachFaceNear(moving, SegmentBox(w_M, w_M - best.limit(L) * d_M), margin,
                     [&](std::int32_t g) {
-      const Eigen::Vector3d n = X_OM.RotateDirection(moving.face_normals()[g]);
-      const double approach = moving.closed() ? n.dot(d) : std::abs(n.dot(d));
-      if (approach <= options.min_approach) return;
-      const auto& face = mesh_m.faces[g];
-      const Eigen::Vector3d &a = vm[face[0]], &b = vm[face[1]], &c = vm[face[2]];
-      if (!SegmentIntersectsTriangle(w, w - sweep, a, b, c)) return;
-      // In the moving mesh's frame the obstacle's vertex travels along -d.
-      if (moving.closed() && !EntersAcrossBoundary(moving, g, moving.Triangle(g), w_M, w_M - L * d_M, -d_M, 1.0,
-                                options.min_approach)) {
-        return;
-      }
-      const double s = std::clamp(n.dot(w - a) / n.dot(d), 0.0, L);
-      if (s >= best.limit(L) && best.contact) return;
-      if (ignored(w)) return;
-      best.Offer(SweepContact::Kind::kFaceVertex, s, X_WO * w, approach);
-    });
+                      const Eigen::Vector3d n = X_OM.RotateDirection(moving.face_normals()[g]);
+                      const double approach = moving.closed() ? n.dot(d) : std::abs(n.dot(d));
+                      if (approach <= options.min_approach) return;
+                      const auto& face = mesh_m.faces[g];
+                      const Eigen::Vector3d &a = vm[face[0]], &b = vm[face[1]], &c = vm[face[2]];
+                      if (!SegmentIntersectsTriangle(w, w - sweep, a, b, c)) return;
+                      // In the moving mesh's frame the obstacle's vertex travels along -d.
+                      if (moving.closed() &&
+                          !EntersAcrossBoundary(moving, g, moving.Triangle(g), w_M, w_M - L * d_M,
+                                                -d_M, 1.0, options.min_approach)) {
+                        return;
+                      }
+                      const double s = std::clamp(n.dot(w - a) / n.dot(d), 0.0, L);
+                      if (s >= best.limit(L) && best.contact) return;
+                      if (ignored(w)) return;
+                      best.Offer(SweepContact::Kind::kFaceVertex, s, X_WO * w, approach);
+                    });
   }
 
   // Convex edges of the moving mesh crossing convex edges of the obstacle (any edges when a
@@ -227,8 +232,7 @@ std::optional<SweepContact> FirstBlockingContact(const CollisionMesh& moving,
         const Eigen::Vector3d a_s = a + s * d;
         const Eigen::Vector3d plane_n = (b - a).cross(m);
         const double denom = plane_n.dot(e2 - c);
-        const double u =
-            denom != 0.0 ? std::clamp(plane_n.dot(a_s - c) / denom, 0.0, 1.0) : 0.5;
+        const double u = denom != 0.0 ? std::clamp(plane_n.dot(a_s - c) / denom, 0.0, 1.0) : 0.5;
         const Eigen::Vector3d p = c + u * (e2 - c);
         if (ignored(p)) continue;
         best.Offer(SweepContact::Kind::kEdgeEdge, s, X_WO * p, approach);

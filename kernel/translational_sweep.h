@@ -51,11 +51,8 @@ struct SweepContact {
 /// coplanar faces are not edges of the solid and take no part. When either mesh is not
 /// closed (a surface or a triangle soup, no inside), faces are two-sided and every contact
 /// that approaches blocks.
-std::optional<SweepContact> FirstBlockingContact(const CollisionMesh& moving,
-                                                 const RigidTransform& X_WM,
-                                                 const CollisionMesh& obstacle,
-                                                 const RigidTransform& X_WO,
-                                                 const Eigen::Vector3d& d_W,
-                                                 const SweepOptions& options);
+std::optional<SweepContact> FirstBlockingContact(
+    const CollisionMesh& moving, const RigidTransform& X_WM, const CollisionMesh& obstacle,
+    const RigidTransform& X_WO, const Eigen::Vector3d& d_W, const SweepOptions& options);
 
 }  // namespace mechanist

@@ -61,8 +61,8 @@ class Planner {
     for (std::size_t k = 0; k < found.size(); ++k) {
       for (const Pair& pair : analysis_.pairs) {
         if (!Carries(pair)) continue;
-        for (const auto& [x, y] : {std::pair{pair.a.part, pair.b.part},
-                                   std::pair{pair.b.part, pair.a.part}}) {
+        for (const auto& [x, y] :
+             {std::pair{pair.a.part, pair.b.part}, std::pair{pair.b.part, pair.a.part}}) {
           if (x == found[k] && !seen[y] && eligible[y]) {
             seen[y] = true;
             found.push_back(y);
@@ -100,8 +100,7 @@ class Planner {
       const FeatureRef theirs = p.a.part == obstacle ? p.a : p.b;
       const bool teeth = p.type == PairType::kGear || p.type == PairType::kWormGear ||
                          p.type == PairType::kRackPinion;
-      if (!teeth &&
-          std::abs(WorldAxis(theirs).dot(d)) < std::cos(assembly_.tolerance().angle)) {
+      if (!teeth && std::abs(WorldAxis(theirs).dot(d)) < std::cos(assembly_.tolerance().angle)) {
         continue;
       }
       regions.push_back(theirs);
@@ -145,8 +144,8 @@ class Planner {
   // within the tolerance of `seat_travel` or beyond are the seat and do not count.
   std::vector<InsertionObstacle> Sweep(const std::vector<std::size_t>& group,
                                        const std::vector<std::size_t>& obstacles,
-                                       const Eigen::Vector3d& d, double start_shift,
-                                       double travel, double seat_travel) const {
+                                       const Eigen::Vector3d& d, double start_shift, double travel,
+                                       double seat_travel) const {
     Aabb swept;
     for (const std::size_t m : group) {
       Aabb box = boxes_[m];
@@ -176,24 +175,23 @@ class Planner {
         options.max_travel = travel;
         options.min_approach = min_approach_;
         options.ignore = IgnoreFor(m, o, d);
-        const RigidTransform X_WM =
-            RigidTransform::Translation(start_shift * d) * state_.X_WP[m];
+        const RigidTransform X_WM = RigidTransform::Translation(start_shift * d) * state_.X_WP[m];
         const auto contact = FirstBlockingContact(model_.part_mesh(m), X_WM, model_.part_mesh(o),
                                                   state_.X_WP[o], d, options);
         if (!contact || contact->travel >= seat_travel - tolerance_) continue;
         if (!first || contact->travel < first->travel) {
-          first = InsertionObstacle{o, contact->travel, seat_travel - contact->travel,
-                                    contact->p_W};
+          first =
+              InsertionObstacle{o, contact->travel, seat_travel - contact->travel, contact->p_W};
         }
       }
       if (first) blocked.push_back(*first);
     }
-    std::sort(blocked.begin(), blocked.end(),
-              [&](const InsertionObstacle& x, const InsertionObstacle& y) {
-                return x.travel < y.travel ||
-                       (x.travel == y.travel &&
-                        assembly_.part(x.part).id < assembly_.part(y.part).id);
-              });
+    std::sort(
+        blocked.begin(), blocked.end(),
+        [&](const InsertionObstacle& x, const InsertionObstacle& y) {
+          return x.travel < y.travel ||
+                 (x.travel == y.travel && assembly_.part(x.part).id < assembly_.part(y.part).id);
+        });
     return blocked;
   }
 
@@ -201,8 +199,8 @@ class Planner {
   double ClearingDistance(const std::vector<std::size_t>& group,
                           const std::vector<std::size_t>& others, const Eigen::Vector3d& d) const {
     auto extent = [&](const Aabb& box, bool max) {
-      double best = max ? -std::numeric_limits<double>::infinity()
-                        : std::numeric_limits<double>::infinity();
+      double best =
+          max ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
       for (int corner = 0; corner < 8; ++corner) {
         const Eigen::Vector3d p((corner & 1) ? box.max.x() : box.min.x(),
                                 (corner & 2) ? box.max.y() : box.min.y(),

@@ -27,7 +27,7 @@ struct InsertionObstacle {
 /// One insertion: a part (and what travels with it) moving in a straight line into its pose.
 struct InsertionStep {
   std::size_t part = 0;
-  std::vector<std::size_t> carried;  ///< parts press-fitted or forced fixed to it, moving along
+  std::vector<std::size_t> carried;   ///< parts press-fitted or forced fixed to it, moving along
   std::optional<FeatureRef> feature;  ///< the inserted feature, when the direction comes from one
   std::optional<FeatureRef> into;     ///< the feature it goes into
   Eigen::Vector3d direction_W = Eigen::Vector3d::UnitZ();  ///< unit direction of travel
@@ -40,8 +40,8 @@ struct InsertionStep {
 /// Whether and how the assembly can be put together.
 struct AssemblyPlan {
   bool assemblable = false;
-  bool from_steps = false;          ///< the file's `steps` were checked (else a search ran)
-  std::vector<std::size_t> base;    ///< parts in place before the first step
+  bool from_steps = false;        ///< the file's `steps` were checked (else a search ran)
+  std::vector<std::size_t> base;  ///< parts in place before the first step
   std::vector<InsertionStep> steps;
   /// Search only: parts that no straight insertion brings into place, with the attempt that
   /// got furthest (its blockers).

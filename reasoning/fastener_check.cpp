@@ -28,10 +28,11 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
   auto world = [&](FeatureRef r) { return assembly.feature(r).WorldAxis(state.X_WP[r.part]); };
   auto too_short = [&](FeatureRef thread, FeatureRef nut, double shortfall,
                        const std::string& how) {
-    out.push_back({Severity::kWarning, "bolt_too_short",
+    out.push_back({Severity::kWarning,
+                   "bolt_too_short",
                    "thread " + assembly.FeatureName(thread) + " " + how + " tapped hole " +
-                       assembly.FeatureName(nut) + " (" +
-                       Mm(assembly.feature(nut).length) + " long): it is " + Mm(shortfall) +
+                       assembly.FeatureName(nut) + " (" + Mm(assembly.feature(nut).length) +
+                       " long): it is " + Mm(shortfall) +
                        " too short for the parts it passes and its nut",
                    {assembly.part(thread.part).id, assembly.part(nut.part).id},
                    {assembly.FeatureName(thread), assembly.FeatureName(nut)}});
@@ -49,8 +50,7 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
         engaged = true;
         const double overlap = AxialOverlap(world(pair.a), world(nut));
         if (overlap < h.length - L) {
-          too_short(pair.a, nut, h.length - overlap,
-                    "engages " + Mm(overlap) + " of");
+          too_short(pair.a, nut, h.length - overlap, "engages " + Mm(overlap) + " of");
         }
       }
       if (engaged) continue;
@@ -75,11 +75,11 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
         }
       }
       const bool nut_like =
-          std::count_if(part.features.begin(), part.features.end(), [](const Feature& x) {
-            return x.kind != FeatureKind::kFace;
-          }) == 1;
+          std::count_if(part.features.begin(), part.features.end(),
+                        [](const Feature& x) { return x.kind != FeatureKind::kFace; }) == 1;
       if (!reported && nut_like) {
-        out.push_back({Severity::kWarning, "nut_without_bolt",
+        out.push_back({Severity::kWarning,
+                       "nut_without_bolt",
                        "nut " + part.id + " has no thread in its tapped hole " +
                            assembly.FeatureName(nut) + ": nothing holds it",
                        {part.id},
@@ -102,7 +102,8 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
     if (loose.empty() || firm) continue;
     std::string list;
     for (const std::string& l : loose) list += (list.empty() ? "" : ", ") + l;
-    out.push_back({Severity::kWarning, "loose_fastening_only",
+    out.push_back({Severity::kWarning,
+                   "loose_fastening_only",
                    "part " + assembly.part(p).id + " is held only by loose threads (" + list +
                        "): it can turn and travel on them",
                    {assembly.part(p).id},

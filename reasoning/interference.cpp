@@ -88,8 +88,7 @@ bool OverlapIsDesigned(const Pair& pair) {
       return true;
     case PairType::kFixed:
       return pair.fastening == PairFastening::kPressFit ||
-             pair.fastening == PairFastening::kTight ||
-             pair.fastening == PairFastening::kSetscrew;
+             pair.fastening == PairFastening::kTight || pair.fastening == PairFastening::kSetscrew;
     default:
       return false;
   }
@@ -107,8 +106,7 @@ bool InPairRegion(const Assembly& assembly, const AssemblyState& state, const Pa
 }
 
 std::vector<PartContact> FindContacts(const Assembly& assembly, const AssemblyState& state,
-                                      const CollisionModel& model,
-                                      const std::vector<Pair>& pairs) {
+                                      const CollisionModel& model, const std::vector<Pair>& pairs) {
   const double tolerance = assembly.tolerance().length;
   std::vector<Aabb> boxes;
   for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
@@ -126,9 +124,10 @@ std::vector<PartContact> FindContacts(const Assembly& assembly, const AssemblySt
       contact.verdict = ContactVerdict::kClash;
       for (std::size_t k = 0; k < pairs.size(); ++k) {
         const Pair& pair = pairs[k];
-        const bool between = (pair.a.part == i && pair.b.part == j) ||
-                             (pair.a.part == j && pair.b.part == i);
-        if (between && OverlapIsDesigned(pair) && InPairRegion(assembly, state, pair, contact.measure.p_W, tolerance)) {
+        const bool between =
+            (pair.a.part == i && pair.b.part == j) || (pair.a.part == j && pair.b.part == i);
+        if (between && OverlapIsDesigned(pair) &&
+            InPairRegion(assembly, state, pair, contact.measure.p_W, tolerance)) {
           contact.verdict = ContactVerdict::kDesignedFit;
           contact.pair = k;
           break;

@@ -28,8 +28,8 @@ std::string_view ToString(ContactVerdict verdict);
 struct PartContact {
   std::size_t part_a = 0, part_b = 0;  ///< part indices, part_a < part_b
   ContactVerdict verdict = ContactVerdict::kTouching;
-  ContactMeasure measure;              ///< depth (mm), location (world), containment
-  std::optional<std::size_t> pair;     ///< kDesignedFit: index of the pair that explains it
+  ContactMeasure measure;           ///< depth (mm), location (world), containment
+  std::optional<std::size_t> pair;  ///< kDesignedFit: index of the pair that explains it
 };
 
 /// True when p_W lies in the space that `feature` of a part at X_WP engages (its cylinder,
@@ -53,8 +53,8 @@ bool InPairRegion(const Assembly& assembly, const AssemblyState& state, const Pa
 /// Every pair of parts whose meshes meet at `state`: a part-level sort-and-sweep broad phase
 /// on world boxes, then MeasureContact. Penetrations deeper than the file's length tolerance
 /// are designed fits when the deepest point lies in the engagement region of a pair between
-/// the two parts that overlaps by design (OverlapIsDesigned) (`pairs`, as recognised at this state), clashes otherwise. Sorted by part
-/// ids. Deterministic.
+/// the two parts that overlaps by design (OverlapIsDesigned) (`pairs`, as recognised at this
+/// state), clashes otherwise. Sorted by part ids. Deterministic.
 std::vector<PartContact> FindContacts(const Assembly& assembly, const AssemblyState& state,
                                       const CollisionModel& model, const std::vector<Pair>& pairs);
 

@@ -3,6 +3,8 @@
 #include <stdexcept>
 
 #include "io/assembly_reader.h"
+#include "kernel/collision_model.h"
+#include "reasoning/assembly_plan.h"
 #include "reasoning/expectation_check.h"
 
 namespace mechanist::testing {
@@ -64,6 +66,16 @@ Mechanism Mechanism::Load(const std::filesystem::path& file) {
   e.pair = {*fa, *fb};
   e.pair_type = type;
   return Verdict(m, e);
+}
+
+::testing::AssertionResult IsAssemblable(const Mechanism& m, bool assemblable) {
+  Expectation e;
+  e.kind = Expectation::Kind::kAssemblable;
+  e.flag = assemblable;
+  const AssemblyPlan plan = PlanAssembly(m.assembly(), m.analysis(), CollisionModel(m.assembly()));
+  const ExpectationResult r = CheckExpectation(m.assembly(), m.analysis(), e, &plan);
+  return (r.passed ? ::testing::AssertionSuccess() : ::testing::AssertionFailure())
+         << r.what << " (" << r.detail << ")";
 }
 
 ::testing::AssertionResult HasMobility(const Mechanism& m, int dof) {

@@ -4,6 +4,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
+#include <Eigen/Geometry>
+#include <cmath>
+
 namespace mechanist {
 namespace {
 
@@ -54,6 +57,42 @@ bool TrianglesIntersect(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
     return false;
   }
   return CGAL::do_intersect(a, b);
+}
+
+namespace {
+
+// +1 or -1 when all of p, q, r lie strictly on one side of the plane (a, b, c) beyond the
+// error bound of the double computation, 0 otherwise.
+int SurelyOneSide(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                  const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Eigen::Vector3d& r) {
+  // The rounding error of n . w evaluated this way (three differences, a cross product, a dot
+  // product) is below about 8 eps times the permanent sum |u_j v_k w_i|; the bound used is 64
+  // times Shewchuk's orient3d bound A, (7 + 56 eps) eps, about 450 eps.
+  constexpr double kBound = 64.0 * 1.1102230246251565e-16 * (7.0 + 56.0 * 1.1102230246251565e-16);
+  const Eigen::Vector3d u = b - a, v = c - a;
+  const Eigen::Vector3d n = u.cross(v);
+  const Eigen::Vector3d n_abs(std::abs(u.y() * v.z()) + std::abs(u.z() * v.y()),
+                              std::abs(u.z() * v.x()) + std::abs(u.x() * v.z()),
+                              std::abs(u.x() * v.y()) + std::abs(u.y() * v.x()));
+  int side = 0;
+  for (const Eigen::Vector3d* x : {&p, &q, &r}) {
+    const Eigen::Vector3d w = *x - a;
+    const double d = n.dot(w);
+    const double permanent = n_abs.dot(w.cwiseAbs());
+    if (std::abs(d) <= kBound * permanent) return 0;
+    const int s = d > 0 ? 1 : -1;
+    if (side != 0 && s != side) return 0;
+    side = s;
+  }
+  return side;
+}
+
+}  // namespace
+
+bool TrianglesSurelyApart(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
+                          const Eigen::Vector3d& a2, const Eigen::Vector3d& b0,
+                          const Eigen::Vector3d& b1, const Eigen::Vector3d& b2) {
+  return SurelyOneSide(a0, a1, a2, b0, b1, b2) != 0 || SurelyOneSide(b0, b1, b2, a0, a1, a2) != 0;
 }
 
 bool SegmentIntersectsTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& q,

@@ -51,6 +51,10 @@ class Mechanism {
                                              const std::vector<std::string>& parts);
 /// Some driver moves `part` (`moves` true) or none does (false).
 ::testing::AssertionResult Moves(const Mechanism& m, const std::string& part, bool moves = true);
+/// The assembly can be put together (`assemblable` true: no clash, every step of the file or
+/// of the searched sequence clear), or cannot (false). Runs the assembly plan, which sweeps
+/// every part: slower than the other checks.
+::testing::AssertionResult IsAssemblable(const Mechanism& m, bool assemblable = true);
 /// A diagnostic whose code is `text` or whose message contains it, about all `parts`.
 ::testing::AssertionResult HasDiagnostic(const Mechanism& m, const std::string& text,
                                          const std::vector<std::string>& parts = {});

@@ -58,13 +58,14 @@ TEST(AssemblyExamples, EveryExampleIsFreeOfClashesAndAssemblable) {
     const AssemblyPlan plan = PlanAssembly(a, an, model);
     EXPECT_TRUE(plan.assemblable) << file;
     EXPECT_TRUE(plan.unplaced.empty()) << file;
-    EXPECT_EQ(plan.base.size() + plan.steps.size() +
-                  [&] {
-                    std::size_t carried = 0;
-                    for (const auto& s : plan.steps) carried += s.carried.size();
-                    return carried;
-                  }(),
-              a.parts().size())
+    EXPECT_EQ(
+        plan.base.size() + plan.steps.size() +
+            [&] {
+              std::size_t carried = 0;
+              for (const auto& s : plan.steps) carried += s.carried.size();
+              return carried;
+            }(),
+        a.parts().size())
         << file << ": every part is placed once";
     for (const ExpectationResult& r : CheckExpectations(a, an, &plan)) {
       EXPECT_TRUE(r.passed) << file << " " << r.pointer << ": " << r.what << ": " << r.detail;
@@ -140,16 +141,17 @@ TEST(FastenerChecks, BoltTooShortForItsNutIsReportedWithTheShortfall) {
 
 TEST(FastenerChecks, NutWithoutBoltAndLooseOnlyFastening) {
   std::string text = ReadText(kBracket);
-  text = Replace(text,
-                 R"(    {"id": "bolt_right", "library": {"kind": "hex_bolt", "diameter": 6, "pitch": 1, "length": 16},
+  text = Replace(
+      text,
+      R"(    {"id": "bolt_right", "library": {"kind": "hex_bolt", "diameter": 6, "pitch": 1, "length": 16},
      "pose": {"position": [30, 0, 9], "rotation": {"axis": [1, 0, 0], "angle": 180}}},)",
-                 "");
+      "");
   text = Replace(text, R"(,
     {"insert": "bolt_right/thread", "into": "bracket_right/base_hole1"})",
                  "");
   text = Replace(text, R"("bolt_left", "bolt_right",)", R"("bolt_left",)");
-  text = Replace(text, R"({"pair": ["bolt_right/thread", "nut_right/thread"], "type": "fixed"},)",
-                 "");
+  text =
+      Replace(text, R"({"pair": ["bolt_right/thread", "nut_right/thread"], "type": "fixed"},)", "");
   const Analysis an = Analyze(ParseAssembly(text, kBracket));
   const Diagnostic* d = Find(an, "nut_without_bolt");
   ASSERT_NE(d, nullptr);

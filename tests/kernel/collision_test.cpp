@@ -40,15 +40,15 @@ std::shared_ptr<const CollisionMesh> Cylinder(double radius, double z0, double z
 std::shared_ptr<const CollisionMesh> HoledPlate(double size, double t, double radius,
                                                 int segments) {
   Region2d r;
-  r.outer = {{-size / 2, -size / 2}, {size / 2, -size / 2}, {size / 2, size / 2},
-             {-size / 2, size / 2}};
+  r.outer = {
+      {-size / 2, -size / 2}, {size / 2, -size / 2}, {size / 2, size / 2}, {-size / 2, size / 2}};
   r.holes.push_back(CircleRing({0, 0}, radius, segments));
   return std::make_shared<CollisionMesh>(std::make_shared<TriangleMesh>(ExtrudeRegion(r, 0, t)));
 }
 
 // The oracle: every triangle pair, exact, on the same coordinates as the contract says.
-bool BruteForceIntersect(const CollisionMesh& a, const RigidTransform& X_WA,
-                         const CollisionMesh& b, const RigidTransform& X_WB) {
+bool BruteForceIntersect(const CollisionMesh& a, const RigidTransform& X_WA, const CollisionMesh& b,
+                         const RigidTransform& X_WB) {
   const auto vb = ExpressVertices(b.mesh(), X_WA.inverse() * X_WB);
   const auto& va = a.mesh().vertices;
   for (const auto& f : a.mesh().faces) {
@@ -114,9 +114,9 @@ TEST(MeshContact, AgreesWithBruteForceOnRandomPoses) {
 TEST(MeshContact, TouchingConfigurationsAgreeWithBruteForce) {
   // Coincident faces, shared edges and corners: exactly representable poses.
   const auto a = Box(2, 2, 2);
-  const std::vector<Eigen::Vector3d> offsets = {
-      {2, 0, 0}, {2, 2, 0}, {2, 2, 2}, {2, 1, 0.5}, {2.0000001, 0, 0}, {1.9999999, 0, 0},
-      {0, 0, 2}, {1, 1, 2}, {0.5, -0.25, 2}};
+  const std::vector<Eigen::Vector3d> offsets = {{2, 0, 0},   {2, 2, 0},         {2, 2, 2},
+                                                {2, 1, 0.5}, {2.0000001, 0, 0}, {1.9999999, 0, 0},
+                                                {0, 0, 2},   {1, 1, 2},         {0.5, -0.25, 2}};
   for (const auto& o : offsets) {
     const RigidTransform X_WB = RigidTransform::Translation(o);
     EXPECT_EQ(SurfacesIntersect(*a, {}, *a, X_WB), BruteForceIntersect(*a, {}, *a, X_WB))
@@ -129,7 +129,8 @@ TEST(MeshContact, TouchingConfigurationsAgreeWithBruteForce) {
 TEST(MeshContact, FaceContactIsTouchingAndOverlapIsPenetratingByItsDepth) {
   const auto a = Box(2, 2, 2);
   const double tol = 0.05;
-  const ContactMeasure touch = MeasureContact(*a, {}, *a, RigidTransform::Translation({2, 0, 0}), tol);
+  const ContactMeasure touch =
+      MeasureContact(*a, {}, *a, RigidTransform::Translation({2, 0, 0}), tol);
   EXPECT_EQ(touch.kind, ContactMeasure::Kind::kTouching);
   EXPECT_LE(touch.depth, 1e-9);
 

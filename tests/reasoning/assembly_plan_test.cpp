@@ -1,6 +1,8 @@
 // Assembly sequences on blocks of unit cubes: a found sequence re-checked insertion by
 // insertion with the kernel's sweep (an oracle independent of the planner's search), and a
 // part walled in by ground parts reported as unplaced with its blockers.
+#include "reasoning/assembly_plan.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 #include "kernel/collision_model.h"
 #include "kernel/translational_sweep.h"
 #include "reasoning/analysis.h"
-#include "reasoning/assembly_plan.h"
 #include "test_assembly.h"
 
 namespace mechanist {
@@ -77,9 +78,9 @@ TEST(AssemblyPlan, PartWalledInByGroundCannotBePlaced) {
 }
 
 TEST(AssemblyPlan, OverlappingCubesAreAClash) {
-  const Assembly a = MakeAssembly(
-      {MakePart("base", {}, RigidTransform(), true),
-       MakePart("bad", {}, RigidTransform::Translation({0.5, 0.25, 0}))});
+  const Assembly a =
+      MakeAssembly({MakePart("base", {}, RigidTransform(), true),
+                    MakePart("bad", {}, RigidTransform::Translation({0.5, 0.25, 0}))});
   const AssemblyPlan plan = PlanAssembly(a, Analyze(a), CollisionModel(a));
   EXPECT_FALSE(plan.assemblable);
   ASSERT_EQ(plan.clashes.size(), 1u);

@@ -25,6 +25,11 @@ TEST(TestingApi, ExamplesReadLikeTheirReadmes) {
   const Mechanism planets = Mechanism::Load(Example("planetary_gear_set"));
   EXPECT_TRUE(HasRatio(planets, "carrier/center", "-1/3"));
   EXPECT_TRUE(HasDiagnostic(planets, "redundant_constraints", {"planet_2", "sun"}));
+  EXPECT_TRUE(IsAssemblable(hand));
+  const ::testing::AssertionResult not_expected = IsAssemblable(hand, false);
+  EXPECT_FALSE(not_expected);
+  EXPECT_NE(std::string(not_expected.message()).find("found assemblable"), std::string::npos)
+      << not_expected.message();
 }
 
 TEST(TestingApi, FailuresSayWhatWasFound) {
