@@ -1,6 +1,7 @@
 #include "io/assembly_report.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -15,7 +16,7 @@ using Json = nlohmann::ordered_json;
 // input gives byte-identical reports.
 double Num(double x) {
   if (!std::isfinite(x)) return x;
-  return std::stod(FormatNumber(x, 9));
+  return std::strtod(FormatNumber(x, 9).c_str(), nullptr);
 }
 
 Json Point(const Eigen::Vector3d& p) { return Json::array({Num(p.x()), Num(p.y()), Num(p.z())}); }

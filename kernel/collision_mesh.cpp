@@ -63,7 +63,8 @@ CollisionMesh::CollisionMesh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(s
     const auto& [a, b, c] = Triangle(f);
     const Eigen::Vector3d cross = (b - a).cross(c - a);
     const double len = cross.norm();
-    normals_[f] = len > 0.0 ? Eigen::Vector3d(cross / len) : Eigen::Vector3d::Zero();
+    normals_[f] =
+        len > 0.0 && !Collinear(a, b, c) ? Eigen::Vector3d(cross / len) : Eigen::Vector3d::Zero();
     centroids[f] = (a + b + c) / 3.0;
     boxes[f].Extend(a);
     boxes[f].Extend(b);
@@ -124,6 +125,9 @@ CollisionMesh::CollisionMesh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(s
               .first->second;
     }
     BuildEdges(canonical);
+  }
+  if (closed_ && mesh_->SignedVolume() < 0.0) {
+    for (Eigen::Vector3d& n : normals_) n = -n;
   }
 }
 
@@ -236,7 +240,9 @@ bool CollisionMesh::Contains(const Eigen::Vector3d& p_M) const {
     }
     if (!degenerate) return parity;
   }
-  return parity;
+  // Every ray grazed an edge: the closest face's side decides.
+  const Closest closest = ClosestPoint(p_M);
+  return closest.face >= 0 && (p_M - closest.p_M).dot(normals_[closest.face]) < 0.0;
 }
 
 CollisionMesh::Closest CollisionMesh::ClosestPoint(const Eigen::Vector3d& p_M) const {

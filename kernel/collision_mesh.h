@@ -47,7 +47,9 @@ class CollisionMesh {
   const std::vector<std::int32_t>& order() const { return order_; }
   /// Bounding box of each face in frame M.
   const std::vector<Aabb>& face_boxes() const { return face_boxes_; }
-  /// Unit outward normal of each face (zero for a degenerate face).
+  /// Unit outward normal of each face (zero for a face whose corners are exactly collinear).
+  /// For a closed mesh wound inside out (negative volume) the normals are flipped, so that
+  /// they point out of the solid whatever the winding.
   const std::vector<Eigen::Vector3d>& face_normals() const { return normals_; }
   const std::vector<Edge>& edges() const { return edges_; }
   /// For each face, the indices into edges() of its edges (v0v1, v1v2, v2v0); -1 for an edge
@@ -73,7 +75,7 @@ class CollisionMesh {
 
   /// The point of the surface closest to p_M, its distance (mm) and face.
   struct Closest {
-    Eigen::Vector3d p_M;
+    Eigen::Vector3d p_M = Eigen::Vector3d::Zero();
     double distance = 0.0;
     std::int32_t face = -1;
   };

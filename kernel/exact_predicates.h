@@ -8,11 +8,14 @@ namespace mechanist {
 /// this facade): the answers are those of exact arithmetic on the given doubles, never
 /// affected by rounding. Points are in any one frame; lengths in mm.
 
-/// Sign of the orientation of d relative to the plane through a, b, c: +1 when d lies on the
-/// side from which a, b, c appear clockwise (det[b-a, c-a, d-a] < 0), -1 on the other side,
-/// 0 when the four points are coplanar. This is CGAL's orientation(a, b, c, d).
+/// Sign of det[b-a, c-a, d-a]: +1 when d lies on the side of the plane through a, b, c from
+/// which a, b, c appear counter-clockwise, -1 on the other side, 0 when the four points are
+/// coplanar. This is CGAL's orientation(a, b, c, d).
 int Orient3d(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
              const Eigen::Vector3d& d);
+
+/// True when a, b and c lie on one line (or coincide), exactly: a triangle without area.
+bool Collinear(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 
 /// True when the closed triangles (a0, a1, a2) and (b0, b1, b2) share at least one point
 /// (touching counts). Degenerate triangles are treated as segments or points.

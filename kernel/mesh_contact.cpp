@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 #include "kernel/exact_predicates.h"
 
@@ -46,12 +45,14 @@ struct Deepest {
   bool found = false;
 };
 
-// Deepest of `samples_S` (points of the surface of S, frame S) inside `other` (frame O).
+// Deepest of `samples_S` (points of the surface of S, frame S) inside `other` (frame O); all
+// of them are known to be inside when `inside`.
 void DeepestInside(const std::vector<Eigen::Vector3d>& samples_S, const RigidTransform& X_OS,
-                   const RigidTransform& X_WS, const CollisionMesh& other, Deepest* deepest) {
+                   const RigidTransform& X_WS, const CollisionMesh& other, Deepest* deepest,
+                   bool inside) {
   for (const Eigen::Vector3d& p_S : samples_S) {
     const Eigen::Vector3d p_O = X_OS * p_S;
-    if (!other.Contains(p_O)) continue;
+    if (!inside && !other.Contains(p_O)) continue;
     const double d = other.ClosestPoint(p_O).distance;
     if (!deepest->found || d > deepest->depth) {
       deepest->depth = d;
@@ -84,26 +85,9 @@ std::vector<std::pair<std::int32_t, std::int32_t>> IntersectingTriangles(const C
   // A small epsilon keeps near-parallel edge axes from producing false separations.
   const Eigen::Matrix3d absR = R.cwiseAbs().array() + 1e-12;
   const Eigen::Vector3d grow = Eigen::Vector3d::Constant(margin);
-  // Separating-axis test of two nodes (as BoxesOverlap), with the rotation's terms shared.
   auto overlap = [&](const CollisionMesh::Node& na, const CollisionMesh::Node& nb) {
-    const Eigen::Vector3d ha = na.half_M + grow, hb = nb.half_M + grow;
-    const Eigen::Vector3d t = R * nb.center_M + p - na.center_M;
-    for (int i = 0; i < 3; ++i) {
-      if (std::abs(t[i]) > ha[i] + absR.row(i).dot(hb)) return false;
-    }
-    for (int j = 0; j < 3; ++j) {
-      if (std::abs(R.col(j).dot(t)) > absR.col(j).dot(ha) + hb[j]) return false;
-    }
-    for (int i = 0; i < 3; ++i) {
-      const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
-      for (int j = 0; j < 3; ++j) {
-        const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-        const double ra = ha[i1] * absR(i2, j) + ha[i2] * absR(i1, j);
-        const double rb = hb[j1] * absR(i, j2) + hb[j2] * absR(i, j1);
-        if (std::abs(t[i2] * R(i1, j) - t[i1] * R(i2, j)) > ra + rb) return false;
-      }
-    }
-    return true;
+    return OrientedBoxesOverlap(na.center_M, na.half_M + grow, nb.center_M, nb.half_M + grow, R,
+                                absR, p);
   };
   if (!overlap(a.nodes().front(), b.nodes().front())) return result;
 
@@ -184,16 +168,50 @@ ContactMeasure MeasureContact(const CollisionMesh& a, const RigidTransform& X_WA
   const RigidTransform X_AB = X_WA.inverse() * X_WB;
   const RigidTransform X_BA = X_AB.inverse();
   Deepest deepest;
+  const double spacing = std::max(tolerance, 1e-6);
+  const double rounding = 1e3 * PruneMargin(a, b, X_AB);
+  // The faces of `mesh` (frame S) whose boxes meet `box_S` (the other solid's box in S) are
+  // every face that can lie inside `other`; each is sampled. A face that does not cross the
+  // other surface (`crossing` false) is wholly inside or outside: its centroid decides.
+  auto measure = [&](const CollisionMesh& mesh, const RigidTransform& X_OS,
+                     const RigidTransform& X_WS, const CollisionMesh& other, const Aabb& box_S,
+                     const std::vector<char>& crossing) {
+    std::vector<Eigen::Vector3d> samples;
+    for (std::int32_t f = 0; f < static_cast<std::int32_t>(mesh.mesh().faces.size()); ++f) {
+      if (!mesh.face_boxes()[f].Intersects(box_S)) continue;
+      if (!crossing[f]) {
+        // Clearly inside, not on the other surface within rounding: B's coordinates differ in
+        // the two frames, so a face lying on the other's surface may test either way.
+        const auto [p, q, r] = mesh.Triangle(f);
+        const Eigen::Vector3d centroid_O = X_OS * ((p + q + r) / 3.0);
+        if (!other.Contains(centroid_O) || other.ClosestPoint(centroid_O).distance <= rounding) {
+          continue;
+        }
+      }
+      samples.clear();
+      FaceSamples(mesh, f, spacing, &samples, &result.depth_bound);
+      DeepestInside(samples, X_OS, X_WS, other, &deepest, !crossing[f]);
+    }
+  };
+  std::vector<char> crossing_a(a.mesh().faces.size(), 0), crossing_b(b.mesh().faces.size(), 0);
+  for (const auto& [f, g] : pairs) {
+    crossing_a[f] = 1;
+    crossing_b[g] = 1;
+  }
+  const Aabb box_b_in_a = TransformBox(X_AB, b.bounds());
+  const Aabb box_a_in_b = TransformBox(X_BA, a.bounds());
   if (pairs.empty()) {
-    // No surfaces cross: either apart or one inside the other; one vertex decides.
+    // No surfaces cross: either apart or one inside the other; one vertex of a face decides.
     const auto& va = a.mesh().vertices;
     const auto& vb = b.mesh().vertices;
-    if (b.closed() && !va.empty() && b.Contains(X_BA * va.front())) {
+    const auto& fa = a.mesh().faces;
+    const auto& fb = b.mesh().faces;
+    if (b.closed() && !fa.empty() && b.Contains(X_BA * va[fa.front()[0]])) {
       result.contained = 1;
-      DeepestInside(va, X_BA, X_WA, b, &deepest);
-    } else if (a.closed() && !vb.empty() && a.Contains(X_AB * vb.front())) {
+      measure(a, X_BA, X_WA, b, box_b_in_a, crossing_a);
+    } else if (a.closed() && !fb.empty() && a.Contains(X_AB * vb[fb.front()[0]])) {
       result.contained = 2;
-      DeepestInside(vb, X_AB, X_WB, a, &deepest);
+      measure(b, X_AB, X_WB, a, box_a_in_b, crossing_b);
     } else {
       return result;
     }
@@ -206,31 +224,10 @@ ContactMeasure MeasureContact(const CollisionMesh& a, const RigidTransform& X_WA
       result.depth = std::numeric_limits<double>::infinity();
       return result;
     }
-    const double spacing = std::max(tolerance, 1e-6);
-    std::set<std::int32_t> faces_a, faces_b;
-    for (const auto& [f, g] : pairs) {
-      faces_a.insert(f);
-      faces_b.insert(g);
-    }
-    std::vector<Eigen::Vector3d> samples;
-    for (const std::int32_t f : faces_a) FaceSamples(a, f, spacing, &samples, &result.depth_bound);
-    DeepestInside(samples, X_BA, X_WA, b, &deepest);
-    samples.clear();
-    for (const std::int32_t g : faces_b) FaceSamples(b, g, spacing, &samples, &result.depth_bound);
-    DeepestInside(samples, X_AB, X_WB, a, &deepest);
-    // Vertices away from the crossing can lie deeper still (a pin pushed far into a block).
-    const Aabb box_b_in_a = TransformBox(X_AB, b.bounds());
-    const Aabb box_a_in_b = TransformBox(X_BA, a.bounds());
-    samples.clear();
-    for (const auto& v : a.mesh().vertices) {
-      if (box_b_in_a.Intersects(Aabb{v, v})) samples.push_back(v);
-    }
-    DeepestInside(samples, X_BA, X_WA, b, &deepest);
-    samples.clear();
-    for (const auto& v : b.mesh().vertices) {
-      if (box_a_in_b.Intersects(Aabb{v, v})) samples.push_back(v);
-    }
-    DeepestInside(samples, X_AB, X_WB, a, &deepest);
+    // Every face of either mesh that can be inside the other, sampled: the crossing faces
+    // and those wholly inside (a pin pushed far into a block).
+    measure(a, X_BA, X_WA, b, box_b_in_a, crossing_a);
+    measure(b, X_AB, X_WB, a, box_a_in_b, crossing_b);
   }
   if (deepest.found) {
     result.depth = deepest.depth;

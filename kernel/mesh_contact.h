@@ -39,10 +39,11 @@ struct ContactMeasure {
   enum class Kind { kSeparate, kTouching, kPenetrating };
   Kind kind = Kind::kSeparate;
   /// Penetration depth, mm: the largest distance from a point of one surface inside the other
-  /// solid to that solid's surface, over the vertices and a sample grid (spacing at most the
-  /// tolerance, at most 8 intervals per edge) of the triangles that cross. It underestimates
-  /// the true maximum by at most `depth_bound`. Infinity when a mesh that crosses the other is
-  /// not closed (no inside to measure).
+  /// solid to that solid's surface, over a sample grid (corners included; spacing at most the
+  /// tolerance, at most 8 intervals per edge) of every face whose box meets the other solid's
+  /// box. The distance is 1-Lipschitz along the surface, so it underestimates the true maximum
+  /// by at most `depth_bound`, the largest sample spacing used. Infinity when a mesh that crosses
+  /// the other is not closed (no inside to measure).
   double depth = 0.0;
   double depth_bound = 0.0;
   /// Where: the deepest point found, or a point of the first crossing, in world coordinates.

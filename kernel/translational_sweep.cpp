@@ -46,14 +46,15 @@ Eigen::Vector3d EdgeNormalSum(const CollisionMesh& mesh, std::int32_t edge) {
   return sum;
 }
 
-// True when a point travelling along d through the boundary of `face` (the edges whose
-// orientation with the travel segment [p, q] is zero) enters the solid there: across a convex
-// edge it must also approach the neighbouring face (`sense` +1 for the obstacle, whose faces
-// are approached against their normal; -1 for the moving mesh, whose faces approach along
-// theirs). Contacts that only graze a convex edge slide along the neighbour and do not block.
+// True when a point travelling through the boundary of `face` (the edges whose orientation
+// with the travel segment [p, q] is zero; `corners`, p and q in one frame, the one in which the
+// exact contact test ran) enters the solid there: across a convex edge it must also approach
+// the neighbouring face, against that face's normal, by more than `min_approach`; `d_mesh` is
+// the point's direction of travel in the mesh's own frame. Contacts that only graze a convex
+// edge slide along the neighbour and do not block.
 bool EntersAcrossBoundary(const CollisionMesh& mesh, std::int32_t face,
                           const std::array<Eigen::Vector3d, 3>& corners, const Eigen::Vector3d& p,
-                          const Eigen::Vector3d& q, const Eigen::Vector3d& d_mesh, double sense,
+                          const Eigen::Vector3d& q, const Eigen::Vector3d& d_mesh,
                           double min_approach) {
   for (int k = 0; k < 3; ++k) {
     if (Orient3d(p, q, corners[k], corners[(k + 1) % 3]) != 0) continue;
@@ -62,7 +63,7 @@ bool EntersAcrossBoundary(const CollisionMesh& mesh, std::int32_t face,
     const auto& edge = mesh.edges()[e];
     const std::int32_t other = edge.faces[0] == face ? edge.faces[1] : edge.faces[0];
     if (other < 0 || mesh.EdgeConvexity(e) != 1) continue;
-    if (-sense * mesh.face_normals()[other].dot(d_mesh) <= min_approach) return false;
+    if (-mesh.face_normals()[other].dot(d_mesh) <= min_approach) return false;
   }
   return true;
 }
@@ -83,6 +84,9 @@ std::optional<SweepContact> FirstBlockingContact(
     const RigidTransform& X_WO, const Eigen::Vector3d& d_W, const SweepOptions& options) {
   if (!(options.max_travel >= 0.0) || !std::isfinite(options.max_travel)) {
     throw std::invalid_argument("FirstBlockingContact: max_travel must be finite and >= 0");
+  }
+  if (!(options.min_approach >= 0.0)) {
+    throw std::invalid_argument("FirstBlockingContact: min_approach must be >= 0");
   }
   if (std::abs(d_W.norm() - 1.0) > 1e-9) {
     throw std::invalid_argument("FirstBlockingContact: direction must be a unit vector");
@@ -116,7 +120,12 @@ std::optional<SweepContact> FirstBlockingContact(
   shifted.min += sweep;
   shifted.max += sweep;
   swept_O.Extend(shifted);
-  if (!swept_O.Intersects(obstacle.bounds())) return best.contact;
+  {
+    Aabb grown = obstacle.bounds();
+    grown.min.array() -= margin;
+    grown.max.array() += margin;
+    if (!swept_O.Intersects(grown)) return best.contact;
+  }
 
   // Vertices of the moving mesh reaching faces of the obstacle.
   // Surface points that lead a contact: the vertices, and the centroid of every face, which
@@ -146,7 +155,7 @@ std::optional<SweepContact> FirstBlockingContact(
       const auto& [a, b, c] = corners;
       if (!SegmentIntersectsTriangle(v, end, a, b, c)) return;
       if (obstacle.closed() &&
-          !EntersAcrossBoundary(obstacle, f, corners, v, end, d, 1.0, options.min_approach)) {
+          !EntersAcrossBoundary(obstacle, f, corners, v, end, d, options.min_approach)) {
         return;
       }
       const double s = std::clamp(n.dot(a - v) / n.dot(d), 0.0, L);
@@ -158,28 +167,30 @@ std::optional<SweepContact> FirstBlockingContact(
   }
 
   // Vertices of the obstacle reached by faces of the moving mesh.
+  Aabb swept_grown = swept_O;
+  swept_grown.min.array() -= margin;
+  swept_grown.max.array() += margin;
   for (const Eigen::Vector3d& w : leading_o) {
-    if (!swept_O.Intersects(Aabb{w, w})) continue;
+    if (!swept_grown.Intersects(Aabb{w, w})) continue;
     const Eigen::Vector3d w_M = X_MO * w;
-    ForEachFaceNear(moving, SegmentBox(w_M, w_M - best.limit(L) * d_M), margin,
-                    [&](std::int32_t g) {
-                      const Eigen::Vector3d n = X_OM.RotateDirection(moving.face_normals()[g]);
-                      const double approach = moving.closed() ? n.dot(d) : std::abs(n.dot(d));
-                      if (approach <= options.min_approach) return;
-                      const auto& face = mesh_m.faces[g];
-                      const Eigen::Vector3d &a = vm[face[0]], &b = vm[face[1]], &c = vm[face[2]];
-                      if (!SegmentIntersectsTriangle(w, w - sweep, a, b, c)) return;
-                      // In the moving mesh's frame the obstacle's vertex travels along -d.
-                      if (moving.closed() &&
-                          !EntersAcrossBoundary(moving, g, moving.Triangle(g), w_M, w_M - L * d_M,
-                                                -d_M, 1.0, options.min_approach)) {
-                        return;
-                      }
-                      const double s = std::clamp(n.dot(w - a) / n.dot(d), 0.0, L);
-                      if (s >= best.limit(L) && best.contact) return;
-                      if (ignored(w)) return;
-                      best.Offer(SweepContact::Kind::kFaceVertex, s, X_WO * w, approach);
-                    });
+    ForEachFaceNear(
+        moving, SegmentBox(w_M, w_M - best.limit(L) * d_M), margin, [&](std::int32_t g) {
+          const Eigen::Vector3d n = X_OM.RotateDirection(moving.face_normals()[g]);
+          const double approach = moving.closed() ? n.dot(d) : std::abs(n.dot(d));
+          if (approach <= options.min_approach) return;
+          const auto& face = mesh_m.faces[g];
+          const Eigen::Vector3d &a = vm[face[0]], &b = vm[face[1]], &c = vm[face[2]];
+          if (!SegmentIntersectsTriangle(w, w - sweep, a, b, c)) return;
+          // Relative to the moving mesh the obstacle's vertex travels along -d.
+          if (moving.closed() && !EntersAcrossBoundary(moving, g, {a, b, c}, w, w - sweep, -d_M,
+                                                       options.min_approach)) {
+            return;
+          }
+          const double s = std::clamp(n.dot(w - a) / n.dot(d), 0.0, L);
+          if (s >= best.limit(L) && best.contact) return;
+          if (ignored(w)) return;
+          best.Offer(SweepContact::Kind::kFaceVertex, s, X_WO * w, approach);
+        });
   }
 
   // Convex edges of the moving mesh crossing convex edges of the obstacle (any edges when a

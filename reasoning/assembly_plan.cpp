@@ -167,9 +167,11 @@ class Planner {
         if (const auto held = HeldAcross(m, o, d)) {
           // Held from the start of a removal, or at the very end of an insertion.
           const double at = std::isfinite(seat_travel) ? seat_travel : 0.0;
-          const Eigen::Vector3d p_W = state_.X_WP[held->part] * assembly_.feature(*held).origin;
-          first = InsertionObstacle{o, at, 0.0, p_W};
-          break;
+          if (!first || at < first->travel) {
+            const Eigen::Vector3d p_W = state_.X_WP[held->part] * assembly_.feature(*held).origin;
+            first = InsertionObstacle{o, at, 0.0, p_W};
+          }
+          continue;
         }
         SweepOptions options;
         options.max_travel = travel;
@@ -419,6 +421,7 @@ class Planner {
         o.short_by = o.travel;
         o.travel = travel - o.travel;
       }
+      std::reverse(blocked.begin(), blocked.end());  // by insertion travel again
       step.blocked_by = std::move(blocked);
       best = step;
     }

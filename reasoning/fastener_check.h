@@ -12,8 +12,8 @@ namespace mechanist {
 /// - `bolt_too_short` (warning): a thread engages less of a through tapped hole (a nut) than
 ///   its length, or stops short of a collinear nut of its size within one nut length plus one
 ///   diameter; the message gives the shortfall in mm.
-/// - `nut_without_bolt` (warning): a part whose only axial feature is a through tapped hole,
-///   with no thread in it.
+/// - `nut_without_bolt` (warning): a part whose only feature besides faces is a through tapped
+///   hole, with no thread in it.
 /// - `loose_fastening_only` (warning): a part whose fastening pairs are all loose threads (it
 ///   can turn and travel on them).
 /// Thread and hole size mismatches are recognition's near misses (`thread_mismatch`,

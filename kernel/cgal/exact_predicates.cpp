@@ -21,6 +21,10 @@ int Orient3d(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Ve
   return static_cast<int>(CGAL::orientation(P(a), P(b), P(c), P(d)));
 }
 
+bool Collinear(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  return CGAL::collinear(P(a), P(b), P(c));
+}
+
 bool TrianglesIntersect(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
                         const Eigen::Vector3d& a2, const Eigen::Vector3d& b0,
                         const Eigen::Vector3d& b1, const Eigen::Vector3d& b2) {

@@ -3,8 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "io/assembly_reader.h"
 #include "kernel/assembly_state.h"
@@ -13,6 +11,7 @@
 #include "reasoning/assembly_plan.h"
 #include "reasoning/expectation_check.h"
 #include "reasoning/interference.h"
+#include "text_edit.h"
 
 namespace mechanist {
 namespace {
@@ -20,19 +19,8 @@ namespace {
 const std::string kBracket =
     std::string(MECHANIST_SOURCE_DIR) + "/examples/bracket_plate_bolt_nut/assembly.json";
 
-std::string ReadText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string Replace(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using testing::ReadText;
+using testing::Replace;
 
 const Diagnostic* Find(const Analysis& an, const std::string& code) {
   for (const Diagnostic& d : an.diagnostics) {

@@ -2,11 +2,9 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "io/assembly_reader.h"
 #include "reasoning/analysis.h"
+#include "text_edit.h"
 
 namespace mechanist {
 namespace {
@@ -28,19 +26,8 @@ std::string Exact(const ExactReal& r) {
   return r.is_exact() ? r.ToString() : "inexact " + r.ToString();
 }
 
-std::string ReadText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string Replace(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using testing::ReadText;
+using testing::Replace;
 
 const std::string kWorm =
     std::string(MECHANIST_SOURCE_DIR) + "/examples/robot_hand_worm/assembly.json";
