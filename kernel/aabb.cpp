@@ -16,12 +16,9 @@ Aabb TransformBox(const RigidTransform& X_WP, const Aabb& box_P) {
   return box_W;
 }
 
-bool OrientedBoxesOverlap(const Eigen::Vector3d& center_A, const Eigen::Vector3d& a,
-                          const Eigen::Vector3d& center_B, const Eigen::Vector3d& b,
-                          const Eigen::Matrix3d& R, const Eigen::Matrix3d& absR,
-                          const Eigen::Vector3d& p_AB) {
-  // Centre of B relative to the centre of A, in A's axes.
-  const Eigen::Vector3d t = R * center_B + p_AB - center_A;
+bool OrientedBoxesOverlap(const Eigen::Vector3d& t, const Eigen::Vector3d& a,
+                          const Eigen::Vector3d& b, const Eigen::Matrix3d& R,
+                          const Eigen::Matrix3d& absR) {
   for (int i = 0; i < 3; ++i) {
     if (std::abs(t[i]) > a[i] + absR.row(i).dot(b)) return false;
   }
@@ -44,8 +41,9 @@ bool BoxesOverlap(const Aabb& box_A, const Aabb& box_B, const RigidTransform& X_
   if (box_A.empty() || box_B.empty()) return false;
   const Eigen::Vector3d grow = Eigen::Vector3d::Constant(margin);
   const Eigen::Matrix3d absR = X_AB.rotation().cwiseAbs().array() + 1e-12;
-  return OrientedBoxesOverlap(box_A.center(), 0.5 * box_A.size() + grow, box_B.center(),
-                              0.5 * box_B.size() + grow, X_AB.rotation(), absR, X_AB.translation());
+  const Eigen::Vector3d t = X_AB * box_B.center() - box_A.center();
+  return OrientedBoxesOverlap(t, 0.5 * box_A.size() + grow, 0.5 * box_B.size() + grow,
+                              X_AB.rotation(), absR);
 }
 
 }  // namespace mechanist

@@ -43,13 +43,12 @@ Aabb TransformBox(const RigidTransform& X_WP, const Aabb& box_P);
 /// boxes over their 15 candidate axes (Gottschalk, Lin and Manocha, OBBTree, 1996).
 bool BoxesOverlap(const Aabb& box_A, const Aabb& box_B, const RigidTransform& X_AB, double margin);
 
-/// The same test for boxes given by centre and half extents (in frames A and B), with B's
-/// rotation R_AB, its entrywise absolute value absR_AB (plus a small epsilon against
-/// near-parallel edges) and translation p_AB precomputed: the inner loop of hierarchy
-/// traversals, which test many box pairs under one relative pose.
-bool OrientedBoxesOverlap(const Eigen::Vector3d& center_A, const Eigen::Vector3d& half_A,
-                          const Eigen::Vector3d& center_B, const Eigen::Vector3d& half_B,
-                          const Eigen::Matrix3d& R_AB, const Eigen::Matrix3d& absR_AB,
-                          const Eigen::Vector3d& p_AB);
+/// The same test for boxes given by half extents (in frames A and B) and the offset t_A of
+/// B's centre from A's centre in A's axes, with B's rotation R_AB and its entrywise absolute
+/// value absR_AB (plus a small epsilon against near-parallel edges) precomputed: the inner
+/// loop of hierarchy traversals, which test many box pairs under one relative pose.
+bool OrientedBoxesOverlap(const Eigen::Vector3d& t_A, const Eigen::Vector3d& half_A,
+                          const Eigen::Vector3d& half_B, const Eigen::Matrix3d& R_AB,
+                          const Eigen::Matrix3d& absR_AB);
 
 }  // namespace mechanist

@@ -13,8 +13,9 @@
 namespace mechanist {
 
 /// A triangle mesh prepared for collision queries, in its own frame M (mm): a bounding-volume
-/// hierarchy of axis-aligned boxes over its triangles (median split on the longest axis,
-/// leaves of at most four triangles), face normals, and the edge adjacency that the sweep's
+/// hierarchy of axis-aligned boxes over its triangles (binned surface-area heuristic along the
+/// longest axis of the centroids, leaves of at most four triangles), face normals, and the edge
+/// adjacency that the sweep's
 /// contact classification needs. Built once per distinct mesh and shared by the parts that
 /// use it; immutable.
 class CollisionMesh {

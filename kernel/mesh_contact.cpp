@@ -81,15 +81,22 @@ std::vector<std::pair<std::int32_t, std::int32_t>> IntersectingTriangles(const C
   const RigidTransform X_AB = X_WA.inverse() * X_WB;
   const double margin = PruneMargin(a, b, X_AB);
   const Eigen::Matrix3d& R = X_AB.rotation();
-  const Eigen::Vector3d& p = X_AB.translation();
   // A small epsilon keeps near-parallel edge axes from producing false separations.
   const Eigen::Matrix3d absR = R.cwiseAbs().array() + 1e-12;
   const Eigen::Vector3d grow = Eigen::Vector3d::Constant(margin);
-  auto overlap = [&](const CollisionMesh::Node& na, const CollisionMesh::Node& nb) {
-    return OrientedBoxesOverlap(na.center_M, na.half_M + grow, nb.center_M, nb.half_M + grow, R,
-                                absR, p);
+  // B's node centres in A's frame, computed when first needed.
+  std::vector<Eigen::Vector3d> center_b(b.nodes().size());
+  std::vector<char> center_b_done(b.nodes().size(), 0);
+  auto overlap = [&](std::int32_t ia, std::int32_t ib) {
+    if (!center_b_done[ib]) {
+      center_b[ib] = X_AB * b.nodes()[ib].center_M;
+      center_b_done[ib] = 1;
+    }
+    const CollisionMesh::Node& na = a.nodes()[ia];
+    return OrientedBoxesOverlap(center_b[ib] - na.center_M, na.half_M + grow,
+                                b.nodes()[ib].half_M + grow, R, absR);
   };
-  if (!overlap(a.nodes().front(), b.nodes().front())) return result;
+  if (!overlap(0, 0)) return result;
 
   // B's vertices and face boxes in A's frame, computed when a leaf first needs them.
   const auto& vb_M = b.mesh().vertices;
@@ -115,13 +122,14 @@ std::vector<std::pair<std::int32_t, std::int32_t>> IntersectingTriangles(const C
     return box_b[g];
   };
 
+  std::vector<std::int32_t> near_b;
   std::vector<std::pair<std::int32_t, std::int32_t>> stack = {{0, 0}};
   while (!stack.empty()) {
     const auto [ia, ib] = stack.back();
     stack.pop_back();
     const auto& na = a.nodes()[ia];
     const auto& nb = b.nodes()[ib];
-    if ((ia != 0 || ib != 0) && !overlap(na, nb)) continue;
+    if ((ia != 0 || ib != 0) && !overlap(ia, ib)) continue;
     if (!na.leaf() || !nb.leaf()) {
       // Descend into the larger box (or the only inner node).
       const bool split_a =
@@ -135,12 +143,23 @@ std::vector<std::pair<std::int32_t, std::int32_t>> IntersectingTriangles(const C
       }
       continue;
     }
+    // B's triangles that reach A's leaf box, and the box around them: most triangle pairs of
+    // two overlapping leaves end at one of these two tests.
+    near_b.clear();
+    Aabb near_box;
+    for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
+      const std::int32_t g = b.order()[j];
+      if (!face_box_b(g).Intersects(na.box_M)) continue;
+      near_b.push_back(g);
+      near_box.Extend(box_b[g]);
+    }
+    if (near_b.empty()) continue;
     for (std::int32_t i = na.first; i < na.first + na.count; ++i) {
       const std::int32_t f = a.order()[i];
       const Aabb& box_a = a.face_boxes()[f];
-      for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
-        const std::int32_t g = b.order()[j];
-        if (!box_a.Intersects(face_box_b(g))) continue;
+      if (!box_a.Intersects(near_box)) continue;
+      for (const std::int32_t g : near_b) {
+        if (!box_a.Intersects(box_b[g])) continue;
         const Eigen::Vector3d &a0 = va[fa[f][0]], &a1 = va[fa[f][1]], &a2 = va[fa[f][2]];
         const Eigen::Vector3d &b0 = vb[fb[g][0]], &b1 = vb[fb[g][1]], &b2 = vb[fb[g][2]];
         if (TrianglesSurelyApart(a0, a1, a2, b0, b1, b2)) continue;
