@@ -4,7 +4,9 @@
 // a cover clamped to the plate by a tight bolt; the first gear is driven. Layouts: rows of 200
 // cells 100 mm apart (a gear chain per row; undriven rows are free motions), one chain of
 // all cells, and a square grid whose gears mesh with all four neighbours (closed loops,
-// redundant meshes). Prints times per size and the growth factor of the full analysis.
+// redundant meshes), and a planetary array (stages of ring, sun, three planets on a carrier
+// whose output drives the next sun). Prints times per size and the growth factor of the full
+// analysis.
 //
 // Usage: recognition_bench [max_parts]   (default 100000)
 
@@ -37,12 +39,21 @@ Feature Make(const std::string& id, FeatureKind kind, Eigen::Vector3d origin,
   return f;
 }
 
+// One box mesh for every part, large enough to hold every feature origin of the cells and
+// stages below (the description checks would otherwise report each feature as outside its
+// part, which real assemblies do not do).
+std::shared_ptr<const TriangleMesh> BenchBox() {
+  auto box = std::make_shared<TriangleMesh>();
+  for (int i = 0; i < 8; ++i) {
+    box->vertices.emplace_back((i & 1) ? 21 : -21, (i & 2) ? 31 : -21, (i & 4) ? 31 : -5);
+  }
+  box->faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+                {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+  return box;
+}
+
 Assembly Synthetic(int cells, int per_row, double row_pitch) {
-  auto cube = std::make_shared<TriangleMesh>();
-  for (int i = 0; i < 8; ++i) cube->vertices.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
-  cube->faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
-                 {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
-  const std::shared_ptr<const TriangleMesh> mesh = cube;
+  const std::shared_ptr<const TriangleMesh> mesh = BenchBox();
   const Eigen::Vector3d up = Eigen::Vector3d::UnitZ(), down = -up;
   AssemblySpec spec;
   spec.parts.reserve(static_cast<std::size_t>(cells) * kPartsPerCell);
@@ -88,6 +99,85 @@ Assembly Synthetic(int cells, int per_row, double row_pitch) {
   return Assembly(std::move(spec));
 }
 
+// A planetary array: gearboxes of ten stages stacked along z, side by side 200 mm apart. A
+// stage is a fixed ring gear (60 teeth), a sun (20), three planets (20) on pins of a carrier
+// that turns on a short ground axle, and the carrier's output shaft pressed into the next
+// stage's sun; the first sun of each gearbox turns on its own ground axle. Seven parts a
+// stage; the first gearbox is driven (it divides by 4^10), the others are free motions.
+// Every stage closes three gear loops: two redundant constraints a stage.
+constexpr int kPartsPerStage = 7;
+
+Assembly PlanetaryArray(int stages) {
+  const std::shared_ptr<const TriangleMesh> mesh = BenchBox();
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitZ(), down = -up;
+  AssemblySpec spec;
+  spec.parts.reserve(static_cast<std::size_t>(stages) * kPartsPerStage + 1);
+  auto part = [&](const std::string& id, std::vector<Feature> features, Eigen::Vector3d at,
+                  bool ground = false) {
+    Part p;
+    p.id = id;
+    p.mesh = mesh;
+    p.mesh_source = "bench:cube";
+    p.X_WP = RigidTransform::Translation(at);
+    p.ground = ground;
+    p.features = std::move(features);
+    spec.parts.push_back(std::move(p));
+  };
+  auto gear = [&](const std::string& id, int teeth, Eigen::Vector3d at, bool internal) {
+    Feature g = Make(id, FeatureKind::kGear, at, up);
+    g.teeth = teeth, g.module = 1, g.length = 8, g.internal = internal;
+    return g;
+  };
+  auto cylinder = [&](const std::string& id, FeatureKind kind, Eigen::Vector3d at,
+                      Eigen::Vector3d axis, double diameter, double length, bool retained) {
+    Feature f = Make(id, kind, at, axis);
+    f.diameter = diameter, f.length = length, f.retained = retained;
+    return f;
+  };
+  constexpr int kStagesPerBox = 10;
+  const double kPi = 3.14159265358979323846;
+  int sun0 = 0;
+  for (int s = 0; s < stages; ++s) {
+    const std::string n = std::to_string(s);
+    const int k = s % kStagesPerBox;
+    const Eigen::Vector3d z(200.0 * (s / kStagesPerBox), 0, 30.0 * k);
+    if (k == 0) {
+      Feature input = cylinder("shaft", FeatureKind::kShaft, {0, 0, -4}, up, 6, 10, true);
+      part("input_axle" + n, {input}, z, true);
+    }
+    part("ring" + n, {gear("teeth", 60, {0, 0, 0}, true)}, z, true);
+    // The first sun turns on the input axle; the others are pressed on the previous output.
+    if (s == 0) sun0 = static_cast<int>(spec.parts.size());
+    part("sun" + n,
+         {gear("teeth", 20, {0, 0, 0}, false),
+          cylinder("bore", FeatureKind::kHole, {0, 0, 0}, up, k == 0 ? 6.02 : 5.9, 8, false)},
+         z);
+    std::vector<Feature> carrier = {
+        cylinder("center", FeatureKind::kHole, {0, 0, 12}, down, 6.02, 4, true),
+        cylinder("output", FeatureKind::kShaft, {0, 0, 12}, up, 6, 22, false)};
+    for (int j = 0; j < 3; ++j) {
+      const double a = 2 * kPi * j / 3;
+      const Eigen::Vector3d at(20 * std::cos(a), 20 * std::sin(a), 0);
+      const std::string pj = std::to_string(j);
+      carrier.push_back(cylinder("pin" + pj, FeatureKind::kShaft, at + Eigen::Vector3d(0, 0, 10),
+                                 down, 4, 10, true));
+      part("planet" + n + "_" + pj,
+           {gear("teeth", 20, at, false),
+            cylinder("bore", FeatureKind::kHole, at + Eigen::Vector3d(0, 0, 8), down, 4.02, 8,
+                     true)},
+           z);
+    }
+    part("carrier" + n, std::move(carrier), z);
+    part("axle" + n, {cylinder("shaft", FeatureKind::kShaft, {0, 0, 11.5}, down, 6, 3, true)}, z,
+         true);
+  }
+  Driver motor;
+  motor.id = "motor";
+  motor.feature = {static_cast<std::size_t>(sun0), 0};  // sun0/teeth
+  spec.drivers.push_back(motor);
+  return Assembly(std::move(spec));
+}
+
 }  // namespace
 }  // namespace mechanist
 
@@ -96,11 +186,11 @@ int main(int argc, char** argv) {
   const int max_parts = argc > 1 ? std::atoi(argv[1]) : 100000;
   struct Layout {
     const char* name;
-    int per_row;  // 0: all cells in one row
+    int per_row;  // 0: all cells in one row; -1: a square grid; -2: a planetary array
     double row_pitch;
   };
-  for (const Layout layout :
-       {Layout{"rows", kCellsPerRow, 100.0}, Layout{"chain", 0, 100.0}, Layout{"grid", -1, 40.0}}) {
+  for (const Layout layout : {Layout{"rows", kCellsPerRow, 100.0}, Layout{"chain", 0, 100.0},
+                              Layout{"grid", -1, 40.0}, Layout{"planetary", -2, 0.0}}) {
     std::printf("layout %s\n%10s %10s %10s %14s %12s %12s %6s %10s %10s\n", layout.name, "parts",
                 "pairs", "subassem.", "recognise_ms", "graph_ms", "analysis_ms", "dof", "redundant",
                 "growth");
@@ -110,7 +200,8 @@ int main(int argc, char** argv) {
       const int per_row = layout.per_row > 0    ? layout.per_row
                           : layout.per_row == 0 ? cells
                                                 : static_cast<int>(std::ceil(std::sqrt(cells)));
-      const Assembly assembly = Synthetic(cells, per_row, layout.row_pitch);
+      const Assembly assembly = layout.per_row == -2 ? PlanetaryArray(parts / kPartsPerStage)
+                                                     : Synthetic(cells, per_row, layout.row_pitch);
       const AssemblyState state = InitialState(assembly);
       double best_recognise = 1e30, best_graph = 1e30, best_all = 1e30;
       std::size_t pair_count = 0, groups = 0;

@@ -23,7 +23,7 @@ Analysis Analyze(const Assembly& assembly) {
   analysis.diagnostics = CheckAssembly(assembly);
   const auto fasteners = CheckFasteners(assembly, analysis.pairs);
   const std::vector<Diagnostic>* findings[] = {&recognition.diagnostics, &fasteners,
-                                                &analysis.motion.diagnostics};
+                                               &analysis.motion.diagnostics};
   for (const std::vector<Diagnostic>* found : findings) {
     analysis.diagnostics.insert(analysis.diagnostics.end(), found->begin(), found->end());
   }

@@ -195,8 +195,7 @@ ExpectationResult CheckExpectation(const Assembly& assembly, const Analysis& ana
   return r;
 }
 
-std::vector<ExpectationResult> CheckExpectations(const Assembly& assembly,
-                                                 const Analysis& analysis,
+std::vector<ExpectationResult> CheckExpectations(const Assembly& assembly, const Analysis& analysis,
                                                  const AssemblyPlan* plan) {
   std::vector<ExpectationResult> results;
   for (const Expectation& e : assembly.expectations()) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "kernel/assembly_state.h"
 #include "kernel/line_geometry.h"
@@ -38,6 +39,21 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
                    {assembly.FeatureName(thread), assembly.FeatureName(nut)}});
   };
 
+  // The pairs of each part, and the thread pairs of each tapped hole: one pass over the pairs.
+  std::vector<std::vector<const Pair*>> pairs_of(assembly.parts().size());
+  std::map<FeatureRef, std::vector<const Pair*>> threads_in;
+  for (const Pair& pair : pairs) {
+    pairs_of[pair.a.part].push_back(&pair);
+    pairs_of[pair.b.part].push_back(&pair);
+    if (IsThreadPair(pair)) threads_in[pair.b].push_back(&pair);
+  }
+  std::vector<FeatureRef> threads;  // every thread feature, for nuts without one
+  for (std::size_t q = 0; q < assembly.parts().size(); ++q) {
+    for (std::size_t g = 0; g < assembly.part(q).features.size(); ++g) {
+      if (assembly.part(q).features[g].kind == FeatureKind::kThread) threads.push_back({q, g});
+    }
+  }
+
   for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
     const Part& part = assembly.part(p);
     for (std::size_t f = 0; f < part.features.size(); ++f) {
@@ -45,8 +61,9 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
       if (h.kind != FeatureKind::kTappedHole || !h.through) continue;
       const FeatureRef nut{p, f};
       bool engaged = false;
-      for (const Pair& pair : pairs) {
-        if (!IsThreadPair(pair) || !(pair.b == nut)) continue;
+      const auto in = threads_in.find(nut);
+      for (const Pair* found : in == threads_in.end() ? std::vector<const Pair*>{} : in->second) {
+        const Pair& pair = *found;
         engaged = true;
         const double overlap = AxialOverlap(world(pair.a), world(nut));
         if (overlap < h.length - L) {
@@ -54,25 +71,22 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
         }
       }
       if (engaged) continue;
-      // A thread of the nut's size on the nut's axis that stops short of it.
+      // A thread of the nut's size on the nut's axis that stops short of it (a scan of the
+      // threads, for the rare nut that has none).
       bool reported = false;
-      for (std::size_t q = 0; q < assembly.parts().size() && !reported; ++q) {
-        if (q == p) continue;
-        for (std::size_t g = 0; g < assembly.part(q).features.size(); ++g) {
-          const Feature& t = assembly.part(q).features[g];
-          if (t.kind != FeatureKind::kThread || std::abs(t.diameter - h.diameter) > L) continue;
-          const FeatureRef thread{q, g};
-          const AxisSegment ta = world(thread), ha = world(nut);
-          if (AngleBetweenLines(ta.direction, ha.direction) > A ||
-              DistanceToLine(ta.origin, ha.origin, ha.direction) > L) {
-            continue;
-          }
-          const double overlap = AxialOverlap(ta, ha);
-          if (overlap > L || -overlap > h.length + h.diameter) continue;
-          too_short(thread, nut, h.length - overlap, "does not reach");
-          reported = true;
-          break;
+      for (const FeatureRef& thread : threads) {
+        const Feature& t = assembly.feature(thread);
+        if (thread.part == p || std::abs(t.diameter - h.diameter) > L) continue;
+        const AxisSegment ta = world(thread), ha = world(nut);
+        if (AngleBetweenLines(ta.direction, ha.direction) > A ||
+            DistanceToLine(ta.origin, ha.origin, ha.direction) > L) {
+          continue;
         }
+        const double overlap = AxialOverlap(ta, ha);
+        if (overlap > L || -overlap > h.length + h.diameter) continue;
+        too_short(thread, nut, h.length - overlap, "does not reach");
+        reported = true;
+        break;
       }
       const bool nut_like =
           std::count_if(part.features.begin(), part.features.end(),
@@ -91,8 +105,8 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
   for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
     std::vector<std::string> loose;
     bool firm = false;
-    for (const Pair& pair : pairs) {
-      if (pair.a.part != p && pair.b.part != p) continue;
+    for (const Pair* found : pairs_of[p]) {
+      const Pair& pair = *found;
       if (pair.fastening == PairFastening::kLoose) {
         loose.push_back(assembly.FeatureName(pair.a) + " in " + assembly.FeatureName(pair.b));
       } else if (pair.fastening != PairFastening::kNone) {

@@ -1,8 +1,10 @@
 #include "reasoning/kinematic_model.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <deque>
+#include <map>
 
 #include "kernel/line_geometry.h"
 
@@ -84,7 +86,7 @@ ExactReal KinematicModel::Dot(const Eigen::Vector3d& a, const Eigen::Vector3d& b
 }
 
 void KinematicModel::BuildJoints(const std::vector<Pair>& pairs) {
-  std::vector<std::vector<std::size_t>> joints_of(parent_joint_.size());
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> joints_between;
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const Pair& p = pairs[i];
     if (!IsLowerPair(p.type)) continue;
@@ -104,14 +106,15 @@ void KinematicModel::BuildJoints(const std::vector<Pair>& pairs) {
     if (p.type == PairType::kScrew) {
       j.lead = ExactReal::FromDecimal(p.travel_per_revolution.value_or(0.0));
     }
-    // A shaft in two coaxial bearings of one part is one joint, not a redundant pair.
+    // A shaft in two coaxial bearings of one part is one joint, not a redundant pair. Only the
+    // joints between the same two bodies are compared (indexed by the pair of bodies: the
+    // ground may have a joint with every other body).
     bool duplicate = false;
-    for (std::size_t k : joints_of[j.body_a]) {
+    auto& between = joints_between[{std::min(j.body_a, j.body_b), std::max(j.body_a, j.body_b)}];
+    for (std::size_t k : between) {
       const Joint& o = joints_[k];
-      const bool same_bodies = (o.body_a == j.body_a && o.body_b == j.body_b) ||
-                               (o.body_a == j.body_b && o.body_b == j.body_a);
       // Two threads on one axis are two constraints unless their leads agree: never merged.
-      if (!same_bodies || o.type != j.type || p.type == PairType::kScrew) continue;
+      if (o.type != j.type || p.type == PairType::kScrew) continue;
       if (std::abs(o.axis_W.dot(j.axis_W)) < cos_tol_) continue;
       if (p.type != PairType::kPrismatic &&
           DistanceToLine(j.point_W, o.point_W, o.axis_W) > length_tol_) {
@@ -121,8 +124,7 @@ void KinematicModel::BuildJoints(const std::vector<Pair>& pairs) {
       break;
     }
     if (duplicate) continue;
-    joints_of[j.body_a].push_back(joints_.size());
-    joints_of[j.body_b].push_back(joints_.size());
+    between.push_back(joints_.size());
     joints_.push_back(j);
   }
 }
@@ -337,9 +339,28 @@ bool KinematicModel::Carries(std::size_t body, FeatureRef f) const {
     }
     return DistanceToLine(j.point_W, axis.origin, axis.direction) <= length_tol_;
   };
+  // The body carries f's axis when f's body turns about that line relative to it: a joint
+  // between the two along the axis, or joints of both to one third body along the same line
+  // (a sun and a carrier on the same fixed axle). A collinear joint elsewhere (the pin of
+  // another stage's planet) does not count.
+  const std::size_t target = body_of_part_[f.part];
+  auto other = [](const Joint& j, std::size_t b) { return j.body_a == b ? j.body_b : j.body_a; };
+  std::vector<std::size_t> vias;  // bodies the carrier turns against about f's axis
   const std::vector<std::size_t>& own = joints_of_[body];
   for (std::size_t i = 0; i < own.size() && i < kCarrierScanLimit; ++i) {
-    if (carried_by(joints_[own[i]])) return true;
+    const Joint& j = joints_[own[i]];
+    if (!carried_by(j)) continue;
+    const std::size_t via = other(j, body);
+    if (via == target) return true;
+    vias.push_back(via);
+  }
+  if (vias.empty()) return false;
+  const std::vector<std::size_t>& theirs = joints_of_[target];
+  for (std::size_t k = 0; k < theirs.size() && k < kCarrierScanLimit; ++k) {
+    const Joint& t = joints_[theirs[k]];
+    if (std::find(vias.begin(), vias.end(), other(t, target)) != vias.end() && carried_by(t)) {
+      return true;
+    }
   }
   return false;
 }

@@ -51,14 +51,21 @@ LinearSystem::Root LinearSystem::Find(std::size_t v) const {
 
 LinearSystem::Outcome LinearSystem::AddRow(const Row& row, const ExactReal& rhs) {
   Terms terms;
+  // Per root, the largest term summed into it: an approximate sum is zero only relative to
+  // what cancelled in it, never for being small (a rate through a long chain of reductions
+  // is tiny and exact in its digits).
+  std::map<std::size_t, double> summed;
   for (const Term& t : row) {
     const Root r = Find(t.variable);
-    terms[r.root] += t.coefficient * r.factor;
+    const ExactReal term = t.coefficient * r.factor;
+    terms[r.root] += term;
+    double& m = summed[r.root];
+    m = std::max(m, std::abs(term.value()));
   }
   ExactReal b = rhs;
-  std::erase_if(terms, [](const auto& t) { return t.second.IsZero(0.0); });
+  std::erase_if(terms,
+                [&](const auto& t) { return t.second.IsZero(tolerance_ * summed[t.first]); });
   Normalise(terms, b);
-  std::erase_if(terms, [&](const auto& t) { return t.second.IsZero(tolerance_); });
   if (terms.size() == 2 && b.IsZero(tolerance_)) {
     auto x = terms.begin();
     auto y = std::next(x);
@@ -79,7 +86,15 @@ LinearSystem::Outcome LinearSystem::AddRow(const Row& row, const ExactReal& rhs)
 
 LinearSystem::Outcome LinearSystem::Eliminate(Row row, ExactReal rhs) {
   Terms work;
-  for (Term& t : row) work.emplace(t.variable, t.coefficient);
+  // Per entry, the largest term summed into it while the row is reduced: what is left of an
+  // approximate entry is zero when it is below the tolerance relative to that (cancellation
+  // noise grows with the numbers cancelled), never for being small.
+  std::map<std::size_t, double> summed;
+  for (Term& t : row) {
+    work.emplace(t.variable, t.coefficient);
+    summed[t.variable] = std::abs(t.coefficient.value());
+  }
+  double rhs_summed = std::abs(rhs.value());
   for (auto it = work.begin(); it != work.end();) {
     const long p = pivot_of_[it->first];
     if (p < 0) {
@@ -89,14 +104,22 @@ LinearSystem::Outcome LinearSystem::Eliminate(Row row, ExactReal rhs) {
     const Pivot& pivot = pivots_[static_cast<std::size_t>(p)];
     const ExactReal scale = it->second / pivot.terms.front().coefficient;
     const std::size_t column = it->first;
-    for (const Term& t : pivot.terms) work[t.variable] += -(scale * t.coefficient);
-    rhs += -(scale * pivot.rhs);
+    for (const Term& t : pivot.terms) {
+      const ExactReal change = scale * t.coefficient;
+      double& m = summed[t.variable];
+      m = std::max(m, std::abs(change.value()));
+      work[t.variable] += -change;
+    }
+    const ExactReal rhs_change = scale * pivot.rhs;
+    rhs_summed = std::max(rhs_summed, std::abs(rhs_change.value()));
+    rhs += -rhs_change;
     work.erase(column);
-    std::erase_if(work, [&](const auto& t) { return t.second.IsZero(tolerance_); });
+    std::erase_if(work,
+                  [&](const auto& t) { return t.second.IsZero(tolerance_ * summed[t.first]); });
     it = work.upper_bound(column);
   }
   if (work.empty()) {
-    return rhs.IsZero(tolerance_) ? Outcome::kRedundant : Outcome::kInconsistent;
+    return rhs.IsZero(tolerance_ * rhs_summed) ? Outcome::kRedundant : Outcome::kInconsistent;
   }
   Pivot pivot;
   for (auto& [v, c] : work) {

@@ -169,7 +169,20 @@ class Recognizer {
         }
       }
     }
-    std::sort(entries.begin(), entries.end());
+    // Least-significant-digit radix sort by cell key (16-bit digits), stable, so entries of
+    // one cell stay in feature order: the same order as sorting the pairs, in linear time.
+    {
+      std::vector<std::pair<std::uint64_t, std::uint32_t>> buffer(entries.size());
+      std::vector<std::size_t> count(1 << 16);
+      for (int shift = 0; shift < 64; shift += 16) {
+        std::fill(count.begin(), count.end(), 0);
+        for (const auto& e : entries) ++count[(e.first >> shift) & 0xFFFF];
+        std::size_t sum = 0;
+        for (std::size_t& n : count) sum += std::exchange(n, sum);
+        for (const auto& e : entries) buffer[count[(e.first >> shift) & 0xFFFF]++] = e;
+        entries.swap(buffer);
+      }
+    }
     auto candidate = [&](std::uint32_t i, std::uint32_t j) {
       const WorldFeature& x = features_[i];
       const WorldFeature& y = features_[j];

@@ -196,6 +196,70 @@ TEST(Motion, GearTriangleJams) {
   ASSERT_FALSE(an.motion.driven.front().possible);
 }
 
+// Two planetary stages stacked on one axis, the first carrier's output pressed into the
+// second sun: each stage divides by 1 + 60/20 = 4. The stages' carrier pins lie on the same
+// lines; a pin of one stage must not be taken as carrying the other stage's planet axis.
+TEST(Motion, StackedPlanetaryStagesMultiply) {
+  const double kPi = 3.14159265358979323846;
+  auto gear = [](const std::string& id, int teeth, Eigen::Vector3d at, bool internal) {
+    return MakeFeature(id, K::kGear, at, kZ, [&](Feature& g) {
+      g.teeth = teeth, g.module = 1, g.length = 8, g.internal = internal;
+    });
+  };
+  // Bearings are retained (revolute pairs); the press fit of an output in a sun is not.
+  auto cylinder = [](const std::string& id, K kind, Eigen::Vector3d at, Eigen::Vector3d axis,
+                     double diameter, double length, bool retained = true) {
+    return MakeFeature(id, kind, at, axis, [&](Feature& f) {
+      f.diameter = diameter, f.length = length, f.retained = retained;
+    });
+  };
+  std::vector<mechanist::Part> parts = {MakePart(
+      "frame",
+      {cylinder("axle_in", K::kShaft, {0, 0, -4}, kZ, 6, 10), gear("ring0", 60, {0, 0, 0}, true),
+       gear("ring1", 60, {0, 0, 30}, true), cylinder("axle0", K::kShaft, {0, 0, 11.5}, -kZ, 6, 3),
+       cylinder("axle1", K::kShaft, {0, 0, 41.5}, -kZ, 6, 3)},
+      RigidTransform(), true)};
+  for (int s = 0; s < 2; ++s) {
+    const std::string n = std::to_string(s);
+    const RigidTransform at = RigidTransform::Translation({0, 0, 30.0 * s});
+    parts.push_back(
+        MakePart("sun" + n,
+                 {gear("teeth", 20, {0, 0, 0}, false),
+                  cylinder("bore", K::kHole, {0, 0, 0}, kZ, s == 0 ? 6.02 : 5.9, 8, s == 0)},
+                 at));
+    std::vector<Feature> carrier = {cylinder("center", K::kHole, {0, 0, 12}, -kZ, 6.02, 4),
+                                    cylinder("output", K::kShaft, {0, 0, 12}, kZ, 6, 22, false)};
+    for (int j = 0; j < 3; ++j) {
+      const Eigen::Vector3d p(20 * std::cos(2 * kPi * j / 3), 20 * std::sin(2 * kPi * j / 3), 0);
+      carrier.push_back(cylinder("pin" + std::to_string(j), K::kShaft,
+                                 p + Eigen::Vector3d(0, 0, 10), -kZ, 4, 10));
+      parts.push_back(
+          MakePart("planet" + n + std::to_string(j),
+                   {gear("teeth", 20, p, false),
+                    cylinder("bore", K::kHole, p + Eigen::Vector3d(0, 0, 8), -kZ, 4.02, 8)},
+                   at));
+    }
+    parts.push_back(MakePart("carrier" + n, carrier, at));
+  }
+  AssemblySpec spec;
+  spec.name = "two stages";
+  spec.parts = parts;
+  Driver motor;
+  motor.id = "motor";
+  motor.feature = {1, 0};  // sun0/teeth
+  spec.drivers = {motor};
+  const Assembly a(std::move(spec));
+  const Analysis an = Analyze(a);
+  EXPECT_EQ(an.motion.mobility.dof, 1);
+  EXPECT_EQ(an.motion.mobility.redundant, 4);
+  // The carriers' axes point down (-z): a positive sun turns them negatively about them.
+  EXPECT_EQ(Exact(Rate(a, an, "carrier0/center")), "-1/4");
+  EXPECT_EQ(Exact(Rate(a, an, "sun1/teeth")), "1/4");
+  EXPECT_EQ(Exact(Rate(a, an, "carrier1/center")), "-1/16");
+  // Relative to its carrier a planet turns -(20/20)(w_sun - w_carrier): 1/16 - 3/16 absolute.
+  EXPECT_EQ(Exact(Rate(a, an, "planet10/teeth")), "-1/8");
+}
+
 TEST(Motion, DifferentialAddsItsInputsByWillis) {
   // Sun 20 and ring 40 both driven; the carrier turns at (20 w_s + 40 w_r) / 60.
   Builder b;
