@@ -8,8 +8,8 @@
 #include <string>
 
 #include "io/analysis_report.h"
-#include "io/assembly_report.h"
 #include "io/assembly_reader.h"
+#include "io/assembly_report.h"
 #include "io/atomic_file.h"
 #include "io/info_report.h"
 #include "io/input_error.h"
@@ -20,6 +20,7 @@
 #include "reasoning/assembly_plan.h"
 #include "reasoning/drag.h"
 #include "reasoning/expectation_check.h"
+#include "reasoning/operation_check.h"
 
 namespace {
 
@@ -92,12 +93,12 @@ int Interference(const std::string& file, const std::string& json) {
   const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
   const mechanist::Analysis analysis = mechanist::Analyze(assembly);
   const mechanist::CollisionModel model(assembly);
-  const auto contacts = mechanist::FindContacts(assembly, mechanist::InitialState(assembly), model,
-                                                analysis.pairs);
+  const auto contacts =
+      mechanist::FindContacts(assembly, mechanist::InitialState(assembly), model, analysis.pairs);
   mechanist::WriteInterferenceSummary(assembly, analysis, contacts, std::cout);
   if (!json.empty()) {
-    mechanist::WriteFileAtomically(
-        json, mechanist::InterferenceJson(assembly, analysis, contacts), file);
+    mechanist::WriteFileAtomically(json, mechanist::InterferenceJson(assembly, analysis, contacts),
+                                   file);
   }
   for (const auto& c : contacts) {
     if (c.verdict == mechanist::ContactVerdict::kClash) return kExitFailures;
@@ -118,6 +119,33 @@ int Assemble(const std::string& file, const std::string& json) {
   return plan.assemblable ? kExitOk : kExitFailures;
 }
 
+int Sweep(const std::string& file, const std::string& driver, double amount,
+          const std::string& json) {
+  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  std::optional<std::size_t> index;
+  if (!driver.empty()) {
+    for (std::size_t d = 0; d < assembly.drivers().size(); ++d) {
+      if (assembly.drivers()[d].id == driver) index = d;
+    }
+    if (!index) {
+      throw mechanist::InputError(file, "", 0, 0,
+                                  "--driver: expected a driver id, found \"" + driver + "\"");
+    }
+  }
+  if (amount < 0 && amount != -1) {
+    throw mechanist::InputError(file, "", 0, 0, "--amount: expected a number >= 0");
+  }
+  const mechanist::Analysis analysis = mechanist::Analyze(assembly);
+  const mechanist::CollisionModel model(assembly);
+  const mechanist::OperationCheck check = mechanist::CheckOperation(
+      assembly, analysis, model, index, amount >= 0 ? std::optional<double>(amount) : std::nullopt);
+  mechanist::WriteOperationSummary(assembly, check, std::cout);
+  if (!json.empty()) {
+    mechanist::WriteFileAtomically(json, mechanist::OperationJson(assembly, check), file);
+  }
+  return check.clashes.empty() && check.undecided.empty() ? kExitOk : kExitFailures;
+}
+
 int Check(const std::string& file) {
   const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
   const mechanist::Analysis analysis = mechanist::Analyze(assembly);
@@ -128,8 +156,7 @@ int Check(const std::string& file) {
       plan = mechanist::PlanAssembly(assembly, analysis, mechanist::CollisionModel(assembly));
     }
   }
-  const auto results =
-      mechanist::CheckExpectations(assembly, analysis, plan ? &*plan : nullptr);
+  const auto results = mechanist::CheckExpectations(assembly, analysis, plan ? &*plan : nullptr);
   mechanist::WriteCheckResults(results, std::cout);
   for (const auto& r : results) {
     if (!r.passed) return kExitFailures;
@@ -174,6 +201,18 @@ int main(int argc, char** argv) {
   assemble->add_option("FILE", file, "assembly file (.json)")->required();
   assemble->add_option("--json", json, "write the JSON report to this file");
 
+  std::string driver;
+  double amount = -1;
+  CLI::App* sweep = app.add_subcommand(
+      "sweep", "Run the mechanism and report parts that collide while it moves; exit 1 if any");
+  sweep->add_option("FILE", file, "assembly file (.json)")->required();
+  sweep->add_option("--driver", driver, "run only this driver (default: all at their rates)");
+  sweep
+      ->add_option("--amount", amount,
+                   "how far: driver revolutions or length units (default: the driver's amount)")
+      ->check(CLI::NonNegativeNumber);
+  sweep->add_option("--json", json, "write the JSON report to this file");
+
   std::string part, feature;
   CLI::App* drag = app.add_subcommand(
       "drag", "Turn or push one part: what moves with it, and which pair absorbs the motion");
@@ -201,6 +240,7 @@ int main(int argc, char** argv) {
     if (*check) return Check(file);
     if (*interference) return Interference(file, json);
     if (*assemble) return Assemble(file, json);
+    if (*sweep) return Sweep(file, driver, amount, json);
     if (*drag) return Drag(file, part, feature, translate);
   } catch (const mechanist::InputError& e) {
     std::cerr << "mechanist: error: " << e.what() << "\n";

@@ -102,7 +102,63 @@ std::string StepText(const Assembly& assembly, const Analysis& analysis, const I
   return t;
 }
 
+std::string DriverUnit(const Assembly& assembly, const OperationCheck& check) {
+  if (!check.driver) return "time units (all drivers at their rates)";
+  const Driver& d = assembly.drivers()[*check.driver];
+  return d.motion == Driver::Motion::kRotation ? "rev of " + d.id
+                                               : assembly.units().length + " of " + d.id;
+}
+
+Json ClashJson(const Assembly& assembly, const OperationClash& c) {
+  return {{"parts", Json::array({assembly.part(c.part_a).id, assembly.part(c.part_b).id})},
+          {"at", Num(c.at)},
+          {"distance", Num(c.distance)}};
+}
+
 }  // namespace
+
+void WriteOperationSummary(const Assembly& assembly, const OperationCheck& check,
+                           std::ostream& out) {
+  out << "sweep over " << FormatNumber(check.amount) << " " << DriverUnit(assembly, check) << ": ";
+  if (!check.possible) {
+    out << "cannot run: " << check.reason << "\n";
+    return;
+  }
+  out << check.clashes.size() << " clashes, " << check.undecided.size() << " undecided ("
+      << check.pairs_swept << " pairs of parts swept)\n";
+  for (const OperationClash& c : check.clashes) {
+    out << "  clash: " << assembly.part(c.part_a).id << " and " << assembly.part(c.part_b).id
+        << " meet at " << FormatNumber(c.at) << "\n";
+  }
+  if (!check.not_swept.empty()) {
+    out << "  not swept (their axes move: epicyclic motion):";
+    for (const std::size_t p : check.not_swept) out << " " << assembly.part(p).id;
+    out << "\n";
+  }
+  for (const OperationClash& c : check.undecided) {
+    out << "  undecided: " << assembly.part(c.part_a).id << " and " << assembly.part(c.part_b).id
+        << " stay within " << FormatNumber(c.distance) << " mm from " << FormatNumber(c.at) << "\n";
+  }
+}
+
+std::string OperationJson(const Assembly& assembly, const OperationCheck& check) {
+  Json report;
+  report["assembly"] = assembly.name();
+  report["driver"] = check.driver ? Json(assembly.drivers()[*check.driver].id) : Json(nullptr);
+  report["amount"] = Num(check.amount);
+  report["possible"] = check.possible;
+  report["reason"] = check.reason;
+  report["pairs_swept"] = check.pairs_swept;
+  Json clashes = Json::array(), undecided = Json::array();
+  for (const OperationClash& c : check.clashes) clashes.push_back(ClashJson(assembly, c));
+  for (const OperationClash& c : check.undecided) undecided.push_back(ClashJson(assembly, c));
+  report["clashes"] = clashes;
+  report["undecided"] = undecided;
+  Json not_swept = Json::array();
+  for (const std::size_t p : check.not_swept) not_swept.push_back(assembly.part(p).id);
+  report["not_swept"] = not_swept;
+  return report.dump(2) + "\n";
+}
 
 void WriteInterferenceSummary(const Assembly& assembly, const Analysis& analysis,
                               const std::vector<PartContact>& contacts, std::ostream& out) {

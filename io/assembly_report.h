@@ -8,6 +8,7 @@
 #include "reasoning/analysis.h"
 #include "reasoning/assembly_plan.h"
 #include "reasoning/interference.h"
+#include "reasoning/operation_check.h"
 
 namespace mechanist {
 
@@ -32,5 +33,15 @@ void WriteAssemblySummary(const Assembly& assembly, const Analysis& analysis,
 /// shape), "clashes": [...]}.
 std::string AssemblyPlanJson(const Assembly& assembly, const Analysis& analysis,
                              const AssemblyPlan& plan);
+
+/// `mechanist sweep` summary: what ran and how far, the pairs swept, each clash with the
+/// driver parameter at first contact.
+void WriteOperationSummary(const Assembly& assembly, const OperationCheck& check,
+                           std::ostream& out);
+
+/// The sweep JSON report: {"assembly", "driver" (id or null for all), "amount", "possible",
+/// "reason", "pairs_swept", "clashes": [{"parts", "at", "distance"}], "undecided": [...],
+/// "not_swept": [part ids]}.
+std::string OperationJson(const Assembly& assembly, const OperationCheck& check);
 
 }  // namespace mechanist

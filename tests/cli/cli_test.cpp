@@ -162,8 +162,8 @@ TEST(Cli, CheckReportsEachExpectationAndExitsOneOnFailure) {
 TEST(Cli, InterferenceAndAssembleOnAnExampleAndOnAClash) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_cli_asm";
   std::filesystem::create_directories(dir);
-  const CommandResult clean = Mechanist("interference " + Example("robot_hand_worm") +
-                                        " --json " + (dir / "contacts.json").string());
+  const CommandResult clean = Mechanist("interference " + Example("robot_hand_worm") + " --json " +
+                                        (dir / "contacts.json").string());
   EXPECT_EQ(clean.exit_code, 0) << clean.out;
   EXPECT_NE(clean.out.find("interference: 0 clashes, 6 designed fits"), std::string::npos)
       << clean.out;
@@ -184,10 +184,10 @@ TEST(Cli, InterferenceAndAssembleOnAnExampleAndOnAClash) {
   std::ifstream plan_json(dir / "plan.json");
   const std::string steps((std::istreambuf_iterator<char>(plan_json)),
                           std::istreambuf_iterator<char>());
-  for (const char* key : {"\"assemblable\": true", "\"part\": \"bolt_left\"",
-                          "\"feature\": \"bolt_left/thread\"",
-                          "\"into\": \"bracket_left/base_hole1\"", "\"clear\": true",
-                          "\"blocked_by\": []", "\"travel\": "}) {
+  for (const char* key :
+       {"\"assemblable\": true", "\"part\": \"bolt_left\"", "\"feature\": \"bolt_left/thread\"",
+        "\"into\": \"bracket_left/base_hole1\"", "\"clear\": true", "\"blocked_by\": []",
+        "\"travel\": "}) {
     EXPECT_NE(steps.find(key), std::string::npos) << key << "\n" << steps;
   }
 
@@ -203,6 +203,40 @@ TEST(Cli, InterferenceAndAssembleOnAnExampleAndOnAClash) {
   const CommandResult blocked = Mechanist("assemble " + file.string());
   EXPECT_EQ(blocked.exit_code, 1) << blocked.out;
   EXPECT_NE(blocked.out.find("assemblable: no"), std::string::npos) << blocked.out;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, SweepFindsAnArmHittingAPostWhileTurning) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_cli_sweep";
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path file = dir / "arm.json";
+  // A shaft turning in a base carries an arm along +x; a post stands on +y at 25 mm.
+  std::ofstream(file) << R"({"mechanist": 1, "parts": [
+    {"id": "base", "ground": true,
+     "library": {"kind": "plate", "length": 100, "width": 100, "thickness": 5,
+                 "holes": [{"id": "bearing", "at": [0, 0], "diameter": 6.02}]}},
+    {"id": "shaft", "library": {"kind": "shaft", "diameter": 6, "length": 30, "retained": true},
+     "pose": {"position": [0, 0, -5]}},
+    {"id": "arm", "library": {"kind": "plate", "length": 40, "width": 6, "thickness": 4,
+                              "holes": [{"id": "hub", "at": [-15, 0], "diameter": 5.9}]},
+     "pose": {"position": [15, 0, 10]}},
+    {"id": "post", "ground": true,
+     "library": {"kind": "shaft", "diameter": 6, "length": 20, "segments": 64},
+     "pose": {"position": [0, 25, 5]}}],
+    "drivers": [{"id": "motor", "part": "shaft", "feature": "shaft", "amount": 0.5}]})";
+  const CommandResult run =
+      Mechanist("sweep " + file.string() + " --json " + (dir / "sweep.json").string());
+  EXPECT_EQ(run.exit_code, 1) << run.out;
+  EXPECT_NE(run.out.find("sweep over 0.5 rev of motor: 1 clashes"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("clash: arm and post meet at 0.21"), std::string::npos) << run.out;
+  std::ifstream json(dir / "sweep.json");
+  const std::string report((std::istreambuf_iterator<char>(json)),
+                           std::istreambuf_iterator<char>());
+  EXPECT_NE(report.find("\"parts\": [\n        \"arm\",\n        \"post\""), std::string::npos)
+      << report;
+  // Stopping short of the post: no clash.
+  const CommandResult short_run = Mechanist("sweep " + file.string() + " --amount 0.2");
+  EXPECT_EQ(short_run.exit_code, 0) << short_run.out;
   std::filesystem::remove_all(dir);
 }
 

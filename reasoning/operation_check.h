@@ -1,0 +1,54 @@
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kernel/assembly.h"
+#include "kernel/collision_model.h"
+#include "reasoning/analysis.h"
+
+namespace mechanist {
+
+/// Two parts that come into contact while the mechanism runs.
+struct OperationClash {
+  std::size_t part_a = 0, part_b = 0;  ///< part indices, ordered by part id
+  /// Driver parameter at the first contact: revolutions or file length units of the driver
+  /// (time units when all drivers run together, each at its rate).
+  double at = 0.0;
+  double distance = 0.0;  ///< mm between the surfaces there
+};
+
+/// The swept check of a running mechanism.
+struct OperationCheck {
+  std::optional<std::size_t> driver;  ///< nothing: all drivers together at their rates
+  double amount = 1.0;                ///< how far it ran (units of `at`)
+  bool possible = true;               ///< false when the drivers cannot run (see `reason`)
+  std::string reason;
+  std::vector<OperationClash> clashes;    ///< by `at`, then part ids
+  std::vector<OperationClash> undecided;  ///< step budget exhausted while barely clear
+  /// Moving parts whose motion is not a fixed screw (a planet's epicyclic motion: its axis
+  /// moves with its carrier), not swept: the analysis gives their velocity, not yet their
+  /// finite path. By part id.
+  std::vector<std::size_t> not_swept;
+  std::size_t pairs_swept = 0;
+};
+
+/// Runs the mechanism from its file poses, each part moving as the motion analysis says (one
+/// driver at unit rate, or all drivers at their rates; with a single driver and none named,
+/// that driver), over `amount` (default: the driver's
+/// `amount`; for all drivers the shortest time in which one of them completes its amount) and
+/// sweeps every pair of parts that move relative to each other (SweepMotion, contact within
+/// the file's length tolerance). A part's motion is taken as a fixed screw (its velocity at
+/// the file pose, kept) only when its subassembly turns or slides in a lower pair (revolute,
+/// cylindrical, screw, prismatic) with a still part along that same axis; other moving parts
+/// are listed in `not_swept`. Not checked: parts of one subassembly, parts joined by a
+/// recognised pair (teeth of meshing gears, a shaft in its bearing: their contact is the pair),
+/// and parts already in contact at rest (the static check reports those). Throws
+/// std::invalid_argument for a driver index out of range or a negative amount.
+OperationCheck CheckOperation(const Assembly& assembly, const Analysis& analysis,
+                              const CollisionModel& model, std::optional<std::size_t> driver,
+                              std::optional<double> amount);
+
+}  // namespace mechanist
