@@ -130,11 +130,6 @@ void WriteOperationSummary(const Assembly& assembly, const OperationCheck& check
     out << "  clash: " << assembly.part(c.part_a).id << " and " << assembly.part(c.part_b).id
         << " meet at " << FormatNumber(c.at) << "\n";
   }
-  if (!check.not_swept.empty()) {
-    out << "  not swept (their axes move: epicyclic motion):";
-    for (const std::size_t p : check.not_swept) out << " " << assembly.part(p).id;
-    out << "\n";
-  }
   for (const OperationClash& c : check.undecided) {
     out << "  undecided: " << assembly.part(c.part_a).id << " and " << assembly.part(c.part_b).id
         << " stay within " << FormatNumber(c.distance) << " mm from " << FormatNumber(c.at) << "\n";
@@ -154,9 +149,6 @@ std::string OperationJson(const Assembly& assembly, const OperationCheck& check)
   for (const OperationClash& c : check.undecided) undecided.push_back(ClashJson(assembly, c));
   report["clashes"] = clashes;
   report["undecided"] = undecided;
-  Json not_swept = Json::array();
-  for (const std::size_t p : check.not_swept) not_swept.push_back(assembly.part(p).id);
-  report["not_swept"] = not_swept;
   return report.dump(2) + "\n";
 }
 

@@ -40,8 +40,7 @@ void WriteOperationSummary(const Assembly& assembly, const OperationCheck& check
                            std::ostream& out);
 
 /// The sweep JSON report: {"assembly", "driver" (id or null for all), "amount", "possible",
-/// "reason", "pairs_swept", "clashes": [{"parts", "at", "distance"}], "undecided": [...],
-/// "not_swept": [part ids]}.
+/// "reason", "pairs_swept", "clashes": [{"parts", "at", "distance"}], "undecided": [...]}.
 std::string OperationJson(const Assembly& assembly, const OperationCheck& check);
 
 }  // namespace mechanist

@@ -9,29 +9,29 @@
 namespace mechanist {
 namespace {
 
-// The largest distance of the mesh's vertices (at X_WM) from the motion's axis, mm.
-double Radius(const CollisionMesh& mesh, const RigidTransform& X_WM, const ScrewMotion& m) {
-  double r = 0.0;
+// The bounding sphere of the mesh at X_WM: the centre of its world box and the farthest vertex.
+std::pair<Eigen::Vector3d, double> Sphere(const CollisionMesh& mesh, const RigidTransform& X_WM) {
+  const Eigen::Vector3d center = X_WM * mesh.bounds().center();
+  double radius = 0.0;
   for (const Eigen::Vector3d& v : mesh.mesh().vertices) {
-    const Eigen::Vector3d d = X_WM * v - m.point_W;
-    r = std::max(r, (d - d.dot(m.axis_W) * m.axis_W).norm());
+    radius = std::max(radius, (X_WM * v - center).norm());
   }
-  return r;
+  return {center, radius};
 }
 
 }  // namespace
 
 MotionSweepResult SweepMotion(const CollisionMesh& a, const RigidTransform& X_WA,
-                              const ScrewMotion& motion_a, const CollisionMesh& b,
-                              const RigidTransform& X_WB, const ScrewMotion& motion_b, double s_max,
+                              const ScrewPath& motion_a, const CollisionMesh& b,
+                              const RigidTransform& X_WB, const ScrewPath& motion_b, double s_max,
                               double tolerance, std::size_t max_steps) {
   if (!(tolerance > 0.0) || !(s_max >= 0.0) || !std::isfinite(s_max)) {
     throw std::invalid_argument("SweepMotion: need tolerance > 0 and a finite s_max >= 0");
   }
-  // Rotation about an axis keeps every point's distance from it, and translation along it
-  // too: the bounds hold for the whole motion.
-  const double speed = motion_a.SpeedBound(Radius(a, X_WA, motion_a)) +
-                       motion_b.SpeedBound(Radius(b, X_WB, motion_b));
+  const auto [center_a, radius_a] = Sphere(a, X_WA);
+  const auto [center_b, radius_b] = Sphere(b, X_WB);
+  const double speed = motion_a.SpeedBound(center_a, radius_a, s_max) +
+                       motion_b.SpeedBound(center_b, radius_b, s_max);
   MotionSweepResult result;
   double s = 0.0;
   for (;;) {

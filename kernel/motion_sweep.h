@@ -4,7 +4,7 @@
 
 #include "kernel/collision_mesh.h"
 #include "kernel/rigid_transform.h"
-#include "kernel/screw_motion.h"
+#include "kernel/screw_path.h"
 
 namespace mechanist {
 
@@ -21,17 +21,16 @@ struct MotionSweepResult {
   std::size_t steps = 0;
 };
 
-/// Sweeps two parts, each moving by its ScrewMotion from its pose at s = 0, over s in
+/// Sweeps two parts, each moving along its ScrewPath from its pose at s = 0, over s in
 /// [0, s_max], by conservative advancement (Mirtich 1996): at each step the surface distance d
-/// is computed exactly enough (SurfaceDistance) and s advances by (d - tolerance / 2) / v,
-/// where v bounds how fast any point of either part moves (SpeedBound with the largest
-/// distance of the part's vertices from its axis). No point can close more than d - tolerance
-/// / 2 in that step, so a contact is never missed; the steps shrink where the parts are close
-/// and grow where they are far apart (and with the arc's deviation from its chord, through v).
-/// Contact: distance at most `tolerance` mm.
+/// (SurfaceDistance) is computed and s advances by (d - tolerance / 2) / v, where v bounds how
+/// fast any point of either part moves (ScrewPath::SpeedBound over the part's bounding
+/// sphere). No point can close more than d - tolerance / 2 in that step, so a contact is never
+/// missed; the steps shrink where the parts are close and grow where they are far apart (and
+/// with the arc's deviation from its chord, through v). Contact: distance at most `tolerance`.
 MotionSweepResult SweepMotion(const CollisionMesh& a, const RigidTransform& X_WA,
-                              const ScrewMotion& motion_a, const CollisionMesh& b,
-                              const RigidTransform& X_WB, const ScrewMotion& motion_b, double s_max,
+                              const ScrewPath& motion_a, const CollisionMesh& b,
+                              const RigidTransform& X_WB, const ScrewPath& motion_b, double s_max,
                               double tolerance, std::size_t max_steps = 20000);
 
 }  // namespace mechanist

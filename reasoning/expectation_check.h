@@ -24,8 +24,7 @@ struct ExpectationResult {
 /// for a decimal; of the only driver at unit rate, or all drivers at their rates), `moves` (for
 /// any driver alone), `mobility`, and `assemblable` against `plan` (PlanAssembly); without a
 /// plan an `assemblable` entry fails with "not evaluated".
-std::vector<ExpectationResult> CheckExpectations(const Assembly& assembly,
-                                                 const Analysis& analysis,
+std::vector<ExpectationResult> CheckExpectations(const Assembly& assembly, const Analysis& analysis,
                                                  const AssemblyPlan* plan = nullptr);
 
 /// Evaluates one expectation (as CheckExpectations does), for the C++ testing API.

@@ -480,6 +480,20 @@ void KinematicModel::Twists(const std::vector<ExactReal>& x, std::vector<Eigen::
   }
 }
 
+Eigen::Matrix<double, 6, 1> KinematicModel::RelativeTwist(std::size_t body,
+                                                          const std::vector<ExactReal>& x) const {
+  if (!parent_joint_[body]) return Eigen::Matrix<double, 6, 1>::Zero();
+  const Joint& j = joints_[*parent_joint_[body]];
+  return (body == j.body_a ? 1.0 : -1.0) *
+         JointTwist(freedoms_, j, [&](std::size_t k) { return x[k].value(); });
+}
+
+std::optional<std::size_t> KinematicModel::ParentBody(std::size_t body) const {
+  if (!parent_joint_[body]) return std::nullopt;
+  const Joint& j = joints_[*parent_joint_[body]];
+  return body == j.body_a ? j.body_b : j.body_a;
+}
+
 Eigen::Matrix<double, 6, 1> KinematicModel::BodyTwist(
     std::size_t body, const std::function<double(std::size_t)>& rate) const {
   Eigen::Matrix<double, 6, 1> twist = Eigen::Matrix<double, 6, 1>::Zero();

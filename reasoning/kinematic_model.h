@@ -103,6 +103,13 @@ class KinematicModel {
   /// for the unknown rates `rate(k)`.
   Eigen::Matrix<double, 6, 1> BodyTwist(std::size_t body,
                                         const std::function<double(std::size_t)>& rate) const;
+  /// The twist of `body` relative to its parent in the tree (through its parent joint) for
+  /// the rates `x`, in world coordinates at the file pose: (rev/s; velocity of the world
+  /// origin, mm/s). Zero for the ground.
+  Eigen::Matrix<double, 6, 1> RelativeTwist(std::size_t body,
+                                            const std::vector<ExactReal>& x) const;
+  /// The parent of `body` in the tree, or nothing for the ground.
+  std::optional<std::size_t> ParentBody(std::size_t body) const;
   /// Evaluates a row at `x`.
   static ExactReal Evaluate(const LinearSystem::Row& row, const std::vector<ExactReal>& x);
 

@@ -167,7 +167,33 @@ class Solver {
                  mm_per_length_});
       }
       motion.parts[p] = Classify(p, omega[body], v[body], rates);
+      motion.parts[p].path = Path(body, x);
     }
+  }
+
+  // The screws of the joints from the ground to `body`, ground first.
+  ScrewPath Path(std::size_t body, const std::vector<ExactReal>& x) const {
+    std::vector<ScrewMotion> chain;
+    for (std::optional<std::size_t> b = body; b && *b != model_.ground();
+         b = model_.ParentBody(*b)) {
+      const Eigen::Matrix<double, 6, 1> t = model_.RelativeTwist(*b, x);
+      const Eigen::Vector3d omega = t.head<3>(), v = t.tail<3>();
+      ScrewMotion m;
+      if (omega.norm() > kTolerance) {
+        const Eigen::Vector3d w = kTwoPi * omega;
+        m.axis_W = omega.normalized();
+        m.turns_per_unit = omega.norm();
+        m.point_W = w.cross(v) / w.squaredNorm();
+        m.travel_per_unit = v.dot(m.axis_W);
+      } else if (v.norm() > kTolerance) {
+        m.axis_W = v.normalized();
+        m.travel_per_unit = v.norm();
+      }
+      if (!m.still()) chain.push_back(m);
+    }
+    ScrewPath path;
+    path.screws.assign(chain.rbegin(), chain.rend());
+    return path;
   }
 
   PartMotion Classify(std::size_t p, const Eigen::Vector3d& omega, const Eigen::Vector3d& v_WO,

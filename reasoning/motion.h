@@ -9,6 +9,7 @@
 
 #include "kernel/assembly.h"
 #include "kernel/diagnostic.h"
+#include "kernel/screw_path.h"
 #include "reasoning/exact_real.h"
 #include "reasoning/pair.h"
 #include "reasoning/pair_graph.h"
@@ -41,6 +42,12 @@ struct PartMotion {
   std::optional<FeatureRef> axis_feature;
   ExactReal rotation;     ///< revolutions about axis_W
   ExactReal translation;  ///< the file's length units along axis_W
+  /// The finite motion per unit driver parameter: the screws of the joints from the ground
+  /// to this part at their rates (a planet turns on its pin while its carrier turns), so that
+  /// the part's pose after s is path.At(s) * X_WP. Exact for gear, worm, screw and rack
+  /// trains, whose ratios do not change as they move; a linkage's path is its motion
+  /// continued at the ratios of the file pose. Lengths in mm.
+  ScrewPath path;
 };
 
 /// The motion of every part when one driver runs at unit rate and the others are held, or when

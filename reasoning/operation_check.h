@@ -28,10 +28,6 @@ struct OperationCheck {
   std::string reason;
   std::vector<OperationClash> clashes;    ///< by `at`, then part ids
   std::vector<OperationClash> undecided;  ///< step budget exhausted while barely clear
-  /// Moving parts whose motion is not a fixed screw (a planet's epicyclic motion: its axis
-  /// moves with its carrier), not swept: the analysis gives their velocity, not yet their
-  /// finite path. By part id.
-  std::vector<std::size_t> not_swept;
   std::size_t pairs_swept = 0;
 };
 
@@ -40,13 +36,12 @@ struct OperationCheck {
 /// that driver), over `amount` (default: the driver's
 /// `amount`; for all drivers the shortest time in which one of them completes its amount) and
 /// sweeps every pair of parts that move relative to each other (SweepMotion, contact within
-/// the file's length tolerance). A part's motion is taken as a fixed screw (its velocity at
-/// the file pose, kept) only when its subassembly turns or slides in a lower pair (revolute,
-/// cylindrical, screw, prismatic) with a still part along that same axis; other moving parts
-/// are listed in `not_swept`. Not checked: parts of one subassembly, parts joined by a
-/// recognised pair (teeth of meshing gears, a shaft in its bearing: their contact is the pair),
-/// and parts already in contact at rest (the static check reports those). Throws
-/// std::invalid_argument for a driver index out of range or a negative amount.
+/// the file's length tolerance) along the parts' paths (PartMotion::path: the joint screws
+/// from the ground, so a planet turns on its pin while its carrier turns). Not checked: parts of
+/// one subassembly, parts joined by a recognised pair (teeth of meshing gears, a shaft in its
+/// bearing: their contact is the pair), and parts already in contact at rest (the static check
+/// reports those). Throws std::invalid_argument for a driver index out of range or a negative
+/// amount.
 OperationCheck CheckOperation(const Assembly& assembly, const Analysis& analysis,
                               const CollisionModel& model, std::optional<std::size_t> driver,
                               std::optional<double> amount);

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "io/assembly_reader.h"
+#include "kernel/collision_model.h"
 #include "reasoning/analysis.h"
+#include "reasoning/operation_check.h"
 #include "text_edit.h"
 
 namespace mechanist {
@@ -73,6 +75,56 @@ TEST(Motion, ThreePlanetsAreTwoRedundantConstraintsNotALock) {
   EXPECT_EQ(an.motion.mobility.dof, 1);
   EXPECT_EQ(an.motion.mobility.redundant, 2);
   EXPECT_FALSE(HasCode(an, "jam"));
+}
+
+// The finite path of a planet: it orbits with the carrier (sun 20, ring 40 fixed: the carrier
+// turns 1/3 of the sun) and turns -1 revolution per sun revolution about its own centre
+// (Willis: 1/3 - (20/10)(1 - 1/3)); the path must place it exactly there.
+TEST(Motion, PlanetPathOrbitsWithTheCarrierAndSpinsOnItsPin) {
+  const std::string path =
+      std::string(MECHANIST_SOURCE_DIR) + "/examples/planetary_gear_set/assembly.json";
+  const Assembly a = ReadAssembly(path);
+  const Analysis an = Analyze(a);
+  const std::size_t planet = *a.FindPart("planet_1");
+  const ScrewPath& p = an.motion.ForExpectations()->parts[planet].path;
+  ASSERT_EQ(p.screws.size(), 2u) << "carrier about the axle, planet about its pin";
+  const double kPi = 3.14159265358979323846;
+  const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+  for (const double s : {0.1, 0.37, 0.75, 1.0, 2.5}) {
+    const RigidTransform expected =
+        RigidTransform::AxisAngleAbout(Eigen::Vector3d::Zero(), z, 2 * kPi * s / 3) *
+        RigidTransform::AxisAngleAbout({15, 0, 0}, z, 2 * kPi * (-1 - 1.0 / 3) * s);
+    EXPECT_TRUE(p.At(s).IsNearlyEqualTo(expected, 1e-9, 1e-9)) << "s = " << s;
+  }
+  // A part on a fixed axis has a single screw: the sun turns once per unit.
+  const ScrewPath& sun = an.motion.ForExpectations()->parts[*a.FindPart("sun")].path;
+  ASSERT_EQ(sun.screws.size(), 1u);
+  EXPECT_NEAR(sun.screws[0].turns_per_unit * sun.screws[0].axis_W.z(), 1.0, 1e-12);
+}
+
+// A post in the planets' orbit: the running mechanism's sweep finds the first planet to reach
+// it where the orbit geometry says (centres 15 mm from the axis, the post 60 degrees round,
+// tip radius 6 and post radius 2: 2 * 15 * sin(a / 2) = 8 at a carrier angle a short of 60).
+TEST(Motion, SweepFindsAPlanetHittingAPostInItsOrbit) {
+  const std::string path =
+      std::string(MECHANIST_SOURCE_DIR) + "/examples/planetary_gear_set/assembly.json";
+  const std::string with_post = Replace(ReadText(path), R"(    {"id": "sun",)",
+                                        R"(    {"id": "post", "ground": true,
+     "library": {"kind": "shaft", "diameter": 4, "length": 8, "segments": 48},
+     "pose": {"position": [7.5, 12.990381056766580, 1]}},
+    {"id": "sun",)");
+  const Assembly a = ParseAssembly(with_post, path);
+  const Analysis an = Analyze(a);
+  const OperationCheck check = CheckOperation(a, an, CollisionModel(a), std::nullopt, 0.5);
+  ASSERT_FALSE(check.clashes.empty());
+  const OperationClash& first = check.clashes.front();
+  EXPECT_EQ(a.part(first.part_a).id + "+" + a.part(first.part_b).id, "planet_1+post");
+  const double kPi = 3.14159265358979323846;
+  const double carrier_angle = kPi / 3 - 2 * std::asin(8.0 / 30.0);
+  const double expected = carrier_angle / (2 * kPi) * 3;  // the carrier turns 1/3 of the sun
+  // Teeth: the tips reach radius 6 only on a tooth, so the contact can come a little later.
+  EXPECT_GE(first.at, expected - 1e-3);
+  EXPECT_LE(first.at, expected + 0.02);
 }
 
 }  // namespace

@@ -1,0 +1,44 @@
+#include "kernel/screw_path.h"
+
+#include <cmath>
+
+namespace mechanist {
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
+
+double DistanceToAxis(const Eigen::Vector3d& p, const ScrewMotion& m) {
+  const Eigen::Vector3d d = p - m.point_W;
+  return (d - d.dot(m.axis_W) * m.axis_W).norm();
+}
+
+}  // namespace
+
+RigidTransform ScrewPath::At(double s) const {
+  RigidTransform D;
+  for (const ScrewMotion& m : screws) D = D * m.At(s);
+  return D;
+}
+
+double ScrewPath::SpeedBound(const Eigen::Vector3d& center_W, double radius, double s_max) const {
+  // Inner screws first: reach[j] bounds how far the sphere's centre can be moved by screws
+  // j+1 .. k (in the frame where screw j's axis is at its s = 0 place).
+  const std::size_t k = screws.size();
+  std::vector<double> moved(k + 1, 0.0);
+  for (std::size_t j = k; j-- > 0;) {
+    const ScrewMotion& m = screws[j];
+    const double r = DistanceToAxis(center_W, m) + moved[j + 1];
+    moved[j] = moved[j + 1] + (m.turns_per_unit != 0.0 ? 2.0 * r : 0.0) +
+               std::abs(m.travel_per_unit) * s_max;
+  }
+  double speed = 0.0;
+  for (std::size_t j = 0; j < k; ++j) {
+    const ScrewMotion& m = screws[j];
+    speed += kTwoPi * std::abs(m.turns_per_unit) *
+                 (DistanceToAxis(center_W, m) + moved[j + 1] + radius) +
+             std::abs(m.travel_per_unit);
+  }
+  return speed;
+}
+
+}  // namespace mechanist
