@@ -112,7 +112,8 @@ std::string DriverUnit(const Assembly& assembly, const OperationCheck& check) {
 Json ClashJson(const Assembly& assembly, const OperationClash& c) {
   return {{"parts", Json::array({assembly.part(c.part_a).id, assembly.part(c.part_b).id})},
           {"at", Num(c.at)},
-          {"distance", Num(c.distance)}};
+          {"distance", Num(c.distance)},
+          {"location", Point(c.p_W)}};
 }
 
 }  // namespace
@@ -128,7 +129,7 @@ void WriteOperationSummary(const Assembly& assembly, const OperationCheck& check
       << check.pairs_swept << " pairs of parts swept)\n";
   for (const OperationClash& c : check.clashes) {
     out << "  clash: " << assembly.part(c.part_a).id << " and " << assembly.part(c.part_b).id
-        << " meet at " << FormatNumber(c.at) << "\n";
+        << " meet at " << FormatNumber(c.at) << ", at " << Text(c.p_W) << "\n";
   }
   for (const OperationClash& c : check.undecided) {
     out << "  undecided: " << assembly.part(c.part_a).id << " and " << assembly.part(c.part_b).id

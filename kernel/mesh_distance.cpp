@@ -10,13 +10,18 @@
 namespace mechanist {
 namespace {
 
-// Squared distance between segments [p1, q1] and [p2, q2] (Ericson 5.1.9).
+// Squared distance between segments [p1, q1] and [p2, q2] (Ericson 5.1.9); `mid` receives the
+// midpoint of the closest points.
 double SegmentSegmentSquared(const Eigen::Vector3d& p1, const Eigen::Vector3d& q1,
-                             const Eigen::Vector3d& p2, const Eigen::Vector3d& q2) {
+                             const Eigen::Vector3d& p2, const Eigen::Vector3d& q2,
+                             Eigen::Vector3d* mid) {
   const Eigen::Vector3d d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
   const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
   double s = 0, t = 0;
-  if (a <= 1e-300 && e <= 1e-300) return r.squaredNorm();
+  if (a <= 1e-300 && e <= 1e-300) {
+    *mid = 0.5 * (p1 + p2);
+    return r.squaredNorm();
+  }
   if (a <= 1e-300) {
     t = std::clamp(f / e, 0.0, 1.0);
   } else {
@@ -36,24 +41,36 @@ double SegmentSegmentSquared(const Eigen::Vector3d& p1, const Eigen::Vector3d& q
       }
     }
   }
+  *mid = 0.5 * ((p1 + d1 * s) + (p2 + d2 * t));
   return ((p1 + d1 * s) - (p2 + d2 * t)).squaredNorm();
 }
 
 // Squared distance between two triangles: 0 when they share a point (exact test), else the
-// closest pair is a vertex and a face or two edges.
+// closest pair is a vertex and a face or two edges. `mid` receives the midpoint of the closest
+// points (for crossing triangles, the centroid of the first one's corners nearest the other).
 double TriangleTriangleSquared(const std::array<Eigen::Vector3d, 3>& x,
-                               const std::array<Eigen::Vector3d, 3>& y) {
+                               const std::array<Eigen::Vector3d, 3>& y, Eigen::Vector3d* mid) {
+  double best = std::numeric_limits<double>::infinity();
+  auto offer = [&](double d, const Eigen::Vector3d& m) {
+    if (d < best) {
+      best = d;
+      *mid = m;
+    }
+  };
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector3d on_y = ClosestPointOnTriangle(x[i], y[0], y[1], y[2]);
+    offer((on_y - x[i]).squaredNorm(), 0.5 * (on_y + x[i]));
+    const Eigen::Vector3d on_x = ClosestPointOnTriangle(y[i], x[0], x[1], x[2]);
+    offer((on_x - y[i]).squaredNorm(), 0.5 * (on_x + y[i]));
+    for (int j = 0; j < 3; ++j) {
+      Eigen::Vector3d m;
+      const double d = SegmentSegmentSquared(x[i], x[(i + 1) % 3], y[j], y[(j + 1) % 3], &m);
+      offer(d, m);
+    }
+  }
   if (!TrianglesSurelyApart(x[0], x[1], x[2], y[0], y[1], y[2]) &&
       TrianglesIntersect(x[0], x[1], x[2], y[0], y[1], y[2])) {
     return 0.0;
-  }
-  double best = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 3; ++i) {
-    best = std::min(best, (ClosestPointOnTriangle(x[i], y[0], y[1], y[2]) - x[i]).squaredNorm());
-    best = std::min(best, (ClosestPointOnTriangle(y[i], x[0], x[1], x[2]) - y[i]).squaredNorm());
-    for (int j = 0; j < 3; ++j) {
-      best = std::min(best, SegmentSegmentSquared(x[i], x[(i + 1) % 3], y[j], y[(j + 1) % 3]));
-    }
   }
   return best;
 }
@@ -68,7 +85,7 @@ double BoxDistance(const Eigen::Vector3d& center_a, const Eigen::Vector3d& half_
 }  // namespace
 
 double SurfaceDistance(const CollisionMesh& a, const RigidTransform& X_WA, const CollisionMesh& b,
-                       const RigidTransform& X_WB, double give_up) {
+                       const RigidTransform& X_WB, double give_up, Eigen::Vector3d* p_W) {
   if (a.mesh().faces.empty() || b.mesh().faces.empty()) {
     return std::numeric_limits<double>::infinity();
   }
@@ -103,10 +120,12 @@ double SurfaceDistance(const CollisionMesh& a, const RigidTransform& X_WA, const
         for (std::int32_t j = nb.first; j < nb.first + nb.count; ++j) {
           auto tb = b.Triangle(b.order()[j]);
           for (auto& v : tb) v = X_AB * v;
-          const double d = TriangleTriangleSquared(ta, tb);
+          Eigen::Vector3d mid_A = Eigen::Vector3d::Zero();
+          const double d = TriangleTriangleSquared(ta, tb, &mid_A);
           if (d < best_sq) {
             best_sq = d;
             best = std::sqrt(d);
+            if (p_W) *p_W = X_WA * mid_A;
           }
         }
       }

@@ -37,7 +37,8 @@ MotionSweepResult SweepMotion(const CollisionMesh& a, const RigidTransform& X_WA
   for (;;) {
     const double d = SurfaceDistance(
         a, motion_a.At(s) * X_WA, b, motion_b.At(s) * X_WB,
-        speed > 0 ? speed * (s_max - s) + tolerance : std::numeric_limits<double>::infinity());
+        speed > 0 ? speed * (s_max - s) + tolerance : std::numeric_limits<double>::infinity(),
+        &result.p_W);
     result.s = s;
     result.distance = d;
     ++result.steps;

@@ -18,6 +18,8 @@ struct MotionSweepResult {
   Status status = Status::kClear;
   double s = 0.0;         ///< driver parameter at the contact (or where the budget ran out)
   double distance = 0.0;  ///< mm between the surfaces at `s`
+  /// Contact: the midpoint of the closest points at `s` (world, mm).
+  Eigen::Vector3d p_W = Eigen::Vector3d::Zero();
   std::size_t steps = 0;
 };
 

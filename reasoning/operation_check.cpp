@@ -82,7 +82,7 @@ OperationCheck CheckOperation(const Assembly& assembly, const Analysis& analysis
                                             check.amount, tolerance);
     if (r.status == MotionSweepResult::Status::kClear) continue;
     const bool ordered = assembly.part(i).id < assembly.part(j).id;
-    const OperationClash clash{ordered ? i : j, ordered ? j : i, r.s, r.distance};
+    const OperationClash clash{ordered ? i : j, ordered ? j : i, r.s, r.distance, r.p_W};
     (r.status == MotionSweepResult::Status::kContact ? check.clashes : check.undecided)
         .push_back(clash);
   }

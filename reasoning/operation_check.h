@@ -1,5 +1,6 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -17,7 +18,8 @@ struct OperationClash {
   /// Driver parameter at the first contact: revolutions or file length units of the driver
   /// (time units when all drivers run together, each at its rate).
   double at = 0.0;
-  double distance = 0.0;  ///< mm between the surfaces there
+  double distance = 0.0;                          ///< mm between the surfaces there
+  Eigen::Vector3d p_W = Eigen::Vector3d::Zero();  ///< where (world, mm, at that instant)
 };
 
 /// The swept check of a running mechanism.

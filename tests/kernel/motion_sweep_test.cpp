@@ -95,6 +95,10 @@ TEST(SweepMotion, TurningArmMeetsThePostWhereTheGeometrySays) {
   // The post is a 64-gon inscribed in its circle: contact comes at most that much later.
   EXPECT_NEAR(r.s, expected, 2e-4);
   EXPECT_LE(r.distance, tolerance);
+  // The contact is on the post's surface, on the side facing the arm.
+  const Eigen::Vector3d from_post = r.p_W - Eigen::Vector3d(0, 25, r.p_W.z());
+  EXPECT_NEAR(from_post.norm(), 3.0, 0.02);
+  EXPECT_GT(from_post.x(), 0.0);
   // Nothing was skipped: sampled densely before the contact, the parts stay apart.
   for (int k = 0; k < 400; ++k) {
     const double s = r.s * k / 400.0;
