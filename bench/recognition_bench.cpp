@@ -52,21 +52,27 @@ std::shared_ptr<const TriangleMesh> BenchBox() {
   return box;
 }
 
+// Appends a part with the bench box mesh at a translation.
+void AddBenchPart(AssemblySpec* spec, const std::string& id, std::vector<Feature> features,
+                  const Eigen::Vector3d& at, bool ground) {
+  static const std::shared_ptr<const TriangleMesh> mesh = BenchBox();
+  Part p;
+  p.id = id;
+  p.mesh = mesh;
+  p.mesh_source = "bench:box";
+  p.X_WP = RigidTransform::Translation(at);
+  p.ground = ground;
+  p.features = std::move(features);
+  spec->parts.push_back(std::move(p));
+}
+
 Assembly Synthetic(int cells, int per_row, double row_pitch) {
-  const std::shared_ptr<const TriangleMesh> mesh = BenchBox();
   const Eigen::Vector3d up = Eigen::Vector3d::UnitZ(), down = -up;
   AssemblySpec spec;
   spec.parts.reserve(static_cast<std::size_t>(cells) * kPartsPerCell);
   auto part = [&](const std::string& id, std::vector<Feature> features, Eigen::Vector3d at,
                   bool ground = false) {
-    Part p;
-    p.id = id;
-    p.mesh = mesh;
-    p.mesh_source = "bench:cube";
-    p.X_WP = RigidTransform::Translation(at);
-    p.ground = ground;
-    p.features = std::move(features);
-    spec.parts.push_back(std::move(p));
+    AddBenchPart(&spec, id, std::move(features), at, ground);
   };
   for (int c = 0; c < cells; ++c) {
     // Gears of 20 teeth, module 2: neighbours 40 mm apart along x mesh.
@@ -108,20 +114,12 @@ Assembly Synthetic(int cells, int per_row, double row_pitch) {
 constexpr int kPartsPerStage = 7;
 
 Assembly PlanetaryArray(int stages) {
-  const std::shared_ptr<const TriangleMesh> mesh = BenchBox();
   const Eigen::Vector3d up = Eigen::Vector3d::UnitZ(), down = -up;
   AssemblySpec spec;
   spec.parts.reserve(static_cast<std::size_t>(stages) * kPartsPerStage + 1);
   auto part = [&](const std::string& id, std::vector<Feature> features, Eigen::Vector3d at,
                   bool ground = false) {
-    Part p;
-    p.id = id;
-    p.mesh = mesh;
-    p.mesh_source = "bench:cube";
-    p.X_WP = RigidTransform::Translation(at);
-    p.ground = ground;
-    p.features = std::move(features);
-    spec.parts.push_back(std::move(p));
+    AddBenchPart(&spec, id, std::move(features), at, ground);
   };
   auto gear = [&](const std::string& id, int teeth, Eigen::Vector3d at, bool internal) {
     Feature g = Make(id, FeatureKind::kGear, at, up);
