@@ -40,7 +40,8 @@ void WriteOperationSummary(const Assembly& assembly, const OperationCheck& check
                            std::ostream& out);
 
 /// The sweep JSON report: {"assembly", "driver" (id or null for all), "amount", "possible",
-/// "reason", "pairs_swept", "clashes": [{"parts", "at", "distance", "location"}], "undecided": [...]}.
+/// "reason", "pairs_swept", "clashes": [{"parts", "at", "distance", "location"}], "undecided":
+/// [...]}.
 std::string OperationJson(const Assembly& assembly, const OperationCheck& check);
 
 }  // namespace mechanist

@@ -11,7 +11,6 @@
 #include "kernel/motion_sweep.h"
 
 namespace mechanist {
-namespace {}  // namespace
 
 OperationCheck CheckOperation(const Assembly& assembly, const Analysis& analysis,
                               const CollisionModel& model, std::optional<std::size_t> driver,
