@@ -11,6 +11,7 @@
 #include "reasoning/assembly_plan.h"
 #include "reasoning/expectation_check.h"
 #include "reasoning/interference.h"
+#include "reasoning/operation_check.h"
 #include "text_edit.h"
 
 namespace mechanist {
@@ -29,7 +30,7 @@ const Diagnostic* Find(const Analysis& an, const std::string& code) {
   return nullptr;
 }
 
-TEST(AssemblyExamples, EveryExampleIsFreeOfClashesAndAssemblable) {
+TEST(AssemblyExamples, EveryExampleIsFreeOfClashesAssemblableAndRunsClear) {
   int examples = 0;
   for (const auto& entry :
        std::filesystem::directory_iterator(std::string(MECHANIST_SOURCE_DIR) + "/examples")) {
@@ -57,6 +58,15 @@ TEST(AssemblyExamples, EveryExampleIsFreeOfClashesAndAssemblable) {
         << file << ": every part is placed once";
     for (const ExpectationResult& r : CheckExpectations(a, an, &plan)) {
       EXPECT_TRUE(r.passed) << file << " " << r.pointer << ": " << r.what << ": " << r.detail;
+    }
+    // Running: nothing collides over the driver's amount.
+    if (!a.drivers().empty()) {
+      const OperationCheck run = CheckOperation(a, an, model, std::nullopt, std::nullopt);
+      EXPECT_TRUE(run.possible) << file << ": " << run.reason;
+      EXPECT_TRUE(run.clashes.empty()) << file << ": " << a.part(run.clashes[0].part_a).id
+                                       << " hits " << a.part(run.clashes[0].part_b).id;
+      EXPECT_TRUE(run.undecided.empty()) << file;
+      EXPECT_GT(run.pairs_swept, 0u) << file;
     }
   }
   EXPECT_EQ(examples, 5);
