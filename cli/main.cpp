@@ -143,7 +143,9 @@ int Sweep(const std::string& file, const std::string& driver, double amount,
   if (!json.empty()) {
     mechanist::WriteFileAtomically(json, mechanist::OperationJson(assembly, check), file);
   }
-  return check.clashes.empty() && check.undecided.empty() ? kExitOk : kExitFailures;
+  bool jam = false;
+  for (const auto& i : check.inferred) jam = jam || !i.carried;
+  return check.clashes.empty() && check.undecided.empty() && !jam ? kExitOk : kExitFailures;
 }
 
 int Check(const std::string& file) {

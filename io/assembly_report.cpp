@@ -131,6 +131,30 @@ void WriteOperationSummary(const Assembly& assembly, const OperationCheck& check
     out << "  clash: " << assembly.part(c.part_a).id << " and " << assembly.part(c.part_b).id
         << " meet at " << FormatNumber(c.at) << ", at " << Text(c.p_W) << "\n";
   }
+  for (const InferredCoupling& i : check.inferred) {
+    out << "  " << (i.carried ? "carried: " : "jam: ") << assembly.part(i.pusher).id << " meets "
+        << assembly.part(i.pushed).id << ", which nothing drives or holds, at "
+        << FormatNumber(i.at) << ", at " << Text(i.p_W)
+        << (i.carried ? ": it is pushed along from there (inferred coupling)"
+                      : ": it cannot give way, the drive jams there")
+        << "\n";
+  }
+  if (check.after) {
+    const DrivenMotion* after = check.driver ? &check.after->motion.driven[*check.driver]
+                                             : check.after->motion.ForExpectations();
+    if (after) {
+      out << "  then moving:";
+      for (std::size_t p = 0; p < after->parts.size(); ++p) {
+        const PartMotion& m = after->parts[p];
+        if (m.kind == MotionKind::kNone) continue;
+        out << " " << assembly.part(p).id << " ("
+            << (m.kind == MotionKind::kTranslation ? m.translation.ToString() + " along "
+                                                   : m.rotation.ToString() + " rev about ")
+            << Text(m.axis_W) << ")";
+      }
+      out << "\n";
+    }
+  }
   for (const OperationClash& c : check.undecided) {
     out << "  undecided: " << assembly.part(c.part_a).id << " and " << assembly.part(c.part_b).id
         << " stay within " << FormatNumber(c.distance) << " mm from " << FormatNumber(c.at) << "\n";
@@ -145,11 +169,19 @@ std::string OperationJson(const Assembly& assembly, const OperationCheck& check)
   report["possible"] = check.possible;
   report["reason"] = check.reason;
   report["pairs_swept"] = check.pairs_swept;
-  Json clashes = Json::array(), undecided = Json::array();
+  Json clashes = Json::array(), undecided = Json::array(), inferred = Json::array();
+  for (const InferredCoupling& i : check.inferred) {
+    inferred.push_back({{"pusher", assembly.part(i.pusher).id},
+                        {"pushed", assembly.part(i.pushed).id},
+                        {"at", Num(i.at)},
+                        {"location", Point(i.p_W)},
+                        {"carried", i.carried}});
+  }
   for (const OperationClash& c : check.clashes) clashes.push_back(ClashJson(assembly, c));
   for (const OperationClash& c : check.undecided) undecided.push_back(ClashJson(assembly, c));
   report["clashes"] = clashes;
   report["undecided"] = undecided;
+  report["inferred"] = inferred;
   return report.dump(2) + "\n";
 }
 

@@ -9,10 +9,13 @@
 
 namespace mechanist {
 
-Analysis Analyze(const Assembly& assembly) {
+Analysis Analyze(const Assembly& assembly) { return Analyze(assembly, {}); }
+
+Analysis Analyze(const Assembly& assembly, const std::vector<Pair>& extra) {
   Analysis analysis;
   Recognition recognition = RecognizePairs(assembly, InitialState(assembly));
   analysis.pairs = std::move(recognition.pairs);
+  analysis.pairs.insert(analysis.pairs.end(), extra.begin(), extra.end());
   analysis.subassemblies = PairGraph(assembly, analysis.pairs).Subassemblies();
   analysis.subassembly_of.assign(assembly.parts().size(), 0);
   for (std::size_t s = 0; s < analysis.subassemblies.size(); ++s) {

@@ -27,4 +27,8 @@ struct Analysis {
 /// the motion.
 Analysis Analyze(const Assembly& assembly);
 
+/// As Analyze, with `extra` pairs (couplings found otherwise, such as by the running
+/// mechanism's sweep) added to the recognised ones before subassemblies and motion.
+Analysis Analyze(const Assembly& assembly, const std::vector<Pair>& extra);
+
 }  // namespace mechanist

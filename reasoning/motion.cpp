@@ -472,11 +472,15 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
         model.parent_joint(j.body_a) && *model.parent_joint(j.body_a) == f.joint ? j.body_a
                                                                                  : j.body_b;
     const std::vector<std::size_t>& own = solver.PartsOf(child);
-    free.part = own.empty() ? 0 : own.front();
+    // Named by part ids, so that the file's order of parts changes nothing.
+    const auto by_id = [&](std::size_t x, std::size_t y) {
+      return assembly.part(x).id < assembly.part(y).id;
+    };
+    free.part = own.empty() ? 0 : *std::min_element(own.begin(), own.end(), by_id);
     for (std::size_t body : MovedBodies(model, children, n)) {
       for (std::size_t p : solver.PartsOf(body)) free.parts.push_back(p);
     }
-    std::sort(free.parts.begin(), free.parts.end());
+    std::sort(free.parts.begin(), free.parts.end(), by_id);
     if (has_pair[child]) {
       std::string message = assembly.part(free.part).id + " " + free.freedom;
       if (free.pair) message += " (" + std::string(ToString(pairs[*free.pair].type)) + " pair)";

@@ -11,6 +11,79 @@
 #include "kernel/motion_sweep.h"
 
 namespace mechanist {
+namespace {
+
+// Turns the earliest contact of each free subassembly (one that nothing drives or holds) into
+// an inferred coupling, carried or jammed, and re-analyses with the carried ones.
+void SettleFreeMotions(const Assembly& assembly, const Analysis& analysis,
+                       const DrivenMotion& motion, const AssemblyState& state,
+                       OperationCheck* check) {
+  const double tolerance = assembly.tolerance().length;
+  // The free motion of each part of a free subassembly.
+  std::vector<const FreeMotion*> free_of(assembly.parts().size(), nullptr);
+  for (const FreeMotion& f : analysis.motion.mobility.free_motions) {
+    for (const std::size_t q : f.parts) free_of[q] = &f;
+    free_of[f.part] = &f;
+  }
+  std::vector<bool> settled(analysis.subassemblies.size(), false);
+  std::sort(check->clashes.begin(), check->clashes.end(),
+            [](const OperationClash& x, const OperationClash& y) { return x.at < y.at; });
+  std::vector<OperationClash> clashes;
+  std::vector<Pair> couplings;
+  for (const OperationClash& c : check->clashes) {
+    const bool a_moves = !motion.parts[c.part_a].path.still();
+    const std::size_t pusher = a_moves ? c.part_a : c.part_b;
+    const std::size_t pushed = a_moves ? c.part_b : c.part_a;
+    const FreeMotion* free = free_of[pushed];
+    if (motion.parts[pusher].path.still() || !motion.parts[pushed].path.still() || !free) {
+      clashes.push_back(c);
+      continue;
+    }
+    const std::size_t group = analysis.subassembly_of[pushed];
+    if (settled[group]) continue;  // already carried or jammed at an earlier contact
+    settled[group] = true;
+    // The pusher's velocity at the contact point, by a finite step along its path.
+    const ScrewPath& path = motion.parts[pusher].path;
+    const double h = 1e-6;
+    const Eigen::Vector3d v = ((path.At(c.at + h) * path.At(c.at).inverse()) * c.p_W - c.p_W) / h;
+    InferredCoupling coupling{pusher, pushed, c.at, c.p_W, true};
+    if (free->pair && v.norm() > 0.0) {
+      const Pair& pair = analysis.pairs[*free->pair];
+      const AxisSegment axis = assembly.feature(pair.a).WorldAxis(state.X_WP[pair.a.part]);
+      const Eigen::Vector3d r = c.p_W - axis.origin;
+      const Eigen::Vector3d radial = r - r.dot(axis.direction) * axis.direction;
+      double along = 0.0;  // the push's component along the free motion
+      if (pair.type == PairType::kPrismatic) {
+        along = std::abs(v.normalized().dot(axis.direction));
+      } else if (radial.norm() > tolerance) {
+        along = std::abs(v.normalized().dot(axis.direction.cross(radial).normalized()));
+        if (pair.type == PairType::kCylindrical) {
+          along = std::max(along, std::abs(v.normalized().dot(axis.direction)));
+        }
+      } else if (pair.type == PairType::kCylindrical) {
+        along = std::abs(v.normalized().dot(axis.direction));
+      }
+      coupling.carried = along > 1e-6;
+    }
+    check->inferred.push_back(coupling);
+    // A part in a pair has features; the coupling names the first of each.
+    if (!coupling.carried || assembly.part(pusher).features.empty() ||
+        assembly.part(pushed).features.empty()) {
+      continue;
+    }
+    Pair p;
+    p.type = PairType::kFixed;
+    p.a = {pusher, 0};
+    p.b = {pushed, 0};
+    p.source = PairSource::kInferred;
+    p.dof = 0;
+    couplings.push_back(p);
+  }
+  check->clashes = std::move(clashes);
+  if (!couplings.empty()) check->after = Analyze(assembly, couplings);
+}
+
+}  // namespace
 
 OperationCheck CheckOperation(const Assembly& assembly, const Analysis& analysis,
                               const CollisionModel& model, std::optional<std::size_t> driver,
@@ -85,6 +158,7 @@ OperationCheck CheckOperation(const Assembly& assembly, const Analysis& analysis
     (r.status == MotionSweepResult::Status::kContact ? check.clashes : check.undecided)
         .push_back(clash);
   }
+  SettleFreeMotions(assembly, analysis, motion, state, &check);
   auto by_time = [&](const OperationClash& x, const OperationClash& y) {
     return std::tie(x.at, assembly.part(x.part_a).id, assembly.part(x.part_b).id) <
            std::tie(y.at, assembly.part(y.part_a).id, assembly.part(y.part_b).id);

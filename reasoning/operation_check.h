@@ -22,6 +22,18 @@ struct OperationClash {
   Eigen::Vector3d p_W = Eigen::Vector3d::Zero();  ///< where (world, mm, at that instant)
 };
 
+/// A contact of a moving part with a part that nothing drives or holds (a free motion): the
+/// sweep settles what the pairs leave open.
+struct InferredCoupling {
+  std::size_t pusher = 0;  ///< the moving part
+  std::size_t pushed = 0;  ///< the part of the free subassembly it meets
+  double at = 0.0;         ///< driver parameter at the contact
+  Eigen::Vector3d p_W = Eigen::Vector3d::Zero();
+  /// True: the free subassembly yields (the push has a component along its free motion) and
+  /// is carried along from there on. False: it cannot yield, a jam at `at`.
+  bool carried = true;
+};
+
 /// The swept check of a running mechanism.
 struct OperationCheck {
   std::optional<std::size_t> driver;  ///< nothing: all drivers together at their rates
@@ -31,6 +43,12 @@ struct OperationCheck {
   std::vector<OperationClash> clashes;    ///< by `at`, then part ids
   std::vector<OperationClash> undecided;  ///< step budget exhausted while barely clear
   std::size_t pairs_swept = 0;
+  /// Contacts with free subassemblies (the first for each), settled as couplings or jams.
+  std::vector<InferredCoupling> inferred;
+  /// The analysis with each carried coupling added as a `fixed` pair (source
+  /// inferred_from_interference): the motion once the pushed parts are carried along. Empty
+  /// when nothing was carried.
+  std::optional<Analysis> after;
 };
 
 /// Runs the mechanism from its file poses, each part moving as the motion analysis says (one

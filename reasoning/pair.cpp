@@ -6,11 +6,12 @@ namespace mechanist {
 
 namespace {
 
-constexpr EnumNames<PairSource, 4> kSources = {{
+constexpr EnumNames<PairSource, 5> kSources = {{
     {PairSource::kRecognised, "recognised"},
     {PairSource::kOverride, "override"},
     {PairSource::kClamp, "clamp"},
     {PairSource::kSetscrew, "setscrew"},
+    {PairSource::kInferred, "inferred_from_interference"},
 }};
 
 constexpr EnumNames<PairFastening, 6> kFastenings = {{

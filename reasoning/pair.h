@@ -16,6 +16,7 @@ enum class PairSource {
   kOverride,    ///< forced by the file's `overrides`
   kClamp,       ///< a tight fastener through a clearance hole clamps the hole's part
   kSetscrew,    ///< a tight setscrew's tip bears on a shaft
+  kInferred,    ///< the running mechanism's sweep found one part pushing the other along
 };
 
 /// How a pair is held, where that matters to the user.

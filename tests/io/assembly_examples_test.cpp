@@ -45,17 +45,13 @@ TEST(AssemblyExamples, EveryExampleIsFreeOfClashesAssemblableAndRunsClear) {
           << file << ": " << a.part(c.part_a).id << " and " << a.part(c.part_b).id;
     }
     const AssemblyPlan plan = PlanAssembly(a, an, model);
-    EXPECT_TRUE(plan.assemblable) << file;
-    EXPECT_TRUE(plan.unplaced.empty()) << file;
-    EXPECT_EQ(
-        plan.base.size() + plan.steps.size() +
-            [&] {
-              std::size_t carried = 0;
-              for (const auto& s : plan.steps) carried += s.carried.size();
-              return carried;
-            }(),
-        a.parts().size())
-        << file << ": every part is placed once";
+    if (plan.assemblable) {
+      EXPECT_TRUE(plan.unplaced.empty()) << file;
+      std::size_t placed = plan.base.size() + plan.steps.size();
+      for (const auto& s : plan.steps) placed += s.carried.size();
+      EXPECT_EQ(placed, a.parts().size()) << file << ": every part is placed once";
+    }
+    // Whether it can be assembled is each example's own expectation.
     for (const ExpectationResult& r : CheckExpectations(a, an, &plan)) {
       EXPECT_TRUE(r.passed) << file << " " << r.pointer << ": " << r.what << ": " << r.detail;
     }
@@ -69,7 +65,7 @@ TEST(AssemblyExamples, EveryExampleIsFreeOfClashesAssemblableAndRunsClear) {
       EXPECT_GT(run.pairs_swept, 0u) << file;
     }
   }
-  EXPECT_EQ(examples, 5);
+  EXPECT_EQ(examples, 6);
 }
 
 TEST(AssemblyExamples, BoltLargerThanThePlateHoleIsAClashAndBlocksItsStep) {

@@ -127,5 +127,56 @@ TEST(Motion, SweepFindsAPlanetHittingAPostInItsOrbit) {
   EXPECT_LE(first.at, expected + 0.02);
 }
 
+// The seeds' case: shaft d's lug meets block b, which (clamped to shaft a with nut c) nothing
+// drives: b is carried along, and a, b, c and d then turn together. The lug (radius 2, 25 from
+// the axis, starting at -90 degrees) reaches b's side (y = -5) when its centre is at y = -7.
+TEST(Motion, SweepCarriesAFreePartThatIsPushed) {
+  const std::string path =
+      std::string(MECHANIST_SOURCE_DIR) + "/examples/pushed_by_contact/assembly.json";
+  const Assembly a = ReadAssembly(path);
+  const Analysis an = Analyze(a);
+  EXPECT_EQ(an.motion.mobility.dof, 2) << "the driver's freedom and the free a, b, c";
+  const OperationCheck check = CheckOperation(a, an, CollisionModel(a), std::nullopt, std::nullopt);
+  EXPECT_TRUE(check.clashes.empty());
+  ASSERT_EQ(check.inferred.size(), 1u);
+  const InferredCoupling& push = check.inferred.front();
+  EXPECT_EQ(a.part(push.pusher).id, "lug");
+  EXPECT_EQ(a.part(push.pushed).id, "b");
+  EXPECT_TRUE(push.carried);
+  const double kPi = 3.14159265358979323846;
+  EXPECT_NEAR(push.at, (kPi / 2 - std::asin(7.0 / 25.0)) / (2 * kPi), 2e-3);
+  ASSERT_TRUE(check.after.has_value());
+  EXPECT_EQ(check.after->motion.mobility.dof, 1);
+  const DrivenMotion* after = check.after->motion.ForExpectations();
+  const auto shaft = a.FindFeature("a/shaft");
+  EXPECT_EQ(Exact(after->features[shaft->part][shaft->feature].rotation), "1");
+}
+
+// A ram driven down the axis of a shaft that turns freely in its bearing: the push has nothing
+// along the shaft's only freedom (a turn), so the drive jams at the contact, 8 mm down.
+TEST(Motion, SweepFindsAJamWhenThePushCannotBeYielded) {
+  const std::string text = R"({"mechanist": 1, "parts": [
+    {"id": "base", "ground": true,
+     "library": {"kind": "plate", "length": 60, "width": 60, "thickness": 5,
+                 "holes": [{"id": "bearing", "at": [0, 0], "diameter": 8.02}]}},
+    {"id": "guide", "ground": true,
+     "library": {"kind": "plate", "length": 60, "width": 60, "thickness": 5,
+                 "holes": [{"id": "bore", "at": [0, 0], "diameter": 10.02}]},
+     "pose": {"position": [0, 0, 35]}},
+    {"id": "shaft", "library": {"kind": "shaft", "diameter": 8, "length": 30, "retained": true},
+     "pose": {"position": [0, 0, -10]}},
+    {"id": "ram", "library": {"kind": "shaft", "diameter": 10, "length": 15},
+     "pose": {"position": [0, 0, 43], "rotation": {"axis": [1, 0, 0], "angle": 180}}}],
+    "drivers": [{"id": "press", "part": "ram", "feature": "shaft", "motion": "translation",
+                 "amount": 10}]})";
+  const Assembly a = ParseAssembly(text, "ram.json");
+  const Analysis an = Analyze(a);
+  const OperationCheck check = CheckOperation(a, an, CollisionModel(a), std::nullopt, std::nullopt);
+  ASSERT_EQ(check.inferred.size(), 1u);
+  EXPECT_FALSE(check.inferred.front().carried);
+  EXPECT_NEAR(check.inferred.front().at, 8.0, 0.06);
+  EXPECT_FALSE(check.after.has_value());
+}
+
 }  // namespace
 }  // namespace mechanist
