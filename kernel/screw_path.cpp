@@ -21,13 +21,15 @@ RigidTransform ScrewPath::At(double s) const {
 }
 
 double ScrewPath::SpeedBound(const Eigen::Vector3d& center_W, double radius, double s_max) const {
-  // Inner screws first: reach[j] bounds how far the sphere's centre can be moved by screws
-  // j+1 .. k (in the frame where screw j's axis is at its s = 0 place).
+  // Inner screws first: moved[j] bounds how far any point of the sphere can be moved by
+  // screws j .. k-1 (in the frame where screw j-1's axis is at its s = 0 place): a turn moves
+  // a point at most twice its distance from the axis, which the screws inside it can have
+  // grown by what they moved it.
   const std::size_t k = screws.size();
   std::vector<double> moved(k + 1, 0.0);
   for (std::size_t j = k; j-- > 0;) {
     const ScrewMotion& m = screws[j];
-    const double r = DistanceToAxis(center_W, m) + moved[j + 1];
+    const double r = DistanceToAxis(center_W, m) + radius + moved[j + 1];
     moved[j] = moved[j + 1] + (m.turns_per_unit != 0.0 ? 2.0 * r : 0.0) +
                std::abs(m.travel_per_unit) * s_max;
   }
