@@ -131,6 +131,13 @@ void WriteOperationSummary(const Assembly& assembly, const OperationCheck& check
     out << "  clash: " << assembly.part(c.part_a).id << " and " << assembly.part(c.part_b).id
         << " meet at " << FormatNumber(c.at) << ", at " << Text(c.p_W) << "\n";
   }
+  if (!check.touching_at_rest.empty()) {
+    out << "  not swept, touching at rest:";
+    for (const auto& [a, b] : check.touching_at_rest) {
+      out << " " << assembly.part(a).id << "+" << assembly.part(b).id;
+    }
+    out << "\n";
+  }
   for (const InferredCoupling& i : check.inferred) {
     out << "  " << (i.carried ? "carried: " : "jam: ") << assembly.part(i.pusher).id << " meets "
         << assembly.part(i.pushed).id << ", which nothing drives or holds, at "
@@ -182,6 +189,11 @@ std::string OperationJson(const Assembly& assembly, const OperationCheck& check)
   report["clashes"] = clashes;
   report["undecided"] = undecided;
   report["inferred"] = inferred;
+  Json touching = Json::array();
+  for (const auto& [a, b] : check.touching_at_rest) {
+    touching.push_back(Json::array({assembly.part(a).id, assembly.part(b).id}));
+  }
+  report["touching_at_rest"] = touching;
   return report.dump(2) + "\n";
 }
 

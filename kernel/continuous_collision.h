@@ -9,14 +9,15 @@ namespace mechanist {
 enum class CcdAnswer {
   kApart,    ///< proven: the primitives never touch for t in [0, 1]
   kContact,  ///< proven: they touch at some t in [0, 1]
-  kMaybe     ///< not decided within the time resolution: reported as contact (conservative)
+  kMaybe     ///< not decided within the time resolution: callers treat it as a contact
 };
 
 /// Options of the continuous collision queries.
 struct CcdOptions {
   /// Bisection depth in time: an interval of 2^-max_depth that neither test decides is
   /// reported as kMaybe. 40 resolves the time to about 1e-12; a single isolated root is
-  /// followed 20 times deeper.
+  /// followed twice as deep, and 20 times as deep once repeated roots and conditions that
+  /// vanish at a root have been ruled out.
   int max_depth = 40;
 };
 

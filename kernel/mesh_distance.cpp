@@ -47,7 +47,7 @@ double SegmentSegmentSquared(const Eigen::Vector3d& p1, const Eigen::Vector3d& q
 
 // Squared distance between two triangles: 0 when they share a point (exact test), else the
 // closest pair is a vertex and a face or two edges. `mid` receives the midpoint of the closest
-// points (for crossing triangles, the centroid of the first one's corners nearest the other).
+// such pair (for crossing triangles too: a point near the crossing).
 double TriangleTriangleSquared(const std::array<Eigen::Vector3d, 3>& x,
                                const std::array<Eigen::Vector3d, 3>& y, Eigen::Vector3d* mid) {
   double best = std::numeric_limits<double>::infinity();

@@ -28,11 +28,12 @@ MotionSweepResult SweepMotion(const CollisionMesh& a, const RigidTransform& X_WA
   if (!(tolerance > 0.0) || !(s_max >= 0.0) || !std::isfinite(s_max)) {
     throw std::invalid_argument("SweepMotion: need tolerance > 0 and a finite s_max >= 0");
   }
+  MotionSweepResult result;
+  if (a.mesh().faces.empty() || b.mesh().faces.empty()) return result;
   const auto [center_a, radius_a] = Sphere(a, X_WA);
   const auto [center_b, radius_b] = Sphere(b, X_WB);
   const double speed = motion_a.SpeedBound(center_a, radius_a, s_max) +
                        motion_b.SpeedBound(center_b, radius_b, s_max);
-  MotionSweepResult result;
   double s = 0.0;
   for (;;) {
     const double d = SurfaceDistance(

@@ -27,9 +27,12 @@ struct MotionSweepResult {
 /// [0, s_max], by conservative advancement (Mirtich 1996): at each step the surface distance d
 /// (SurfaceDistance) is computed and s advances by (d - tolerance / 2) / v, where v bounds how
 /// fast any point of either part moves (ScrewPath::SpeedBound over the part's bounding
-/// sphere). No point can close more than d - tolerance / 2 in that step, so a contact is never
-/// missed; the steps shrink where the parts are close and grow where they are far apart (and
-/// with the arc's deviation from its chord, through v). Contact: distance at most `tolerance`.
+/// sphere). No point can close more than d - tolerance / 2 in that step, so the parts never
+/// touch unseen: the distance stays above tolerance / 2 between the steps, and a contact is
+/// reported at the first step where the distance is at most `tolerance` (before any touch; a
+/// brief approach to between tolerance / 2 and tolerance inside a step may pass unreported).
+/// The steps shrink where the parts are close and grow where they are far apart (and with
+/// the arc's deviation from its chord, through v). A mesh without faces meets nothing.
 MotionSweepResult SweepMotion(const CollisionMesh& a, const RigidTransform& X_WA,
                               const ScrewPath& motion_a, const CollisionMesh& b,
                               const RigidTransform& X_WB, const ScrewPath& motion_b, double s_max,

@@ -16,7 +16,7 @@ namespace {
 // Turns the earliest contact of each free subassembly (one that nothing drives or holds) into
 // an inferred coupling, carried or jammed, and re-analyses with the carried ones.
 void SettleFreeMotions(const Assembly& assembly, const Analysis& analysis,
-                       const DrivenMotion& motion, const AssemblyState& state,
+                       const AssemblyState& state, const std::vector<ScrewPath>& paths,
                        OperationCheck* check) {
   const double tolerance = assembly.tolerance().length;
   // The free motion of each part of a free subassembly.
@@ -26,16 +26,14 @@ void SettleFreeMotions(const Assembly& assembly, const Analysis& analysis,
     free_of[f.part] = &f;
   }
   std::vector<bool> settled(analysis.subassemblies.size(), false);
-  std::sort(check->clashes.begin(), check->clashes.end(),
-            [](const OperationClash& x, const OperationClash& y) { return x.at < y.at; });
-  std::vector<OperationClash> clashes;
+  std::vector<OperationClash> clashes;  // the clashes come in time order, ties by part ids
   std::vector<Pair> couplings;
   for (const OperationClash& c : check->clashes) {
-    const bool a_moves = !motion.parts[c.part_a].path.still();
+    const bool a_moves = !paths[c.part_a].still();
     const std::size_t pusher = a_moves ? c.part_a : c.part_b;
     const std::size_t pushed = a_moves ? c.part_b : c.part_a;
     const FreeMotion* free = free_of[pushed];
-    if (motion.parts[pusher].path.still() || !motion.parts[pushed].path.still() || !free) {
+    if (paths[pusher].still() || !paths[pushed].still() || !free) {
       clashes.push_back(c);
       continue;
     }
@@ -43,7 +41,7 @@ void SettleFreeMotions(const Assembly& assembly, const Analysis& analysis,
     if (settled[group]) continue;  // already carried or jammed at an earlier contact
     settled[group] = true;
     // The pusher's velocity at the contact point, by a finite step along its path.
-    const ScrewPath& path = motion.parts[pusher].path;
+    const ScrewPath& path = paths[pusher];
     const double h = 1e-6;
     const Eigen::Vector3d v = ((path.At(c.at + h) * path.At(c.at).inverse()) * c.p_W - c.p_W) / h;
     InferredCoupling coupling{pusher, pushed, c.at, c.p_W, true};
@@ -109,7 +107,11 @@ OperationCheck CheckOperation(const Assembly& assembly, const Analysis& analysis
   if (amount) {
     check.amount = *amount;
   } else if (driver) {
-    check.amount = drivers[*driver].amount;
+    // Amounts are kept in mm; the driver's parameter counts the file's length units.
+    const Driver& d = drivers[*driver];
+    check.amount = d.motion == Driver::Motion::kTranslation
+                       ? d.amount / assembly.units().mm_per_length
+                       : d.amount;
   } else {
     check.amount = std::numeric_limits<double>::infinity();
     for (const Driver& d : drivers) {
@@ -126,14 +128,21 @@ OperationCheck CheckOperation(const Assembly& assembly, const Analysis& analysis
   const AssemblyState state = InitialState(assembly);
   const std::size_t n = assembly.parts().size();
   const double tolerance = assembly.tolerance().length;
-  std::vector<const ScrewPath*> path(n);
+  // A driver runs the way its rate says: the unit-rate motion reversed for a negative rate.
+  const double sense = driver && drivers[*driver].rate < 0 ? -1.0 : 1.0;
+  std::vector<ScrewPath> path(n);
   std::vector<Aabb> reach(n);
   for (std::size_t p = 0; p < n; ++p) {
-    path[p] = &motion.parts[p].path;
+    path[p] = motion.parts[p].path;
+    for (ScrewMotion& m : path[p].screws) {
+      m.turns_per_unit *= sense;
+      m.travel_per_unit *= sense;
+    }
+    if (model.part_mesh(p).mesh().faces.empty()) continue;  // nothing to meet: an empty box
     // Everywhere the part can be over the run: its box grown by the farthest any point goes.
     Aabb box = TransformBox(state.X_WP[p], model.part_mesh(p).bounds());
     const double travel =
-        path[p]->SpeedBound(box.center(), 0.5 * box.size().norm(), check.amount) * check.amount;
+        path[p].SpeedBound(box.center(), 0.5 * box.size().norm(), check.amount) * check.amount;
     box.min.array() -= travel;
     box.max.array() += travel;
     reach[p] = box;
@@ -143,14 +152,19 @@ OperationCheck CheckOperation(const Assembly& assembly, const Analysis& analysis
     paired.insert(std::minmax(pair.a.part, pair.b.part));
   }
   for (const auto& [i, j] : OverlappingBoxes(reach, tolerance)) {
-    if (path[i]->still() && path[j]->still()) continue;
+    if (path[i].still() && path[j].still()) continue;
     if (analysis.subassembly_of[i] == analysis.subassembly_of[j]) continue;
     if (paired.count({i, j})) continue;
     const CollisionMesh& a = model.part_mesh(i);
     const CollisionMesh& b = model.part_mesh(j);
-    if (SurfaceDistance(a, state.X_WP[i], b, state.X_WP[j], 2 * tolerance) <= tolerance) continue;
+    if (SurfaceDistance(a, state.X_WP[i], b, state.X_WP[j], 2 * tolerance) <= tolerance) {
+      // Touching at rest: the sweep cannot tell parting from pressing on, so say so.
+      const bool ordered = assembly.part(i).id < assembly.part(j).id;
+      check.touching_at_rest.emplace_back(ordered ? i : j, ordered ? j : i);
+      continue;
+    }
     ++check.pairs_swept;
-    const MotionSweepResult r = SweepMotion(a, state.X_WP[i], *path[i], b, state.X_WP[j], *path[j],
+    const MotionSweepResult r = SweepMotion(a, state.X_WP[i], path[i], b, state.X_WP[j], path[j],
                                             check.amount, tolerance);
     if (r.status == MotionSweepResult::Status::kClear) continue;
     const bool ordered = assembly.part(i).id < assembly.part(j).id;
@@ -158,11 +172,17 @@ OperationCheck CheckOperation(const Assembly& assembly, const Analysis& analysis
     (r.status == MotionSweepResult::Status::kContact ? check.clashes : check.undecided)
         .push_back(clash);
   }
-  SettleFreeMotions(assembly, analysis, motion, state, &check);
   auto by_time = [&](const OperationClash& x, const OperationClash& y) {
     return std::tie(x.at, assembly.part(x.part_a).id, assembly.part(x.part_b).id) <
            std::tie(y.at, assembly.part(y.part_a).id, assembly.part(y.part_b).id);
   };
+  std::sort(check.clashes.begin(), check.clashes.end(), by_time);
+  SettleFreeMotions(assembly, analysis, state, path, &check);
+  std::sort(check.touching_at_rest.begin(), check.touching_at_rest.end(),
+            [&](const auto& x, const auto& y) {
+              return std::tie(assembly.part(x.first).id, assembly.part(x.second).id) <
+                     std::tie(assembly.part(y.first).id, assembly.part(y.second).id);
+            });
   std::sort(check.clashes.begin(), check.clashes.end(), by_time);
   std::sort(check.undecided.begin(), check.undecided.end(), by_time);
   return check;

@@ -43,6 +43,9 @@ struct OperationCheck {
   std::vector<OperationClash> clashes;    ///< by `at`, then part ids
   std::vector<OperationClash> undecided;  ///< step budget exhausted while barely clear
   std::size_t pairs_swept = 0;
+  /// Pairs of parts that move relative to each other but touch at rest (not recognised as a
+  /// pair): not swept, since distance alone cannot tell them parting from pressing on.
+  std::vector<std::pair<std::size_t, std::size_t>> touching_at_rest;
   /// Contacts with free subassemblies (the first for each), settled as couplings or jams.
   std::vector<InferredCoupling> inferred;
   /// The analysis with each carried coupling added as a `fixed` pair (source
@@ -52,8 +55,8 @@ struct OperationCheck {
 };
 
 /// Runs the mechanism from its file poses, each part moving as the motion analysis says (one
-/// driver at unit rate, or all drivers at their rates; with a single driver and none named,
-/// that driver), over `amount` (default: the driver's
+/// driver at unit rate in the sense of its rate, or all drivers at their rates; with a single
+/// driver and none named, that driver), over `amount` (default: the driver's
 /// `amount`; for all drivers the shortest time in which one of them completes its amount) and
 /// sweeps every pair of parts that move relative to each other (SweepMotion, contact within
 /// the file's length tolerance) along the parts' paths (PartMotion::path: the joint screws

@@ -237,6 +237,16 @@ TEST(Cli, SweepFindsAnArmHittingAPostWhileTurning) {
   // Stopping short of the post: no clash.
   const CommandResult short_run = Mechanist("sweep " + file.string() + " --amount 0.2");
   EXPECT_EQ(short_run.exit_code, 0) << short_run.out;
+  // Driven the other way the arm needs more than half a turn to come round to the post.
+  std::ifstream in(file);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text.replace(text.find(R"("amount": 0.5)"), 13, R"("amount": 0.5, "rate": -1)");
+  std::ofstream(file) << text;
+  const CommandResult reversed = Mechanist("sweep " + file.string());
+  EXPECT_EQ(reversed.exit_code, 0) << reversed.out;
+  EXPECT_NE(reversed.out.find("0 clashes"), std::string::npos) << reversed.out;
+  const CommandResult round = Mechanist("sweep " + file.string() + " --amount 0.8");
+  EXPECT_NE(round.out.find("clash: arm and post meet at 0.7"), std::string::npos) << round.out;
   std::filesystem::remove_all(dir);
 }
 

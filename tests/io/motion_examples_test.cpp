@@ -176,6 +176,31 @@ TEST(Motion, SweepFindsAJamWhenThePushCannotBeYielded) {
   EXPECT_FALSE(check.inferred.front().carried);
   EXPECT_NEAR(check.inferred.front().at, 8.0, 0.06);
   EXPECT_FALSE(check.after.has_value());
+  EXPECT_EQ(check.amount, 10.0);
+  // The same in centimetres: the driver's amount and the contact in the file's units.
+  std::string cm = text;
+  cm.replace(cm.find(R"({"mechanist": 1,)"), 16, R"({"mechanist": 1, "units": {"length": "cm"},)");
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {R"("length": 60, "width": 60, "thickness": 5)",
+            R"("length": 6, "width": 6, "thickness": 0.5)"},
+           {R"("diameter": 8.02)", R"("diameter": 0.802)"},
+           {R"("diameter": 10.02)", R"("diameter": 1.002)"},
+           {R"([0, 0, 35])", R"([0, 0, 3.5])"},
+           {R"("diameter": 8, "length": 30)", R"("diameter": 0.8, "length": 3)"},
+           {R"([0, 0, -10])", R"([0, 0, -1])"},
+           {R"("diameter": 10, "length": 15)", R"("diameter": 1, "length": 1.5)"},
+           {R"([0, 0, 43])", R"([0, 0, 4.3])"},
+           {R"("amount": 10)", R"("amount": 1)"}}) {
+    for (auto at = cm.find(from); at != std::string::npos; at = cm.find(from, at + to.size())) {
+      cm.replace(at, from.size(), to);
+    }
+  }
+  const Assembly b = ParseAssembly(cm, "ram_cm.json");
+  const OperationCheck in_cm =
+      CheckOperation(b, Analyze(b), CollisionModel(b), std::nullopt, std::nullopt);
+  EXPECT_DOUBLE_EQ(in_cm.amount, 1.0);
+  ASSERT_EQ(in_cm.inferred.size(), 1u);
+  EXPECT_NEAR(in_cm.inferred.front().at, 0.8, 0.006);
 }
 
 }  // namespace
