@@ -164,8 +164,8 @@ OperationCheck CheckOperation(const Assembly& assembly, const Analysis& analysis
       continue;
     }
     ++check.pairs_swept;
-    const MotionSweepResult r = SweepMotion(a, state.X_WP[i], path[i], b, state.X_WP[j], path[j],
-                                            check.amount, tolerance);
+    const MotionSweepResult r =
+        SweepMotion(a, state.X_WP[i], path[i], b, state.X_WP[j], path[j], check.amount, tolerance);
     if (r.status == MotionSweepResult::Status::kClear) continue;
     const bool ordered = assembly.part(i).id < assembly.part(j).id;
     const OperationClash clash{ordered ? i : j, ordered ? j : i, r.s, r.distance, r.p_W};
