@@ -1,5 +1,6 @@
 #include "kernel/screw_path.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace mechanist {
@@ -21,17 +22,17 @@ RigidTransform ScrewPath::At(double s) const {
 }
 
 double ScrewPath::SpeedBound(const Eigen::Vector3d& center_W, double radius, double s_max) const {
-  // Inner screws first: moved[j] bounds how far any point of the sphere can be moved by
-  // screws j .. k-1 (in the frame where screw j-1's axis is at its s = 0 place): a turn moves
-  // a point at most twice its distance from the axis, which the screws inside it can have
-  // grown by what they moved it.
+  // Inner screws first: moved[j] bounds how far screws j .. k-1 can carry the sphere's centre.
+  // The body is rigid, so every point stays within `radius` of the carried centre: distances
+  // to an axis are at most the centre's plus `radius`.
   const std::size_t k = screws.size();
   std::vector<double> moved(k + 1, 0.0);
   for (std::size_t j = k; j-- > 0;) {
     const ScrewMotion& m = screws[j];
-    const double r = DistanceToAxis(center_W, m) + radius + moved[j + 1];
-    moved[j] = moved[j + 1] + (m.turns_per_unit != 0.0 ? 2.0 * r : 0.0) +
-               std::abs(m.travel_per_unit) * s_max;
+    const double r = DistanceToAxis(center_W, m) + moved[j + 1];
+    // A turn by angle a moves a point at distance r along a chord of at most min(2, a) r.
+    const double angle = kTwoPi * std::abs(m.turns_per_unit) * s_max;
+    moved[j] = moved[j + 1] + std::min(2.0, angle) * r + std::abs(m.travel_per_unit) * s_max;
   }
   double speed = 0.0;
   for (std::size_t j = 0; j < k; ++j) {

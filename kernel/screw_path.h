@@ -28,8 +28,10 @@ struct ScrewPath {
   RigidTransform At(double s) const;
   /// An upper bound on the speed (mm per unit s) of any point of a body that lies, at s = 0,
   /// within the sphere (center_W, radius), for s in [0, s_max]: each screw contributes
-  /// 2 pi |turns| times the largest distance a point can have from its (carried) axis, which
-  /// the inner screws can grow by at most twice their own reach, plus |travel|.
+  /// 2 pi |turns| times the largest distance a point can have from its (carried) axis, plus
+  /// |travel|. The body is rigid, so that distance is at most the centre's, grown by how far
+  /// the inner screws can carry the centre (a turn by angle a moves a point r from its axis
+  /// along a chord of at most min(2, a) r), plus `radius`.
   double SpeedBound(const Eigen::Vector3d& center_W, double radius, double s_max) const;
 };
 
