@@ -1,7 +1,11 @@
 // The mechanist command line. Exit codes: 0 success, 1 the check or analysis found failures,
 // 2 bad input or usage, 3 internal error.
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
 #include <exception>
 #include <iostream>
 #include <optional>
@@ -11,6 +15,8 @@
 #include "io/assembly_reader.h"
 #include "io/assembly_report.h"
 #include "io/atomic_file.h"
+#include "io/gap_report.h"
+#include "io/gap_volume_writer.h"
 #include "io/info_report.h"
 #include "io/input_error.h"
 #include "kernel/assembly_check.h"
@@ -20,6 +26,7 @@
 #include "reasoning/assembly_plan.h"
 #include "reasoning/drag.h"
 #include "reasoning/expectation_check.h"
+#include "reasoning/gap_search.h"
 #include "reasoning/operation_check.h"
 
 namespace {
@@ -119,6 +126,34 @@ int Assemble(const std::string& file, const std::string& json) {
   return plan.assemblable ? kExitOk : kExitFailures;
 }
 
+int Gaps(const std::string& file, double voxel, const std::string& json, const std::string& vtk) {
+  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  if (!(voxel > 0) || !std::isfinite(voxel)) {
+    throw mechanist::InputError(file, "", 0, 0, "--voxel: expected a length > 0");
+  }
+  mechanist::GapSearchOptions options;
+  options.voxel = voxel * assembly.units().mm_per_length;
+  if (::isatty(STDERR_FILENO)) {
+    options.progress = [last = -1](double fraction) mutable {
+      const int percent = static_cast<int>(100 * fraction);
+      if (percent == last) return;
+      last = percent;
+      std::fprintf(stderr, "\rdecomposing: %3d%%%s", percent, percent == 100 ? "\n" : "");
+    };
+  }
+  mechanist::GapSearch search;
+  try {
+    search = mechanist::FindGaps(assembly, options);
+  } catch (const std::invalid_argument& e) {
+    throw mechanist::InputError(file, "", 0, 0, std::string("--voxel: ") + e.what());
+  }
+  mechanist::WriteGapSummary(assembly, search, std::cout);
+  if (!vtk.empty()) mechanist::WriteGapVolume(vtk, search, file);
+  if (!json.empty())
+    mechanist::WriteFileAtomically(json, mechanist::GapJson(assembly, search), file);
+  return kExitOk;
+}
+
 int Sweep(const std::string& file, const std::string& driver, double amount,
           const std::string& json) {
   const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
@@ -215,6 +250,15 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   sweep->add_option("--json", json, "write the JSON report to this file");
 
+  double voxel = 0;
+  std::string vtk;
+  CLI::App* gaps = app.add_subcommand(
+      "gaps", "Find the empty spaces enclosed between parts, with their volumes");
+  gaps->add_option("FILE", file, "assembly file (.json)")->required();
+  gaps->add_option("--voxel", voxel, "voxel edge, in the file's length units")->required();
+  gaps->add_option("--json", json, "write the JSON report to this file");
+  gaps->add_option("--vtk", vtk, "write the voxels as a VTK image (.vti) to this file");
+
   std::string part, feature;
   CLI::App* drag = app.add_subcommand(
       "drag", "Turn or push one part: what moves with it, and which pair absorbs the motion");
@@ -243,6 +287,7 @@ int main(int argc, char** argv) {
     if (*interference) return Interference(file, json);
     if (*assemble) return Assemble(file, json);
     if (*sweep) return Sweep(file, driver, amount, json);
+    if (*gaps) return Gaps(file, voxel, json, vtk);
     if (*drag) return Drag(file, part, feature, translate);
   } catch (const mechanist::InputError& e) {
     std::cerr << "mechanist: error: " << e.what() << "\n";

@@ -11,6 +11,17 @@ namespace mechanist {
 
 void WriteFileAtomically(const std::filesystem::path& path, std::string_view content,
                          const std::filesystem::path& protect) {
+  WriteFileAtomically(
+      path,
+      [content](std::ostream& out) {
+        out.write(content.data(), static_cast<std::streamsize>(content.size()));
+      },
+      protect);
+}
+
+void WriteFileAtomically(const std::filesystem::path& path,
+                         const std::function<void(std::ostream&)>& write,
+                         const std::filesystem::path& protect) {
   std::error_code ec;
   if (!protect.empty() && std::filesystem::exists(path, ec) &&
       std::filesystem::equivalent(path, protect, ec)) {
@@ -21,7 +32,13 @@ void WriteFileAtomically(const std::filesystem::path& path, std::string_view con
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out) throw InputError(path.string(), "", 0, 0, "cannot create the output file");
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    try {
+      write(out);
+    } catch (...) {
+      out.close();
+      std::filesystem::remove(temporary, ec);
+      throw;
+    }
     out.close();
     if (!out) {
       std::filesystem::remove(temporary, ec);

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -247,6 +248,67 @@ TEST(Cli, SweepFindsAnArmHittingAPostWhileTurning) {
   EXPECT_NE(reversed.out.find("0 clashes"), std::string::npos) << reversed.out;
   const CommandResult round = Mechanist("sweep " + file.string() + " --amount 0.8");
   EXPECT_NE(round.out.find("clash: arm and post meet at 0.7"), std::string::npos) << round.out;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, GapsReportsTheEnclosedCavityAndWritesItsVolume) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_cli_gaps";
+  std::filesystem::create_directories(dir);
+  const std::string json = (dir / "gaps.json").string(), vti = (dir / "gaps.vti").string();
+  const CommandResult closed = Mechanist("gaps " + Example("sealed_enclosure") +
+                                         " --voxel 2 --json " + json + " --vtk " + vti);
+  EXPECT_EQ(closed.exit_code, 0) << closed.out;
+  EXPECT_NE(closed.out.find("gaps: 1 enclosed gap at voxel 2 mm"), std::string::npos) << closed.out;
+  EXPECT_NE(closed.out.find("enclosed by floor, cover, wall_left, wall_right, wall_front, "
+                            "wall_back"),
+            std::string::npos)
+      << closed.out;
+  std::ifstream report_in(json);
+  const std::string report((std::istreambuf_iterator<char>(report_in)),
+                           std::istreambuf_iterator<char>());
+  const auto voxels_at = report.find("\"voxels\": ");
+  ASSERT_NE(voxels_at, std::string::npos) << report;
+  const long long voxels = std::stoll(report.substr(voxels_at + 10));
+
+  // The volume file: its gap cells are the reported gap's voxels.
+  std::ifstream vti_in(vti, std::ios::binary);
+  const std::string volume((std::istreambuf_iterator<char>(vti_in)),
+                           std::istreambuf_iterator<char>());
+  const std::string marker = "<AppendedData encoding=\"raw\">\n_";
+  const auto data = volume.find(marker);
+  ASSERT_NE(data, std::string::npos);
+  unsigned long long count = 0;
+  std::memcpy(&count, volume.data() + data + marker.size(), sizeof count);
+  ASSERT_GT(volume.size(), data + marker.size() + 8 + count);
+  long long gap_cells = 0;
+  for (unsigned long long i = 0; i < count; ++i) {
+    gap_cells += volume[data + marker.size() + 8 + i] == 1;
+  }
+  EXPECT_EQ(gap_cells, voxels);
+  EXPECT_NE(volume.find("Name=\"gap\""), std::string::npos);
+
+  // The same input gives the same report.
+  const CommandResult again = Mechanist("gaps " + Example("sealed_enclosure") +
+                                        " --voxel 2 --json " + (dir / "again.json").string());
+  std::ifstream again_in(dir / "again.json");
+  EXPECT_EQ(report, std::string((std::istreambuf_iterator<char>(again_in)),
+                                std::istreambuf_iterator<char>()));
+
+  // At 0.5 mm the drain hole opens the cavity.
+  const CommandResult open = Mechanist("gaps " + Example("sealed_enclosure") + " --voxel 0.5");
+  EXPECT_EQ(open.exit_code, 0) << open.out;
+  EXPECT_NE(open.out.find("gaps: 0 enclosed gaps"), std::string::npos) << open.out;
+
+  // Bad voxels and writing over the input.
+  const CommandResult negative = Mechanist("gaps " + Example("sealed_enclosure") + " --voxel -1");
+  EXPECT_EQ(negative.exit_code, 2) << negative.out;
+  EXPECT_NE(negative.out.find("--voxel"), std::string::npos) << negative.out;
+  const CommandResult tiny = Mechanist("gaps " + Example("sealed_enclosure") + " --voxel 1e-5");
+  EXPECT_EQ(tiny.exit_code, 2) << tiny.out;
+  EXPECT_NE(tiny.out.find("voxels along an axis"), std::string::npos) << tiny.out;
+  const CommandResult over = Mechanist("gaps " + Example("sealed_enclosure") +
+                                       " --voxel 2 --json " + Example("sealed_enclosure"));
+  EXPECT_EQ(over.exit_code, 2) << over.out;
   std::filesystem::remove_all(dir);
 }
 

@@ -65,7 +65,7 @@ TEST(AssemblyExamples, EveryExampleIsFreeOfClashesAssemblableAndRunsClear) {
       EXPECT_GT(run.pairs_swept, 0u) << file;
     }
   }
-  EXPECT_EQ(examples, 6);
+  EXPECT_EQ(examples, 7);
 }
 
 TEST(AssemblyExamples, BoltLargerThanThePlateHoleIsAClashAndBlocksItsStep) {

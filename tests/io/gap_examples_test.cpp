@@ -1,0 +1,31 @@
+// The gap-search example's conclusions: one enclosed cavity of the analytic volume at a
+// coarse voxel, none once the voxel resolves the drain hole.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "io/assembly_reader.h"
+#include "reasoning/gap_search.h"
+
+namespace mechanist {
+namespace {
+
+TEST(GapExamples, SealedEnclosureDrainsOnceTheVoxelResolvesItsHole) {
+  const Assembly assembly = ReadAssembly(std::filesystem::path(MECHANIST_SOURCE_DIR) /
+                                         "examples/sealed_enclosure/assembly.json");
+  GapSearchOptions options;
+  options.voxel = 2.0;
+  const GapSearch coarse = FindGaps(assembly, options);
+  ASSERT_EQ(coarse.gaps.size(), 1u);
+  const Gap& gap = coarse.gaps[0];
+  EXPECT_LE(std::abs(gap.volume - 114.0 * 54 * 30), gap.volume_error);
+  EXPECT_EQ(gap.parts.size(), 6u);
+  EXPECT_GE(gap.wall, 3.0);
+  EXPECT_LE(gap.wall, 3.0 + 2 * options.voxel);
+  options.voxel = 0.5;
+  EXPECT_TRUE(FindGaps(assembly, options).gaps.empty());
+}
+
+}  // namespace
+}  // namespace mechanist

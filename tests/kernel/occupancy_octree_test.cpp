@@ -1,0 +1,297 @@
+// Voxel decomposition: the triangle-box test against polygon clipping, winding numbers of
+// closed, inverted and open meshes, and the octree's cells against brute force over every
+// voxel and against exact inside tests.
+#include "kernel/occupancy_octree.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <random>
+#include <set>
+#include <tuple>
+
+#include "kernel/mesh_builder.h"
+#include "kernel/triangle_box_overlap.h"
+#include "kernel/winding_number.h"
+
+namespace mechanist {
+namespace {
+
+TriangleMesh BoxMesh(const Eigen::Vector3d& min, const Eigen::Vector3d& max) {
+  Region2d r;
+  r.outer = {{min.x(), min.y()}, {max.x(), min.y()}, {max.x(), max.y()}, {min.x(), max.y()}};
+  return ExtrudeRegion(r, min.z(), max.z());
+}
+
+TriangleMesh SphereMesh(double radius, int rings, int segments) {
+  TriangleMesh m;
+  const double pi = std::acos(-1.0);
+  m.vertices.emplace_back(0, 0, -radius);
+  for (int i = 1; i < rings; ++i) {
+    const double t = pi * i / rings - pi / 2;
+    for (int j = 0; j < segments; ++j) {
+      const double p = 2 * pi * j / segments;
+      m.vertices.emplace_back(radius * std::cos(t) * std::cos(p),
+                              radius * std::cos(t) * std::sin(p), radius * std::sin(t));
+    }
+  }
+  m.vertices.emplace_back(0, 0, radius);
+  const auto ring = [&](int i, int j) { return 1 + (i - 1) * segments + (j % segments); };
+  for (int j = 0; j < segments; ++j) m.faces.push_back({0, ring(1, j + 1), ring(1, j)});
+  for (int i = 1; i + 1 < rings; ++i) {
+    for (int j = 0; j < segments; ++j) {
+      m.faces.push_back({ring(i, j), ring(i, j + 1), ring(i + 1, j + 1)});
+      m.faces.push_back({ring(i, j), ring(i + 1, j + 1), ring(i + 1, j)});
+    }
+  }
+  const int top = static_cast<int>(m.vertices.size()) - 1;
+  for (int j = 0; j < segments; ++j)
+    m.faces.push_back({top, ring(rings - 1, j), ring(rings - 1, j + 1)});
+  return m;
+}
+
+// Sutherland-Hodgman clipping of the triangle by the box's six planes: the exact-arithmetic
+// answer up to rounding, which the property test below brackets by shrinking and growing
+// the box.
+bool ClippedNonEmpty(const std::vector<Eigen::Vector3d>& tri, const Eigen::Vector3d& lo,
+                     const Eigen::Vector3d& hi) {
+  std::vector<Eigen::Vector3d> poly = tri;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int side = 0; side < 2; ++side) {
+      std::vector<Eigen::Vector3d> out;
+      const auto inside = [&](const Eigen::Vector3d& p) {
+        return side == 0 ? p[axis] >= lo[axis] : p[axis] <= hi[axis];
+      };
+      const double plane = side == 0 ? lo[axis] : hi[axis];
+      for (std::size_t i = 0; i < poly.size(); ++i) {
+        const Eigen::Vector3d& p = poly[i];
+        const Eigen::Vector3d& q = poly[(i + 1) % poly.size()];
+        if (inside(p)) out.push_back(p);
+        if (inside(p) != inside(q)) {
+          const double t = (plane - p[axis]) / (q[axis] - p[axis]);
+          out.push_back(p + t * (q - p));
+        }
+      }
+      poly = std::move(out);
+      if (poly.empty()) return false;
+    }
+  }
+  return true;
+}
+
+TEST(TriangleOverlapsBox, AgreesWithClippingOutsideARoundingBand) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  int overlaps = 0, apart = 0;
+  for (int n = 0; n < 20000; ++n) {
+    const std::vector<Eigen::Vector3d> tri = {
+        {u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}};
+    const Eigen::Vector3d center(u(rng) / 2, u(rng) / 2, u(rng) / 2);
+    const Eigen::Vector3d half =
+        Eigen::Vector3d(std::abs(u(rng)), std::abs(u(rng)), std::abs(u(rng))) / 4 +
+        Eigen::Vector3d::Constant(0.01);
+    const bool got = TriangleOverlapsBox(tri[0], tri[1], tri[2], center, half);
+    const Eigen::Vector3d band = Eigen::Vector3d::Constant(1e-9);
+    if (ClippedNonEmpty(tri, center - half + band, center + half - band)) {
+      EXPECT_TRUE(got) << n;
+      ++overlaps;
+    }
+    if (!ClippedNonEmpty(tri, center - half - band, center + half + band)) {
+      EXPECT_FALSE(got) << n;
+      ++apart;
+    }
+  }
+  EXPECT_GT(overlaps, 2000);
+  EXPECT_GT(apart, 2000);
+}
+
+TEST(TriangleOverlapsBox, CountsTouchingAndDegenerateTriangles) {
+  const Eigen::Vector3d c(0, 0, 0), h(1, 1, 1);
+  // In the plane of a face, and a segment touching a corner.
+  EXPECT_TRUE(TriangleOverlapsBox({1, -3, -3}, {1, 3, -3}, {1, 0, 5}, c, h));
+  EXPECT_TRUE(TriangleOverlapsBox({1, 1, 1}, {2, 2, 2}, {3, 3, 3}, c, h));
+  EXPECT_FALSE(TriangleOverlapsBox({1.001, 1, 1}, {2, 2, 2}, {3, 3, 3}, c, h));
+  // Beyond the box's corner: only the triangle's normal separates.
+  EXPECT_FALSE(TriangleOverlapsBox({3.5, 0, 0}, {0, 3.5, 0}, {0, 0, 3.5}, c, h));
+  EXPECT_TRUE(TriangleOverlapsBox({2.9, 0, 0}, {0, 2.9, 0}, {0, 0, 2.9}, c, h));
+}
+
+TEST(WindingNumber, ClosedInvertedAndOpenMeshes) {
+  TriangleMesh box = BoxMesh({0, 0, 0}, {2, 3, 4});
+  EXPECT_NEAR(WindingNumber(box, {1, 1.5, 2}), 1.0, 1e-12);
+  EXPECT_NEAR(WindingNumber(box, {1, 1.5, 4.5}), 0.0, 1e-12);
+  EXPECT_NEAR(WindingNumber(box, {-7, 20, 2}), 0.0, 1e-12);
+  TriangleMesh inverted = box;
+  for (auto& f : inverted.faces) std::swap(f[1], f[2]);
+  EXPECT_NEAR(WindingNumber(inverted, {1, 1.5, 2}), -1.0, 1e-12);
+  // A cube without its top: the open face subtends a sixth of the sphere from the centre.
+  TriangleMesh cube = BoxMesh({-1, -1, -1}, {1, 1, 1});
+  TriangleMesh open = cube;
+  open.faces.clear();
+  for (const auto& f : cube.faces) {
+    const bool top = cube.vertices[f[0]].z() > 0.5 && cube.vertices[f[1]].z() > 0.5 &&
+                     cube.vertices[f[2]].z() > 0.5;
+    if (!top) open.faces.push_back(f);
+  }
+  ASSERT_EQ(open.faces.size() + 2, cube.faces.size());
+  EXPECT_NEAR(WindingNumber(open, {0, 0, 0}), 5.0 / 6.0, 1e-12);
+}
+
+// Every voxel of the grid: partial exactly when some triangle touches it, otherwise full
+// exactly when its centre is inside (winding number), and the leaves tile the root.
+void ExpectMatchesBruteForce(const OccupancyOctree& tree, const std::vector<PosedMesh>& meshes) {
+  std::int64_t tiled = 0;
+  tree.ForEachLeaf(
+      [&](const OccupancyOctree::Cell& c) { tiled += std::int64_t{c.size} * c.size * c.size; });
+  const std::int64_t n = tree.resolution();
+  EXPECT_EQ(tiled, n * n * n);
+  for (std::int32_t k = 0; k < tree.extent()[2]; ++k) {
+    for (std::int32_t j = 0; j < tree.extent()[1]; ++j) {
+      for (std::int32_t i = 0; i < tree.extent()[0]; ++i) {
+        const Eigen::Vector3d lo = tree.origin_W() + tree.voxel() * Eigen::Vector3d(i, j, k);
+        const Eigen::Vector3d half = Eigen::Vector3d::Constant(tree.voxel() / 2);
+        bool touched = false, inside = false;
+        for (const auto& pm : meshes) {
+          for (const auto& f : pm.mesh->faces) {
+            touched =
+                touched || TriangleOverlapsBox(pm.X_WM * pm.mesh->vertices[f[0]],
+                                               pm.X_WM * pm.mesh->vertices[f[1]],
+                                               pm.X_WM * pm.mesh->vertices[f[2]], lo + half, half);
+          }
+          inside =
+              inside || std::abs(WindingNumber(*pm.mesh, pm.X_WM.inverse() * (lo + half))) >= 0.5;
+        }
+        const CellState expected =
+            touched ? CellState::kPartial : (inside ? CellState::kFull : CellState::kEmpty);
+        ASSERT_EQ(tree.state(tree.Locate({i, j, k})), expected) << i << " " << j << " " << k;
+      }
+    }
+  }
+}
+
+TEST(OccupancyOctree, CellsMatchBruteForceForRotatedAndOverlappingParts) {
+  const TriangleMesh box = BoxMesh({-3, -2, -1}, {3, 2, 1});
+  const TriangleMesh sphere = SphereMesh(2.2, 8, 12);
+  const std::vector<PosedMesh> meshes = {
+      {&box, RigidTransform(
+                 Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix(),
+                 Eigen::Vector3d(0.3, 0.1, -0.2))},
+      {&sphere, RigidTransform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(2.5, 0, 1))}};
+  for (const double voxel : {0.7, 0.33}) {
+    const OccupancyOctree tree = OccupancyOctree::Build(meshes, voxel);
+    ExpectMatchesBruteForce(tree, meshes);
+  }
+}
+
+TEST(OccupancyOctree, VolumeOfABoxIsBracketedByFullAndPartialCells) {
+  const TriangleMesh box = BoxMesh({0, 0, 0}, {10, 7, 5});
+  const std::vector<PosedMesh> meshes = {
+      {&box, RigidTransform(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()).toRotationMatrix(),
+                            Eigen::Vector3d(1, 2, 3))}};
+  for (const double voxel : {1.0, 0.5, 0.25}) {
+    const OccupancyOctree tree = OccupancyOctree::Build(meshes, voxel);
+    double full = 0, partial = 0;
+    tree.ForEachLeaf([&](const OccupancyOctree::Cell& c) {
+      const double v = std::pow(c.size * voxel, 3);
+      if (tree.state(c) == CellState::kFull) full += v;
+      if (tree.state(c) == CellState::kPartial) partial += v;
+    });
+    EXPECT_LE(full, 350.0) << voxel;
+    EXPECT_GE(full + partial, 350.0) << voxel;
+    EXPECT_GT(full, 350.0 - partial) << voxel;
+  }
+}
+
+TEST(OccupancyOctree, FaceNeighboursAreExactlyTheLeavesSharingAFace) {
+  const TriangleMesh sphere = SphereMesh(3.0, 6, 8);
+  const std::vector<PosedMesh> meshes = {{&sphere, RigidTransform()}};
+  const OccupancyOctree tree = OccupancyOctree::Build(meshes, 0.9);
+  std::vector<OccupancyOctree::Cell> leaves;
+  tree.ForEachLeaf([&](const OccupancyOctree::Cell& c) { leaves.push_back(c); });
+  std::set<std::tuple<int, int, int>> expected, got;
+  for (const auto& a : leaves) {
+    for (const auto& b : leaves) {
+      for (int axis = 0; axis < 3; ++axis) {
+        if (a.min[axis] + a.size != b.min[axis]) continue;
+        bool overlap = true;
+        for (int o = 0; o < 3; ++o) {
+          if (o == axis) continue;
+          overlap = overlap && a.min[o] < b.min[o] + b.size && b.min[o] < a.min[o] + a.size;
+        }
+        if (overlap) expected.insert({a.node, b.node, axis});
+      }
+    }
+  }
+  tree.ForEachFaceNeighbours([&](const auto& a, const auto& b, int axis) {
+    EXPECT_TRUE(got.insert({a.node, b.node, axis}).second);
+  });
+  EXPECT_EQ(got, expected);
+  EXPECT_GT(got.size(), 100u);
+}
+
+TEST(OccupancyOctree, MemoryGrowsWithSurfaceNotVolume) {
+  const TriangleMesh sphere = SphereMesh(10.0, 24, 48);
+  const std::vector<PosedMesh> meshes = {{&sphere, RigidTransform()}};
+  const OccupancyOctree coarse = OccupancyOctree::Build(meshes, 0.4);
+  const OccupancyOctree fine = OccupancyOctree::Build(meshes, 0.1);
+  // Four times finer: sixteen times the surface cells, 64 times the volume cells.
+  const double ratio = static_cast<double>(fine.node_count()) / coarse.node_count();
+  EXPECT_GT(ratio, 10.0);
+  EXPECT_LT(ratio, 24.0);
+  EXPECT_LT(fine.MemoryBytes(), 4 * fine.node_count() + 4096);
+}
+
+TEST(OccupancyOctree, AMeshWithAnOpeningWiderThanAVoxelKeepsItsInside) {
+  // A 10 mm cube without its top face: the winding number is 5/6 at the centre.
+  const TriangleMesh cube = BoxMesh({-5, -5, -5}, {5, 5, 5});
+  TriangleMesh open = cube;
+  open.faces.clear();
+  for (const auto& f : cube.faces) {
+    if (cube.vertices[f[0]].z() + cube.vertices[f[1]].z() + cube.vertices[f[2]].z() < 15) {
+      open.faces.push_back(f);
+    }
+  }
+  const std::vector<PosedMesh> meshes = {{&open, RigidTransform()}};
+  const OccupancyOctree tree = OccupancyOctree::Build(meshes, 0.75);
+  int full = 0, empty = 0;
+  for (std::int32_t k = 0; k < tree.extent()[2]; ++k) {
+    for (std::int32_t j = 0; j < tree.extent()[1]; ++j) {
+      for (std::int32_t i = 0; i < tree.extent()[0]; ++i) {
+        const Eigen::Vector3d p = tree.origin_W() + tree.voxel() * (Eigen::Vector3d(i, j, k) +
+                                                                    Eigen::Vector3d::Constant(0.5));
+        if (p.z() > 2) continue;  // near the opening the inside is a matter of definition
+        const CellState s = tree.state(tree.Locate({i, j, k}));
+        const bool inside = (p.cwiseAbs().array() < 5).all();
+        if (s == CellState::kFull) {
+          EXPECT_TRUE(inside) << p.transpose();
+        }
+        if (s == CellState::kEmpty) {
+          EXPECT_FALSE(inside) << p.transpose();
+        }
+        full += s == CellState::kFull;
+        empty += s == CellState::kEmpty;
+      }
+    }
+  }
+  EXPECT_GT(full, 500);
+  EXPECT_GT(empty, 500);
+}
+
+TEST(OccupancyOctree, NoMeshesGiveOneEmptyExteriorCell) {
+  const OccupancyOctree tree = OccupancyOctree::Build({}, 1.0);
+  ASSERT_EQ(tree.components().size(), 1u);
+  EXPECT_TRUE(tree.components()[0].exterior);
+  EXPECT_EQ(tree.components()[0].state, CellState::kEmpty);
+}
+
+TEST(OccupancyOctree, RejectsBadVoxelSizes) {
+  const TriangleMesh box = BoxMesh({0, 0, 0}, {1, 1, 1});
+  const std::vector<PosedMesh> meshes = {{&box, RigidTransform()}};
+  EXPECT_THROW(OccupancyOctree::Build(meshes, 0.0), std::invalid_argument);
+  EXPECT_THROW(OccupancyOctree::Build(meshes, std::nan("")), std::invalid_argument);
+  EXPECT_THROW(OccupancyOctree::Build(meshes, 1e-7), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace mechanist

@@ -1,0 +1,210 @@
+// Gap search against analytic cavities: a sealed box of plates, two cavities of different
+// sizes, a leak that opens once the voxel is smaller than it, a plate exported with a missing
+// triangle, and a rotated copy of the box; the analytic volume must lie within the reported
+// error bound, and the bound must shrink with the voxel.
+#include "reasoning/gap_search.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "kernel/mesh_builder.h"
+
+namespace mechanist {
+namespace {
+
+std::shared_ptr<const TriangleMesh> BoxMesh(const Eigen::Vector3d& min,
+                                            const Eigen::Vector3d& max) {
+  Region2d r;
+  r.outer = {{min.x(), min.y()}, {max.x(), min.y()}, {max.x(), max.y()}, {min.x(), max.y()}};
+  return std::make_shared<TriangleMesh>(ExtrudeRegion(r, min.z(), max.z()));
+}
+
+Part Slab(const std::string& id, const Eigen::Vector3d& min, const Eigen::Vector3d& max,
+          const RigidTransform& X_WA = RigidTransform()) {
+  Part p;
+  p.id = id;
+  p.mesh = BoxMesh(min, max);
+  p.mesh_source = "test:box";
+  p.X_WP = X_WA;
+  return p;
+}
+
+// A closed box of six plates, thickness t, around the cavity [0, a] x [0, b] x [0, c]; with
+// `partition_x`, a seventh plate at that x splits the cavity in two.
+std::vector<Part> SealedBox(double a, double b, double c, double t,
+                            const RigidTransform& X_WA = RigidTransform(),
+                            double partition_x = -1) {
+  std::vector<Part> parts = {Slab("bottom", {-t, -t, -t}, {a + t, b + t, 0}, X_WA),
+                             Slab("top", {-t, -t, c}, {a + t, b + t, c + t}, X_WA),
+                             Slab("left", {-t, -t, 0}, {0, b + t, c}, X_WA),
+                             Slab("right", {a, -t, 0}, {a + t, b + t, c}, X_WA),
+                             Slab("front", {0, -t, 0}, {a, 0, c}, X_WA),
+                             Slab("back", {0, b, 0}, {a, b + t, c}, X_WA)};
+  if (partition_x > 0) {
+    parts.push_back(Slab("partition", {partition_x, 0, 0}, {partition_x + t, b, c}, X_WA));
+  }
+  return parts;
+}
+
+Assembly MakeAssembly(std::vector<Part> parts) {
+  AssemblySpec spec;
+  spec.name = "gaps";
+  spec.parts = std::move(parts);
+  return Assembly(std::move(spec));
+}
+
+GapSearch Search(const Assembly& assembly, double voxel) {
+  GapSearchOptions options;
+  options.voxel = voxel;
+  return FindGaps(assembly, options);
+}
+
+void ExpectBracketed(const Gap& gap, double truth, const std::string& what) {
+  EXPECT_LE(std::abs(gap.volume - truth), gap.volume_error) << what;
+  EXPECT_GT(gap.volume_error, 0.0) << what;
+}
+
+TEST(GapSearch, SealedBoxHasOneGapOfTheCavitysVolume) {
+  const Assembly assembly = MakeAssembly(SealedBox(40, 30, 20, 3));
+  double previous_error = 1e300;
+  for (const double voxel : {2.0, 1.0, 0.5}) {
+    const GapSearch search = Search(assembly, voxel);
+    ASSERT_EQ(search.gaps.size(), 1u) << voxel;
+    const Gap& gap = search.gaps[0];
+    ExpectBracketed(gap, 40 * 30 * 20, "voxel " + std::to_string(voxel));
+    EXPECT_LT(gap.volume_error, previous_error);
+    previous_error = gap.volume_error;
+    // Every plate bounds the cavity, and its box is the cavity's within a voxel.
+    EXPECT_EQ(gap.parts.size(), 6u);
+    EXPECT_LE(gap.box_W.min.cwiseAbs().maxCoeff(), voxel);
+    EXPECT_LE((gap.box_W.max - Eigen::Vector3d(40, 30, 20)).cwiseAbs().maxCoeff(), voxel);
+    // Every wall is 3 mm thick; the faces lie on either side, up to a voxel off.
+    EXPECT_GE(gap.wall, 3.0);
+    EXPECT_LE(gap.wall, 3.0 + 2 * voxel);
+    EXPECT_NEAR((gap.p_gap_W - gap.p_outside_W).norm(), gap.wall, 1e-5);
+  }
+}
+
+TEST(GapSearch, AOnePieceShellComesClosestToTheOutsideAtItsThinnestWall) {
+  // One closed mesh of two shells: the outer box and, wound inside out, the cavity.
+  auto shell = std::make_shared<TriangleMesh>(*BoxMesh({-4, -4, -4}, {22, 14, 9}));
+  TriangleMesh cavity = *BoxMesh({0, 0, 0}, {20, 10, 5});
+  for (auto& f : cavity.faces) std::swap(f[1], f[2]);
+  shell->Append(cavity);
+  Part part;
+  part.id = "shell";
+  part.mesh = shell;
+  part.mesh_source = "test:shell";
+  for (const double voxel : {1.0, 0.5}) {
+    const GapSearch search = Search(MakeAssembly({part}), voxel);
+    ASSERT_EQ(search.gaps.size(), 1u);
+    const Gap& gap = search.gaps[0];
+    ExpectBracketed(gap, 20 * 10 * 5, "shell");
+    EXPECT_EQ(gap.parts, std::vector<std::size_t>{0});
+    // The walls are 4 mm thick but the one at +x, 2 mm: the closest approach is there.
+    EXPECT_GE(gap.wall, 2.0);
+    EXPECT_LE(gap.wall, 2.0 + 2 * voxel);
+    EXPECT_NEAR(gap.p_gap_W.x(), 20, voxel);
+    EXPECT_NEAR(gap.p_outside_W.x(), 22, voxel);
+  }
+}
+
+TEST(GapSearch, VolumeDoesNotDependOnTheAssemblysPose) {
+  const RigidTransform X_WA(
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix(),
+      Eigen::Vector3d(13.1, -7.7, 2.9));
+  const GapSearch search = Search(MakeAssembly(SealedBox(25, 18, 12, 2.5, X_WA)), 0.6);
+  ASSERT_EQ(search.gaps.size(), 1u);
+  ExpectBracketed(search.gaps[0], 25 * 18 * 12, "rotated");
+  EXPECT_EQ(search.gaps[0].parts.size(), 6u);
+}
+
+TEST(GapSearch, TwoCavitiesComeLargestFirst) {
+  // Cavities [0, 30] and [33, 40] along x.
+  const GapSearch search =
+      Search(MakeAssembly(SealedBox(40, 30, 20, 3, RigidTransform(), 30)), 0.5);
+  ASSERT_EQ(search.gaps.size(), 2u);
+  ExpectBracketed(search.gaps[0], 30 * 30 * 20, "large");
+  ExpectBracketed(search.gaps[1], 7 * 30 * 20, "small");
+  EXPECT_LT(search.gaps[0].box_W.max.x(), 31);
+  EXPECT_GT(search.gaps[1].box_W.min.x(), 32);
+  // The partition bounds both; the right wall only the small one.
+  const auto has = [](const Gap& g, std::size_t part) {
+    return std::find(g.parts.begin(), g.parts.end(), part) != g.parts.end();
+  };
+  EXPECT_TRUE(has(search.gaps[0], 6) && has(search.gaps[1], 6));
+  EXPECT_FALSE(has(search.gaps[0], 3));
+  EXPECT_TRUE(has(search.gaps[1], 3));
+}
+
+TEST(GapSearch, ALeakOpensOnceTheVoxelIsSmallerThanIt) {
+  // The right wall in two pieces with a 1 mm x 1 mm channel through it at mid height.
+  std::vector<Part> parts = SealedBox(40, 30, 20, 3);
+  parts[3] = Slab("right_low", {40, -3, 0}, {43, 33, 10});
+  parts.push_back(Slab("right_high", {40, -3, 11}, {43, 33, 20}));
+  parts.push_back(Slab("right_mid_a", {40, -3, 10}, {43, 15, 11}));
+  parts.push_back(Slab("right_mid_b", {40, 16, 10}, {43, 33, 11}));
+  const Assembly assembly = MakeAssembly(parts);
+  const GapSearch coarse = Search(assembly, 2.0);
+  ASSERT_EQ(coarse.gaps.size(), 1u);
+  ExpectBracketed(coarse.gaps[0], 40 * 30 * 20 + 3, "leak closed");
+  EXPECT_TRUE(Search(assembly, 0.25).gaps.empty());
+}
+
+TEST(GapSearch, APlateExportedWithTJunctionsAndACrackStillSeals) {
+  // The top plate's face towards the cavity (z = 20) as a grid of 1 mm squares that do not
+  // share the side faces' edges (T-junctions), with one triangle missing: a mesh that is not
+  // closed, as CAD exports often are.
+  std::vector<Part> parts = SealedBox(40, 30, 20, 3);
+  auto top = std::make_shared<TriangleMesh>(*parts[1].mesh);
+  std::vector<TriangleMesh::Face> kept;
+  for (const auto& f : top->faces) {
+    if (top->vertices[f[0]].z() + top->vertices[f[1]].z() + top->vertices[f[2]].z() > 60) {
+      kept.push_back(f);
+    }
+  }
+  ASSERT_EQ(kept.size() + 2, top->faces.size());
+  top->faces = kept;
+  for (int i = -3; i < 43; ++i) {
+    for (int j = -3; j < 33; ++j) {
+      const auto v = static_cast<std::int32_t>(top->vertices.size());
+      top->vertices.insert(top->vertices.end(), {{double(i), double(j), 20},
+                                                 {i + 1.0, double(j), 20},
+                                                 {i + 1.0, j + 1.0, 20},
+                                                 {double(i), j + 1.0, 20}});
+      // Seen from below (outside the plate) counter-clockwise.
+      top->faces.push_back({v, v + 2, v + 1});
+      if (i != 20 || j != 15) top->faces.push_back({v, v + 3, v + 2});
+    }
+  }
+  parts[1].mesh = top;
+  const GapSearch search = Search(MakeAssembly(parts), 1.0);
+  ASSERT_EQ(search.gaps.size(), 1u);
+  ExpectBracketed(search.gaps[0], 40 * 30 * 20, "open top plate");
+}
+
+TEST(GapSearch, OpenAssemblyHasNoGapsAndResultsAreDeterministic) {
+  std::vector<Part> parts = SealedBox(40, 30, 20, 3);
+  parts.erase(parts.begin() + 1);  // no top
+  const Assembly assembly = MakeAssembly(parts);
+  EXPECT_TRUE(Search(assembly, 1.0).gaps.empty());
+  const Assembly sealed = MakeAssembly(SealedBox(10, 10, 10, 1));
+  const GapSearch a = Search(sealed, 0.7), b = Search(sealed, 0.7);
+  ASSERT_EQ(a.gaps.size(), 1u);
+  EXPECT_EQ(a.gaps[0].volume, b.gaps[0].volume);
+  EXPECT_EQ(a.gaps[0].p_gap_W, b.gaps[0].p_gap_W);
+}
+
+TEST(GapSearch, RejectsBadVoxels) {
+  const Assembly assembly = MakeAssembly(SealedBox(10, 10, 10, 1));
+  EXPECT_THROW(Search(assembly, -1.0), std::invalid_argument);
+  EXPECT_THROW(Search(assembly, 1e-6), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace mechanist
