@@ -347,20 +347,8 @@ Aabb OccupancyOctree::Box_W(const Cell& cell) const {
 }
 
 void OccupancyOctree::ForEachLeaf(const std::function<void(const Cell&)>& f) const {
-  std::vector<Cell> stack;
-  Cell root;
-  root.size = resolution();
-  stack.push_back(root);
-  while (!stack.empty()) {
-    const Cell c = stack.back();
-    stack.pop_back();
-    const std::uint32_t word = nodes_[c.node];
-    if (IsLeaf(word)) {
-      f(c);
-      continue;
-    }
-    for (int i = 7; i >= 0; --i) stack.push_back(Child(c, word, i));
-  }
+  const std::int32_t n = resolution();
+  ForEachLeafIn({0, 0, 0}, {n, n, n}, f);
 }
 
 void OccupancyOctree::CellProc(const Cell& c,

@@ -36,15 +36,16 @@ enum class CellState : std::uint8_t {
 /// [k, k+1), for 0 <= i, j, k < resolution(); the root cube leaves at least one voxel of empty
 /// space around the meshes, so every cell that touches the root's boundary is empty.
 ///
-/// Classification. Cells touched by a triangle are found by an exact-in-spirit separating axis
-/// test grown by a few ulps (TriangleOverlapsBox), so that a surface can never slip between
-/// cells. Untouched cells that share a face form connected components; no surface passes
-/// between two cells of one component, so a component is all full or all empty, and one point
-/// of it decides: full when the generalized winding number of some mesh there is at least 1/2
-/// in magnitude. For a closed mesh this is the exact inside test; for a mesh with cracks or
-/// missing faces (common in CAD exports) it still finds the inside as long as the openings
-/// are narrower than a voxel (the partial cells around an opening close it); through a wider
-/// opening the inside joins the outside and counts as outside.
+/// Classification. Cells touched by a triangle are found by a separating-axis test grown by a
+/// few ulps (TriangleOverlapsBox), so that a surface can never slip between cells. Untouched cells
+/// that share a face form connected components; no surface passes between two cells of one
+/// component, so a component is all full or all empty, and one point of it decides: full when the
+/// generalized winding number of some mesh there is at least 1/2 in magnitude. For a closed mesh
+/// this is the exact inside test. A mesh with cracks, T-junctions or missing faces (common in CAD
+/// exports; CheckMesh finds boundary or misoriented edges) may let its inside and outside join
+/// through an opening wider than a voxel, so inside its bounding box every untouched cell is
+/// decided by the winding number at its own centre (near 1 inside a part with a hole) and only
+/// cells of equal state are joined; components of equal state that touch are merged afterwards.
 class OccupancyOctree {
  public:
   /// A leaf cell: the voxel box [min, min + size) (size a power of two) and its node.
