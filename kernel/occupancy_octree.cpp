@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -195,11 +196,17 @@ class OctreeBuilder {
     auto& nodes = tree_.nodes_;
     mesh_box_W_.resize(meshes_.size());
     std::vector<Aabb> open_box_W;
+    std::map<const TriangleMesh*, bool> closed;  // parts often share one mesh
     for (std::size_t m = 0; m < meshes_.size(); ++m) {
-      if (meshes_[m].mesh == nullptr) continue;
-      mesh_box_W_[m] = TransformBox(meshes_[m].X_WM, meshes_[m].mesh->Bounds());
-      const MeshCheck check = CheckMesh(*meshes_[m].mesh);
-      if (!check.closed() || !check.consistently_oriented()) open_box_W.push_back(mesh_box_W_[m]);
+      const TriangleMesh* mesh = meshes_[m].mesh;
+      if (mesh == nullptr) continue;
+      mesh_box_W_[m] = TransformBox(meshes_[m].X_WM, mesh->Bounds());
+      auto [it, inserted] = closed.try_emplace(mesh, false);
+      if (inserted) {
+        const MeshCheck check = CheckMesh(*mesh);
+        it->second = check.closed() && check.consistently_oriented();
+      }
+      if (!it->second) open_box_W.push_back(mesh_box_W_[m]);
     }
     const auto untouched = [&](std::int32_t node) {
       return OccupancyOctree::IsLeaf(nodes[node]) &&
