@@ -17,10 +17,11 @@
 #include <cstdlib>
 #include <functional>
 #include <memory>
-#include <numbers>
+#include <utility>
 #include <vector>
 
 #include "kernel/assembly.h"
+#include "kernel/mesh_builder.h"
 #include "reasoning/gap_search.h"
 
 #ifdef MECHANIST_HAVE_OPENVDB
@@ -39,31 +40,11 @@ constexpr int kNx = 4, kNy = 4, kNz = 2;
 
 // A UV sphere, outward (or inward when `inward`), appended to `m`.
 void AppendSphere(TriangleMesh& m, double radius, bool inward) {
-  const auto base = static_cast<std::int32_t>(m.vertices.size());
-  const double pi = std::numbers::pi;
-  m.vertices.emplace_back(0, 0, -radius);
-  for (int i = 1; i < kRings; ++i) {
-    const double t = pi * i / kRings - pi / 2;
-    for (int j = 0; j < kSegments; ++j) {
-      const double p = 2 * pi * j / kSegments;
-      m.vertices.emplace_back(radius * std::cos(t) * std::cos(p),
-                              radius * std::cos(t) * std::sin(p), radius * std::sin(t));
-    }
+  TriangleMesh sphere = mechanist::MakeUvSphere(radius, kRings, kSegments);
+  if (inward) {
+    for (auto& f : sphere.faces) std::swap(f[1], f[2]);
   }
-  m.vertices.emplace_back(0, 0, radius);
-  const auto ring = [&](int i, int j) { return base + 1 + (i - 1) * kSegments + j % kSegments; };
-  const auto add = [&](std::int32_t a, std::int32_t b, std::int32_t c) {
-    m.faces.push_back(inward ? TriangleMesh::Face{a, c, b} : TriangleMesh::Face{a, b, c});
-  };
-  const std::int32_t top = static_cast<std::int32_t>(m.vertices.size()) - 1;
-  for (int j = 0; j < kSegments; ++j) add(base, ring(1, j + 1), ring(1, j));
-  for (int i = 1; i + 1 < kRings; ++i) {
-    for (int j = 0; j < kSegments; ++j) {
-      add(ring(i, j), ring(i, j + 1), ring(i + 1, j + 1));
-      add(ring(i, j), ring(i + 1, j + 1), ring(i + 1, j));
-    }
-  }
-  for (int j = 0; j < kSegments; ++j) add(top, ring(kRings - 1, j), ring(kRings - 1, j + 1));
+  m.Append(sphere);
 }
 
 // The exact volume of the inner polyhedron (the tessellated void), by the divergence theorem.

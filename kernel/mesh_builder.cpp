@@ -163,4 +163,35 @@ TriangleMesh MakeRadialGridSolid(const RadialGrid& grid) {
   return builder.Release();
 }
 
+TriangleMesh MakeUvSphere(double radius, int rings, int segments) {
+  if (rings < 2 || segments < 3) {
+    throw std::invalid_argument("a UV sphere needs at least 2 rings and 3 segments");
+  }
+  TriangleMesh m;
+  const double pi = std::numbers::pi;
+  m.vertices.emplace_back(0, 0, -radius);
+  for (int i = 1; i < rings; ++i) {
+    const double t = pi * i / rings - pi / 2;
+    for (int j = 0; j < segments; ++j) {
+      const double p = 2 * pi * j / segments;
+      m.vertices.emplace_back(radius * std::cos(t) * std::cos(p),
+                              radius * std::cos(t) * std::sin(p), radius * std::sin(t));
+    }
+  }
+  m.vertices.emplace_back(0, 0, radius);
+  const auto ring = [&](int i, int j) { return 1 + (i - 1) * segments + (j % segments); };
+  for (int j = 0; j < segments; ++j) m.faces.push_back({0, ring(1, j + 1), ring(1, j)});
+  for (int i = 1; i + 1 < rings; ++i) {
+    for (int j = 0; j < segments; ++j) {
+      m.faces.push_back({ring(i, j), ring(i, j + 1), ring(i + 1, j + 1)});
+      m.faces.push_back({ring(i, j), ring(i + 1, j + 1), ring(i + 1, j)});
+    }
+  }
+  const int top = static_cast<int>(m.vertices.size()) - 1;
+  for (int j = 0; j < segments; ++j) {
+    m.faces.push_back({top, ring(rings - 1, j), ring(rings - 1, j + 1)});
+  }
+  return m;
+}
+
 }  // namespace mechanist

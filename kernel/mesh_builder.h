@@ -89,4 +89,9 @@ struct RadialGrid {
 /// that cannot be triangulated (a bore reaching the outer surface).
 TriangleMesh MakeRadialGridSolid(const RadialGrid& grid);
 
+/// A closed, outward-oriented UV sphere of `radius` (mm) about the origin: two poles and
+/// `rings` - 1 rings of `segments` vertices, 2 * segments * (rings - 1) triangles. Throws
+/// std::invalid_argument for fewer than 2 rings or 3 segments.
+TriangleMesh MakeUvSphere(double radius, int rings, int segments);
+
 }  // namespace mechanist

@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "kernel/mesh_builder.h"
+#include "kernel/mesh_check.h"
 #include "kernel/triangle_box_overlap.h"
 #include "kernel/winding_number.h"
 
@@ -24,31 +25,12 @@ TriangleMesh BoxMesh(const Eigen::Vector3d& min, const Eigen::Vector3d& max) {
   return ExtrudeRegion(r, min.z(), max.z());
 }
 
-TriangleMesh SphereMesh(double radius, int rings, int segments) {
-  TriangleMesh m;
-  const double pi = std::acos(-1.0);
-  m.vertices.emplace_back(0, 0, -radius);
-  for (int i = 1; i < rings; ++i) {
-    const double t = pi * i / rings - pi / 2;
-    for (int j = 0; j < segments; ++j) {
-      const double p = 2 * pi * j / segments;
-      m.vertices.emplace_back(radius * std::cos(t) * std::cos(p),
-                              radius * std::cos(t) * std::sin(p), radius * std::sin(t));
-    }
-  }
-  m.vertices.emplace_back(0, 0, radius);
-  const auto ring = [&](int i, int j) { return 1 + (i - 1) * segments + (j % segments); };
-  for (int j = 0; j < segments; ++j) m.faces.push_back({0, ring(1, j + 1), ring(1, j)});
-  for (int i = 1; i + 1 < rings; ++i) {
-    for (int j = 0; j < segments; ++j) {
-      m.faces.push_back({ring(i, j), ring(i, j + 1), ring(i + 1, j + 1)});
-      m.faces.push_back({ring(i, j), ring(i + 1, j + 1), ring(i + 1, j)});
-    }
-  }
-  const int top = static_cast<int>(m.vertices.size()) - 1;
-  for (int j = 0; j < segments; ++j)
-    m.faces.push_back({top, ring(rings - 1, j), ring(rings - 1, j + 1)});
-  return m;
+TEST(MakeUvSphere, IsClosedOutwardAndNearTheSpheresVolume) {
+  const TriangleMesh sphere = MakeUvSphere(2.0, 32, 64);
+  EXPECT_TRUE(CheckMesh(sphere).ok());
+  EXPECT_NEAR(sphere.SignedVolume(), 4.0 / 3.0 * std::acos(-1.0) * 8.0, 0.02 * 33.5);
+  EXPECT_EQ(sphere.faces.size(), 2u * 64 * 31);
+  EXPECT_THROW(MakeUvSphere(1.0, 1, 8), std::invalid_argument);
 }
 
 // Sutherland-Hodgman clipping of the triangle by the box's six planes: the exact-arithmetic
@@ -172,7 +154,7 @@ void ExpectMatchesBruteForce(const OccupancyOctree& tree, const std::vector<Pose
 
 TEST(OccupancyOctree, CellsMatchBruteForceForRotatedAndOverlappingParts) {
   const TriangleMesh box = BoxMesh({-3, -2, -1}, {3, 2, 1});
-  const TriangleMesh sphere = SphereMesh(2.2, 8, 12);
+  const TriangleMesh sphere = MakeUvSphere(2.2, 8, 12);
   const std::vector<PosedMesh> meshes = {
       {&box, RigidTransform(
                  Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix(),
@@ -204,7 +186,7 @@ TEST(OccupancyOctree, VolumeOfABoxIsBracketedByFullAndPartialCells) {
 }
 
 TEST(OccupancyOctree, FaceNeighboursAreExactlyTheLeavesSharingAFace) {
-  const TriangleMesh sphere = SphereMesh(3.0, 6, 8);
+  const TriangleMesh sphere = MakeUvSphere(3.0, 6, 8);
   const std::vector<PosedMesh> meshes = {{&sphere, RigidTransform()}};
   const OccupancyOctree tree = OccupancyOctree::Build(meshes, 0.9);
   std::vector<OccupancyOctree::Cell> leaves;
@@ -231,7 +213,7 @@ TEST(OccupancyOctree, FaceNeighboursAreExactlyTheLeavesSharingAFace) {
 }
 
 TEST(OccupancyOctree, MemoryGrowsWithSurfaceNotVolume) {
-  const TriangleMesh sphere = SphereMesh(10.0, 24, 48);
+  const TriangleMesh sphere = MakeUvSphere(10.0, 24, 48);
   const std::vector<PosedMesh> meshes = {{&sphere, RigidTransform()}};
   const OccupancyOctree coarse = OccupancyOctree::Build(meshes, 0.4);
   const OccupancyOctree fine = OccupancyOctree::Build(meshes, 0.1);
