@@ -4,12 +4,19 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
+#include <functional>
+#include <iomanip>
 #include <iostream>
+#include <memory>
 #include <optional>
+#include <set>
 #include <string>
+#include <vector>
 
 #include "io/analysis_report.h"
 #include "io/assembly_reader.h"
@@ -17,17 +24,25 @@
 #include "io/atomic_file.h"
 #include "io/gap_report.h"
 #include "io/gap_volume_writer.h"
+#include "io/gltf_writer.h"
 #include "io/info_report.h"
 #include "io/input_error.h"
+#include "io/vtp_series_writer.h"
 #include "kernel/assembly_check.h"
 #include "kernel/assembly_state.h"
 #include "kernel/collision_model.h"
 #include "reasoning/analysis.h"
+#include "reasoning/animation.h"
 #include "reasoning/assembly_plan.h"
 #include "reasoning/drag.h"
 #include "reasoning/expectation_check.h"
 #include "reasoning/gap_search.h"
+#include "reasoning/motion_run.h"
 #include "reasoning/operation_check.h"
+#include "viz/display.h"
+#include "viz/motion_renderer.h"
+#include "viz/png_encoder.h"
+#include "viz/video_writer.h"
 
 namespace {
 
@@ -35,6 +50,28 @@ constexpr int kExitOk = 0;
 constexpr int kExitFailures = 1;
 constexpr int kExitUsage = 2;
 constexpr int kExitInternal = 3;
+
+// The driver named by --driver, or nothing for an empty name.
+std::optional<std::size_t> DriverIndex(const std::string& file, const mechanist::Assembly& assembly,
+                                       const std::string& driver) {
+  if (driver.empty()) return std::nullopt;
+  for (std::size_t d = 0; d < assembly.drivers().size(); ++d) {
+    if (assembly.drivers()[d].id == driver) return d;
+  }
+  throw mechanist::InputError(file, "", 0, 0,
+                              "--driver: expected a driver id, found \"" + driver + "\"");
+}
+
+// Reports a fraction done on stderr when it is a terminal.
+std::function<void(double)> Progress(const char* what) {
+  if (!::isatty(STDERR_FILENO)) return {};
+  return [what, last = -1](double fraction) mutable {
+    const int percent = static_cast<int>(100 * fraction);
+    if (percent == last) return;
+    last = percent;
+    std::fprintf(stderr, "\r%s: %3d%%%s", what, percent, percent == 100 ? "\n" : "");
+  };
+}
 
 int Validate(const std::string& file) {
   const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
@@ -133,14 +170,7 @@ int Gaps(const std::string& file, double voxel, const std::string& json, const s
   }
   mechanist::GapSearchOptions options;
   options.voxel = voxel * assembly.units().mm_per_length;
-  if (::isatty(STDERR_FILENO)) {
-    options.progress = [last = -1](double fraction) mutable {
-      const int percent = static_cast<int>(100 * fraction);
-      if (percent == last) return;
-      last = percent;
-      std::fprintf(stderr, "\rdecomposing: %3d%%%s", percent, percent == 100 ? "\n" : "");
-    };
-  }
+  options.progress = Progress("decomposing");
   mechanist::GapSearch search;
   try {
     search = mechanist::FindGaps(assembly, options);
@@ -157,19 +187,7 @@ int Gaps(const std::string& file, double voxel, const std::string& json, const s
 int Sweep(const std::string& file, const std::string& driver, double amount,
           const std::string& json) {
   const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
-  std::optional<std::size_t> index;
-  if (!driver.empty()) {
-    for (std::size_t d = 0; d < assembly.drivers().size(); ++d) {
-      if (assembly.drivers()[d].id == driver) index = d;
-    }
-    if (!index) {
-      throw mechanist::InputError(file, "", 0, 0,
-                                  "--driver: expected a driver id, found \"" + driver + "\"");
-    }
-  }
-  if (amount < 0 && amount != -1) {
-    throw mechanist::InputError(file, "", 0, 0, "--amount: expected a number >= 0");
-  }
+  const std::optional<std::size_t> index = DriverIndex(file, assembly, driver);
   const mechanist::Analysis analysis = mechanist::Analyze(assembly);
   const mechanist::CollisionModel model(assembly);
   const mechanist::OperationCheck check = mechanist::CheckOperation(
@@ -198,6 +216,160 @@ int Check(const std::string& file) {
   for (const auto& r : results) {
     if (!r.passed) return kExitFailures;
   }
+  return kExitOk;
+}
+
+struct AnimateRequest {
+  std::string out;
+  std::size_t frames = 120;
+  double amount = -1;
+  std::string size = "800x600";
+  std::vector<std::string> formats;
+  std::string view = "iso";
+  std::string driver;
+  double fps = 30;
+  double gaps = 0;  // voxel, file units; 0: no gaps
+  bool clashes = true;
+  bool axes = true;
+};
+
+int Animate(const std::string& file, const AnimateRequest& request) {
+  namespace fs = std::filesystem;
+  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  auto usage = [&](const std::string& message) {
+    return mechanist::InputError(file, "", 0, 0, message);
+  };
+  const std::set<std::string> known = {"png", "ogv", "mp4", "pvd", "glb"};
+  std::set<std::string> formats(request.formats.begin(), request.formats.end());
+  for (const std::string& f : formats) {
+    if (!known.count(f)) {
+      throw usage("--format: expected png, ogv, mp4, pvd or glb, found \"" + f + "\"");
+    }
+  }
+  if (formats.empty()) {
+    formats = {"png", "ogv", "pvd", "glb"};
+    if (mechanist::FfmpegAvailable()) formats.insert("mp4");
+  } else if (formats.count("mp4") && !mechanist::FfmpegAvailable()) {
+    throw usage("--format mp4: needs the ffmpeg program (Debian package ffmpeg), not found");
+  }
+  int width = 0, height = 0;
+  char tail = 0;
+  if (std::sscanf(request.size.c_str(), "%dx%d%c", &width, &height, &tail) != 2 || width < 16 ||
+      height < 16 || width > 8192 || height > 8192) {
+    throw usage("--size: expected WIDTHxHEIGHT, 16 to 8192 pixels each, found \"" + request.size +
+                "\"");
+  }
+  const auto view = mechanist::ParseView(request.view);
+  if (!view)
+    throw usage("--view: expected iso, front, top or side, found \"" + request.view + "\"");
+  if (request.frames < 1 || request.frames > 100000) {
+    throw usage("--frames: expected 1 to 100000");
+  }
+  if (!(request.fps > 0) || request.fps > 240) throw usage("--fps: expected a rate in (0, 240]");
+  if (request.gaps < 0 || !std::isfinite(request.gaps)) {
+    throw usage("--gaps: expected a voxel length > 0");
+  }
+  const std::optional<std::size_t> driver = DriverIndex(file, assembly, request.driver);
+  if (request.amount < 0 && request.amount != -1) throw usage("--amount: expected a number >= 0");
+  const bool render = formats.count("png") || formats.count("ogv") || formats.count("mp4");
+  std::string no_display;
+  if (render && !mechanist::DisplayAvailable(&no_display)) {
+    throw usage("--format " + std::string(formats.count("png") ? "png" : "ogv/mp4") + ": " +
+                no_display);
+  }
+
+  const mechanist::Analysis analysis = mechanist::Analyze(assembly);
+  const std::optional<double> amount =
+      request.amount >= 0 ? std::optional<double>(request.amount) : std::nullopt;
+  const mechanist::MotionRun run = mechanist::PlanRun(assembly, analysis, driver, amount);
+  if (!run.possible) std::cerr << "mechanist: note: nothing moves: " << run.reason << "\n";
+  mechanist::Animation animation = mechanist::SampleRun(assembly, run, request.frames);
+  if (request.clashes) {
+    const mechanist::CollisionModel model(assembly);
+    const auto contacts =
+        mechanist::FindContacts(assembly, mechanist::InitialState(assembly), model, analysis.pairs);
+    const mechanist::OperationCheck check =
+        mechanist::CheckOperation(assembly, analysis, model, run.driver, run.amount);
+    mechanist::MarkClashes(contacts, check, &animation);
+  }
+  std::optional<mechanist::TriangleMesh> gap_surface;
+  std::vector<std::int32_t> gap_of_face;
+  if (request.gaps > 0) {
+    mechanist::GapSearchOptions options;
+    options.voxel = request.gaps * assembly.units().mm_per_length;
+    options.progress = Progress("decomposing");
+    try {
+      const mechanist::GapSearch search = mechanist::FindGaps(assembly, options);
+      gap_surface = mechanist::GapSurface(search, &gap_of_face);
+      std::cout << "gaps: " << search.gaps.size() << " at voxel " << request.gaps << " "
+                << assembly.units().length << "\n";
+    } catch (const std::invalid_argument& e) {
+      throw usage(std::string("--gaps: ") + e.what());
+    }
+  }
+  const mechanist::TriangleMesh* gaps = gap_surface ? &*gap_surface : nullptr;
+
+  const fs::path out(request.out);
+  std::error_code error;
+  fs::create_directories(out, error);
+  if (error)
+    throw mechanist::InputError(request.out, "", 0, 0, "cannot create: " + error.message());
+  std::vector<std::string> written;
+  if (formats.count("glb")) {
+    mechanist::WriteFileAtomically(
+        out / "motion.glb",
+        mechanist::GlbAnimation(assembly, analysis, animation, request.fps, gaps), file);
+    written.push_back((out / "motion.glb").string());
+  }
+  if (formats.count("pvd")) {
+    mechanist::WriteVtpSeries(out / "motion.pvd", assembly, analysis, animation, gaps, &gap_of_face,
+                              file);
+    written.push_back((out / "motion.pvd").string());
+  }
+  if (render) {
+    const auto start = std::chrono::steady_clock::now();
+    mechanist::RenderOptions options;
+    options.width = width;
+    options.height = height;
+    options.view = *view;
+    options.feature_axes = request.axes;
+    if (assembly.name().empty()) options.title = fs::path(file).stem().string();
+    mechanist::MotionRenderer renderer(assembly, analysis, animation, options, gaps);
+    std::vector<std::unique_ptr<mechanist::VideoWriter>> videos;
+    if (formats.count("ogv")) {
+      videos.push_back(mechanist::MakeOggTheoraWriter(out / "motion.ogv", request.fps, file));
+      written.push_back((out / "motion.ogv").string());
+    }
+    if (formats.count("mp4")) {
+      videos.push_back(mechanist::MakeMp4Writer(out / "motion.mp4", request.fps, file));
+      written.push_back((out / "motion.mp4").string());
+    }
+    const auto progress = Progress("rendering");
+    for (std::size_t k = 0; k < animation.frame_count(); ++k) {
+      const mechanist::Image image = renderer.Render(k);
+      if (formats.count("png")) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%04zu.png", k);
+        mechanist::WriteFileAtomically(out / name, mechanist::EncodePng(image), file);
+      }
+      for (auto& video : videos) video->Add(image);
+      if (progress) progress(static_cast<double>(k + 1) / animation.frame_count());
+    }
+    for (auto& video : videos) video->Finish();
+    if (formats.count("png")) written.push_back((out / "frame_*.png").string());
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cout << "rendered " << animation.frame_count() << " frames at " << width << "x" << height
+              << " in " << std::fixed << std::setprecision(1) << seconds << " s\n"
+              << std::defaultfloat;
+  }
+  std::cout << "animation: " << animation.frame_count() << " frames, "
+            << (run.driver ? "driver " + assembly.drivers()[*run.driver].id : "all drivers")
+            << " over " << run.amount << "\n";
+  std::size_t clashing = 0;
+  for (const auto& c : animation.clash_from) clashing += c.has_value();
+  if (clashing > 0) std::cout << "parts in a clash (red): " << clashing << "\n";
+  for (const std::string& w : written) std::cout << "wrote " << w << "\n";
   return kExitOk;
 }
 
@@ -270,6 +442,32 @@ int main(int argc, char** argv) {
   CLI::Option* rotate_flag = drag->add_flag("--rotate", rotate, "turn about the axis (default)");
   drag->add_flag("--translate", translate, "push along the axis")->excludes(rotate_flag);
 
+  AnimateRequest animate_request;
+  CLI::App* animate = app.add_subcommand(
+      "animate", "Run the mechanism and write PNG frames, videos, a ParaView series and glTF");
+  animate->add_option("FILE", file, "assembly file (.json)")->required();
+  animate->add_option("--out", animate_request.out, "output folder (created)")->required();
+  animate->add_option("--frames", animate_request.frames, "number of frames (default 120)");
+  animate
+      ->add_option("--amount", animate_request.amount,
+                   "how far: driver revolutions or length units (default: the driver's amount)")
+      ->check(CLI::NonNegativeNumber);
+  animate->add_option("--size", animate_request.size, "image size WIDTHxHEIGHT (default 800x600)");
+  animate
+      ->add_option("--format", animate_request.formats,
+                   "png,ogv,mp4,pvd,glb (default: all; mp4 only when ffmpeg is installed)")
+      ->delimiter(',');
+  animate->add_option("--view", animate_request.view, "iso, front, top or side (default iso)");
+  animate->add_option("--driver", animate_request.driver,
+                      "run only this driver (default: all at their rates)");
+  animate->add_option("--fps", animate_request.fps,
+                      "video and glTF frames per second (default 30)");
+  animate->add_option("--gaps", animate_request.gaps,
+                      "show the enclosed gaps found at this voxel size (file units)");
+  bool no_clashes = false, no_axes = false;
+  animate->add_flag("--no-clashes", no_clashes, "skip the clash checks (no red parts)");
+  animate->add_flag("--no-axes", no_axes, "do not draw feature axes");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -289,6 +487,11 @@ int main(int argc, char** argv) {
     if (*sweep) return Sweep(file, driver, amount, json);
     if (*gaps) return Gaps(file, voxel, json, vtk);
     if (*drag) return Drag(file, part, feature, translate);
+    if (*animate) {
+      animate_request.clashes = !no_clashes;
+      animate_request.axes = !no_axes;
+      return Animate(file, animate_request);
+    }
   } catch (const mechanist::InputError& e) {
     std::cerr << "mechanist: error: " << e.what() << "\n";
     return kExitUsage;

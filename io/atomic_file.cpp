@@ -19,37 +19,43 @@ void WriteFileAtomically(const std::filesystem::path& path, std::string_view con
       protect);
 }
 
-void WriteFileAtomically(const std::filesystem::path& path,
-                         const std::function<void(std::ostream&)>& write,
-                         const std::filesystem::path& protect) {
+AtomicOutput::AtomicOutput(const std::filesystem::path& path, const std::filesystem::path& protect)
+    : path_(path),
+      temporary_(path.string() + ".tmp" + std::to_string(static_cast<long>(::getpid()))) {
   std::error_code ec;
   if (!protect.empty() && std::filesystem::exists(path, ec) &&
       std::filesystem::equivalent(path, protect, ec)) {
     throw InputError(path.string(), "", 0, 0, "refusing to write over the input file");
   }
-  const std::filesystem::path temporary =
-      path.string() + ".tmp" + std::to_string(static_cast<long>(::getpid()));
+}
+
+AtomicOutput::~AtomicOutput() {
+  std::error_code ec;
+  if (!committed_) std::filesystem::remove(temporary_, ec);
+}
+
+void AtomicOutput::Commit() {
+  std::error_code ec;
+  if (!std::filesystem::exists(temporary_, ec)) {
+    throw InputError(path_.string(), "", 0, 0, "the output file was not written");
+  }
+  std::filesystem::rename(temporary_, path_, ec);
+  if (ec) throw InputError(path_.string(), "", 0, 0, "cannot move the output file into place");
+  committed_ = true;
+}
+
+void WriteFileAtomically(const std::filesystem::path& path,
+                         const std::function<void(std::ostream&)>& write,
+                         const std::filesystem::path& protect) {
+  AtomicOutput output(path, protect);
   {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    std::ofstream out(output.temporary(), std::ios::binary | std::ios::trunc);
     if (!out) throw InputError(path.string(), "", 0, 0, "cannot create the output file");
-    try {
-      write(out);
-    } catch (...) {
-      out.close();
-      std::filesystem::remove(temporary, ec);
-      throw;
-    }
+    write(out);
     out.close();
-    if (!out) {
-      std::filesystem::remove(temporary, ec);
-      throw InputError(path.string(), "", 0, 0, "error while writing the output file");
-    }
+    if (!out) throw InputError(path.string(), "", 0, 0, "error while writing the output file");
   }
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::filesystem::remove(temporary, ec);
-    throw InputError(path.string(), "", 0, 0, "cannot move the output file into place");
-  }
+  output.Commit();
 }
 
 }  // namespace mechanist

@@ -237,4 +237,46 @@ GapSearch FindGaps(const Assembly& assembly, const GapSearchOptions& options) {
   return result;
 }
 
+TriangleMesh GapSurface(const GapSearch& search, std::vector<std::int32_t>* gap_of_face) {
+  TriangleMesh mesh;
+  if (gap_of_face) gap_of_face->clear();
+  if (!search.octree) return mesh;
+  const OccupancyOctree& tree = *search.octree;
+  auto gap = [&](const OccupancyOctree::Cell& cell) {
+    const std::int32_t c = tree.component(cell);
+    return c < 0 ? -1 : search.gap_of_component[c];
+  };
+  tree.ForEachFaceNeighbours([&](const OccupancyOctree::Cell& a, const OccupancyOctree::Cell& b,
+                                 int axis) {
+    const std::int32_t ga = gap(a), gb = gap(b);
+    if ((ga >= 0) == (gb >= 0)) return;  // neighbouring cells of one gap, or no gap
+    // The shared face is the smaller cell's, at b's low side along `axis`.
+    const OccupancyOctree::Cell& small = a.size < b.size ? a : b;
+    const int v = (axis + 1) % 3, w = (axis + 2) % 3;
+    auto corner = [&](std::int32_t dv, std::int32_t dw) {
+      std::array<std::int32_t, 3> c = small.min;
+      c[axis] = b.min[axis];
+      c[v] += dv;
+      c[w] += dw;
+      return Eigen::Vector3d(tree.origin_W() + tree.voxel() * Eigen::Vector3d(c[0], c[1], c[2]));
+    };
+    const auto first = static_cast<std::int32_t>(mesh.vertices.size());
+    const std::int32_t n = small.size;
+    mesh.vertices.push_back(corner(0, 0));
+    mesh.vertices.push_back(corner(n, 0));
+    mesh.vertices.push_back(corner(n, n));
+    mesh.vertices.push_back(corner(0, n));
+    // Counter-clockwise about +axis (e_v x e_w = e_axis) when the gap is on the low side.
+    if (ga >= 0) {
+      mesh.faces.push_back({first, first + 1, first + 2});
+      mesh.faces.push_back({first, first + 2, first + 3});
+    } else {
+      mesh.faces.push_back({first, first + 2, first + 1});
+      mesh.faces.push_back({first, first + 3, first + 2});
+    }
+    if (gap_of_face) gap_of_face->insert(gap_of_face->end(), 2, ga >= 0 ? ga : gb);
+  });
+  return mesh;
+}
+
 }  // namespace mechanist

@@ -9,6 +9,7 @@
 #include "kernel/aabb.h"
 #include "kernel/assembly.h"
 #include "kernel/occupancy_octree.h"
+#include "kernel/triangle_mesh.h"
 
 namespace mechanist {
 
@@ -60,5 +61,10 @@ struct GapSearch {
 /// part. Throws std::invalid_argument for a voxel that is not positive or too small for the
 /// assembly (more than 2^20 voxels along an axis).
 GapSearch FindGaps(const Assembly& assembly, const GapSearchOptions& options);
+
+/// The walls of the gaps as seen from inside: every cell face between a gap's cell and a cell
+/// that is not in a gap, as two triangles facing away from the gap (world, mm), the faces of
+/// the gap numbered `gap_of_face` (index into search.gaps) by face. For display.
+TriangleMesh GapSurface(const GapSearch& search, std::vector<std::int32_t>* gap_of_face = nullptr);
 
 }  // namespace mechanist

@@ -9,6 +9,7 @@
 #include "kernel/broad_phase.h"
 #include "kernel/mesh_distance.h"
 #include "kernel/motion_sweep.h"
+#include "reasoning/motion_run.h"
 
 namespace mechanist {
 namespace {
@@ -86,58 +87,22 @@ void SettleFreeMotions(const Assembly& assembly, const Analysis& analysis,
 OperationCheck CheckOperation(const Assembly& assembly, const Analysis& analysis,
                               const CollisionModel& model, std::optional<std::size_t> driver,
                               std::optional<double> amount) {
+  const MotionRun run = PlanRun(assembly, analysis, driver, amount);
   OperationCheck check;
-  const auto& drivers = assembly.drivers();
-  if (!driver && drivers.size() == 1) driver = 0;  // one driver: its own units
-  check.driver = driver;
-  if (driver && *driver >= drivers.size()) {
-    throw std::invalid_argument("CheckOperation: no driver " + std::to_string(*driver));
-  }
-  if (amount && !(*amount >= 0.0)) {
-    throw std::invalid_argument("CheckOperation: the amount must be >= 0");
-  }
-  const auto& driven = analysis.motion.driven;
-  if (drivers.empty() || driven.empty()) {
+  check.driver = run.driver;
+  check.amount = run.amount;
+  if (!run.possible) {
     check.possible = false;
-    check.reason = "no driver: nothing runs";
-    return check;
-  }
-  // driven: one entry per driver, then all together.
-  const DrivenMotion& motion = driver ? driven[*driver] : driven.back();
-  if (amount) {
-    check.amount = *amount;
-  } else if (driver) {
-    // Amounts are kept in mm; the driver's parameter counts the file's length units.
-    const Driver& d = drivers[*driver];
-    check.amount = d.motion == Driver::Motion::kTranslation
-                       ? d.amount / assembly.units().mm_per_length
-                       : d.amount;
-  } else {
-    check.amount = std::numeric_limits<double>::infinity();
-    for (const Driver& d : drivers) {
-      if (d.rate != 0.0) check.amount = std::min(check.amount, d.amount / std::abs(d.rate));
-    }
-    if (!std::isfinite(check.amount)) check.amount = 0.0;
-  }
-  if (!motion.possible) {
-    check.possible = false;
-    check.reason = motion.reason;
+    check.reason = run.reason;
     return check;
   }
 
   const AssemblyState state = InitialState(assembly);
   const std::size_t n = assembly.parts().size();
   const double tolerance = assembly.tolerance().length;
-  // A driver runs the way its rate says: the unit-rate motion reversed for a negative rate.
-  const double sense = driver && drivers[*driver].rate < 0 ? -1.0 : 1.0;
-  std::vector<ScrewPath> path(n);
+  const std::vector<ScrewPath>& path = run.paths;
   std::vector<Aabb> reach(n);
   for (std::size_t p = 0; p < n; ++p) {
-    path[p] = motion.parts[p].path;
-    for (ScrewMotion& m : path[p].screws) {
-      m.turns_per_unit *= sense;
-      m.travel_per_unit *= sense;
-    }
     if (model.part_mesh(p).mesh().faces.empty()) continue;  // nothing to meet: an empty box
     // Everywhere the part can be over the run: its box grown by the farthest any point goes.
     Aabb box = TransformBox(state.X_WP[p], model.part_mesh(p).bounds());

@@ -54,17 +54,14 @@ struct OperationCheck {
   std::optional<Analysis> after;
 };
 
-/// Runs the mechanism from its file poses, each part moving as the motion analysis says (one
-/// driver at unit rate in the sense of its rate, or all drivers at their rates; with a single
-/// driver and none named, that driver), over `amount` (default: the driver's
-/// `amount`; for all drivers the shortest time in which one of them completes its amount) and
-/// sweeps every pair of parts that move relative to each other (SweepMotion, contact within
-/// the file's length tolerance) along the parts' paths (PartMotion::path: the joint screws
-/// from the ground, so a planet turns on its pin while its carrier turns). Not checked: parts of
-/// one subassembly, parts joined by a recognised pair (teeth of meshing gears, a shaft in its
-/// bearing: their contact is the pair), and parts already in contact at rest (the static check
-/// reports those). Throws std::invalid_argument for a driver index out of range or a negative
-/// amount.
+/// Runs the mechanism from its file poses as PlanRun says (one driver in the sense of its rate,
+/// or all drivers at their rates, over `amount` or the drivers' amounts) and sweeps every pair
+/// of parts that move relative to each other (SweepMotion, contact within the file's length
+/// tolerance) along the parts' paths (the joint screws from the ground, so a planet turns on
+/// its pin while its carrier turns). Not checked: parts of one subassembly, parts joined by a
+/// recognised pair (teeth of meshing gears, a shaft in its bearing: their contact is the
+/// pair), and parts already in contact at rest (the static check reports those). Throws
+/// std::invalid_argument as PlanRun does.
 OperationCheck CheckOperation(const Assembly& assembly, const Analysis& analysis,
                               const CollisionModel& model, std::optional<std::size_t> driver,
                               std::optional<double> amount);

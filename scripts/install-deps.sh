@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libcgal-dev libgmp-dev libmpfr-dev
   libfcl-dev
+  libvtk9-dev libx11-dev xvfb xauth ffmpeg
 )
 
 missing=()

@@ -312,4 +312,97 @@ TEST(Cli, GapsReportsTheEnclosedCavityAndWritesItsVolume) {
   std::filesystem::remove_all(dir);
 }
 
+std::string Slurp(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+std::size_t FileCount(const std::filesystem::path& dir) {
+  std::size_t n = 0;
+  if (!std::filesystem::exists(dir)) return 0;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) n += e.is_regular_file();
+  return n;
+}
+
+// The suite runs under xvfb-run (scripts/test.sh), so the renders have a display.
+TEST(Cli, AnimateWritesFramesVideosSeriesAndGltf) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_cli_anim";
+  std::filesystem::remove_all(dir);
+  const CommandResult run = Mechanist("animate " + Example("robot_hand_worm") + " --out " +
+                                      dir.string() + " --frames 4 --size 160x120 --view top");
+  ASSERT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("animation: 4 frames, driver motor over 1"), std::string::npos) << run.out;
+  for (const char* name : {"frame_0000.png", "frame_0003.png", "motion.ogv", "motion.mp4",
+                           "motion.pvd", "motion/frame_0003.vtp", "motion.glb"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir / name)) << name;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "frame_0004.png"));
+  EXPECT_EQ(FileCount(dir), 4u + 2u + 1u + 4u + 1u);  // no temporary file is left
+  EXPECT_EQ(Slurp(dir / "frame_0000.png").substr(1, 3), "PNG");
+  // The same input gives byte-identical series and glTF.
+  const std::string glb = Slurp(dir / "motion.glb"), pvd = Slurp(dir / "motion/frame_0002.vtp");
+  const CommandResult again = Mechanist("animate " + Example("robot_hand_worm") + " --out " +
+                                        dir.string() + " --frames 4 --format glb,pvd");
+  ASSERT_EQ(again.exit_code, 0) << again.out;
+  EXPECT_EQ(Slurp(dir / "motion.glb"), glb);
+  EXPECT_EQ(Slurp(dir / "motion/frame_0002.vtp"), pvd);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, AnimateWithoutADisplayWritesTheFilesThatNeedNone) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_cli_nodisp";
+  std::filesystem::remove_all(dir);
+  const std::string animate = "animate " + Example("planetary_gear_set") + " --out " + dir.string();
+  const CommandResult png = Mechanist("--version > /dev/null; env -u DISPLAY " +
+                                      std::string(MECHANIST_EXE) + " " + animate + " --frames 3");
+  EXPECT_EQ(png.exit_code, 2) << png.out;
+  EXPECT_NE(png.out.find("no display"), std::string::npos) << png.out;
+  EXPECT_NE(png.out.find("xvfb-run"), std::string::npos) << png.out;
+  EXPECT_EQ(FileCount(dir), 0u);
+  const CommandResult files =
+      Mechanist("--version > /dev/null; env -u DISPLAY " + std::string(MECHANIST_EXE) + " " +
+                animate + " --frames 3 --format pvd,glb");
+  EXPECT_EQ(files.exit_code, 0) << files.out;
+  EXPECT_EQ(FileCount(dir), 1u + 3u + 1u);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, AnimateRejectsBadOptionsAndShowsGaps) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_cli_anim2";
+  std::filesystem::remove_all(dir);
+  const std::string animate = "animate " + Example("sealed_enclosure") + " --out " + dir.string();
+  for (const auto& [option, named] :
+       {std::pair<std::string, std::string>{"--size 12x9000", "--size"},
+        {"--size wide", "--size"},
+        {"--format png,gif", "--format"},
+        {"--view diagonal", "--view"},
+        {"--frames 0", "--frames"},
+        {"--fps 0", "--fps"},
+        {"--gaps 1e-6", "--gaps"},
+        {"--driver nobody", "--driver"}}) {
+    const CommandResult bad = Mechanist(animate + " " + option);
+    EXPECT_EQ(bad.exit_code, 2) << option << ": " << bad.out;
+    EXPECT_NE(bad.out.find(named), std::string::npos) << option << ": " << bad.out;
+  }
+  EXPECT_EQ(FileCount(dir), 0u);
+  // Without ffmpeg on the PATH an MP4 is refused before anything is written.
+  const std::filesystem::path empty = dir.string() + "_path";
+  std::filesystem::create_directories(empty);
+  const CommandResult mp4 = Mechanist("--version > /dev/null; PATH=" + empty.string() + " " +
+                                      std::string(MECHANIST_EXE) + " " + animate + " --format mp4");
+  EXPECT_EQ(mp4.exit_code, 2) << mp4.out;
+  EXPECT_NE(mp4.out.find("ffmpeg"), std::string::npos) << mp4.out;
+  EXPECT_EQ(FileCount(dir), 0u);
+  std::filesystem::remove_all(empty);
+  // Nothing drives the box; its gap is drawn and written.
+  const CommandResult gaps =
+      Mechanist(animate + " --frames 2 --gaps 2 --format png,pvd,glb --size 200x150");
+  EXPECT_EQ(gaps.exit_code, 0) << gaps.out;
+  EXPECT_NE(gaps.out.find("nothing moves: no driver"), std::string::npos) << gaps.out;
+  EXPECT_NE(gaps.out.find("gaps: 1 at voxel 2 mm"), std::string::npos) << gaps.out;
+  EXPECT_TRUE(std::filesystem::exists(dir / "motion" / "gaps.vtp"));
+  EXPECT_NE(Slurp(dir / "motion.glb").find("\"name\":\"gaps\""), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace

@@ -142,6 +142,27 @@ TEST(GapSearch, TwoCavitiesComeLargestFirst) {
   EXPECT_TRUE(has(search.gaps[1], 3));
 }
 
+TEST(GapSearch, EachGapsSurfaceEnclosesExactlyItsEmptyVoxels) {
+  const GapSearch search =
+      Search(MakeAssembly(SealedBox(40, 30, 20, 3, RigidTransform(), 30)), 0.5);
+  ASSERT_EQ(search.gaps.size(), 2u);
+  std::vector<std::int32_t> gap_of_face;
+  const TriangleMesh surface = GapSurface(search, &gap_of_face);
+  ASSERT_EQ(gap_of_face.size(), surface.faces.size());
+  // Divergence theorem per gap: the faces facing away from it bound its empty cells.
+  for (std::int32_t g = 0; g < 2; ++g) {
+    TriangleMesh walls;
+    walls.vertices = surface.vertices;
+    for (std::size_t f = 0; f < surface.faces.size(); ++f) {
+      if (gap_of_face[f] == g) walls.faces.push_back(surface.faces[f]);
+    }
+    const double h3 = 0.5 * 0.5 * 0.5;
+    EXPECT_NEAR(walls.SignedVolume(), search.gaps[g].voxels * h3, 1e-6) << g;
+  }
+  EXPECT_TRUE(
+      GapSurface(Search(MakeAssembly({Slab("plate", {0, 0, 0}, {9, 9, 1})}), 1.0)).faces.empty());
+}
+
 TEST(GapSearch, ALeakOpensOnceTheVoxelIsSmallerThanIt) {
   // The right wall in two pieces with a 1 mm x 1 mm channel through it at mid height.
   std::vector<Part> parts = SealedBox(40, 30, 20, 3);
