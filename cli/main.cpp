@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "io/adjusted_file_writer.h"
+#include "io/adjustment_report.h"
 #include "io/analysis_report.h"
 #include "io/assembly_reader.h"
 #include "io/assembly_report.h"
@@ -31,6 +33,8 @@
 #include "kernel/assembly_check.h"
 #include "kernel/assembly_state.h"
 #include "kernel/collision_model.h"
+#include "kernel/number_format.h"
+#include "reasoning/adjustment.h"
 #include "reasoning/analysis.h"
 #include "reasoning/animation.h"
 #include "reasoning/assembly_plan.h"
@@ -50,6 +54,46 @@ constexpr int kExitOk = 0;
 constexpr int kExitFailures = 1;
 constexpr int kExitUsage = 2;
 constexpr int kExitInternal = 3;
+
+// The file's assembly; when it declares adjustments and goals, with the adjustments solved and
+// locked (the designer tightens the bolts), a line per adjustment on `out`.
+mechanist::Assembly Load(const std::string& file, std::ostream& out) {
+  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  mechanist::AdjustmentSummary summary;
+  mechanist::Assembly adjusted = mechanist::Adjusted(assembly, &summary);
+  for (std::size_t k = 0; k < summary.adjustments.size(); ++k) {
+    const mechanist::Adjustment& a = assembly.adjustments()[k];
+    if (!summary.adjustments[k].used) continue;
+    const bool rotate = a.kind == mechanist::Adjustment::Kind::kRotate;
+    const double value = summary.adjustments[k].value /
+                         (rotate ? assembly.units().rad_per_angle : assembly.units().mm_per_length);
+    out << "adjusted: " << a.id << " = "
+        << mechanist::FormatNumber(std::round(value * 1e6) / 1e6 + 0.0, 9) << " "
+        << (rotate ? assembly.units().angle : assembly.units().length) << "\n";
+  }
+  if (!summary.all_met) out << "adjusted: some goals are not met (mechanist adjust tells)\n";
+  return adjusted;
+}
+
+int Adjust(const std::string& file, const std::string& json, const std::string& write) {
+  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  if (assembly.adjustments().empty()) {
+    throw mechanist::InputError(file, "/adjustments", 0, 0,
+                                "expected adjustments to solve, found none");
+  }
+  const mechanist::AdjustmentSummary summary =
+      mechanist::SolveAdjustments(assembly, mechanist::Analyze(assembly).pairs);
+  mechanist::WriteAdjustmentSummary(assembly, summary, std::cout);
+  if (!json.empty()) {
+    mechanist::WriteFileAtomically(json, mechanist::AdjustmentJson(assembly, summary), file);
+  }
+  if (!write.empty()) {
+    const mechanist::Assembly adjusted = mechanist::ApplyAdjustments(assembly, summary);
+    mechanist::WriteFileAtomically(
+        write, mechanist::AdjustedAssemblyText(assembly, adjusted, write), file);
+  }
+  return summary.all_met ? kExitOk : kExitFailures;
+}
 
 // The driver named by --driver, or nothing for an empty name.
 std::optional<std::size_t> DriverIndex(const std::string& file, const mechanist::Assembly& assembly,
@@ -95,7 +139,7 @@ int Info(const std::string& file) {
 
 /// Outputs are written only after the whole analysis succeeded, each atomically.
 int Analyze(const std::string& file, const std::string& json, const std::string& dot) {
-  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const mechanist::Assembly assembly = Load(file, std::cout);
   const mechanist::Analysis analysis = mechanist::Analyze(assembly);
   mechanist::WriteAnalysisSummary(assembly, analysis, std::cout);
   if (!json.empty()) {
@@ -109,7 +153,7 @@ int Analyze(const std::string& file, const std::string& json, const std::string&
 
 int Drag(const std::string& file, const std::string& part, const std::string& feature,
          bool translate) {
-  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const mechanist::Assembly assembly = Load(file, std::cout);
   const auto index = assembly.FindPart(part);
   if (!index) {
     throw mechanist::InputError(file, "", 0, 0,
@@ -134,7 +178,7 @@ int Drag(const std::string& file, const std::string& part, const std::string& fe
 }
 
 int Interference(const std::string& file, const std::string& json) {
-  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const mechanist::Assembly assembly = Load(file, std::cout);
   const mechanist::Analysis analysis = mechanist::Analyze(assembly);
   const mechanist::CollisionModel model(assembly);
   const auto contacts =
@@ -151,7 +195,7 @@ int Interference(const std::string& file, const std::string& json) {
 }
 
 int Assemble(const std::string& file, const std::string& json) {
-  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const mechanist::Assembly assembly = Load(file, std::cout);
   const mechanist::Analysis analysis = mechanist::Analyze(assembly);
   const mechanist::CollisionModel model(assembly);
   const mechanist::AssemblyPlan plan = mechanist::PlanAssembly(assembly, analysis, model);
@@ -186,7 +230,7 @@ int Gaps(const std::string& file, double voxel, const std::string& json, const s
 
 int Sweep(const std::string& file, const std::string& driver, double amount,
           const std::string& json) {
-  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const mechanist::Assembly assembly = Load(file, std::cout);
   const std::optional<std::size_t> index = DriverIndex(file, assembly, driver);
   const mechanist::Analysis analysis = mechanist::Analyze(assembly);
   const mechanist::CollisionModel model(assembly);
@@ -202,7 +246,7 @@ int Sweep(const std::string& file, const std::string& driver, double amount,
 }
 
 int Check(const std::string& file) {
-  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const mechanist::Assembly assembly = Load(file, std::cout);
   const mechanist::Analysis analysis = mechanist::Analyze(assembly);
   // The assembly plan sweeps every part; it runs only when an entry asks for it.
   std::optional<mechanist::AssemblyPlan> plan;
@@ -235,7 +279,7 @@ struct AnimateRequest {
 
 int Animate(const std::string& file, const AnimateRequest& request) {
   namespace fs = std::filesystem;
-  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const mechanist::Assembly assembly = Load(file, std::cout);
   auto usage = [&](const std::string& message) {
     return mechanist::InputError(file, "", 0, 0, message);
   };
@@ -442,6 +486,13 @@ int main(int argc, char** argv) {
   CLI::Option* rotate_flag = drag->add_flag("--rotate", rotate, "turn about the axis (default)");
   drag->add_flag("--translate", translate, "push along the axis")->excludes(rotate_flag);
 
+  std::string write;
+  CLI::App* adjust = app.add_subcommand(
+      "adjust", "Solve the adjustments for the goals; exit 1 if a goal cannot be met");
+  adjust->add_option("FILE", file, "assembly file (.json)")->required();
+  adjust->add_option("--json", json, "write the JSON report to this file");
+  adjust->add_option("--write", write, "write the adjusted assembly to this new file");
+
   AnimateRequest animate_request;
   CLI::App* animate = app.add_subcommand(
       "animate", "Run the mechanism and write PNG frames, videos, a ParaView series and glTF");
@@ -487,6 +538,7 @@ int main(int argc, char** argv) {
     if (*sweep) return Sweep(file, driver, amount, json);
     if (*gaps) return Gaps(file, voxel, json, vtk);
     if (*drag) return Drag(file, part, feature, translate);
+    if (*adjust) return Adjust(file, json, write);
     if (*animate) {
       animate_request.clashes = !no_clashes;
       animate_request.axes = !no_axes;

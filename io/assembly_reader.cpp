@@ -20,6 +20,7 @@
 #include "io/internal/json_source.h"
 #include "io/mesh_reader.h"
 #include "kernel/part_library.h"
+#include "reasoning/placement.h"
 
 namespace mechanist {
 namespace {
@@ -778,6 +779,11 @@ class Reader {
       }
     }
     CheckPlacementTree(pointer);
+    try {
+      ResolvePlacements(&spec_);
+    } catch (const PlacementError& e) {
+      Fail(JoinPointer(pointer, std::to_string(e.part())) + "/place", e.what());
+    }
   }
 
   PlacementCondition ReadCondition(const Json& v, const std::string& p, std::size_t part) const {
@@ -927,6 +933,26 @@ class Reader {
     }
     if (Find(v, "mesh") && Find(v, "coaxial")) {
       Fail(p, "expected one of \"mesh\" or \"coaxial\", found both");
+    }
+    const std::string fp = p + (g.kind == Goal::Kind::kMesh ? "/mesh" : "/coaxial");
+    if (g.features[0].part == g.features[1].part) {
+      Fail(fp, "expected features of two different parts, found one part");
+    }
+    const FeatureKind k0 = spec_.parts[g.features[0].part].features[g.features[0].feature].kind;
+    const FeatureKind k1 = spec_.parts[g.features[1].part].features[g.features[1].feature].kind;
+    auto either = [&](FeatureKind x, FeatureKind y) {
+      return (k0 == x && k1 == y) || (k0 == y && k1 == x);
+    };
+    if (g.kind == Goal::Kind::kMesh && !(either(FeatureKind::kGear, FeatureKind::kGear) ||
+                                         either(FeatureKind::kWorm, FeatureKind::kWormWheel) ||
+                                         either(FeatureKind::kGear, FeatureKind::kRack))) {
+      Fail(fp,
+           "expected two features that mesh (gear and gear, worm and worm_wheel, gear and "
+           "rack), found " +
+               std::string(ToString(k0)) + " and " + std::string(ToString(k1)));
+    }
+    if (g.kind == Goal::Kind::kCoaxial && (k0 == FeatureKind::kFace || k1 == FeatureKind::kFace)) {
+      Fail(fp, "expected two features with axes, found a face");
     }
     spec_.goals.push_back(g);
   }

@@ -120,6 +120,8 @@ class Assembly {
   /// a part without a mesh, or an index that refers to no part or feature.
   explicit Assembly(AssemblySpec spec);
 
+  /// The description it holds (to derive a changed assembly from).
+  const AssemblySpec& spec() const { return spec_; }
   const std::string& name() const { return spec_.name; }
   const std::string& source() const { return spec_.source; }
   const Units& units() const { return spec_.units; }

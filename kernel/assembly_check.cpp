@@ -62,14 +62,6 @@ std::vector<Diagnostic> CheckAssembly(const Assembly& assembly) {
                        {part.id + "/" + f.id}});
       }
     }
-    if (!part.placement.empty()) {
-      out.push_back(
-          {Severity::kInfo,
-           "placement_unresolved",
-           "part '" + part.id + "' is placed by features; this build keeps it at the identity pose",
-           {part.id},
-           {}});
-    }
   }
   return out;
 }

@@ -13,9 +13,7 @@ namespace mechanist {
 ///   interference and gap results on such a part are unreliable);
 /// - `feature_outside_part`: a feature origin farther than the part's box diagonal (at least
 ///   1 mm) outside the part's box, usually a unit or frame mistake (warning); features at
-///   the edge of a part (the bore of a split bearing) are normal;
-/// - `placement_unresolved`: a part placed by features keeps the identity pose until the
-///   placement solver resolves it (info).
+///   the edge of a part (the bore of a split bearing) are normal.
 std::vector<Diagnostic> CheckAssembly(const Assembly& assembly);
 
 }  // namespace mechanist

@@ -4,6 +4,7 @@
 
 #include "kernel/assembly_check.h"
 #include "kernel/assembly_state.h"
+#include "reasoning/adjustment.h"
 #include "reasoning/fastener_check.h"
 #include "reasoning/pair_recognition.h"
 
@@ -30,6 +31,7 @@ Analysis Analyze(const Assembly& assembly, const std::vector<Pair>& extra) {
   for (const std::vector<Diagnostic>* found : findings) {
     analysis.diagnostics.insert(analysis.diagnostics.end(), found->begin(), found->end());
   }
+  SuggestAdjustments(assembly, analysis.pairs, &analysis.diagnostics);
   std::sort(analysis.diagnostics.begin(), analysis.diagnostics.end(), DiagnosticLess);
   return analysis;
 }

@@ -8,7 +8,7 @@ packages=(
   libeigen3-dev libboost-graph-dev nlohmann-json3-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libcgal-dev libgmp-dev libmpfr-dev
-  libfcl-dev
+  libfcl-dev libceres-dev
   libvtk9-dev libx11-dev xvfb xauth ffmpeg
 )
 

@@ -4,6 +4,7 @@
 
 #include "io/assembly_reader.h"
 #include "kernel/collision_model.h"
+#include "reasoning/adjustment.h"
 #include "reasoning/assembly_plan.h"
 #include "reasoning/expectation_check.h"
 
@@ -37,7 +38,7 @@ Mechanism::Mechanism(Assembly assembly)
     : assembly_(std::move(assembly)), analysis_(Analyze(assembly_)) {}
 
 Mechanism Mechanism::Load(const std::filesystem::path& file) {
-  return Mechanism(ReadAssembly(file));
+  return Mechanism(Adjusted(ReadAssembly(file)));
 }
 
 ::testing::AssertionResult HasRatio(const Mechanism& m, const std::string& feature,

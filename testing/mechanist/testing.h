@@ -25,7 +25,8 @@ class Mechanism {
  public:
   /// Analyses `assembly`.
   explicit Mechanism(Assembly assembly);
-  /// Reads and analyses a file; throws InputError for bad input, like `mechanist check`.
+  /// Reads and analyses a file, its adjustments solved and locked when it declares goals
+  /// (Adjusted); throws InputError for bad input, like `mechanist check`.
   static Mechanism Load(const std::filesystem::path& file);
 
   const Assembly& assembly() const { return assembly_; }

@@ -405,4 +405,46 @@ TEST(Cli, AnimateRejectsBadOptionsAndShowsGaps) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(Cli, AdjustSolvesTheSwingAndWritesTheAdjustedFile) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_cli_adj";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string swung = Example("robot_hand_worm_adjust");
+  const CommandResult run = Mechanist("adjust " + swung + " --json " + (dir / "r.json").string() +
+                                      " --write " + (dir / "adjusted.json").string());
+  EXPECT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("motor_swing: rotate motor_body about housing/motor_hole_a by -3.0000 "
+                         "deg"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("goal mesh worm/worm with worm_wheel/teeth: met"), std::string::npos)
+      << run.out;
+  EXPECT_NE(Slurp(dir / "r.json").find("\"value\": -3.0"), std::string::npos);
+  // The written file stands on its own: its poses are the adjusted ones, so check passes.
+  const CommandResult written = Mechanist("check " + (dir / "adjusted.json").string());
+  EXPECT_EQ(written.exit_code, 0) << written.out;
+  EXPECT_NE(written.out.find("9 passed, 0 failed"), std::string::npos) << written.out;
+  // Every command sees the adjusted assembly and says so.
+  const CommandResult analyze = Mechanist("analyze " + swung);
+  EXPECT_NE(analyze.out.find("adjusted: motor_swing = -3 deg"), std::string::npos) << analyze.out;
+  EXPECT_NE(analyze.out.find("worm_gear"), std::string::npos) << analyze.out;
+  // Never over the input; a file without adjustments is a usage error.
+  EXPECT_EQ(Mechanist("adjust " + swung + " --write " + swung).exit_code, 2);
+  const CommandResult none = Mechanist("adjust " + Example("robot_hand_worm"));
+  EXPECT_EQ(none.exit_code, 2) << none.out;
+  EXPECT_NE(none.out.find("/adjustments"), std::string::npos) << none.out;
+  // A range too narrow: the goal is missed and the bound named; exit 1.
+  std::string text = Slurp(swung);
+  text.replace(text.find("\"range\": [-10, 10]"), 18, "\"range\": [-2, 10]");
+  {
+    std::ofstream out(dir / "narrow.json");
+    out << text;
+  }
+  const CommandResult narrow = Mechanist("adjust " + (dir / "narrow.json").string());
+  EXPECT_EQ(narrow.exit_code, 1) << narrow.out;
+  EXPECT_NE(narrow.out.find("NOT met"), std::string::npos) << narrow.out;
+  EXPECT_NE(narrow.out.find("at its lower bound"), std::string::npos) << narrow.out;
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace

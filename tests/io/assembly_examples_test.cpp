@@ -7,6 +7,7 @@
 #include "io/assembly_reader.h"
 #include "kernel/assembly_state.h"
 #include "kernel/collision_model.h"
+#include "reasoning/adjustment.h"
 #include "reasoning/analysis.h"
 #include "reasoning/assembly_plan.h"
 #include "reasoning/expectation_check.h"
@@ -37,7 +38,8 @@ TEST(AssemblyExamples, EveryExampleIsFreeOfClashesAssemblableAndRunsClear) {
     const auto file = entry.path() / "assembly.json";
     if (!std::filesystem::exists(file)) continue;
     ++examples;
-    const Assembly a = ReadAssembly(file);
+    // With adjustments and goals, as the commands see it: solved and locked.
+    const Assembly a = Adjusted(ReadAssembly(file));
     const Analysis an = Analyze(a);
     const CollisionModel model(a);
     for (const PartContact& c : FindContacts(a, InitialState(a), model, an.pairs)) {
@@ -65,7 +67,7 @@ TEST(AssemblyExamples, EveryExampleIsFreeOfClashesAssemblableAndRunsClear) {
       EXPECT_GT(run.pairs_swept, 0u) << file;
     }
   }
-  EXPECT_EQ(examples, 7);
+  EXPECT_EQ(examples, 8);
 }
 
 TEST(AssemblyExamples, BoltLargerThanThePlateHoleIsAClashAndBlocksItsStep) {
@@ -94,9 +96,11 @@ TEST(AssemblyExamples, BoltLargerThanThePlateHoleIsAClashAndBlocksItsStep) {
 
 TEST(AssemblyExamples, StepIntoAPartNotYetPlacedHitsWhatIsInTheWay) {
   // Insert the left bracket after its bolt: the bolt (in place) stands in the bracket's way.
-  const std::string text = Replace(
-      ReadText(kBracket), R"({"insert": "bolt_left/thread", "into": "bracket_left/base_hole1"},)",
-      R"({"insert": "bolt_left/thread", "into": "plate/hole_left"},
+  const std::string text = Replace(ReadText(kBracket),
+                                   R"("steps": [
+    {"insert": "bolt_left/thread", "into": "bracket_left/base_hole1"},)",
+                                   R"("steps": [
+    {"insert": "bolt_left/thread", "into": "plate/hole_left"},
     {"insert": "bracket_left/base_bottom", "into": "plate/top"},)");
   const Assembly a = ParseAssembly(text, kBracket);
   const AssemblyPlan plan = PlanAssembly(a, Analyze(a), CollisionModel(a));
@@ -111,8 +115,7 @@ TEST(AssemblyExamples, StepIntoAPartNotYetPlacedHitsWhatIsInTheWay) {
 TEST(FastenerChecks, BoltTooShortForItsNutIsReportedWithTheShortfall) {
   const std::string text = ReadText(kBracket);
   const std::string bolt =
-      R"("library": {"kind": "hex_bolt", "diameter": 6, "pitch": 1, "length": 16},
-     "pose": {"position": [-30, 0, 9])";
+      R"({"id": "bolt_left", "library": {"kind": "hex_bolt", "diameter": 6, "pitch": 1, "length": 16})";
   // 12 mm: the tip is 3 mm into the 5.2 mm nut.
   const Assembly partial = ParseAssembly(
       Replace(text, bolt, Replace(bolt, R"("length": 16)", R"("length": 12)")), kBracket);
@@ -138,8 +141,11 @@ TEST(FastenerChecks, NutWithoutBoltAndLooseOnlyFastening) {
   text = Replace(
       text,
       R"(    {"id": "bolt_right", "library": {"kind": "hex_bolt", "diameter": 6, "pitch": 1, "length": 16},
-     "pose": {"position": [30, 0, 9], "rotation": {"axis": [1, 0, 0], "angle": 180}}},)",
+     "place": [{"insert": "bolt_right/thread", "into": "bracket_right/base_hole1"},
+               {"against": "bolt_right/head", "on": "bracket_right/base_top"}]},)",
       "");
+  text = Replace(text, R"({"insert": "nut_right/thread", "into": "bolt_right/thread"})",
+                 R"({"insert": "nut_right/thread", "into": "plate/hole_right"})");
   text = Replace(text, R"(,
     {"insert": "bolt_right/thread", "into": "bracket_right/base_hole1"})",
                  "");

@@ -158,7 +158,7 @@ TEST_F(AssemblyReaderTest, ReadsDriversAdjustmentsGoalsStepsOverridesExpectation
                 {"part": "b", "feature": "s"}],
     "adjustments": [{"id": "swing", "moves": "b", "rotate_about": "a/h", "range": [-15, 15]},
                     {"id": "slide", "moves": "b", "translate_along": "a/h", "range": [0, 2]}],
-    "goals": [{"mesh": ["a/h", "b/s"]}, {"coaxial": ["b/s", "a/h"]}],
+    "goals": [{"coaxial": ["a/h", "b/s"]}, {"coaxial": ["b/s", "a/h"]}],
     "steps": [{"insert": "b/s", "into": "a/h"}],
     "overrides": [{"pair": ["a/h", "b/s"], "type": "fixed"}, {"pair": ["a/h", "b/s"], "type": "none"}],
     "expect": [
@@ -239,6 +239,19 @@ TEST_F(AssemblyReaderTest, ReadsPlacementsAndRejectsCycles) {
   ASSERT_EQ(a.part(1).placement.size(), 1u);
   EXPECT_EQ(a.part(1).placement[0].kind, PlacementCondition::Kind::kInsert);
   EXPECT_DOUBLE_EQ(*a.part(1).placement[0].depth, 0.5);
+  // Solved on reading: the pin's shaft 0.5 mm down the hole, pointing down it.
+  EXPECT_LT((a.part(1).X_WP * Eigen::Vector3d(0, 0, 0) - Eigen::Vector3d(0, 0, 0.5)).norm(), 1e-12);
+  EXPECT_LT((a.part(1).X_WP.RotateDirection({0, 0, 1}) - Eigen::Vector3d(0, 0, -1)).norm(), 1e-12);
+  // Conditions that cannot all hold name the part's place.
+  ExpectError(R"({"mechanist": 1, "parts": [
+    {"id": "plate", "mesh": "meshes/cube.obj", "features": [
+      {"id": "h", "kind": "hole", "origin": [0,0,1], "axis": [0,0,-1], "diameter": 3, "length": 1},
+      {"id": "top", "kind": "face", "origin": [0,0,1], "axis": [0,0,1]}]},
+    {"id": "pin", "mesh": "meshes/cube.obj",
+     "place": [{"insert": "pin/s", "into": "plate/h", "depth": 0.5}, {"against": "pin/f", "on": "plate/top"}],
+     "features": [{"id": "s", "kind": "shaft", "origin": [0,0,0], "axis": [0,0,1], "diameter": 3, "length": 1},
+                  {"id": "f", "kind": "face", "origin": [0,0,0], "axis": [0,0,-1]}]}]})",
+              "/parts/1/place", "cannot all hold");
 
   ExpectError(R"({"mechanist": 1, "parts": [
     {"id": "a", "mesh": "meshes/cube.obj", "place": {"insert": "a/s", "into": "b/s"},

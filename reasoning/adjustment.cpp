@@ -1,0 +1,265 @@
+#include "reasoning/adjustment.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <set>
+
+#include "kernel/line_geometry.h"
+#include "reasoning/analysis.h"
+
+namespace mechanist {
+namespace {
+
+bool Meshes(PairType type) {
+  return type == PairType::kGear || type == PairType::kWormGear || type == PairType::kRackPinion;
+}
+
+// The goal's features as the pair type wants them: the worm or the pinion first.
+struct GoalFeatures {
+  FeatureRef first, second;
+};
+
+GoalFeatures Ordered(const Assembly& assembly, const Goal& goal) {
+  const FeatureKind k0 = assembly.feature(goal.features[0]).kind;
+  const bool swap = k0 == FeatureKind::kWormWheel || k0 == FeatureKind::kRack;
+  return swap ? GoalFeatures{goal.features[1], goal.features[0]}
+              : GoalFeatures{goal.features[0], goal.features[1]};
+}
+
+// The required centre distance of a mesh goal (gear pair, worm gear, rack and pinion), mm.
+double RequiredDistance(const Feature& a, const Feature& b) {
+  if (a.kind == FeatureKind::kWorm) return (a.pitch_diameter + a.module * b.teeth) / 2;
+  if (b.kind == FeatureKind::kRack) return a.module * a.teeth / 2;
+  if (a.internal || b.internal) return a.module * std::abs(a.teeth - b.teeth) / 2;
+  return a.module * (a.teeth + b.teeth) / 2;
+}
+
+// Appends the goal's residuals (mm) at `state` to `r`.
+void GoalResiduals(const Assembly& assembly, const AssemblyState& state, const Goal& goal,
+                   std::vector<double>* r) {
+  const GoalFeatures g = Ordered(assembly, goal);
+  const Feature& fa = assembly.feature(g.first);
+  const Feature& fb = assembly.feature(g.second);
+  const AxisSegment a = fa.WorldAxis(state.X_WP[g.first.part]);
+  const AxisSegment b = fb.WorldAxis(state.X_WP[g.second.part]);
+  if (goal.kind == Goal::Kind::kCoaxial) {
+    const double scale = std::max({a.length, b.length, 1.0});
+    const Eigen::Vector3d cross = scale * a.direction.cross(b.direction);
+    const Eigen::Vector3d d = b.origin - a.origin;
+    const Eigen::Vector3d off = d - d.dot(a.direction) * a.direction;
+    r->insert(r->end(), {cross.x(), cross.y(), cross.z(), off.x(), off.y(), off.z()});
+    return;
+  }
+  const double required = RequiredDistance(fa, fb);
+  if (fa.kind == FeatureKind::kWorm || fb.kind == FeatureKind::kRack) {
+    const LineLineClosest c = ClosestPointsOfLines(a.origin, a.direction, b.origin, b.direction);
+    r->push_back(c.distance - required);
+    r->push_back(required * a.direction.dot(b.direction));
+    if (fb.kind == FeatureKind::kRack) {
+      const Eigen::Vector3d n_W = state.X_WP[g.second.part].RotateDirection(fb.normal);
+      r->push_back(required * a.direction.dot(n_W));
+    } else {
+      r->push_back(c.t - b.length / 2);  // the wheel's mid-plane through the worm's axis
+    }
+    return;
+  }
+  const Eigen::Vector3d mid_a = a.origin + 0.5 * a.length * a.direction;
+  const Eigen::Vector3d mid_b = b.origin + 0.5 * b.length * b.direction;
+  const Eigen::Vector3d cross = required * a.direction.cross(b.direction);
+  r->push_back(DistanceToLine(mid_b, a.origin, a.direction) - required);
+  r->insert(r->end(), {cross.x(), cross.y(), cross.z()});
+  r->push_back((mid_b - mid_a).dot(a.direction));  // coplanar mid-faces
+}
+
+std::size_t ResidualCount(const Assembly& assembly, const Goal& goal) {
+  std::vector<double> r;
+  GoalResiduals(assembly, InitialState(assembly), goal, &r);
+  return r.size();
+}
+
+// The poses after the adjustments take `values` (unused ones none), in file order.
+AssemblyState AdjustedState(const Assembly& assembly,
+                            const std::vector<AdjustmentOutcome>& adjustments,
+                            const std::vector<double>& values) {
+  AssemblyState state = InitialState(assembly);
+  for (std::size_t k = 0; k < adjustments.size(); ++k) {
+    if (!adjustments[k].used || values[k] == 0.0) continue;
+    const Adjustment& adj = assembly.adjustments()[k];
+    const AxisSegment axis = assembly.feature(adj.axis).WorldAxis(state.X_WP[adj.axis.part]);
+    const RigidTransform D =
+        adj.kind == Adjustment::Kind::kRotate
+            ? RigidTransform::AxisAngleAbout(axis.origin, axis.direction, values[k])
+            : RigidTransform::Translation(values[k] * axis.direction);
+    for (const std::size_t p : adjustments[k].carried) state.X_WP[p] = D * state.X_WP[p];
+  }
+  return state;
+}
+
+}  // namespace
+
+std::vector<std::size_t> CarriedParts(const Assembly& assembly, const std::vector<Pair>& pairs,
+                                      std::size_t adjustment) {
+  const std::size_t start = assembly.adjustments().at(adjustment).moves;
+  std::vector<std::vector<std::size_t>> next(assembly.parts().size());
+  for (const Pair& pair : pairs) {
+    if (Meshes(pair.type) || pair.a.part == pair.b.part) continue;
+    next[pair.a.part].push_back(pair.b.part);
+    next[pair.b.part].push_back(pair.a.part);
+  }
+  std::vector<bool> seen(assembly.parts().size(), false);
+  std::vector<std::size_t> carried;
+  std::queue<std::size_t> queue;
+  seen[start] = true;
+  queue.push(start);
+  while (!queue.empty()) {
+    const std::size_t p = queue.front();
+    queue.pop();
+    carried.push_back(p);
+    for (const std::size_t q : next[p]) {
+      if (seen[q] || assembly.part(q).ground) continue;
+      seen[q] = true;
+      queue.push(q);
+    }
+  }
+  std::sort(carried.begin(), carried.end());
+  return carried;
+}
+
+GoalError MeasureGoal(const Assembly& assembly, const AssemblyState& state, std::size_t goal) {
+  const Goal& gl = assembly.goals().at(goal);
+  const GoalFeatures g = Ordered(assembly, gl);
+  const Feature& fa = assembly.feature(g.first);
+  const Feature& fb = assembly.feature(g.second);
+  const AxisSegment a = fa.WorldAxis(state.X_WP[g.first.part]);
+  const AxisSegment b = fb.WorldAxis(state.X_WP[g.second.part]);
+  const double L = assembly.tolerance().length;
+  GoalError e;
+  const double angle = AngleBetweenLines(a.direction, b.direction);
+  if (gl.kind == Goal::Kind::kCoaxial) {
+    e.angle = angle;
+    e.distance = DistanceToLine(b.origin, a.origin, a.direction);
+  } else if (fa.kind == FeatureKind::kWorm || fb.kind == FeatureKind::kRack) {
+    const LineLineClosest c = ClosestPointsOfLines(a.origin, a.direction, b.origin, b.direction);
+    e.distance = c.distance - RequiredDistance(fa, fb);
+    e.angle = std::abs(M_PI / 2 - angle);
+    if (fb.kind == FeatureKind::kRack) {
+      const Eigen::Vector3d n_W = state.X_WP[g.second.part].RotateDirection(fb.normal);
+      e.angle = std::max(e.angle, std::abs(M_PI / 2 - AngleBetweenLines(a.direction, n_W)));
+    } else {
+      e.axial = c.t - b.length / 2;
+    }
+    e.engaged = c.s >= -L && c.s <= a.length + L && c.t >= -L && c.t <= b.length + L;
+  } else {
+    const Eigen::Vector3d mid_b = b.origin + 0.5 * b.length * b.direction;
+    e.distance = DistanceToLine(mid_b, a.origin, a.direction) - RequiredDistance(fa, fb);
+    e.angle = angle;
+    e.axial = (mid_b - (a.origin + 0.5 * a.length * a.direction)).dot(a.direction);
+    e.engaged = AxialOverlap(a, b) > L;
+  }
+  e.met = std::abs(e.distance) <= L && e.angle <= assembly.tolerance().angle && e.engaged;
+  return e;
+}
+
+AdjustmentSummary SolveAdjustments(const Assembly& assembly, const std::vector<Pair>& pairs) {
+  AdjustmentSummary summary;
+  const std::size_t n = assembly.adjustments().size();
+  summary.adjustments.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    AdjustmentOutcome& out = summary.adjustments[k];
+    out.carried = CarriedParts(assembly, pairs, k);
+    const std::set<std::size_t> carried(out.carried.begin(), out.carried.end());
+    for (const Goal& goal : assembly.goals()) {
+      out.used =
+          out.used || carried.count(goal.features[0].part) != carried.count(goal.features[1].part);
+    }
+  }
+  const AssemblyState start = InitialState(assembly);
+  for (std::size_t g = 0; g < assembly.goals().size(); ++g) {
+    summary.before.push_back(MeasureGoal(assembly, start, g));
+  }
+
+  std::vector<std::size_t> variable_of;  // the used adjustments, in file order
+  LeastSquaresProblem problem;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!summary.adjustments[k].used) continue;
+    variable_of.push_back(k);
+    problem.lower.push_back(assembly.adjustments()[k].lower);
+    problem.upper.push_back(assembly.adjustments()[k].upper);
+  }
+  for (const Goal& goal : assembly.goals()) problem.residuals += ResidualCount(assembly, goal);
+  problem.evaluate = [&](const double* x, double* r) {
+    std::vector<double> values(n, 0.0);
+    for (std::size_t i = 0; i < variable_of.size(); ++i) values[variable_of[i]] = x[i];
+    const AssemblyState state = AdjustedState(assembly, summary.adjustments, values);
+    std::vector<double> residuals;
+    for (const Goal& goal : assembly.goals()) GoalResiduals(assembly, state, goal, &residuals);
+    std::copy(residuals.begin(), residuals.end(), r);
+    return true;
+  };
+  std::vector<double> x(variable_of.size(), 0.0);
+  summary.solver = SolveLeastSquares(problem, &x);
+
+  std::vector<double> values(n, 0.0);
+  for (std::size_t i = 0; i < variable_of.size(); ++i) {
+    const std::size_t k = variable_of[i];
+    const Adjustment& adj = assembly.adjustments()[k];
+    AdjustmentOutcome& out = summary.adjustments[k];
+    out.value = values[k] = x[i];
+    const double eps = 1e-9 * std::max(1.0, adj.upper - adj.lower);
+    if (adj.lower < adj.upper && x[i] <= adj.lower + eps)
+      out.active = AdjustmentOutcome::Bound::kLower;
+    if (adj.lower < adj.upper && x[i] >= adj.upper - eps)
+      out.active = AdjustmentOutcome::Bound::kUpper;
+  }
+  summary.state = AdjustedState(assembly, summary.adjustments, values);
+  for (std::size_t g = 0; g < assembly.goals().size(); ++g) {
+    summary.after.push_back(MeasureGoal(assembly, summary.state, g));
+    summary.all_met = summary.all_met && summary.after.back().met;
+  }
+  return summary;
+}
+
+Assembly ApplyAdjustments(const Assembly& assembly, const AdjustmentSummary& summary) {
+  AssemblySpec spec = assembly.spec();
+  for (std::size_t p = 0; p < spec.parts.size(); ++p) spec.parts[p].X_WP = summary.state.X_WP[p];
+  for (std::size_t k = 0; k < spec.adjustments.size(); ++k) {
+    spec.adjustments[k].lower -= summary.adjustments[k].value;
+    spec.adjustments[k].upper -= summary.adjustments[k].value;
+  }
+  return Assembly(std::move(spec));
+}
+
+Assembly Adjusted(const Assembly& assembly, AdjustmentSummary* summary) {
+  if (assembly.adjustments().empty() || assembly.goals().empty()) return assembly;
+  AdjustmentSummary solved = SolveAdjustments(assembly, Analyze(assembly).pairs);
+  Assembly adjusted = ApplyAdjustments(assembly, solved);
+  if (summary) *summary = std::move(solved);
+  return adjusted;
+}
+
+void SuggestAdjustments(const Assembly& assembly, const std::vector<Pair>& pairs,
+                        std::vector<Diagnostic>* diagnostics) {
+  static const std::set<std::string> kNearMisses = {
+      "gear_center_distance",        "gear_axes_not_parallel",   "worm_center_distance",
+      "worm_axes_not_perpendicular", "rack_pitch_line_distance", "axes_not_collinear"};
+  std::vector<std::set<std::string>> carried;
+  for (std::size_t k = 0; k < assembly.adjustments().size(); ++k) {
+    std::set<std::string> ids;
+    for (const std::size_t p : CarriedParts(assembly, pairs, k)) ids.insert(assembly.part(p).id);
+    carried.push_back(std::move(ids));
+  }
+  for (Diagnostic& d : *diagnostics) {
+    if (!kNearMisses.count(d.code) || d.parts.size() != 2) continue;
+    for (std::size_t k = 0; k < carried.size(); ++k) {
+      if (carried[k].count(d.parts[0]) != carried[k].count(d.parts[1])) {
+        d.message +=
+            " (adjustment " + assembly.adjustments()[k].id + " can fix this: mechanist adjust)";
+        break;
+      }
+    }
+  }
+}
+
+}  // namespace mechanist
