@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -24,11 +25,13 @@
 #include "io/assembly_reader.h"
 #include "io/assembly_report.h"
 #include "io/atomic_file.h"
+#include "io/feature_report.h"
 #include "io/gap_report.h"
 #include "io/gap_volume_writer.h"
 #include "io/gltf_writer.h"
 #include "io/info_report.h"
 #include "io/input_error.h"
+#include "io/mesh_reader.h"
 #include "io/vtp_series_writer.h"
 #include "kernel/assembly_check.h"
 #include "kernel/assembly_state.h"
@@ -73,6 +76,28 @@ mechanist::Assembly Load(const std::string& file, std::ostream& out) {
   }
   if (!summary.all_met) out << "adjusted: some goals are not met (mechanist adjust tells)\n";
   return adjusted;
+}
+
+// A mesh file alone, or every mesh part of an assembly file.
+int Features(const std::string& file, const std::string& json) {
+  std::string extension = std::filesystem::path(file).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  std::vector<mechanist::FeatureReportEntry> entries;
+  if (extension == ".step" || extension == ".stp") {
+    throw mechanist::InputError(file, "", 0, 0,
+                                "STEP files are not supported by this build (it needs Open "
+                                "CASCADE); export the parts as STL");
+  }
+  if (extension == ".json") {
+    entries = mechanist::RecogniseAssemblyFeatures(mechanist::ReadAssembly(file));
+  } else {
+    const mechanist::TriangleMesh mesh = mechanist::ReadMesh(file);
+    entries.push_back({std::filesystem::path(file).filename().string(), mechanist::RigidTransform(),
+                       mechanist::RecognizeFeatures(mesh), true});
+  }
+  mechanist::WriteFeatureReport(entries, std::cout);
+  if (!json.empty()) mechanist::WriteFileAtomically(json, mechanist::FeatureJson(entries), file);
+  return kExitOk;
 }
 
 int Adjust(const std::string& file, const std::string& json, const std::string& write) {
@@ -486,6 +511,12 @@ int main(int argc, char** argv) {
   CLI::Option* rotate_flag = drag->add_flag("--rotate", rotate, "turn about the axis (default)");
   drag->add_flag("--translate", translate, "push along the axis")->excludes(rotate_flag);
 
+  CLI::App* features = app.add_subcommand(
+      "features", "Recognise the features of a mesh, or of an assembly's mesh parts");
+  features->add_option("FILE", file, "a mesh (.stl, .obj, .ply, .off) or an assembly (.json)")
+      ->required();
+  features->add_option("--json", json, "write the JSON report to this file");
+
   std::string write;
   CLI::App* adjust = app.add_subcommand(
       "adjust", "Solve the adjustments for the goals; exit 1 if a goal cannot be met");
@@ -539,6 +570,7 @@ int main(int argc, char** argv) {
     if (*gaps) return Gaps(file, voxel, json, vtk);
     if (*drag) return Drag(file, part, feature, translate);
     if (*adjust) return Adjust(file, json, write);
+    if (*features) return Features(file, json);
     if (*animate) {
       animate_request.clashes = !no_clashes;
       animate_request.axes = !no_axes;

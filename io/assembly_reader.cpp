@@ -19,6 +19,7 @@
 #include "io/input_error.h"
 #include "io/internal/json_source.h"
 #include "io/mesh_reader.h"
+#include "kernel/feature_recognition.h"
 #include "kernel/part_library.h"
 #include "reasoning/placement.h"
 
@@ -350,6 +351,11 @@ class Reader {
       if (const Json* group = Find(v, "group")) part.group = String(*group, p + "/group");
       if (const Json* features = Find(v, "features")) {
         ReadFeatures(*features, p + "/features", part);
+      } else if (mesh) {
+        // A mesh without written features: what its geometry shows (RecognizeFeatures).
+        for (RecognizedFeature& r : RecognizeFeatures(*part.mesh).features) {
+          part.features.push_back(std::move(r.feature));
+        }
       }
       part_index_.emplace(part.id, i);
       spec_.parts.push_back(std::move(part));

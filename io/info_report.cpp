@@ -75,6 +75,12 @@ std::string Parameters(const Feature& f) {
 
 }  // namespace
 
+std::string DescribeFeature(const Feature& f, const RigidTransform& X_WP) {
+  const AxisSegment axis_W = f.WorldAxis(X_WP);
+  return f.id + ": " + std::string(ToString(f.kind)) + " at " + Vec(axis_W.origin) + " axis " +
+         Vec(axis_W.direction) + Parameters(f);
+}
+
 void WriteInfo(const Assembly& assembly, std::ostream& out) {
   const AssemblyState state = InitialState(assembly);
   out << "assembly: " << (assembly.name().empty() ? "(unnamed)" : assembly.name()) << "\n";
@@ -101,11 +107,8 @@ void WriteInfo(const Assembly& assembly, std::ostream& out) {
         << Vec(box_W.max) << " mm";
     if (!part.group.empty()) out << ", group " << part.group;
     out << "\n";
-    for (const Feature& f : part.features) {
-      const AxisSegment axis_W = f.WorldAxis(state.X_WP[i]);
-      out << "    " << f.id << ": " << ToString(f.kind) << " at " << Vec(axis_W.origin) << " axis "
-          << Vec(axis_W.direction) << Parameters(f) << "\n";
-    }
+    for (const Feature& f : part.features)
+      out << "    " << DescribeFeature(f, state.X_WP[i]) << "\n";
   }
   if (!assembly.drivers().empty()) out << "drivers: " << assembly.drivers().size() << "\n";
   for (const Driver& d : assembly.drivers()) {

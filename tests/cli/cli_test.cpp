@@ -447,4 +447,35 @@ TEST(Cli, AdjustSolvesTheSwingAndWritesTheAdjustedFile) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(Cli, FeaturesRecognisesGearsInMeshesAndAssemblies) {
+  const std::string gear =
+      std::string(MECHANIST_SHARED_DATA) + "/gears/spur_pair/spur_pair_gear_A_z17_m1.stl";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_cli_feat";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const CommandResult one = Mechanist("features " + gear + " --json " + (dir / "f.json").string());
+  EXPECT_EQ(one.exit_code, 0) << one.out;
+  EXPECT_NE(one.out.find("teeth: gear at (0, 0, -3) axis (0, 0, 1) 17 teeth module 1 mm"),
+            std::string::npos)
+      << one.out;
+  EXPECT_NE(Slurp(dir / "f.json").find("\"teeth\": 17"), std::string::npos);
+  // An assembly of the two STL gears alone: analyze finds the gear pair.
+  {
+    std::ofstream out(dir / "pair.json");
+    out << R"({"mechanist": 1, "parts": [{"id": "a", "mesh": ")" << gear << R"("},
+      {"id": "b", "mesh": ")"
+        << std::string(MECHANIST_SHARED_DATA) + "/gears/spur_pair/spur_pair_gear_B_z31_m1.stl"
+        << R"("}]})";
+  }
+  const CommandResult listed = Mechanist("features " + (dir / "pair.json").string());
+  EXPECT_NE(listed.out.find("b: prismatic along (0, 0, 1), 2 features recognised"),
+            std::string::npos)
+      << listed.out;
+  const CommandResult analyze = Mechanist("analyze " + (dir / "pair.json").string());
+  EXPECT_NE(analyze.out.find("gear: a/teeth + b/teeth"), std::string::npos) << analyze.out;
+  const CommandResult bad = Mechanist("features " + (dir / "missing.stl").string());
+  EXPECT_EQ(bad.exit_code, 2) << bad.out;
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace

@@ -1,0 +1,132 @@
+// Feature recognition on meshes whose truth is known by construction: the part library's
+// gears, rings, racks and shafts, turned to arbitrary poses.
+
+#include "kernel/feature_recognition.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "kernel/mesh_builder.h"
+#include "kernel/part_library.h"
+
+namespace mechanist {
+namespace {
+
+// The mesh moved by X (features are then expected along X's rotated axes).
+TriangleMesh Moved(TriangleMesh mesh, const RigidTransform& X) {
+  for (Eigen::Vector3d& v : mesh.vertices) v = X * v;
+  return mesh;
+}
+
+const RecognizedFeature* Find(const MeshFeatures& found, FeatureKind kind) {
+  for (const RecognizedFeature& r : found.features) {
+    if (r.feature.kind == kind) return &r;
+  }
+  return nullptr;
+}
+
+double DistanceToAxis(const Feature& f, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d d = p - f.origin;
+  return (d - d.dot(f.axis) * f.axis).norm();
+}
+
+TEST(FeatureRecognition, LibrarySpurGearsComeOutExactly) {
+  const RigidTransform X = RigidTransform::FromQuaternion(
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized())),
+      {12, -4, 7});
+  for (const auto& [teeth, module] : std::vector<std::pair<int, double>>{
+           {6, 1.0}, {12, 0.5}, {17, 1.0}, {20, 1.5}, {31, 2.0}, {57, 0.8}, {80, 1.25}}) {
+    SpurGearSpec spec;
+    spec.teeth = teeth;
+    spec.module = module;
+    spec.face_width = 6;
+    spec.bore_diameter = module * teeth * 0.3;
+    const MeshFeatures found = RecognizeFeatures(Moved(MakeLibraryPart(spec).mesh, X));
+    const RecognizedFeature* gear = Find(found, FeatureKind::kGear);
+    ASSERT_NE(gear, nullptr) << teeth << " teeth: " << (found.notes.empty() ? "" : found.notes[0]);
+    EXPECT_EQ(gear->feature.teeth, teeth);
+    EXPECT_EQ(gear->feature.module, module) << teeth;
+    EXPECT_FALSE(gear->feature.internal);
+    const Eigen::Vector3d axis = X.RotateDirection(Eigen::Vector3d::UnitZ());
+    EXPECT_GT(std::abs(gear->feature.axis.dot(axis)), 1 - 1e-9);
+    EXPECT_LT(DistanceToAxis(gear->feature, X * Eigen::Vector3d::Zero()), 1e-6);
+    EXPECT_NEAR(gear->feature.length, 6.0, 1e-9);
+    const RecognizedFeature* bore = Find(found, FeatureKind::kHole);
+    ASSERT_NE(bore, nullptr) << teeth;
+    EXPECT_EQ(bore->feature.id, "bore");
+    EXPECT_NEAR(bore->feature.diameter, spec.bore_diameter, 1e-3 * spec.bore_diameter);
+  }
+}
+
+TEST(FeatureRecognition, RingGearsAreInternalAndRacksRunAlongTheirTeeth) {
+  RingGearSpec ring;
+  ring.teeth = 40;
+  ring.module = 1;
+  ring.face_width = 10;
+  ring.outer_diameter = 52;
+  const MeshFeatures r = RecognizeFeatures(MakeLibraryPart(ring).mesh);
+  const RecognizedFeature* teeth = Find(r, FeatureKind::kGear);
+  ASSERT_NE(teeth, nullptr);
+  EXPECT_EQ(teeth->feature.teeth, 40);
+  EXPECT_EQ(teeth->feature.module, 1.0);
+  EXPECT_TRUE(teeth->feature.internal);
+  // Its outside is a convex cylinder (it could be pressed into a housing's bore).
+  const RecognizedFeature* outside = Find(r, FeatureKind::kShaft);
+  ASSERT_NE(outside, nullptr);
+  EXPECT_NEAR(outside->feature.diameter, 52.0, 0.01);
+
+  RackSpec rack;
+  rack.module = 2;
+  rack.length = 20 * M_PI * 2;
+  rack.face_width = 8;
+  const MeshFeatures k = RecognizeFeatures(MakeLibraryPart(rack).mesh);
+  const RecognizedFeature* rt = Find(k, FeatureKind::kRack);
+  ASSERT_NE(rt, nullptr) << (k.notes.empty() ? "" : k.notes[0]);
+  EXPECT_EQ(rt->feature.module, 2.0);
+  EXPECT_GT(rt->feature.axis.dot(Eigen::Vector3d::UnitX()), 1 - 1e-9);
+  EXPECT_GT(rt->feature.normal.dot(Eigen::Vector3d::UnitY()), 1 - 1e-9);
+  // The pitch line is y = 0, at the middle of the face width.
+  EXPECT_NEAR(rt->feature.origin.y(), 0.0, 1e-6);
+  EXPECT_NEAR(rt->feature.origin.z(), 0.0, 1e-9);
+  EXPECT_NEAR(rt->feature.length, rack.length, 1e-6);
+}
+
+TEST(FeatureRecognition, ShaftsAndPlatesWithHoles) {
+  ShaftSpec shaft;
+  shaft.diameter = 6;
+  shaft.length = 40;
+  const MeshFeatures s = RecognizeFeatures(MakeLibraryPart(shaft).mesh);
+  const RecognizedFeature* f = Find(s, FeatureKind::kShaft);
+  ASSERT_NE(f, nullptr);
+  EXPECT_NEAR(f->feature.diameter, 6.0, 1e-9);
+  EXPECT_NEAR(f->feature.length, 40.0, 1e-9);
+
+  PlateSpec plate;
+  plate.length = 60;
+  plate.width = 40;
+  plate.thickness = 5;
+  plate.holes = {{"a", Eigen::Vector2d(-20, 0), 6.6}, {"b", Eigen::Vector2d(15, 10), 3.4}};
+  const MeshFeatures p = RecognizeFeatures(MakeLibraryPart(plate).mesh);
+  std::vector<double> diameters;
+  for (const RecognizedFeature& r : p.features) {
+    ASSERT_EQ(r.feature.kind, FeatureKind::kHole);
+    EXPECT_TRUE(r.feature.through);
+    diameters.push_back(r.feature.diameter);
+  }
+  std::sort(diameters.begin(), diameters.end());
+  ASSERT_EQ(diameters.size(), 2u);
+  EXPECT_NEAR(diameters[0], 3.4, 1e-9);
+  EXPECT_NEAR(diameters[1], 6.6, 1e-9);
+}
+
+TEST(FeatureRecognition, AMeshThatIsNotPrismaticHasNoFeatures) {
+  const MeshFeatures ball = RecognizeFeatures(MakeUvSphere(5.0, 12, 24));
+  EXPECT_TRUE(ball.features.empty());
+  EXPECT_FALSE(ball.axis.has_value());
+  ASSERT_FALSE(ball.notes.empty());
+  EXPECT_NE(ball.notes[0].find("not prismatic"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace mechanist
