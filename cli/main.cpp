@@ -83,19 +83,17 @@ int Features(const std::string& file, const std::string& json) {
   std::string extension = std::filesystem::path(file).extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   std::vector<mechanist::FeatureReportEntry> entries;
-  if (extension == ".step" || extension == ".stp") {
-    throw mechanist::InputError(file, "", 0, 0,
-                                "STEP files are not supported by this build (it needs Open "
-                                "CASCADE); export the parts as STL");
-  }
-  if (extension == ".json") {
-    entries = mechanist::RecogniseAssemblyFeatures(mechanist::ReadAssembly(file));
+  if (extension == ".json" || extension == ".step" || extension == ".stp") {
+    const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+    entries = mechanist::RecogniseAssemblyFeatures(assembly);
+    mechanist::WriteFeatureReport(entries, std::cout);
+    mechanist::WriteDiagnostics(assembly.findings(), std::cout);
   } else {
     const mechanist::TriangleMesh mesh = mechanist::ReadMesh(file);
     entries.push_back({std::filesystem::path(file).filename().string(), mechanist::RigidTransform(),
                        mechanist::RecognizeFeatures(mesh), true});
+    mechanist::WriteFeatureReport(entries, std::cout);
   }
-  mechanist::WriteFeatureReport(entries, std::cout);
   if (!json.empty()) mechanist::WriteFileAtomically(json, mechanist::FeatureJson(entries), file);
   return kExitOk;
 }

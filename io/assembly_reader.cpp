@@ -16,9 +16,11 @@
 #include <utility>
 #include <vector>
 
+#include "io/fastener_inference.h"
 #include "io/input_error.h"
 #include "io/internal/json_source.h"
 #include "io/mesh_reader.h"
+#include "io/step_reader.h"
 #include "kernel/feature_recognition.h"
 #include "kernel/part_library.h"
 #include "reasoning/placement.h"
@@ -94,14 +96,16 @@ class Reader {
         Fail("/friction", "expected a friction coefficient >= 0, found " + Describe(*friction));
       }
     }
-    if (Find(root, "import")) {
-      Fail("/import",
-           "STEP import is not supported by this build of mechanist (it needs Open CASCADE)");
-    }
+    const Json* import = Find(root, "import");
     const Json* parts = Find(root, "parts");
-    if (!parts) Fail("", "expected \"parts\" (an array of parts), found no such key");
-    ReadParts(*parts, "/parts");
-    ReadPlacements(*parts, "/parts");
+    if (import) {
+      ReadImport(*import, "/import");
+      if (parts) AddToImported(*parts, "/parts");
+    } else {
+      if (!parts) Fail("", "expected \"parts\" (an array of parts), found no such key");
+      ReadParts(*parts, "/parts");
+      ReadPlacements(*parts, "/parts");
+    }
     ForEach(root, "drivers", [this](const Json& v, const std::string& p) { ReadDriver(v, p); });
     ForEach(root, "adjustments",
             [this](const Json& v, const std::string& p) { ReadAdjustment(v, p); });
@@ -335,9 +339,17 @@ class Reader {
       const Json* library = Find(v, "library");
       if (mesh && library) Fail(p, "expected either \"mesh\" or \"library\", found both");
       if (!mesh && !library) Fail(p, "expected \"mesh\" or \"library\", found neither");
+      std::vector<Feature> step_features;
       if (mesh) {
         part.mesh_source = String(*mesh, p + "/mesh");
-        part.mesh = LoadMesh(part.mesh_source, p + "/mesh");
+        std::string extension = std::filesystem::path(part.mesh_source).extension().string();
+        for (char& c : extension)
+          c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (extension == ".step" || extension == ".stp") {
+          part.mesh = LoadStepPart(part.mesh_source, p + "/mesh", &step_features);
+        } else {
+          part.mesh = LoadMesh(part.mesh_source, p + "/mesh");
+        }
       } else {
         LibraryPart generated = MakeLibrary(*library, p + "/library");
         part.mesh_source = "library:" + String(library->at("kind"), p + "/library/kind");
@@ -351,6 +363,8 @@ class Reader {
       if (const Json* group = Find(v, "group")) part.group = String(*group, p + "/group");
       if (const Json* features = Find(v, "features")) {
         ReadFeatures(*features, p + "/features", part);
+      } else if (!step_features.empty()) {
+        part.features = std::move(step_features);  // from the STEP file's exact faces
       } else if (mesh) {
         // A mesh without written features: what its geometry shows (RecognizeFeatures).
         for (RecognizedFeature& r : RecognizeFeatures(*part.mesh).features) {
@@ -360,6 +374,106 @@ class Reader {
       part_index_.emplace(part.id, i);
       spec_.parts.push_back(std::move(part));
     }
+  }
+
+  // Every solid of the STEP file as a part, then the nut-on-bolt heuristic.
+  void ReadImport(const Json& v, const std::string& p) {
+    const std::string relative = String(v, p);
+    std::vector<StepSolid> solids;
+    try {
+      solids = mechanist::ReadStep((dir_ / relative).lexically_normal());
+    } catch (const std::exception& e) {
+      Fail(p, "cannot import \"" + relative + "\": " + e.what());
+    }
+    for (StepSolid& s : solids) {
+      Part part;
+      part.id = s.path;
+      part.mesh_source = relative + "#" + s.product;
+      part.mesh = s.mesh;
+      part.X_WP = s.X_WP;
+      part.group = s.path;
+      part.features = std::move(s.features);
+      part_index_.emplace(part.id, spec_.parts.size());
+      spec_.parts.push_back(std::move(part));
+    }
+    const auto found =
+        InferNutsOnBolts(&spec_.parts, spec_.tolerance.length, spec_.tolerance.angle);
+    spec_.findings.insert(spec_.findings.end(), found.begin(), found.end());
+  }
+
+  // Entries for imported parts: `ground` and extra features.
+  void AddToImported(const Json& parts, const std::string& pointer) {
+    if (!parts.is_array()) Fail(pointer, "expected an array of parts, found " + Describe(parts));
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      const std::string p = JoinPointer(pointer, std::to_string(i));
+      const Json& v = parts[i];
+      ExpectObject(v, p);
+      CheckKeys(v, p, {"id", "ground", "features"});
+      const std::string id = String(Require(v, p, "id", "an imported part's id"), p + "/id");
+      const auto it = part_index_.find(id);
+      if (it == part_index_.end()) {
+        Fail(p + "/id", "expected the id of an imported part, found \"" + id +
+                            "\" (new parts next to an import are not supported)");
+      }
+      Part& part = spec_.parts[it->second];
+      if (const Json* ground = Find(v, "ground")) part.ground = Bool(*ground, p + "/ground");
+      const Json* features = Find(v, "features");
+      if (!features) continue;
+      if (!features->is_array()) {
+        Fail(p + "/features", "expected an array of features, found " + Describe(*features));
+      }
+      // {"id", "fastening"} for an imported feature sets its fastening; others are new.
+      Json added = Json::array();
+      for (std::size_t k = 0; k < features->size(); ++k) {
+        const std::string fp = JoinPointer(p + "/features", std::to_string(k));
+        const Json& f = (*features)[k];
+        ExpectObject(f, fp);
+        const Json* fid = Find(f, "id");
+        const auto existing =
+            fid && fid->is_string() ? part.FindFeature(fid->get<std::string>()) : std::nullopt;
+        if (!existing) {
+          added.push_back(f);
+          continue;
+        }
+        CheckKeys(f, fp, {"id", "fastening"});
+        if (const Json* fastening = Find(f, "fastening")) {
+          const std::string value = String(*fastening, fp + "/fastening");
+          if (value != "tight" && value != "loose") {
+            Fail(fp + "/fastening", "expected \"tight\" or \"loose\", found \"" + value + "\"");
+          }
+          part.features[*existing].fastening =
+              value == "tight" ? Fastening::kTight : Fastening::kLoose;
+        }
+      }
+      ReadFeatures(added, p + "/features", part);
+    }
+  }
+
+  // A STEP file as one rigid part: its solids' meshes and features at their placements (ids
+  // prefixed "solidN_" when it holds several solids).
+  std::shared_ptr<const TriangleMesh> LoadStepPart(const std::string& relative,
+                                                   const std::string& pointer,
+                                                   std::vector<Feature>* features) {
+    std::vector<StepSolid> solids;
+    try {
+      solids = mechanist::ReadStep((dir_ / relative).lexically_normal());
+    } catch (const std::exception& e) {
+      Fail(pointer, "cannot use mesh \"" + relative + "\": " + e.what());
+    }
+    auto mesh = std::make_shared<TriangleMesh>();
+    for (std::size_t k = 0; k < solids.size(); ++k) {
+      TriangleMesh placed = *solids[k].mesh;
+      for (Eigen::Vector3d& v : placed.vertices) v = solids[k].X_WP * v;
+      mesh->Append(placed);
+      for (Feature f : solids[k].features) {
+        if (solids.size() > 1) f.id = "solid" + std::to_string(k + 1) + "_" + f.id;
+        f.origin = solids[k].X_WP * f.origin;
+        f.axis = solids[k].X_WP.RotateDirection(f.axis);
+        f.normal = solids[k].X_WP.RotateDirection(f.normal);
+        features->push_back(f);
+      }
+    }
+    return mesh;
   }
 
   std::shared_ptr<const TriangleMesh> LoadMesh(const std::string& relative,
@@ -1149,6 +1263,14 @@ Assembly ParseAssembly(std::string_view text, const std::filesystem::path& file)
 Assembly ReadAssembly(const std::filesystem::path& file) {
   if (std::filesystem::is_directory(file)) {
     throw InputError(file.string(), "", 0, 0, "expected an assembly file, found a directory");
+  }
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".step" || extension == ".stp") {
+    // A STEP assembly alone: as a file that imports it and adds nothing.
+    const nlohmann::json text = {
+        {"mechanist", 1}, {"name", file.stem().string()}, {"import", file.filename().string()}};
+    return ParseAssembly(text.dump(), file);
   }
   return ParseAssembly(ReadText(file), file);
 }

@@ -24,6 +24,14 @@ std::vector<FeatureReportEntry> RecogniseAssemblyFeatures(const Assembly& assemb
   std::vector<FeatureReportEntry> entries;
   for (const Part& part : assembly.parts()) {
     if (part.mesh_source.rfind("library:", 0) == 0) continue;
+    if (part.mesh_source.find('#') != std::string::npos) {  // imported: from its exact faces
+      FeatureReportEntry e{part.id, part.X_WP, MeshFeatures(), true};
+      for (const Feature& f : part.features) {
+        e.found.features.push_back({f, 0.0, "from the STEP file's exact faces"});
+      }
+      entries.push_back(std::move(e));
+      continue;
+    }
     FeatureReportEntry e{part.id, part.X_WP, RecognizeFeatures(*part.mesh), true};
     e.used = e.found.features.size() == part.features.size();
     for (std::size_t i = 0; e.used && i < part.features.size(); ++i) {

@@ -21,7 +21,8 @@ struct FeatureReportEntry {
 };
 
 /// The recognition of every part with a mesh file in `assembly` (library parts have their
-/// features by construction and are left out).
+/// features by construction and are left out); a part imported from STEP lists the features
+/// taken from its exact faces.
 std::vector<FeatureReportEntry> RecogniseAssemblyFeatures(const Assembly& assembly);
 
 /// One block per entry: the extrusion axis, each feature as `info` writes it with its fit error

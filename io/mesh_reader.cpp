@@ -967,8 +967,8 @@ TriangleMesh ReadMesh(const std::filesystem::path& path) {
     reader = ReadOff;
   } else if (extension == ".step" || extension == ".stp") {
     source.Fail(0, 0,
-                "STEP import is not supported by this build; export the part as a mesh "
-                "(.stl, .obj, .ply or .off)");
+                "a STEP file is read by ReadStep, not as a mesh: give it to a command or "
+                "name it as a part's mesh in an assembly file");
   } else {
     source.Fail(0, 0,
                 (extension.empty() ? "the file name has no extension"

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "kernel/diagnostic.h"
 #include "kernel/feature_ref.h"
 #include "kernel/pair_type.h"
 #include "kernel/part.h"
@@ -109,6 +110,9 @@ struct AssemblySpec {
   std::vector<AssemblyStep> steps;
   std::vector<PairOverride> overrides;
   std::vector<Expectation> expectations;
+  /// What reading inferred and says so (the heuristics of a STEP import), reported with the
+  /// description checks.
+  std::vector<Diagnostic> findings;
 };
 
 /// The immutable description of an assembly (Pinocchio's Model): parts, features and the
@@ -135,6 +139,7 @@ class Assembly {
   const std::vector<AssemblyStep>& steps() const { return spec_.steps; }
   const std::vector<PairOverride>& overrides() const { return spec_.overrides; }
   const std::vector<Expectation>& expectations() const { return spec_.expectations; }
+  const std::vector<Diagnostic>& findings() const { return spec_.findings; }
 
   /// Index of the part `id`, or nothing.
   std::optional<std::size_t> FindPart(const std::string& id) const;

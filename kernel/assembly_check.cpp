@@ -40,7 +40,7 @@ void AddMeshDiagnostics(const Part& part, const MeshCheck& check, std::vector<Di
 }  // namespace
 
 std::vector<Diagnostic> CheckAssembly(const Assembly& assembly) {
-  std::vector<Diagnostic> out;
+  std::vector<Diagnostic> out = assembly.findings();
   std::map<const TriangleMesh*, MeshCheck> checked;  // instances share one mesh
   for (const Part& part : assembly.parts()) {
     auto it = checked.find(part.mesh.get());

@@ -382,6 +382,24 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
       }
     }
     if (gear || !convex) continue;
+    // A polygon (a nut's outside): 3 to 8 corners, every one turning the same way.
+    if (o.vertices.size() >= 3 && o.vertices.size() <= 8) {
+      std::vector<Vector2d> corners = o.vertices;
+      std::sort(corners.begin(), corners.end(), [&](const Vector2d& a, const Vector2d& b) {
+        return std::atan2(a.y() - circle.center.y(), a.x() - circle.center.x()) <
+               std::atan2(b.y() - circle.center.y(), b.x() - circle.center.x());
+      });
+      bool turning = true;
+      for (std::size_t i = 0; i < corners.size(); ++i) {
+        const Vector2d a = corners[(i + 1) % corners.size()] - corners[i];
+        const Vector2d b = corners[(i + 2) % corners.size()] - corners[(i + 1) % corners.size()];
+        turning = turning && a.x() * b.y() - a.y() * b.x() > 0;
+      }
+      if (turning) {
+        out.polygon_sides = static_cast<int>(corners.size());
+        continue;
+      }
+    }
     // A rack: long, repeating along its length on one side.
     Eigen::Matrix2d C = Eigen::Matrix2d::Zero();
     Vector2d mean = Vector2d::Zero();

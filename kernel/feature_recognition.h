@@ -25,6 +25,9 @@ struct MeshFeatures {
   /// The extrusion axis (unit, mesh frame): every face lies along it or across it.
   std::optional<Eigen::Vector3d> axis;
   std::vector<RecognizedFeature> features;
+  /// The number of sides of a convex polygonal outline of 3 to 8 sides (a hexagonal, square or
+  /// rectangular nut's outside), or 0.
+  int polygon_sides = 0;
   std::vector<std::string> notes;  ///< what was not recognised, and why
 };
 

@@ -10,6 +10,8 @@ packages=(
   libcgal-dev libgmp-dev libmpfr-dev
   libfcl-dev libceres-dev
   libvtk9-dev libx11-dev xvfb xauth ffmpeg
+  libocct-data-exchange-dev libocct-ocaf-dev libocct-modeling-algorithms-dev
+  libocct-modeling-data-dev libocct-foundation-dev
 )
 
 missing=()

@@ -478,4 +478,25 @@ TEST(Cli, FeaturesRecognisesGearsInMeshesAndAssemblies) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(Cli, StepAssembliesAreAnalysedWithoutWrittenFeatures) {
+  const std::string as1 = std::string(MECHANIST_SHARED_DATA) + "/step/as1_pe_203.stp";
+  const CommandResult analyze = Mechanist("analyze " + as1);
+  EXPECT_EQ(analyze.exit_code, 0) << analyze.out;
+  EXPECT_NE(analyze.out.find("subassemblies: 1\n"), std::string::npos) << analyze.out;
+  const CommandResult features = Mechanist("features " + as1);
+  EXPECT_EQ(features.exit_code, 0) << features.out;
+  EXPECT_NE(features.out.find("AS1_PE_ASM.ROD.ROD: "), std::string::npos) << features.out;
+  EXPECT_NE(features.out.find("info nut_on_bolt: part 'AS1_PE_ASM.ROD.NUT_2'"), std::string::npos)
+      << features.out;
+  const std::filesystem::path bad = std::filesystem::temp_directory_path() / "mechanist_bad.stp";
+  {
+    std::ofstream out(bad);
+    out << "ISO-10303-21;\nnot a step file\n";
+  }
+  const CommandResult broken = Mechanist("analyze " + bad.string());
+  EXPECT_EQ(broken.exit_code, 2) << broken.out;
+  EXPECT_NE(broken.out.find("/import"), std::string::npos) << broken.out;
+  std::filesystem::remove(bad);
+}
+
 }  // namespace

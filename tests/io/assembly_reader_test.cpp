@@ -293,7 +293,8 @@ TEST_F(AssemblyReaderTest, RejectsBadValues) {
   ExpectError(R"({"mechanist": 1})", "/", "\"parts\"");
   ExpectError(OnePart("", R"("units": {"length": "furlong"},)"), "/units/length", "mm, cm, m, in");
   ExpectError(OnePart("", R"("friction": -1,)"), "/friction", ">= 0");
-  ExpectError(OnePart("", R"("import": "x.step",)"), "/import", "STEP");
+  ExpectError(OnePart("", R"("import": "x.step",)"), "/import",
+              "cannot import \"x.step\": no such file");
   ExpectError(OnePart(R"("ground": "yes")"), "/parts/0/ground", "true or false");
   ExpectError(R"({"mechanist": 1, "parts": [{"id": "a b", "mesh": "meshes/cube.obj"}]})",
               "/parts/0/id", "letters, digits");

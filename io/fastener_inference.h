@@ -1,0 +1,24 @@
+#pragma once
+
+#include <vector>
+
+#include "kernel/diagnostic.h"
+#include "kernel/part.h"
+
+namespace mechanist {
+
+/// The nut-on-bolt heuristic of a CAD import whose threads are drawn as plain cylinders: a part
+/// whose mesh is a prism with a convex polygonal outline of 3 to 8 sides (a hexagonal, square
+/// or rectangular nut) and one hole along its axis, sitting coaxially (within `length_tolerance` mm
+/// and `angle_tolerance` rad) on a shaft of another part of the same diameter (within 2%) that
+/// overlaps it along the axis, is a nut on a bolt: the hole becomes a tight tapped hole and the
+/// shaft a tight thread (ISO coarse pitch for the diameter), so that recognition makes the
+/// pair fixed and clamps every part whose clearance hole the bolt passes through. Returns one
+/// info diagnostic `nut_on_bolt` per nut, naming both parts and features.
+std::vector<Diagnostic> InferNutsOnBolts(std::vector<Part>* parts, double length_tolerance,
+                                         double angle_tolerance);
+
+/// ISO 261 coarse pitch (mm) for a nominal diameter (mm): the table's nearest diameter.
+double CoarsePitch(double diameter);
+
+}  // namespace mechanist

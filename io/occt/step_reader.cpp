@@ -1,0 +1,253 @@
+// The only translation unit that includes Open CASCADE.
+#include "io/step_reader.h"
+
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepMesh_IncrementalMesh.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <Poly_Triangulation.hxx>
+#include <STEPCAFControl_Reader.hxx>
+#include <TDF_LabelSequence.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include <stdexcept>
+
+namespace mechanist {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string NameOf(const TDF_Label& label) {
+  Handle(TDataStd_Name) name;
+  if (!label.FindAttribute(TDataStd_Name::GetID(), name)) return "";
+  return TCollection_AsciiString(name->Get()).ToCString();
+}
+
+std::string Sanitised(const std::string& name) {
+  std::string out = name;
+  for (char& c : out) {
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-')) c = '_';
+  }
+  return out;
+}
+
+RigidTransform ToRigid(const gp_Trsf& t) {
+  Eigen::Matrix3d R;
+  Eigen::Vector3d p;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) R(i, j) = t.Value(i + 1, j + 1);
+    p[i] = t.Value(i + 1, 4);
+  }
+  return RigidTransform(R, p, 1e-6);
+}
+
+Eigen::Vector3d ToEigen(const gp_XYZ& v) { return {v.X(), v.Y(), v.Z()}; }
+
+// A cylinder being gathered from its faces.
+struct Cylinder {
+  Eigen::Vector3d point, direction;
+  double radius = 0.0;
+  bool convex = true;
+  double coverage = 0.0;  // radians of the faces' angular spans, summed
+  double lo = 1e300, hi = -1e300;
+};
+
+// The mesh and features of one solid in its product's frame.
+void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>* features) {
+  Bnd_Box box;
+  BRepBndLib::Add(solid, box);
+  const double size = box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());
+  BRepMesh_IncrementalMesh(solid, std::max(0.01, 1e-3 * size), false, 0.3, false);
+  std::vector<Cylinder> cylinders;
+  int planes = 0;
+  std::map<std::tuple<double, double, double>, std::int32_t> positions;
+  auto* welded = &positions;
+  for (TopExp_Explorer e(solid, TopAbs_FACE); e.More(); e.Next()) {
+    const TopoDS_Face& face = TopoDS::Face(e.Current());
+    TopLoc_Location location;
+    const Handle(Poly_Triangulation) triangulation = BRep_Tool::Triangulation(face, location);
+    if (triangulation.IsNull()) continue;
+    const gp_Trsf trsf = location.Transformation();
+    const bool reversed = face.Orientation() == TopAbs_REVERSED;
+    // Faces share their edges' nodes: welded by exact position into one closed mesh.
+    std::vector<Eigen::Vector3d> nodes;
+    std::vector<std::int32_t> index;
+    for (int i = 1; i <= triangulation->NbNodes(); ++i) {
+      nodes.push_back(ToEigen(triangulation->Node(i).Transformed(trsf).XYZ()));
+      const auto key = std::make_tuple(nodes.back().x(), nodes.back().y(), nodes.back().z());
+      auto [it, added] = welded->emplace(key, static_cast<std::int32_t>(mesh->vertices.size()));
+      if (added) mesh->vertices.push_back(nodes.back());
+      index.push_back(it->second);
+    }
+    for (int i = 1; i <= triangulation->NbTriangles(); ++i) {
+      int a, b, c;
+      triangulation->Triangle(i).Get(a, b, c);
+      if (reversed) std::swap(b, c);
+      mesh->faces.push_back({index[a - 1], index[b - 1], index[c - 1]});
+    }
+    const BRepAdaptor_Surface surface(face);
+    if (surface.GetType() == GeomAbs_Cylinder) {
+      const gp_Cylinder g = surface.Cylinder();
+      Cylinder c;
+      c.point = ToEigen(g.Location().XYZ());
+      c.direction = ToEigen(g.Axis().Direction().XYZ()).normalized();
+      c.radius = g.Radius();
+      // The surface's normal points away from the axis for a right-handed frame; the face's
+      // orientation says on which side the material is.
+      c.convex = g.Position().Direct() != reversed;
+      double u0, u1, v0, v1;
+      BRepTools::UVBounds(face, u0, u1, v0, v1);
+      c.coverage = std::min(u1 - u0, 2 * kPi);
+      for (const Eigen::Vector3d& p : nodes) {
+        c.lo = std::min(c.lo, (p - c.point).dot(c.direction));
+        c.hi = std::max(c.hi, (p - c.point).dot(c.direction));
+      }
+      // One cylinder split into several faces: merged.
+      auto same = std::find_if(cylinders.begin(), cylinders.end(), [&](const Cylinder& o) {
+        const Eigen::Vector3d d = c.point - o.point;
+        return std::abs(o.radius - c.radius) < 1e-6 * std::max(1.0, c.radius) &&
+               std::abs(std::abs(o.direction.dot(c.direction)) - 1) < 1e-9 &&
+               (d - d.dot(o.direction) * o.direction).norm() < 1e-6 && o.convex == c.convex;
+      });
+      if (same == cylinders.end()) {
+        cylinders.push_back(c);
+      } else {
+        const double sign = same->direction.dot(c.direction) > 0 ? 1 : -1;
+        const double shift = (c.point - same->point).dot(same->direction);
+        same->coverage += c.coverage;
+        same->lo = std::min(same->lo, shift + (sign > 0 ? c.lo : -c.hi));
+        same->hi = std::max(same->hi, shift + (sign > 0 ? c.hi : -c.lo));
+      }
+    } else if (surface.GetType() == GeomAbs_Plane && !nodes.empty()) {
+      const gp_Pln plane = surface.Plane();
+      Eigen::Vector3d n = ToEigen(plane.Axis().Direction().XYZ());
+      if (reversed) n = -n;
+      const Eigen::Vector3d x = ToEigen(plane.XAxis().Direction().XYZ());
+      const Eigen::Vector3d y = n.cross(x);
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      for (const Eigen::Vector3d& p : nodes) centre += p / nodes.size();
+      double xl = 1e300, xh = -1e300, yl = 1e300, yh = -1e300;
+      for (const Eigen::Vector3d& p : nodes) {
+        xl = std::min(xl, (p - centre).dot(x)), xh = std::max(xh, (p - centre).dot(x));
+        yl = std::min(yl, (p - centre).dot(y)), yh = std::max(yh, (p - centre).dot(y));
+      }
+      Feature f;
+      f.id = "face_" + std::to_string(++planes);
+      f.kind = FeatureKind::kFace;
+      f.origin = centre + 0.5 * (xl + xh) * x + 0.5 * (yl + yh) * y;
+      f.axis = n.normalized();
+      f.width = xh - xl;
+      f.height = yh - yl;
+      features->push_back(f);
+    }
+  }
+  int shafts = 0, holes = 0;
+  for (const Cylinder& c : cylinders) {
+    if (c.coverage < 1.5 * kPi) continue;  // a fillet or a partial cylinder
+    Feature f;
+    f.kind = c.convex ? FeatureKind::kShaft : FeatureKind::kHole;
+    f.id = c.convex ? "shaft_" + std::to_string(++shafts) : "hole_" + std::to_string(++holes);
+    f.origin = c.point + c.lo * c.direction;
+    f.axis = c.direction;
+    f.length = c.hi - c.lo;
+    f.diameter = 2 * c.radius;
+    f.through = !c.convex;
+    features->push_back(f);
+  }
+}
+
+class Walker {
+ public:
+  Walker(Handle(XCAFDoc_ShapeTool) tool, std::vector<StepSolid>* out) : tool_(tool), out_(out) {}
+
+  void Walk(const TDF_Label& label, const std::string& path, const TopLoc_Location& location) {
+    if (tool_->IsAssembly(label)) {
+      TDF_LabelSequence components;
+      tool_->GetComponents(label, components);
+      std::map<std::string, int> seen;
+      for (int i = 1; i <= components.Length(); ++i) {
+        TDF_Label referred;
+        tool_->GetReferredShape(components(i), referred);
+        std::string name = NameOf(components(i));
+        if (name.rfind("=>", 0) == 0) name.clear();  // an unnamed instance
+        name = Sanitised(name);
+        if (!name.empty() && ++seen[name] > 1) name += "_" + std::to_string(seen[name]);
+        Walk(referred, name.empty() ? path : path.empty() ? name : path + "." + name,
+             location * tool_->GetLocation(components(i)));
+      }
+      return;
+    }
+    const TopoDS_Shape shape = tool_->GetShape(label);
+    int index = 0;
+    for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next(), ++index) {
+      const auto key = std::make_pair(label.Tag(), index);
+      auto cached = cache_.find(key);
+      if (cached == cache_.end()) {
+        auto mesh = std::make_shared<TriangleMesh>();
+        std::vector<Feature> features;
+        Convert(e.Current(), mesh.get(), &features);
+        cached = cache_.emplace(key, std::make_pair(std::shared_ptr<const TriangleMesh>(mesh),
+                                                    std::move(features)))
+                     .first;
+      }
+      StepSolid s;
+      s.path = index == 0 ? path : path + "_solid" + std::to_string(index + 1);
+      s.product = NameOf(label);
+      s.X_WP = ToRigid(location.Transformation());
+      s.mesh = cached->second.first;
+      s.features = cached->second.second;
+      out_->push_back(std::move(s));
+    }
+  }
+
+ private:
+  Handle(XCAFDoc_ShapeTool) tool_;
+  std::vector<StepSolid>* out_;
+  std::map<std::pair<int, int>, std::pair<std::shared_ptr<const TriangleMesh>, std::vector<Feature>>>
+      cache_;
+};
+
+}  // namespace
+
+std::vector<StepSolid> ReadStep(const std::filesystem::path& file) {
+  if (!std::filesystem::exists(file)) throw std::runtime_error("no such file");
+  Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
+  Handle(TDocStd_Document) document;
+  app->NewDocument("MDTV-XCAF", document);
+  STEPCAFControl_Reader reader;
+  reader.SetNameMode(true);
+  if (reader.ReadFile(file.string().c_str()) != IFSelect_RetDone || !reader.Transfer(document)) {
+    app->Close(document);
+    throw std::runtime_error("cannot read it as STEP (AP203/AP214)");
+  }
+  const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(document->Main());
+  TDF_LabelSequence roots;
+  tool->GetFreeShapes(roots);
+  std::vector<StepSolid> solids;
+  Walker walker(tool, &solids);
+  for (int i = 1; i <= roots.Length(); ++i) {
+    walker.Walk(roots(i), Sanitised(NameOf(roots(i))), TopLoc_Location());
+  }
+  app->Close(document);
+  if (solids.empty()) throw std::runtime_error("the STEP file holds no solid");
+  // Unique paths (two solids named alike at the top level).
+  std::map<std::string, int> count;
+  for (StepSolid& s : solids) {
+    if (++count[s.path] > 1) s.path += "_" + std::to_string(count[s.path]);
+  }
+  return solids;
+}
+
+}  // namespace mechanist

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "kernel/feature.h"
+#include "kernel/rigid_transform.h"
+#include "kernel/triangle_mesh.h"
+
+namespace mechanist {
+
+/// One solid instance of a STEP assembly.
+struct StepSolid {
+  /// Its product-structure path: the instance names from the root, `.` between levels, unnamed
+  /// levels left out, other characters than [A-Za-z0-9_.-] replaced by `_`, a repeated name
+  /// under one parent suffixed `_2`, `_3`, ... and a product's second and later solids
+  /// `_solid2`, ...
+  std::string path;
+  std::string product;  ///< the name of the product it is a solid of
+  RigidTransform X_WP;  ///< its placement (mm)
+  /// Triangulated in its product's frame (mm); shared by the instances of one product.
+  std::shared_ptr<const TriangleMesh> mesh;
+  /// From the exact faces: cylinders covering 270 degrees or more (faces of one cylinder
+  /// merged) are shafts when convex and through holes when concave, with the extent of their
+  /// faces along the axis; planes are faces with their outward normal and extent.
+  std::vector<Feature> features;
+};
+
+/// Reads a STEP file (AP203/AP214) with its product structure through Open CASCADE's XCAF
+/// reader, triangulates each solid (0.01 mm or 0.1% of its size, whichever is coarser, and
+/// 0.3 rad) and takes features from its analytic faces. Throws std::runtime_error when it
+/// cannot be read or holds no solid.
+std::vector<StepSolid> ReadStep(const std::filesystem::path& file);
+
+}  // namespace mechanist

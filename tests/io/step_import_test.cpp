@@ -1,0 +1,120 @@
+// STEP import of the AS1 assembly (../shared/data/step, written by Pro/ENGINEER, nobody here):
+// its product structure, its bolts and nuts, and the conclusion that it is one rigid, bolted
+// assembly.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "io/assembly_reader.h"
+#include "io/input_error.h"
+#include "kernel/mesh_check.h"
+#include "reasoning/analysis.h"
+
+namespace mechanist {
+namespace {
+
+const std::filesystem::path kAs1 =
+    std::filesystem::path(MECHANIST_SHARED_DATA) / "step" / "as1_pe_203.stp";
+
+int Count(const Assembly& a, const std::string& product) {
+  int n = 0;
+  for (const Part& p : a.parts()) {
+    const std::string last = p.id.substr(p.id.rfind('.') + 1);
+    n += last.rfind(product, 0) == 0;
+  }
+  return n;
+}
+
+TEST(StepImport, As1KeepsItsProductStructureAndSharesItsProducts) {
+  const Assembly a = ReadAssembly(kAs1);
+  ASSERT_EQ(a.parts().size(), 18u);
+  EXPECT_EQ(Count(a, "BOLT"), 6);
+  EXPECT_EQ(Count(a, "NUT"), 8);
+  EXPECT_EQ(Count(a, "L-BRACKET"), 2);
+  ASSERT_TRUE(a.FindPart("AS1_PE_ASM.PLATE").has_value());
+  ASSERT_TRUE(a.FindPart("AS1_PE_ASM.ROD.ROD").has_value());
+  ASSERT_TRUE(a.FindPart("AS1_PE_ASM.L_BRACKET_ASSEMBLY_2.NUT_BOLT_ASSEMBLY_3.BOLT").has_value());
+  // Instances of one product share one mesh; every mesh is closed (faces welded).
+  std::set<const TriangleMesh*> meshes;
+  for (const Part& p : a.parts()) meshes.insert(p.mesh.get());
+  EXPECT_EQ(meshes.size(), 5u);  // plate, bracket, bolt, nut, rod
+  for (const TriangleMesh* mesh : meshes) {
+    const MeshCheck check = CheckMesh(*mesh);
+    EXPECT_TRUE(check.closed() && check.consistently_oriented());
+    EXPECT_GT(check.signed_volume, 0.0);
+  }
+  // The plate's six bolt holes, the bolts' shanks through them.
+  const Part& plate = a.part(*a.FindPart("AS1_PE_ASM.PLATE"));
+  int holes = 0;
+  for (const Feature& f : plate.features) holes += f.kind == FeatureKind::kHole;
+  EXPECT_EQ(holes, 6);
+}
+
+TEST(StepImport, As1IsOneRigidBoltedAssembly) {
+  const Assembly a = ReadAssembly(kAs1);
+  // Every nut is found on its bolt or on the rod, and their cylinders become tight threads.
+  int nuts = 0;
+  for (const Diagnostic& d : a.findings()) nuts += d.code == "nut_on_bolt";
+  EXPECT_EQ(nuts, 8);
+  for (const Part& p : a.parts()) {
+    if (p.id.find("BOLT") == std::string::npos || p.id.find(".BOLT") == std::string::npos) continue;
+    int threads = 0;
+    for (const Feature& f : p.features) threads += f.kind == FeatureKind::kThread;
+    EXPECT_EQ(threads, 1) << p.id;
+  }
+  const Analysis an = Analyze(a);
+  ASSERT_EQ(an.subassemblies.size(), 1u);
+  EXPECT_EQ(an.subassemblies[0].parts.size(), 18u);
+  int fixed = 0, clamps = 0;
+  for (const Pair& p : an.pairs) {
+    fixed += p.type == PairType::kFixed;
+    clamps += p.source == PairSource::kClamp;
+  }
+  EXPECT_EQ(fixed - clamps, 8);  // each nut on its thread
+  EXPECT_GE(clamps, 14);         // plate and bracket by each bolt, brackets by the rod
+}
+
+TEST(StepImport, AnImportingFileAddsGroundAndNamesBadImports) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_step";
+  std::filesystem::create_directories(dir);
+  const std::string grounded = R"({"mechanist": 1, "import": ")" + kAs1.string() +
+                               R"(", "parts": [{"id": "AS1_PE_ASM.PLATE", "ground": true}]})";
+  const Analysis an = Analyze(ParseAssembly(grounded, dir / "a.json"));
+  EXPECT_EQ(an.motion.mobility.dof, 0);
+  EXPECT_TRUE(an.subassemblies[0].ground);
+  // A feature's fastening set by name.
+  const std::string bolt = "AS1_PE_ASM.L_BRACKET_ASSEMBLY.NUT_BOLT_ASSEMBLY.BOLT";
+  const Assembly loose =
+      ParseAssembly(R"({"mechanist": 1, "import": ")" + kAs1.string() + R"(", "parts": [{"id": ")" +
+                        bolt + R"(", "features": [{"id": "shaft_1", "fastening": "loose"}]}]})",
+                    dir / "d.json");
+  const Part& b = loose.part(*loose.FindPart(bolt));
+  EXPECT_EQ(b.features[*b.FindFeature("shaft_1")].fastening, Fastening::kLoose);
+  // A part whose mesh is the STEP file: one rigid body with every solid's features.
+  const Assembly whole = ParseAssembly(
+      R"({"mechanist": 1, "parts": [{"id": "as1", "mesh": ")" + kAs1.string() + R"("}]})",
+      dir / "e.json");
+  ASSERT_EQ(whole.parts().size(), 1u);
+  EXPECT_TRUE(whole.part(0).FindFeature("solid1_hole_1").has_value());
+  EXPECT_GT(whole.part(0).features.size(), 100u);
+  try {
+    ParseAssembly(R"({"mechanist": 1, "import": "missing.stp"})", dir / "b.json");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.pointer(), "/import");
+  }
+  try {
+    ParseAssembly(R"({"mechanist": 1, "import": ")" + kAs1.string() +
+                      R"(", "parts": [{"id": "new_part", "ground": true}]})",
+                  dir / "c.json");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.pointer(), "/parts/0/id");
+  }
+}
+
+}  // namespace
+}  // namespace mechanist
