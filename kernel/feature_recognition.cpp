@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdint>
 #include <numeric>
 
 #include "kernel/number_format.h"
@@ -39,6 +40,7 @@ struct Union {
 
 // One closed outline of the walls, projected across the axis.
 struct Outline {
+  double lo = 1e300, hi = -1e300;                      // its extent along the axis
   std::vector<Vector2d> vertices;                      // distinct projected vertices
   std::vector<std::pair<Vector2d, Vector2d>> edges;    // projected wall edges
   std::vector<std::pair<Vector2d, Vector2d>> normals;  // (face centroid, normal), projected
@@ -231,244 +233,269 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
       best_score = score, best_caps = caps, axis = a;
     }
   }
-  if (best_score < 0.95) {
+  // Cylinders may also lie across other directions (an L-bracket's holes in its two legs, a
+  // prism's cross holes): the walls across each principal direction and coordinate axis are
+  // searched for circles too. The extrusion axis, when there is one, comes first and alone gets
+  // the full analysis (gears, racks, polygons).
+  const bool prismatic = best_score >= 0.95;
+  if (prismatic) {
+    out.axis = axis;
+  } else {
     out.notes.push_back(
         "not prismatic: no axis along or across which 95% of the area faces (best " +
-        FormatNumber(100 * best_score, 3) + "%)");
-    return out;
+        FormatNumber(100 * best_score, 3) + "%); only cylinders are looked for");
   }
-  out.axis = axis;
-  const Vector3d e = std::abs(axis.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
-  const Vector3d u = axis.cross(e).normalized();
-  const Vector3d v = axis.cross(u);
-  auto project = [&](const Vector3d& p) { return Vector2d(p.dot(u), p.dot(v)); };
-  double t_min = 1e300, t_max = -1e300;
-  for (const Vector3d& p : mesh.vertices) {
-    t_min = std::min(t_min, p.dot(axis));
-    t_max = std::max(t_max, p.dot(axis));
-  }
-  const double width = t_max - t_min;
-  auto lift = [&](const Vector2d& q, double t) {
-    return Vector3d(q.x() * u + q.y() * v + t * axis);
-  };
-
-  // Walls grouped into outlines by shared vertices.
-  Union groups(mesh.vertices.size());
-  std::vector<std::size_t> walls;
-  for (std::size_t f = 0; f < nf; ++f) {
-    if (std::abs(normal[f].dot(axis)) >= 2e-3 || area[f] == 0.0) continue;
-    walls.push_back(f);
-    groups.Join(mesh.faces[f][0], mesh.faces[f][1]);
-    groups.Join(mesh.faces[f][0], mesh.faces[f][2]);
-  }
-  std::vector<int> outline_of(mesh.vertices.size(), -1);
-  std::vector<Outline> outlines;
-  std::vector<std::vector<bool>> seen;
-  for (const std::size_t f : walls) {
-    const int root = groups.Find(mesh.faces[f][0]);
-    if (outline_of[root] < 0) {
-      outline_of[root] = static_cast<int>(outlines.size());
-      outlines.emplace_back();
-    }
-    Outline& o = outlines[outline_of[root]];
-    const auto& t = mesh.faces[f];
-    Vector2d centroid = Vector2d::Zero();
-    for (int k = 0; k < 3; ++k) {
-      const Vector2d a = project(mesh.vertices[t[k]]), b = project(mesh.vertices[t[(k + 1) % 3]]);
-      centroid += a / 3;
-      if ((a - b).norm() > 1e-9) o.edges.emplace_back(a, b);
-    }
-    o.normals.emplace_back(centroid, project(normal[f]));
-  }
-  // Each outline's distinct projected vertices (a wall's top and bottom edges project onto
-  // each other): sorted, then merged when within 1e-7 mm.
-  for (Outline& o : outlines) {
-    std::vector<Vector2d> points;
-    for (const auto& [a, b] : o.edges) points.insert(points.end(), {a, b});
-    std::sort(points.begin(), points.end(), [](const Vector2d& a, const Vector2d& b) {
-      return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  std::vector<Vector3d> candidates;
+  if (prismatic) candidates.push_back(axis);
+  for (const Vector3d& c :
+       {Vector3d(eigen.eigenvectors().col(0)), Vector3d(eigen.eigenvectors().col(1)),
+        Vector3d(eigen.eigenvectors().col(2)), Vector3d(Vector3d::UnitX()),
+        Vector3d(Vector3d::UnitY()), Vector3d(Vector3d::UnitZ())}) {
+    const Vector3d a = Canonical(c.normalized());
+    const bool known = std::any_of(candidates.begin(), candidates.end(), [&](const Vector3d& b) {
+      return std::abs(a.dot(b)) > 1 - 1e-6;
     });
-    for (const Vector2d& p : points) {
-      bool known = false;
-      for (auto q = o.vertices.rbegin(); q != o.vertices.rend() && p.x() - q->x() <= 1e-7; ++q) {
-        known = known || (*q - p).norm() < 1e-7;
-      }
-      if (!known) o.vertices.push_back(p);
-    }
+    if (!known) candidates.push_back(a);
   }
-  // Largest outline first (by extent), so that a gear's teeth come before its bore.
-  auto extent = [](const Outline& o) {
-    Eigen::AlignedBox2d box;
-    for (const Vector2d& p : o.vertices) box.extend(p);
-    return box.diagonal().norm();
-  };
-  std::stable_sort(outlines.begin(), outlines.end(),
-                   [&](const Outline& a, const Outline& b) { return extent(a) > extent(b); });
-
   int holes = 0, shafts = 0;
   bool has_teeth = false;
-  auto id = [&](const std::string& base, int n) {
-    return n == 0 ? base : base + "_" + std::to_string(n + 1);
-  };
-  for (const Outline& o : outlines) {
-    if (o.vertices.size() < 3) continue;
-    const Circle circle = FitCircle(o.vertices);
-    // Convex when the walls face away from the centre.
-    double facing = 0.0;
-    for (const auto& [c, n] : o.normals) facing += n.dot((c - circle.center).normalized());
-    const bool convex = facing > 0;
-    if (o.vertices.size() >= 12 && circle.rms <= 0.01 * circle.radius &&
-        LargestGap(o.vertices, circle.center) <= 40 * kPi / 180) {
-      RecognizedFeature r;
-      Feature& f = r.feature;
-      f.kind = convex ? FeatureKind::kShaft : FeatureKind::kHole;
-      if (convex) {
-        f.id = id("shaft", shafts++);
-      } else {
-        f.id = has_teeth && holes == 0 ? "bore" : id("hole", holes);
-        ++holes;
-      }
-      f.origin = lift(circle.center, t_min);
-      f.axis = axis;
-      f.length = width;
-      f.diameter = 2 * circle.radius;
-      f.through = !convex;
-      r.fit_error = circle.rms;
-      r.detail = std::string(convex ? "convex" : "concave") + " cylinder, diameter " +
-                 Mm(f.diameter) + " from " + std::to_string(o.vertices.size()) +
-                 " outline vertices (rms " + Mm(circle.rms) + ")";
-      out.features.push_back(r);
-      continue;
+  for (std::size_t candidate = 0; candidate < candidates.size(); ++candidate) {
+    const Vector3d& axis = candidates[candidate];
+    const bool full = prismatic && candidate == 0;
+    const Vector3d e = std::abs(axis.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
+    const Vector3d u = axis.cross(e).normalized();
+    const Vector3d v = axis.cross(u);
+    auto project = [&](const Vector3d& p) { return Vector2d(p.dot(u), p.dot(v)); };
+    double t_min = 1e300, t_max = -1e300;
+    for (const Vector3d& p : mesh.vertices) {
+      t_min = std::min(t_min, p.dot(axis));
+      t_max = std::max(t_max, p.dot(axis));
     }
-    // Teeth around a centre: the radius about the outline's centre, over 4096 angles.
-    constexpr int kBins = 4096;
-    const Vector2d c = circle.center;
-    const Profile radial = Sample(
-        o, kBins, -kPi, kPi,
-        [&](const Vector2d& q) { return std::atan2(q.y() - c.y(), q.x() - c.x()); },
-        [&](const Vector2d& q) { return (q - c).norm(); }, true);
-    const std::vector<double>& r = convex ? radial.high : radial.low;
-    const auto [r_lo, r_hi] = std::minmax_element(r.begin(), r.end());
-    const double depth = *r_hi - *r_lo;
-    bool gear = false;
-    if (depth > 1e-3 * *r_hi) {
-      const int z = Dominant(Spectrum(r), 3, 512);
-      const double m_raw = depth / 2.25;
-      const std::optional<double> m = Standard(m_raw);
-      const double tip = convex ? *r_hi : *r_lo;
-      const double shift = convex ? tip / m_raw - z / 2.0 - 1.0 : z / 2.0 - 1.0 - tip / m_raw;
-      const double mismatch = SelfMismatch(r, static_cast<int>(std::lround(kBins / double(z))));
-      if (m && o.vertices.size() >= static_cast<std::size_t>(4 * z) && shift > -1.0 &&
-          shift < 1.2 && mismatch < 0.05) {
-        gear = true;
-        has_teeth = true;
-        RecognizedFeature g;
-        Feature& f = g.feature;
-        f.kind = FeatureKind::kGear;
-        f.id = "teeth";
-        f.origin = lift(c, t_min);
+    const double width = t_max - t_min;
+    auto lift = [&](const Vector2d& q, double t) {
+      return Vector3d(q.x() * u + q.y() * v + t * axis);
+    };
+
+    // Walls grouped into outlines by shared vertices.
+    Union groups(mesh.vertices.size());
+    std::vector<std::size_t> walls;
+    for (std::size_t f = 0; f < nf; ++f) {
+      if (std::abs(normal[f].dot(axis)) >= 2e-3 || area[f] == 0.0) continue;
+      walls.push_back(f);
+      groups.Join(mesh.faces[f][0], mesh.faces[f][1]);
+      groups.Join(mesh.faces[f][0], mesh.faces[f][2]);
+    }
+    std::vector<int> outline_of(mesh.vertices.size(), -1);
+    std::vector<Outline> outlines;
+    for (const std::size_t f : walls) {
+      const int root = groups.Find(mesh.faces[f][0]);
+      if (outline_of[root] < 0) {
+        outline_of[root] = static_cast<int>(outlines.size());
+        outlines.emplace_back();
+      }
+      Outline& o = outlines[outline_of[root]];
+      const auto& t = mesh.faces[f];
+      for (int k = 0; k < 3; ++k) {
+        o.lo = std::min(o.lo, mesh.vertices[t[k]].dot(axis));
+        o.hi = std::max(o.hi, mesh.vertices[t[k]].dot(axis));
+      }
+      Vector2d centroid = Vector2d::Zero();
+      for (int k = 0; k < 3; ++k) {
+        const Vector2d a = project(mesh.vertices[t[k]]), b = project(mesh.vertices[t[(k + 1) % 3]]);
+        centroid += a / 3;
+        if ((a - b).norm() > 1e-9) o.edges.emplace_back(a, b);
+      }
+      o.normals.emplace_back(centroid, project(normal[f]));
+    }
+    // Each outline's distinct projected vertices (a wall's top and bottom edges project onto
+    // each other): merged on a 1e-7 mm grid.
+    for (Outline& o : outlines) {
+      std::vector<std::pair<std::pair<std::int64_t, std::int64_t>, Vector2d>> points;
+      for (const auto& [a, b] : o.edges) {
+        for (const Vector2d& p : {a, b}) {
+          points.push_back({{std::llround(p.x() * 1e7), std::llround(p.y() * 1e7)}, p});
+        }
+      }
+      std::sort(points.begin(), points.end(),
+                [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        if (i == 0 || points[i].first != points[i - 1].first)
+          o.vertices.push_back(points[i].second);
+      }
+    }
+    // Largest outline first (by extent), so that a gear's teeth come before its bore.
+    auto extent = [](const Outline& o) {
+      Eigen::AlignedBox2d box;
+      for (const Vector2d& p : o.vertices) box.extend(p);
+      return box.diagonal().norm();
+    };
+    std::stable_sort(outlines.begin(), outlines.end(),
+                     [&](const Outline& a, const Outline& b) { return extent(a) > extent(b); });
+
+    auto id = [&](const std::string& base, int n) {
+      return n == 0 ? base : base + "_" + std::to_string(n + 1);
+    };
+    for (const Outline& o : outlines) {
+      if (o.vertices.size() < 3) continue;
+      const Circle circle = FitCircle(o.vertices);
+      // Convex when the walls face away from the centre.
+      double facing = 0.0;
+      for (const auto& [c, n] : o.normals) facing += n.dot((c - circle.center).normalized());
+      const bool convex = facing > 0;
+      if (o.vertices.size() >= 12 && circle.rms <= 0.01 * circle.radius &&
+          LargestGap(o.vertices, circle.center) <= 40 * kPi / 180) {
+        RecognizedFeature r;
+        Feature& f = r.feature;
+        f.kind = convex ? FeatureKind::kShaft : FeatureKind::kHole;
+        if (convex) {
+          f.id = id("shaft", shafts++);
+        } else {
+          f.id = has_teeth && holes == 0 ? "bore" : id("hole", holes);
+          ++holes;
+        }
+        f.origin = lift(circle.center, o.lo);
         f.axis = axis;
-        f.length = width;
-        f.teeth = z;
-        f.module = *m;
-        f.internal = !convex;
-        g.fit_error = std::abs(m_raw - *m) * z / 2;
-        g.detail = std::string(convex ? "spur gear" : "internal gear") + ", " + std::to_string(z) +
-                   " teeth (the radius repeats " + std::to_string(z) +
-                   " times around), tooth depth " + Mm(depth) + " = 2.25 x " +
-                   FormatNumber(m_raw, 5) + ", module " + FormatNumber(*m) +
-                   " (ISO 54), profile shift about " + FormatNumber(shift, 2);
-        out.features.push_back(g);
-      }
-    }
-    if (gear || !convex) continue;
-    // A polygon (a nut's outside): 3 to 8 corners, every one turning the same way.
-    if (o.vertices.size() >= 3 && o.vertices.size() <= 8) {
-      std::vector<Vector2d> corners = o.vertices;
-      std::sort(corners.begin(), corners.end(), [&](const Vector2d& a, const Vector2d& b) {
-        return std::atan2(a.y() - circle.center.y(), a.x() - circle.center.x()) <
-               std::atan2(b.y() - circle.center.y(), b.x() - circle.center.x());
-      });
-      bool turning = true;
-      for (std::size_t i = 0; i < corners.size(); ++i) {
-        const Vector2d a = corners[(i + 1) % corners.size()] - corners[i];
-        const Vector2d b = corners[(i + 2) % corners.size()] - corners[(i + 1) % corners.size()];
-        turning = turning && a.x() * b.y() - a.y() * b.x() > 0;
-      }
-      if (turning) {
-        out.polygon_sides = static_cast<int>(corners.size());
+        f.length = o.hi - o.lo;
+        f.diameter = 2 * circle.radius;
+        f.through = !convex;
+        r.fit_error = circle.rms;
+        r.detail = std::string(convex ? "convex" : "concave") + " cylinder, diameter " +
+                   Mm(f.diameter) + " from " + std::to_string(o.vertices.size()) +
+                   " outline vertices (rms " + Mm(circle.rms) + ")";
+        out.features.push_back(r);
         continue;
       }
+      if (!full) continue;
+      // Teeth around a centre: the radius about the outline's centre, over 4096 angles.
+      constexpr int kBins = 4096;
+      const Vector2d c = circle.center;
+      const Profile radial = Sample(
+          o, kBins, -kPi, kPi,
+          [&](const Vector2d& q) { return std::atan2(q.y() - c.y(), q.x() - c.x()); },
+          [&](const Vector2d& q) { return (q - c).norm(); }, true);
+      const std::vector<double>& r = convex ? radial.high : radial.low;
+      const auto [r_lo, r_hi] = std::minmax_element(r.begin(), r.end());
+      const double depth = *r_hi - *r_lo;
+      bool gear = false;
+      if (depth > 1e-3 * *r_hi) {
+        const int z = Dominant(Spectrum(r), 3, 512);
+        const double m_raw = depth / 2.25;
+        const std::optional<double> m = Standard(m_raw);
+        const double tip = convex ? *r_hi : *r_lo;
+        const double shift = convex ? tip / m_raw - z / 2.0 - 1.0 : z / 2.0 - 1.0 - tip / m_raw;
+        const double mismatch = SelfMismatch(r, static_cast<int>(std::lround(kBins / double(z))));
+        if (m && o.vertices.size() >= static_cast<std::size_t>(4 * z) && shift > -1.0 &&
+            shift < 1.2 && mismatch < 0.05) {
+          gear = true;
+          has_teeth = true;
+          RecognizedFeature g;
+          Feature& f = g.feature;
+          f.kind = FeatureKind::kGear;
+          f.id = "teeth";
+          f.origin = lift(c, t_min);
+          f.axis = axis;
+          f.length = width;
+          f.teeth = z;
+          f.module = *m;
+          f.internal = !convex;
+          g.fit_error = std::abs(m_raw - *m) * z / 2;
+          g.detail = std::string(convex ? "spur gear" : "internal gear") + ", " +
+                     std::to_string(z) + " teeth (the radius repeats " + std::to_string(z) +
+                     " times around), tooth depth " + Mm(depth) + " = 2.25 x " +
+                     FormatNumber(m_raw, 5) + ", module " + FormatNumber(*m) +
+                     " (ISO 54), profile shift about " + FormatNumber(shift, 2);
+          out.features.push_back(g);
+        }
+      }
+      if (gear || !convex) continue;
+      // A polygon (a nut's outside): 3 to 8 corners, every one turning the same way.
+      if (o.vertices.size() >= 3 && o.vertices.size() <= 8) {
+        std::vector<Vector2d> corners = o.vertices;
+        std::sort(corners.begin(), corners.end(), [&](const Vector2d& a, const Vector2d& b) {
+          return std::atan2(a.y() - circle.center.y(), a.x() - circle.center.x()) <
+                 std::atan2(b.y() - circle.center.y(), b.x() - circle.center.x());
+        });
+        bool turning = true;
+        for (std::size_t i = 0; i < corners.size(); ++i) {
+          const Vector2d a = corners[(i + 1) % corners.size()] - corners[i];
+          const Vector2d b = corners[(i + 2) % corners.size()] - corners[(i + 1) % corners.size()];
+          turning = turning && a.x() * b.y() - a.y() * b.x() > 0;
+        }
+        if (turning) {
+          out.polygon_sides = static_cast<int>(corners.size());
+          continue;
+        }
+      }
+      // A rack: long, repeating along its length on one side.
+      Eigen::Matrix2d C = Eigen::Matrix2d::Zero();
+      Vector2d mean = Vector2d::Zero();
+      for (const Vector2d& p : o.vertices) mean += p / o.vertices.size();
+      for (const Vector2d& p : o.vertices) C += (p - mean) * (p - mean).transpose();
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> pca(C);
+      // The rack's axis: its long direction, with its largest world component positive.
+      Vector2d e1 = pca.eigenvectors().col(1).normalized();
+      if (Canonical(lift(e1, 0.0)).dot(lift(e1, 0.0)) < 0) e1 = -e1;
+      const Vector2d e2(-e1.y(), e1.x());
+      double s_lo = 1e300, s_hi = -1e300;
+      for (const Vector2d& p : o.vertices) {
+        s_lo = std::min(s_lo, p.dot(e1));
+        s_hi = std::max(s_hi, p.dot(e1));
+      }
+      constexpr int kRackBins = 4096;
+      const Profile side = Sample(
+          o, kRackBins, s_lo, s_hi, [&](const Vector2d& q) { return q.dot(e1); },
+          [&](const Vector2d& q) { return q.dot(e2); }, false);
+      // The toothed side varies; the back is straight. Ends excluded.
+      auto variation = [&](const std::vector<double>& s) {
+        const auto [lo, hi] =
+            std::minmax_element(s.begin() + kRackBins / 20, s.end() - kRackBins / 20);
+        return *hi - *lo;
+      };
+      const bool top = variation(side.high) >= variation(side.low);
+      std::vector<double> h = top ? side.high : side.low;
+      if (!top) {
+        for (double& x : h) x = -x;
+      }
+      const double h_depth = variation(h);
+      const double length = s_hi - s_lo;
+      if (h_depth < 1e-3 * length || length < 3 * h_depth) {
+        out.notes.push_back("an outline of " + std::to_string(o.vertices.size()) +
+                            " vertices is neither a circle, nor gear teeth, nor a rack");
+        continue;
+      }
+      const std::vector<double> spectrum = Spectrum(h);
+      const int k = Dominant(spectrum, 2, kRackBins / 8);
+      // Refine the frequency between integers by a parabola through the magnitudes.
+      const double a0 = spectrum[k - 1], a1 = spectrum[k], a2 = spectrum[k + 1];
+      const double denominator = a0 - 2 * a1 + a2;
+      const double k_fine = k + (denominator != 0.0 ? 0.5 * (a0 - a2) / denominator : 0.0);
+      const double pitch = length / k_fine;
+      const double m_pitch = pitch / kPi, m_depth = h_depth / 2.25;
+      const std::optional<double> m = Standard(m_pitch);
+      if (!m || std::abs(m_depth - *m) > 0.05 * *m) {
+        out.notes.push_back("an outline repeats along its length every " + Mm(pitch) +
+                            " but its pitch and depth give no one standard module");
+        continue;
+      }
+      const double tip = *std::max_element(h.begin() + kRackBins / 20, h.end() - kRackBins / 20);
+      RecognizedFeature rack;
+      Feature& f = rack.feature;
+      f.kind = FeatureKind::kRack;
+      f.id = "teeth";
+      const Vector2d n2 = top ? e2 : Vector2d(-e2);
+      f.origin = lift(s_lo * e1 + (tip - *m) * n2, t_min + width / 2);
+      f.axis = lift(e1, 0.0);
+      f.normal = lift(n2, 0.0);
+      f.length = length;
+      f.width = width;
+      f.module = *m;
+      rack.fit_error = std::abs(m_pitch - *m) * kPi;
+      rack.detail = "rack, pitch " + Mm(pitch) + " = pi x " + FormatNumber(m_pitch, 5) +
+                    ", tooth depth " + Mm(h_depth) + ", module " + FormatNumber(*m) +
+                    " (ISO 54), about " + std::to_string(std::lround(length / pitch)) + " teeth";
+      out.features.push_back(rack);
+      has_teeth = true;
     }
-    // A rack: long, repeating along its length on one side.
-    Eigen::Matrix2d C = Eigen::Matrix2d::Zero();
-    Vector2d mean = Vector2d::Zero();
-    for (const Vector2d& p : o.vertices) mean += p / o.vertices.size();
-    for (const Vector2d& p : o.vertices) C += (p - mean) * (p - mean).transpose();
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> pca(C);
-    // The rack's axis: its long direction, with its largest world component positive.
-    Vector2d e1 = pca.eigenvectors().col(1).normalized();
-    if (Canonical(lift(e1, 0.0)).dot(lift(e1, 0.0)) < 0) e1 = -e1;
-    const Vector2d e2(-e1.y(), e1.x());
-    double s_lo = 1e300, s_hi = -1e300;
-    for (const Vector2d& p : o.vertices) {
-      s_lo = std::min(s_lo, p.dot(e1));
-      s_hi = std::max(s_hi, p.dot(e1));
-    }
-    constexpr int kRackBins = 4096;
-    const Profile side = Sample(
-        o, kRackBins, s_lo, s_hi, [&](const Vector2d& q) { return q.dot(e1); },
-        [&](const Vector2d& q) { return q.dot(e2); }, false);
-    // The toothed side varies; the back is straight. Ends excluded.
-    auto variation = [&](const std::vector<double>& s) {
-      const auto [lo, hi] =
-          std::minmax_element(s.begin() + kRackBins / 20, s.end() - kRackBins / 20);
-      return *hi - *lo;
-    };
-    const bool top = variation(side.high) >= variation(side.low);
-    std::vector<double> h = top ? side.high : side.low;
-    if (!top) {
-      for (double& x : h) x = -x;
-    }
-    const double h_depth = variation(h);
-    const double length = s_hi - s_lo;
-    if (h_depth < 1e-3 * length || length < 3 * h_depth) {
-      out.notes.push_back("an outline of " + std::to_string(o.vertices.size()) +
-                          " vertices is neither a circle, nor gear teeth, nor a rack");
-      continue;
-    }
-    const std::vector<double> spectrum = Spectrum(h);
-    const int k = Dominant(spectrum, 2, kRackBins / 8);
-    // Refine the frequency between integers by a parabola through the magnitudes.
-    const double a0 = spectrum[k - 1], a1 = spectrum[k], a2 = spectrum[k + 1];
-    const double denominator = a0 - 2 * a1 + a2;
-    const double k_fine = k + (denominator != 0.0 ? 0.5 * (a0 - a2) / denominator : 0.0);
-    const double pitch = length / k_fine;
-    const double m_pitch = pitch / kPi, m_depth = h_depth / 2.25;
-    const std::optional<double> m = Standard(m_pitch);
-    if (!m || std::abs(m_depth - *m) > 0.05 * *m) {
-      out.notes.push_back("an outline repeats along its length every " + Mm(pitch) +
-                          " but its pitch and depth give no one standard module");
-      continue;
-    }
-    const double tip = *std::max_element(h.begin() + kRackBins / 20, h.end() - kRackBins / 20);
-    RecognizedFeature rack;
-    Feature& f = rack.feature;
-    f.kind = FeatureKind::kRack;
-    f.id = "teeth";
-    const Vector2d n2 = top ? e2 : Vector2d(-e2);
-    f.origin = lift(s_lo * e1 + (tip - *m) * n2, t_min + width / 2);
-    f.axis = lift(e1, 0.0);
-    f.normal = lift(n2, 0.0);
-    f.length = length;
-    f.width = width;
-    f.module = *m;
-    rack.fit_error = std::abs(m_pitch - *m) * kPi;
-    rack.detail = "rack, pitch " + Mm(pitch) + " = pi x " + FormatNumber(m_pitch, 5) +
-                  ", tooth depth " + Mm(h_depth) + ", module " + FormatNumber(*m) +
-                  " (ISO 54), about " + std::to_string(std::lround(length / pitch)) + " teeth";
-    out.features.push_back(rack);
-    has_teeth = true;
   }
   // Below what a mesh's float coordinates resolve: rounded, so that reports read cleanly.
   auto snap = [](double x, double grid) { return std::round(x / grid) * grid + 0.0; };

@@ -51,7 +51,9 @@ const std::vector<double>& StandardModules();
 /// - a convex outline that is long and repeats along its length on one side, with the same
 ///   module from its pitch (pitch / pi) and its depth, is a rack (teeth toward that side, the
 ///   pitch line one module below the tips).
-/// Deterministic. A mesh that is not prismatic yields no features and a note.
+/// The walls across every other principal direction and coordinate axis are searched for
+/// cylinders only (an L-bracket's holes in both legs; a part that is no prism). Deterministic.
+/// A part that is not prismatic gets a note saying so.
 MeshFeatures RecognizeFeatures(const TriangleMesh& mesh);
 
 }  // namespace mechanist

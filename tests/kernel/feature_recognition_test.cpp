@@ -120,7 +120,35 @@ TEST(FeatureRecognition, ShaftsAndPlatesWithHoles) {
   EXPECT_NEAR(diameters[1], 6.6, 1e-9);
 }
 
-TEST(FeatureRecognition, AMeshThatIsNotPrismaticHasNoFeatures) {
+TEST(FeatureRecognition, AnLBracketsHolesAreFoundAlongBothOfTheirAxes) {
+  LBracketSpec spec;
+  spec.length = 80;
+  spec.height = 60;
+  spec.width = 40;
+  spec.thickness = 5;
+  spec.base_holes = {{"", Eigen::Vector2d(50, 0), 8}, {"", Eigen::Vector2d(70, 10), 6}};
+  spec.upright_holes = {{"", Eigen::Vector2d(0, 40), 10}};
+  const LibraryPart part = MakeLibraryPart(spec);
+  const MeshFeatures found = RecognizeFeatures(part.mesh);
+  // Its holes run along z (base) and x (upright): at most one of them along an extrusion axis.
+  // Each library hole is found: same diameter, on the same axis line, through the same wall.
+  for (const Feature& truth : part.features) {
+    if (truth.kind != FeatureKind::kHole) continue;
+    bool matched = false;
+    for (const RecognizedFeature& r : found.features) {
+      const Feature& f = r.feature;
+      matched =
+          matched ||
+          (f.kind == FeatureKind::kHole && std::abs(f.diameter - truth.diameter) < 1e-6 &&
+           std::abs(std::abs(f.axis.dot(truth.axis)) - 1) < 1e-9 &&
+           DistanceToAxis(f, truth.origin) < 1e-6 && std::abs(f.length - truth.length) < 1e-6);
+    }
+    EXPECT_TRUE(matched) << truth.id;
+  }
+  EXPECT_EQ(found.features.size(), 3u);
+}
+
+TEST(FeatureRecognition, ABallHasNoFeatures) {
   const MeshFeatures ball = RecognizeFeatures(MakeUvSphere(5.0, 12, 24));
   EXPECT_TRUE(ball.features.empty());
   EXPECT_FALSE(ball.axis.has_value());
