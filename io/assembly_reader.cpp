@@ -105,6 +105,10 @@ class Reader {
       if (!parts) Fail("", "expected \"parts\" (an array of parts), found no such key");
       ReadParts(*parts, "/parts");
       ReadPlacements(*parts, "/parts");
+      // The heuristic reinterprets only inferred features, never written ones.
+      const auto found = InferNutsOnBolts(&spec_.parts, spec_.tolerance.length,
+                                          spec_.tolerance.angle, &recognised_);
+      spec_.findings.insert(spec_.findings.end(), found.begin(), found.end());
     }
     ForEach(root, "drivers", [this](const Json& v, const std::string& p) { ReadDriver(v, p); });
     ForEach(root, "adjustments",
@@ -319,10 +323,15 @@ class Reader {
 
   void ReadParts(const Json& parts, const std::string& pointer) {
     if (!parts.is_array()) Fail(pointer, "expected an array of parts, found " + Describe(parts));
-    static const std::regex kId("[A-Za-z0-9_.-]+");
     for (std::size_t i = 0; i < parts.size(); ++i) {
-      const std::string p = JoinPointer(pointer, std::to_string(i));
-      const Json& v = parts[i];
+      ReadPart(parts[i], JoinPointer(pointer, std::to_string(i)));
+    }
+  }
+
+  // One part, appended to the spec.
+  void ReadPart(const Json& v, const std::string& p) {
+    static const std::regex kId("[A-Za-z0-9_.-]+");
+    {
       ExpectObject(v, p);
       CheckKeys(v, p, {"id", "mesh", "library", "pose", "place", "ground", "group", "features"});
       Part part;
@@ -371,7 +380,8 @@ class Reader {
           part.features.push_back(std::move(r.feature));
         }
       }
-      part_index_.emplace(part.id, i);
+      recognised_.push_back(mesh && !Find(v, "features"));
+      part_index_.emplace(part.id, spec_.parts.size());
       spec_.parts.push_back(std::move(part));
     }
   }
@@ -401,20 +411,25 @@ class Reader {
     spec_.findings.insert(spec_.findings.end(), found.begin(), found.end());
   }
 
-  // Entries for imported parts: `ground` and extra features.
+  // Entries next to an import: an imported part's id adds `ground` and features to it (an
+  // imported feature's id with `fastening` sets that); a new id adds a part (with a pose; a
+  // placement by features is not read there).
   void AddToImported(const Json& parts, const std::string& pointer) {
     if (!parts.is_array()) Fail(pointer, "expected an array of parts, found " + Describe(parts));
     for (std::size_t i = 0; i < parts.size(); ++i) {
       const std::string p = JoinPointer(pointer, std::to_string(i));
       const Json& v = parts[i];
       ExpectObject(v, p);
-      CheckKeys(v, p, {"id", "ground", "features"});
-      const std::string id = String(Require(v, p, "id", "an imported part's id"), p + "/id");
+      const std::string id = String(Require(v, p, "id", "a part's id"), p + "/id");
       const auto it = part_index_.find(id);
       if (it == part_index_.end()) {
-        Fail(p + "/id", "expected the id of an imported part, found \"" + id +
-                            "\" (new parts next to an import are not supported)");
+        if (Find(v, "place")) {
+          Fail(p + "/place", "expected a pose for a part added next to an import, found a place");
+        }
+        ReadPart(v, p);
+        continue;
       }
+      CheckKeys(v, p, {"id", "ground", "features"});
       Part& part = spec_.parts[it->second];
       if (const Json* ground = Find(v, "ground")) part.ground = Bool(*ground, p + "/ground");
       const Json* features = Find(v, "features");
@@ -422,8 +437,6 @@ class Reader {
       if (!features->is_array()) {
         Fail(p + "/features", "expected an array of features, found " + Describe(*features));
       }
-      // {"id", "fastening"} for an imported feature sets its fastening; others are new.
-      Json added = Json::array();
       for (std::size_t k = 0; k < features->size(); ++k) {
         const std::string fp = JoinPointer(p + "/features", std::to_string(k));
         const Json& f = (*features)[k];
@@ -432,7 +445,7 @@ class Reader {
         const auto existing =
             fid && fid->is_string() ? part.FindFeature(fid->get<std::string>()) : std::nullopt;
         if (!existing) {
-          added.push_back(f);
+          part.features.push_back(ReadFeature(f, fp));
           continue;
         }
         CheckKeys(f, fp, {"id", "fastening"});
@@ -445,7 +458,6 @@ class Reader {
               value == "tight" ? Fastening::kTight : Fastening::kLoose;
         }
       }
-      ReadFeatures(added, p + "/features", part);
     }
   }
 
@@ -1216,6 +1228,8 @@ class Reader {
 
   const JsonSource& src_;
   std::filesystem::path dir_;
+  std::vector<bool>
+      recognised_;  // per part: its features were inferred (mesh or STEP), not written
   AssemblySpec spec_;
   std::map<std::string, std::size_t> part_index_;
   std::map<std::filesystem::path, std::shared_ptr<const TriangleMesh>> mesh_cache_;

@@ -24,9 +24,12 @@ double CoarsePitch(double diameter) {
 }
 
 std::vector<Diagnostic> InferNutsOnBolts(std::vector<Part>* parts, double length_tolerance,
-                                         double angle_tolerance) {
+                                         double angle_tolerance,
+                                         const std::vector<bool>* eligible) {
   std::vector<Diagnostic> found;
+  auto may = [&](std::size_t p) { return !eligible || (*eligible)[p]; };
   for (std::size_t n = 0; n < parts->size(); ++n) {
+    if (!may(n)) continue;
     Part& nut = (*parts)[n];
     std::vector<std::size_t> holes;
     for (std::size_t f = 0; f < nut.features.size(); ++f) {
@@ -39,7 +42,7 @@ std::vector<Diagnostic> InferNutsOnBolts(std::vector<Part>* parts, double length
     if (AngleBetweenLines(hole.axis, *shape.axis) > angle_tolerance) continue;
     const AxisSegment h = hole.WorldAxis(nut.X_WP);
     for (std::size_t b = 0; b < parts->size(); ++b) {
-      if (b == n) continue;
+      if (b == n || !may(b)) continue;
       Part& bolt = (*parts)[b];
       for (Feature& shaft : bolt.features) {
         // A shaft, or one a nut before this one made a thread (a rod with a nut at each end).

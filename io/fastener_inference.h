@@ -14,9 +14,11 @@ namespace mechanist {
 /// overlaps it along the axis, is a nut on a bolt: the hole becomes a tight tapped hole and the
 /// shaft a tight thread (ISO coarse pitch for the diameter), so that recognition makes the
 /// pair fixed and clamps every part whose clearance hole the bolt passes through. Returns one
-/// info diagnostic `nut_on_bolt` per nut, naming both parts and features.
+/// info diagnostic `nut_on_bolt` per nut, naming both parts and features. With `eligible`,
+/// only those parts (whose features were inferred, not written) take part.
 std::vector<Diagnostic> InferNutsOnBolts(std::vector<Part>* parts, double length_tolerance,
-                                         double angle_tolerance);
+                                         double angle_tolerance,
+                                         const std::vector<bool>* eligible = nullptr);
 
 /// ISO 261 coarse pitch (mm) for a nominal diameter (mm): the table's nearest diameter.
 double CoarsePitch(double diameter);

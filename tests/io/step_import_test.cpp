@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -11,6 +12,7 @@
 #include "io/assembly_reader.h"
 #include "io/input_error.h"
 #include "kernel/mesh_check.h"
+#include "kernel/part_library.h"
 #include "reasoning/analysis.h"
 
 namespace mechanist {
@@ -106,14 +108,69 @@ TEST(StepImport, AnImportingFileAddsGroundAndNamesBadImports) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.pointer(), "/import");
   }
+  // A new id adds a part (with a pose, not a place).
+  const Assembly more = ParseAssembly(
+      R"({"mechanist": 1, "import": ")" + kAs1.string() +
+          R"(", "parts": [{"id": "base", "ground": true, "pose": {"position": [0, -600, 0]},
+            "library": {"kind": "plate", "length": 100, "width": 100, "thickness": 5}}]})",
+      dir / "c.json");
+  EXPECT_EQ(more.parts().size(), 19u);
+  EXPECT_TRUE(more.part(*more.FindPart("base")).ground);
   try {
     ParseAssembly(R"({"mechanist": 1, "import": ")" + kAs1.string() +
-                      R"(", "parts": [{"id": "new_part", "ground": true}]})",
+                      R"(", "parts": [{"id": "pin", "mesh": "x.stl",
+                      "place": {"insert": "pin/s", "into": "AS1_PE_ASM.PLATE/hole_1"}}]})",
                   dir / "c.json");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_EQ(e.pointer(), "/parts/0/id");
+    EXPECT_EQ(e.pointer(), "/parts/0/place");
   }
+}
+
+// A binary STL of `mesh`.
+void WriteStl(const TriangleMesh& mesh, const std::filesystem::path& path) {
+  std::ofstream out(path, std::ios::binary);
+  const std::string header(80, ' ');
+  out.write(header.data(), 80);
+  const auto count = static_cast<std::uint32_t>(mesh.faces.size());
+  out.write(reinterpret_cast<const char*>(&count), 4);
+  for (const TriangleMesh::Face& f : mesh.faces) {
+    float values[12] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k) {
+      for (int i = 0; i < 3; ++i)
+        values[3 + 3 * k + i] = static_cast<float>(mesh.vertices[f[k]][i]);
+    }
+    out.write(reinterpret_cast<const char*>(values), sizeof values);
+    const std::uint16_t attribute = 0;
+    out.write(reinterpret_cast<const char*>(&attribute), 2);
+  }
+}
+
+TEST(NutOnBolt, MeshPartsAloneAreANutOnItsBolt) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_nut_stl";
+  std::filesystem::create_directories(dir);
+  HexBoltSpec bolt;
+  bolt.diameter = 6;
+  bolt.length = 20;
+  HexNutSpec nut;
+  nut.diameter = 6;
+  WriteStl(MakeLibraryPart(bolt).mesh, dir / "bolt.stl");
+  WriteStl(MakeLibraryPart(nut).mesh, dir / "nut.stl");
+  const std::string text = R"({"mechanist": 1, "parts": [
+    {"id": "bolt", "mesh": "bolt.stl"},
+    {"id": "nut", "mesh": "nut.stl", "pose": {"position": [0, 0, 10]}}]})";
+  const Assembly a = ParseAssembly(text, dir / "a.json");
+  ASSERT_EQ(a.findings().size(), 1u);
+  EXPECT_EQ(a.findings()[0].code, "nut_on_bolt");
+  const Analysis an = Analyze(a);
+  ASSERT_EQ(an.pairs.size(), 1u);
+  EXPECT_EQ(an.pairs[0].type, PairType::kFixed);
+  // Written features are never reinterpreted.
+  const std::string written = R"({"mechanist": 1, "parts": [
+    {"id": "bolt", "mesh": "bolt.stl", "features": [{"id": "s", "kind": "shaft", "origin": [0, 0, 0],
+      "axis": [0, 0, 1], "diameter": 6, "length": 20}]},
+    {"id": "nut", "mesh": "nut.stl", "pose": {"position": [0, 0, 10]}}]})";
+  EXPECT_TRUE(ParseAssembly(written, dir / "b.json").findings().empty());
 }
 
 }  // namespace
