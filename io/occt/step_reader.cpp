@@ -20,9 +20,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <tuple>
-
 #include <stdexcept>
+#include <tuple>
 
 namespace mechanist {
 namespace {
@@ -184,7 +183,10 @@ class Walker {
         if (name.rfind("=>", 0) == 0) name.clear();  // an unnamed instance
         name = Sanitised(name);
         if (!name.empty() && ++seen[name] > 1) name += "_" + std::to_string(seen[name]);
-        Walk(referred, name.empty() ? path : path.empty() ? name : path + "." + name,
+        Walk(referred,
+             name.empty()   ? path
+             : path.empty() ? name
+                            : path + "." + name,
              location * tool_->GetLocation(components(i)));
       }
       return;
@@ -198,8 +200,9 @@ class Walker {
         auto mesh = std::make_shared<TriangleMesh>();
         std::vector<Feature> features;
         Convert(e.Current(), mesh.get(), &features);
-        cached = cache_.emplace(key, std::make_pair(std::shared_ptr<const TriangleMesh>(mesh),
-                                                    std::move(features)))
+        cached = cache_
+                     .emplace(key, std::make_pair(std::shared_ptr<const TriangleMesh>(mesh),
+                                                  std::move(features)))
                      .first;
       }
       StepSolid s;
@@ -215,7 +218,8 @@ class Walker {
  private:
   Handle(XCAFDoc_ShapeTool) tool_;
   std::vector<StepSolid>* out_;
-  std::map<std::pair<int, int>, std::pair<std::shared_ptr<const TriangleMesh>, std::vector<Feature>>>
+  std::map<std::pair<int, int>,
+           std::pair<std::shared_ptr<const TriangleMesh>, std::vector<Feature>>>
       cache_;
 };
 

@@ -35,8 +35,7 @@ std::string_view ToString(LeastSquaresSummary::Status status) {
   return "failure";
 }
 
-LeastSquaresSummary SolveLeastSquares(const LeastSquaresProblem& problem,
-                                      std::vector<double>* x) {
+LeastSquaresSummary SolveLeastSquares(const LeastSquaresProblem& problem, std::vector<double>* x) {
   const std::size_t n = x->size();
   const bool bounded = !problem.lower.empty() || !problem.upper.empty();
   if (bounded && (problem.lower.size() != n || problem.upper.size() != n)) {
