@@ -302,7 +302,6 @@ struct AnimateRequest {
 
 int Animate(const std::string& file, const AnimateRequest& request) {
   namespace fs = std::filesystem;
-  const mechanist::Assembly assembly = Load(file, std::cout);
   auto usage = [&](const std::string& message) {
     return mechanist::InputError(file, "", 0, 0, message);
   };
@@ -336,7 +335,6 @@ int Animate(const std::string& file, const AnimateRequest& request) {
   if (request.gaps < 0 || !std::isfinite(request.gaps)) {
     throw usage("--gaps: expected a voxel length > 0");
   }
-  const std::optional<std::size_t> driver = DriverIndex(file, assembly, request.driver);
   if (request.amount < 0 && request.amount != -1) throw usage("--amount: expected a number >= 0");
   const bool render = formats.count("png") || formats.count("ogv") || formats.count("mp4");
   std::string no_display;
@@ -344,6 +342,9 @@ int Animate(const std::string& file, const AnimateRequest& request) {
     throw usage("--format " + std::string(formats.count("png") ? "png" : "ogv/mp4") + ": " +
                 no_display);
   }
+  // The options are checked before the file is read and its adjustments solved.
+  const mechanist::Assembly assembly = Load(file, std::cout);
+  const std::optional<std::size_t> driver = DriverIndex(file, assembly, request.driver);
 
   const mechanist::Analysis analysis = mechanist::Analyze(assembly);
   const std::optional<double> amount =

@@ -14,7 +14,7 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-double Num(double x) { return std::strtod(FormatNumber(x, 12).c_str(), nullptr); }
+double Num(double x) { return RoundToSignificant(x, 12); }
 
 // A path written relative to `from` rewritten relative to `to` (absolute paths stay).
 std::string Rebase(const std::string& path, const std::filesystem::path& from,

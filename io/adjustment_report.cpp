@@ -14,10 +14,7 @@ using Json = nlohmann::ordered_json;
 
 // Solved values carry the solver's noise (1e-11): reports keep 9 decimals, so that they are
 // byte-identical wherever the noise differs.
-double Num(double x) {
-  const double rounded = std::round(x * 1e9) / 1e9;
-  return std::strtod(FormatNumber(rounded == 0.0 ? 0.0 : rounded, 9).c_str(), nullptr);
-}
+double Num(double x) { return RoundToSignificant(std::round(x * 1e9) / 1e9); }
 
 // Four decimals for the summary, without "-0".
 std::string Fixed(double x) {

@@ -14,10 +14,7 @@ using Json = nlohmann::ordered_json;
 
 // Report numbers carry 9 significant digits, so that rounding noise never shows and the same
 // input gives byte-identical reports.
-double Num(double x) {
-  if (!std::isfinite(x)) return x;
-  return std::strtod(FormatNumber(x, 9).c_str(), nullptr);
-}
+double Num(double x) { return RoundToSignificant(x); }
 
 Json Point(const Eigen::Vector3d& p) { return Json::array({Num(p.x()), Num(p.y()), Num(p.z())}); }
 

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <map>
 #include <utility>
 
 #include "kernel/feature_recognition.h"
@@ -28,6 +29,7 @@ std::vector<Diagnostic> InferNutsOnBolts(std::vector<Part>* parts, double length
                                          const std::vector<bool>* eligible) {
   std::vector<Diagnostic> found;
   auto may = [&](std::size_t p) { return !eligible || (*eligible)[p]; };
+  std::map<const TriangleMesh*, MeshFeatures> shapes;
   for (std::size_t n = 0; n < parts->size(); ++n) {
     if (!may(n)) continue;
     Part& nut = (*parts)[n];
@@ -36,7 +38,11 @@ std::vector<Diagnostic> InferNutsOnBolts(std::vector<Part>* parts, double length
       if (nut.features[f].kind == FeatureKind::kHole) holes.push_back(f);
     }
     if (holes.size() != 1) continue;
-    const MeshFeatures shape = RecognizeFeatures(*nut.mesh);
+    // Instances of one product share their mesh: recognised once.
+    auto cached = shapes.find(nut.mesh.get());
+    if (cached == shapes.end())
+      cached = shapes.emplace(nut.mesh.get(), RecognizeFeatures(*nut.mesh)).first;
+    const MeshFeatures& shape = cached->second;
     if (shape.polygon_sides == 0 || !shape.axis) continue;
     Feature& hole = nut.features[holes[0]];
     if (AngleBetweenLines(hole.axis, *shape.axis) > angle_tolerance) continue;

@@ -11,10 +11,7 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-double Num(double x) {
-  const double rounded = std::strtod(FormatNumber(x, 9).c_str(), nullptr);
-  return std::abs(rounded) < 1e-12 ? 0.0 : rounded;
-}
+double Num(double x) { return RoundToSignificant(x); }
 
 Json Vec(const Eigen::Vector3d& v) { return Json::array({Num(v.x()), Num(v.y()), Num(v.z())}); }
 

@@ -12,7 +12,7 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 // 9 significant digits, as in the other reports: no rounding noise, byte-identical output.
-double Num(double x) { return std::strtod(FormatNumber(x, 9).c_str(), nullptr); }
+double Num(double x) { return RoundToSignificant(x); }
 
 Json Point(const Eigen::Vector3d& p) { return Json::array({Num(p.x()), Num(p.y()), Num(p.z())}); }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace mechanist {
 
@@ -14,6 +15,11 @@ std::string FormatNumber(double value, int significant) {
   // A value that rounds to zero may print as "-0"; a sign on zero means nothing to a reader.
   if (text == "-0") text = "0";
   return text;
+}
+
+double RoundToSignificant(double value, int significant) {
+  if (!std::isfinite(value)) return value;
+  return std::strtod(FormatNumber(value, significant).c_str(), nullptr);
 }
 
 }  // namespace mechanist

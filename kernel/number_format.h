@@ -9,4 +9,8 @@ namespace mechanist {
 /// identical across runs and free of rotation round-off.
 std::string FormatNumber(double value, int significant = 6);
 
+/// `value` rounded as FormatNumber prints it (not-finite values unchanged): the numbers of
+/// JSON reports, byte-identical across runs.
+double RoundToSignificant(double value, int significant = 9);
+
 }  // namespace mechanist
