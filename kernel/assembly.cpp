@@ -1,6 +1,7 @@
 #include "kernel/assembly.h"
 
-#include <set>
+#include <algorithm>
+#include <numeric>
 #include <stdexcept>
 #include <utility>
 
@@ -20,12 +21,19 @@ Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
       throw std::invalid_argument("duplicate part id '" + part.id + "'");
     }
     if (!part.mesh) throw std::invalid_argument("part '" + part.id + "' has no mesh");
-    std::set<std::string> feature_ids;
-    for (const Feature& f : part.features) {
-      if (!feature_ids.insert(f.id).second) {
-        throw std::invalid_argument("duplicate feature id '" + f.id + "' in part '" + part.id +
-                                    "'");
+    std::vector<std::uint32_t> by_id(part.features.size());
+    std::iota(by_id.begin(), by_id.end(), 0);
+    std::sort(by_id.begin(), by_id.end(), [&](std::uint32_t x, std::uint32_t y) {
+      return part.features[x].id < part.features[y].id;
+    });
+    first_feature_.push_back(feature_rank_.size());
+    feature_rank_.resize(feature_rank_.size() + by_id.size());
+    for (std::uint32_t r = 0; r < by_id.size(); ++r) {
+      if (r > 0 && part.features[by_id[r]].id == part.features[by_id[r - 1]].id) {
+        throw std::invalid_argument("duplicate feature id '" + part.features[by_id[r]].id +
+                                    "' in part '" + part.id + "'");
       }
+      feature_rank_[first_feature_.back() + by_id[r]] = r;
     }
     for (const PlacementCondition& c : part.placement) {
       if (c.feature >= part.features.size()) {
@@ -34,6 +42,9 @@ Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
       CheckRef(c.target, "placement target");
     }
   }
+  part_rank_.resize(spec_.parts.size());
+  std::size_t rank = 0;
+  for (const auto& [id, part] : part_index_) part_rank_[part] = rank++;
   for (const Driver& d : spec_.drivers) {
     CheckRef(d.feature, "driver feature");
     if (d.relative_to) CheckPart(*d.relative_to, "driver relative_to");

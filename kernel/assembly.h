@@ -150,6 +150,14 @@ class Assembly {
   }
   /// "part_id/feature_id".
   std::string FeatureName(FeatureRef ref) const;
+  /// The part's position when the parts are ordered by id: sorting by ranks orders by name
+  /// (so that reports do not depend on the file's order) without comparing strings.
+  std::size_t PartRank(std::size_t part) const { return part_rank_.at(part); }
+  /// The feature's position among its part's features ordered by id; with PartRank, ordering
+  /// by (part rank, feature rank) is ordering by (part id, feature id).
+  std::size_t FeatureRank(FeatureRef ref) const {
+    return feature_rank_.at(first_feature_.at(ref.part) + ref.feature);
+  }
 
  private:
   void CheckRef(FeatureRef ref, const char* what) const;
@@ -157,6 +165,9 @@ class Assembly {
 
   AssemblySpec spec_;
   std::map<std::string, std::size_t, std::less<>> part_index_;
+  std::vector<std::size_t> part_rank_;
+  std::vector<std::size_t> first_feature_;  ///< per part: its first entry in feature_rank_
+  std::vector<std::uint32_t> feature_rank_;
 };
 
 }  // namespace mechanist

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <map>
 
-#include "kernel/assembly_state.h"
 #include "kernel/line_geometry.h"
 #include "kernel/number_format.h"
 
@@ -25,8 +24,9 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
   std::vector<Diagnostic> out;
   const double L = assembly.tolerance().length;
   const double A = assembly.tolerance().angle;
-  const AssemblyState state = InitialState(assembly);
-  auto world = [&](FeatureRef r) { return assembly.feature(r).WorldAxis(state.X_WP[r.part]); };
+  auto world = [&](FeatureRef r) {
+    return assembly.feature(r).WorldAxis(assembly.part(r.part).X_WP);
+  };
   auto too_short = [&](FeatureRef thread, FeatureRef nut, double shortfall,
                        const std::string& how) {
     out.push_back({Severity::kWarning,
@@ -39,13 +39,24 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
                    {assembly.FeatureName(thread), assembly.FeatureName(nut)}});
   };
 
-  // The pairs of each part, and the thread pairs of each tapped hole: one pass over the pairs.
-  std::vector<std::vector<const Pair*>> pairs_of(assembly.parts().size());
-  std::map<FeatureRef, std::vector<const Pair*>> threads_in;
+  // The thread pairs of each tapped hole, by the hole's index among all features (pairs in
+  // order): flat arrays rather than a container per feature, for large assemblies.
+  std::vector<std::size_t> first_feature(assembly.parts().size() + 1, 0);
+  for (std::size_t q = 0; q < assembly.parts().size(); ++q) {
+    first_feature[q + 1] = first_feature[q] + assembly.part(q).features.size();
+  }
+  auto index = [&](FeatureRef r) { return first_feature[r.part] + r.feature; };
+  std::vector<std::size_t> threads_start(first_feature.back() + 1, 0);
   for (const Pair& pair : pairs) {
-    pairs_of[pair.a.part].push_back(&pair);
-    pairs_of[pair.b.part].push_back(&pair);
-    if (IsThreadPair(pair)) threads_in[pair.b].push_back(&pair);
+    if (IsThreadPair(pair)) ++threads_start[index(pair.b) + 1];
+  }
+  for (std::size_t i = 1; i < threads_start.size(); ++i) threads_start[i] += threads_start[i - 1];
+  std::vector<const Pair*> threads_in(threads_start.back());
+  {
+    std::vector<std::size_t> next(threads_start.begin(), threads_start.end() - 1);
+    for (const Pair& pair : pairs) {
+      if (IsThreadPair(pair)) threads_in[next[index(pair.b)]++] = &pair;
+    }
   }
   std::vector<FeatureRef> threads;  // every thread feature, for nuts without one
   for (std::size_t q = 0; q < assembly.parts().size(); ++q) {
@@ -61,9 +72,8 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
       if (h.kind != FeatureKind::kTappedHole || !h.through) continue;
       const FeatureRef nut{p, f};
       bool engaged = false;
-      const auto in = threads_in.find(nut);
-      for (const Pair* found : in == threads_in.end() ? std::vector<const Pair*>{} : in->second) {
-        const Pair& pair = *found;
+      for (std::size_t k = threads_start[index(nut)]; k < threads_start[index(nut) + 1]; ++k) {
+        const Pair& pair = *threads_in[k];
         engaged = true;
         const double overlap = AxialOverlap(world(pair.a), world(nut));
         if (overlap < h.length - L) {
@@ -102,20 +112,25 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
     }
   }
 
-  for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
-    std::vector<std::string> loose;
-    bool firm = false;
-    for (const Pair* found : pairs_of[p]) {
-      const Pair& pair = *found;
-      if (pair.fastening == PairFastening::kLoose) {
-        loose.push_back(assembly.FeatureName(pair.a) + " in " + assembly.FeatureName(pair.b));
-      } else if (pair.fastening != PairFastening::kNone) {
-        firm = true;
-      }
+  // Parts held only by loose threads: flagged in one pass, their pairs listed in a second.
+  std::vector<bool> has_loose(assembly.parts().size(), false), firm(has_loose);
+  for (const Pair& pair : pairs) {
+    if (pair.fastening == PairFastening::kNone) continue;
+    for (std::size_t part : {pair.a.part, pair.b.part}) {
+      (pair.fastening == PairFastening::kLoose ? has_loose : firm)[part] = true;
     }
-    if (loose.empty() || firm) continue;
-    std::string list;
-    for (const std::string& l : loose) list += (list.empty() ? "" : ", ") + l;
+  }
+  std::map<std::size_t, std::string> loose;  // part -> its loose pairs, in pair order
+  for (const Pair& pair : pairs) {
+    if (pair.fastening != PairFastening::kLoose) continue;
+    for (std::size_t part : {pair.a.part, pair.b.part}) {
+      if (firm[part]) continue;
+      std::string& list = loose[part];
+      list += (list.empty() ? "" : ", ") + assembly.FeatureName(pair.a) + " in " +
+              assembly.FeatureName(pair.b);
+    }
+  }
+  for (const auto& [p, list] : loose) {
     out.push_back({Severity::kWarning,
                    "loose_fastening_only",
                    "part " + assembly.part(p).id + " is held only by loose threads (" + list +

@@ -345,6 +345,13 @@ bool KinematicModel::Carries(std::size_t body, FeatureRef f) const {
   // another stage's planet) does not count.
   const std::size_t target = body_of_part_[f.part];
   auto other = [](const Joint& j, std::size_t b) { return j.body_a == b ? j.body_b : j.body_a; };
+  const std::vector<std::size_t>& theirs = joints_of_[target];
+  // A direct joint is found from f's side first: a frame's list of joints is long, a moving
+  // body's short.
+  for (std::size_t k = 0; k < theirs.size() && k < kCarrierScanLimit; ++k) {
+    const Joint& t = joints_[theirs[k]];
+    if (other(t, target) == body && carried_by(t)) return true;
+  }
   std::vector<std::size_t> vias;  // bodies the carrier turns against about f's axis
   const std::vector<std::size_t>& own = joints_of_[body];
   for (std::size_t i = 0; i < own.size() && i < kCarrierScanLimit; ++i) {
@@ -355,7 +362,6 @@ bool KinematicModel::Carries(std::size_t body, FeatureRef f) const {
     vias.push_back(via);
   }
   if (vias.empty()) return false;
-  const std::vector<std::size_t>& theirs = joints_of_[target];
   for (std::size_t k = 0; k < theirs.size() && k < kCarrierScanLimit; ++k) {
     const Joint& t = joints_[theirs[k]];
     if (std::find(vias.begin(), vias.end(), other(t, target)) != vias.end() && carried_by(t)) {

@@ -60,6 +60,32 @@ class Solver {
   /// system, for its free motions.
   DrivenMotion Solve(const std::vector<ImposedMotion>& imposed,
                      const std::vector<std::string>& labels, LinearSystem* system = nullptr) const {
+    std::vector<ExactReal> x;
+    DrivenMotion motion = SolveRates(imposed, labels, x, system);
+    Describe(x, motion);
+    return motion;
+  }
+
+  /// `motion` (solved with rates `x`) with every rate multiplied by `factor`: the motion of
+  /// the same drivers at other rates, without solving again (velocities are linear in the
+  /// drivers' rates).
+  DrivenMotion Scaled(const DrivenMotion& motion, const std::vector<ExactReal>& x,
+                      const ExactReal& factor) const {
+    DrivenMotion scaled;
+    scaled.possible = motion.possible;
+    scaled.contradiction = motion.contradiction;
+    scaled.reason = motion.reason;
+    std::vector<ExactReal> y;
+    y.reserve(x.size());
+    for (const ExactReal& value : x) y.push_back(value * factor);
+    Describe(y, scaled);
+    return scaled;
+  }
+
+  /// The rates `x` of the model's freedoms under `imposed`, and whether they are possible.
+  DrivenMotion SolveRates(const std::vector<ImposedMotion>& imposed,
+                          const std::vector<std::string>& labels, std::vector<ExactReal>& x,
+                          LinearSystem* system = nullptr) const {
     DrivenMotion motion;
     LinearSystem s = structural_;
     std::vector<std::size_t> locked_worms = BackDrivenWorms(imposed);
@@ -86,9 +112,7 @@ class Solver {
                         ": they drive the same freedom";
       }
     }
-    const std::vector<ExactReal> x =
-        motion.possible ? s.Solve() : std::vector<ExactReal>(model_.freedoms().size());
-    Describe(x, motion);
+    x = motion.possible ? s.Solve() : std::vector<ExactReal>(model_.freedoms().size());
     if (system) *system = std::move(s);
     return motion;
   }
@@ -99,6 +123,30 @@ class Solver {
 
   /// The parts of a body, ascending.
   const std::vector<std::size_t>& PartsOf(std::size_t body) const { return parts_of_body_[body]; }
+
+  /// Fills `motion`'s part and feature motions from the freedoms' rates `x`.
+  void Describe(const std::vector<ExactReal>& x, DrivenMotion& motion) const {
+    std::vector<Eigen::Vector3d> omega, v;
+    model_.Twists(x, omega, v);
+    const std::size_t ground = model_.ground();
+    const std::size_t parts = assembly_.parts().size();
+    motion.parts.resize(parts);
+    motion.features.resize(parts);
+    for (std::size_t p = 0; p < parts; ++p) {
+      const std::size_t body = model_.body_of_part(p);
+      const Part& part = assembly_.part(p);
+      std::vector<FeatureRate>& rates = motion.features[p];
+      for (std::size_t f = 0; f < part.features.size(); ++f) {
+        const AxisSegment axis = model_.WorldAxis({p, f});
+        rates.push_back(
+            {KinematicModel::Evaluate(model_.Angular(body, ground, axis.direction), x),
+             KinematicModel::Evaluate(model_.Linear(body, ground, axis.origin, axis.direction), x) /
+                 mm_per_length_});
+      }
+      motion.parts[p] = Classify(p, omega[body], v[body], rates);
+      motion.parts[p].path = Path(body, x);
+    }
+  }
 
  private:
   LinearSystem::Row ImposedRow(const ImposedMotion& m) const {
@@ -146,29 +194,6 @@ class Solver {
     }
     std::sort(locked.begin(), locked.end());
     return locked;
-  }
-
-  void Describe(const std::vector<ExactReal>& x, DrivenMotion& motion) const {
-    std::vector<Eigen::Vector3d> omega, v;
-    model_.Twists(x, omega, v);
-    const std::size_t ground = model_.ground();
-    const std::size_t parts = assembly_.parts().size();
-    motion.parts.resize(parts);
-    motion.features.resize(parts);
-    for (std::size_t p = 0; p < parts; ++p) {
-      const std::size_t body = model_.body_of_part(p);
-      const Part& part = assembly_.part(p);
-      std::vector<FeatureRate>& rates = motion.features[p];
-      for (std::size_t f = 0; f < part.features.size(); ++f) {
-        const AxisSegment axis = model_.WorldAxis({p, f});
-        rates.push_back(
-            {KinematicModel::Evaluate(model_.Angular(body, ground, axis.direction), x),
-             KinematicModel::Evaluate(model_.Linear(body, ground, axis.origin, axis.direction), x) /
-                 mm_per_length_});
-      }
-      motion.parts[p] = Classify(p, omega[body], v[body], rates);
-      motion.parts[p].path = Path(body, x);
-    }
   }
 
   // The screws of the joints from the ground to `body`, ground first.
@@ -418,24 +443,37 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   const std::vector<ImposedMotion> imposed = DriverMotions(assembly);
   std::vector<std::string> labels;
   for (const Driver& d : assembly.drivers()) labels.push_back("driver " + d.id);
+  LinearSystem driven_system = solver.structural();
+  // With one driver, its motion at its rate is its motion at unit rate scaled (velocities
+  // are linear in the drivers' rates): one solve instead of two.
+  const bool one_driver = imposed.size() == 1 && imposed.front().rate != 0.0;
+  std::optional<DrivenMotion> together;
   for (std::size_t i = 0; i < imposed.size(); ++i) {
     // Driver i first, at unit rate (one revolution, or one of the file's length units: rates
     // are mm inside), then the others held still.
     std::vector<ImposedMotion> alone{imposed[i]};
     std::vector<std::string> names{labels[i]};
-    alone.front().rate = imposed[i].rotation ? 1.0 : assembly.units().mm_per_length;
+    const double unit = imposed[i].rotation ? 1.0 : assembly.units().mm_per_length;
+    alone.front().rate = unit;
     for (std::size_t k = 0; k < imposed.size(); ++k) {
       if (k == i) continue;
       alone.push_back(imposed[k]);
       alone.back().rate = 0.0;
       names.push_back(labels[k]);
     }
-    DrivenMotion m = solver.Solve(alone, names);
+    std::vector<ExactReal> x;
+    DrivenMotion m = solver.SolveRates(alone, names, x, one_driver ? &driven_system : nullptr);
+    if (one_driver) {
+      together = solver.Scaled(
+          m, x, ExactReal::FromDecimal(imposed[i].rate) / ExactReal::FromDecimal(unit));
+    }
+    solver.Describe(x, m);
     m.driver = i;
     result.driven.push_back(std::move(m));
   }
-  LinearSystem driven_system = solver.structural();
-  if (!imposed.empty()) {
+  if (together) {
+    result.driven.push_back(std::move(*together));
+  } else if (!imposed.empty()) {
     result.driven.push_back(solver.Solve(imposed, labels, &driven_system));
   }
   for (const DrivenMotion& m : result.driven) {
@@ -474,7 +512,7 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     const std::vector<std::size_t>& own = solver.PartsOf(child);
     // Named by part ids, so that the file's order of parts changes nothing.
     const auto by_id = [&](std::size_t x, std::size_t y) {
-      return assembly.part(x).id < assembly.part(y).id;
+      return assembly.PartRank(x) < assembly.PartRank(y);
     };
     free.part = own.empty() ? 0 : *std::min_element(own.begin(), own.end(), by_id);
     for (std::size_t body : MovedBodies(model, children, n)) {

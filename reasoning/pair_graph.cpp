@@ -18,7 +18,7 @@ using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS
 struct PairGraph::Impl {
   Graph all;    ///< every pair; edge property: the pair's index
   Graph fixed;  ///< fixed pairs, plus edges from ground parts to the world vertex (last)
-  std::vector<std::string> ids;
+  std::vector<std::size_t> rank;  ///< per part: Assembly::PartRank
   std::vector<bool> ground;
 };
 
@@ -33,7 +33,7 @@ PairGraph::PairGraph(const Assembly& assembly, const std::vector<Pair>& pairs)
     if (p.type == PairType::kFixed) boost::add_edge(p.a.part, p.b.part, i, impl_->fixed);
   }
   for (std::size_t part = 0; part < n; ++part) {
-    impl_->ids.push_back(assembly.part(part).id);
+    impl_->rank.push_back(assembly.PartRank(part));
     impl_->ground.push_back(assembly.part(part).ground);
     if (assembly.part(part).ground) boost::add_edge(part, n, pairs.size(), impl_->fixed);
   }
@@ -65,14 +65,14 @@ std::vector<Subassembly> PairGraph::Subassemblies() const {
     g.ground = g.ground || impl_->ground[part];
   }
   std::erase_if(groups, [](const Subassembly& g) { return g.parts.empty(); });  // lone world
-  const auto& ids = impl_->ids;
+  const auto& rank = impl_->rank;
   for (Subassembly& g : groups) {
     std::sort(g.parts.begin(), g.parts.end(),
-              [&](std::size_t x, std::size_t y) { return ids[x] < ids[y]; });
+              [&](std::size_t x, std::size_t y) { return rank[x] < rank[y]; });
   }
   std::sort(groups.begin(), groups.end(), [&](const Subassembly& x, const Subassembly& y) {
     if (x.ground != y.ground) return x.ground;
-    return ids[x.parts.front()] < ids[y.parts.front()];
+    return rank[x.parts.front()] < rank[y.parts.front()];
   });
   return groups;
 }

@@ -1,10 +1,10 @@
 #include "reasoning/pair_recognition.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
-#include <map>
-#include <set>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -45,6 +45,10 @@ class Recognizer {
         A_(assembly.tolerance().angle),
         near_L_(std::max(4 * L_, 0.5)),
         near_A_(std::max(4 * A_, 2.0 * kPi / 180.0)) {
+    std::size_t feature_count = 0;
+    for (const Part& part : assembly.parts()) feature_count += part.features.size();
+    features_.reserve(feature_count);
+    first_feature_.reserve(assembly.parts().size());
     for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
       const Part& part = assembly.part(p);
       first_feature_.push_back(features_.size());
@@ -135,51 +139,73 @@ class Recognizer {
       all.Extend(w.reach);
     }
     std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
-    const double cell = std::max(extents[extents.size() / 2], 1e-3);
-    auto coord = [&](double x, int axis) {
-      return static_cast<std::int64_t>(std::floor((x - all.min[axis]) / cell));
-    };
     constexpr std::int64_t kMaxCellsPerBox = 512;
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
+    constexpr int kKeyBits = 32;       // an entry is its cell's key over its feature's index
     std::vector<std::uint32_t> large;  // boxes spanning too many cells: tested against all
-    std::vector<std::array<std::int64_t, 3>> low(features_.size());
-    for (std::uint32_t i = 0; i < features_.size(); ++i) {
-      const Aabb& b = features_[i].reach;
-      std::array<std::int64_t, 3> lo{}, hi{};
-      std::int64_t count = 1;
-      for (int k = 0; k < 3; ++k) {
-        lo[k] = coord(b.min[k], k);
-        hi[k] = coord(b.max[k], k);
-        count *= hi[k] - lo[k] + 1;
+    std::vector<std::array<std::int64_t, 3>> low(features_.size()), high(features_.size());
+    std::array<int, 3> bits{};
+    std::size_t entry_count = 0;
+    // Cells of the median reach, doubled while the grid needs more than kKeyBits bits of key
+    // (a huge assembly of small features: more candidates per cell, still every pair once).
+    for (double cell = std::max(extents[extents.size() / 2], 1e-3);; cell *= 2) {
+      large.clear();
+      entry_count = 0;
+      std::array<std::int64_t, 3> extent{1, 1, 1};  // cells per axis over the small boxes
+      for (std::uint32_t i = 0; i < features_.size(); ++i) {
+        const Aabb& b = features_[i].reach;
+        std::int64_t count = 1;
+        for (int k = 0; k < 3; ++k) {
+          low[i][k] = static_cast<std::int64_t>(std::floor((b.min[k] - all.min[k]) / cell));
+          high[i][k] = static_cast<std::int64_t>(std::floor((b.max[k] - all.min[k]) / cell));
+          count *= high[i][k] - low[i][k] + 1;
+        }
+        if (count > kMaxCellsPerBox) {
+          large.push_back(i);
+          continue;
+        }
+        entry_count += static_cast<std::size_t>(count);
+        for (int k = 0; k < 3; ++k) extent[k] = std::max(extent[k], high[i][k] + 1);
       }
-      low[i] = lo;
-      if (count > kMaxCellsPerBox || hi[0] >= (1 << 21) || hi[1] >= (1 << 21) ||
-          hi[2] >= (1 << 21)) {
-        large.push_back(i);
+      bits = {};
+      for (int k = 0; k < 3; ++k) {
+        while ((std::int64_t{1} << bits[k]) < extent[k]) ++bits[k];
+      }
+      if (bits[0] + bits[1] + bits[2] <= kKeyBits) break;
+    }
+    const int shift_y = bits[2], shift_x = bits[1] + bits[2], key_bits = shift_x + bits[0];
+    std::vector<std::uint64_t> entries;
+    entries.reserve(entry_count);
+    std::size_t next_large = 0;
+    for (std::uint32_t i = 0; i < features_.size(); ++i) {
+      if (next_large < large.size() && large[next_large] == i) {
+        ++next_large;
         continue;
       }
-      for (std::int64_t x = lo[0]; x <= hi[0]; ++x) {
-        for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
-          for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
-            entries.push_back({static_cast<std::uint64_t>(x) << 42 |
-                                   static_cast<std::uint64_t>(y) << 21 |
-                                   static_cast<std::uint64_t>(z),
-                               i});
+      for (std::int64_t x = low[i][0]; x <= high[i][0]; ++x) {
+        for (std::int64_t y = low[i][1]; y <= high[i][1]; ++y) {
+          for (std::int64_t z = low[i][2]; z <= high[i][2]; ++z) {
+            const std::uint64_t key = static_cast<std::uint64_t>(x) << shift_x |
+                                      static_cast<std::uint64_t>(y) << shift_y |
+                                      static_cast<std::uint64_t>(z);
+            entries.push_back(key << 32 | i);
           }
         }
       }
     }
-    // Least-significant-digit radix sort by cell key (16-bit digits), stable, so entries of
-    // one cell stay in feature order: the same order as sorting the pairs, in linear time.
+    // Least-significant-digit radix sort by cell key (8-bit digits: few enough buckets for
+    // the scattered writes to stay in cache at any size), stable, so entries of one cell stay
+    // in feature order: the same order as sorting the pairs, in linear time.
     {
-      std::vector<std::pair<std::uint64_t, std::uint32_t>> buffer(entries.size());
-      std::vector<std::size_t> count(1 << 16);
-      for (int shift = 0; shift < 64; shift += 16) {
-        std::fill(count.begin(), count.end(), 0);
-        for (const auto& e : entries) ++count[(e.first >> shift) & 0xFFFF];
+      constexpr int kDigitBits = 8;
+      constexpr std::uint64_t kMask = (std::uint64_t{1} << kDigitBits) - 1;
+      std::vector<std::uint64_t> buffer(entries.size());
+      std::array<std::size_t, std::size_t{1} << kDigitBits> count{};
+      for (int shift = 32; shift < 32 + key_bits; shift += kDigitBits) {
+        count.fill(0);
+        for (const std::uint64_t e : entries) ++count[(e >> shift) & kMask];
         std::size_t sum = 0;
         for (std::size_t& n : count) sum += std::exchange(n, sum);
-        for (const auto& e : entries) buffer[count[(e.first >> shift) & 0xFFFF]++] = e;
+        for (const std::uint64_t e : entries) buffer[count[(e >> shift) & kMask]++] = e;
         entries.swap(buffer);
       }
     }
@@ -189,15 +215,17 @@ class Recognizer {
       if (x.ref.part != y.ref.part && x.reach.Intersects(y.reach)) test(x, y);
     };
     for (std::size_t begin = 0; begin < entries.size();) {
+      const std::uint64_t key = entries[begin] >> 32;
       std::size_t end = begin;
-      while (end < entries.size() && entries[end].first == entries[begin].first) ++end;
-      const std::uint64_t key = entries[begin].first;
-      const std::array<std::int64_t, 3> here{static_cast<std::int64_t>(key >> 42),
-                                             static_cast<std::int64_t>((key >> 21) & 0x1FFFFF),
-                                             static_cast<std::int64_t>(key & 0x1FFFFF)};
+      while (end < entries.size() && entries[end] >> 32 == key) ++end;
+      const std::array<std::int64_t, 3> here{
+          static_cast<std::int64_t>(key >> shift_x),
+          static_cast<std::int64_t>((key >> shift_y) & ((std::uint64_t{1} << bits[1]) - 1)),
+          static_cast<std::int64_t>(key & ((std::uint64_t{1} << bits[2]) - 1))};
       for (std::size_t a = begin; a < end; ++a) {
         for (std::size_t b = a + 1; b < end; ++b) {
-          const std::uint32_t i = entries[a].second, j = entries[b].second;
+          const auto i = static_cast<std::uint32_t>(entries[a]);
+          const auto j = static_cast<std::uint32_t>(entries[b]);
           bool owner = true;
           for (int k = 0; k < 3; ++k) owner &= std::max(low[i][k], low[j][k]) == here[k];
           if (owner) candidate(std::min(i, j), std::max(i, j));
@@ -587,9 +615,8 @@ class Recognizer {
 
   // ---- overrides and side effects ----
 
-  const WorldFeature& At(FeatureRef ref) const {
-    return features_[first_feature_[ref.part] + ref.feature];
-  }
+  std::size_t Index(FeatureRef ref) const { return first_feature_[ref.part] + ref.feature; }
+  const WorldFeature& At(FeatureRef ref) const { return features_[Index(ref)]; }
 
   static bool SameFeatures(const Pair& p, FeatureRef f, FeatureRef g) {
     return (p.a == f && p.b == g) || (p.a == g && p.b == f);
@@ -615,12 +642,14 @@ class Recognizer {
 
   /// A tight thread fixed in a nut or tapped hole clamps the parts of its clearance holes.
   void ApplyClamps() {
-    std::set<FeatureRef> clamping;
+    std::vector<bool> clamping(features_.size(), false);  // per entry of features_
     for (const Pair& p : pairs_) {
-      if (p.type == PairType::kFixed && p.fastening == PairFastening::kTight) clamping.insert(p.a);
+      if (p.type == PairType::kFixed && p.fastening == PairFastening::kTight) {
+        clamping[Index(p.a)] = true;
+      }
     }
     for (Pair& p : pairs_) {
-      if (p.type == PairType::kCylindrical && clamping.count(p.a) &&
+      if (p.type == PairType::kCylindrical && clamping[Index(p.a)] &&
           assembly_.feature(p.a).kind == FeatureKind::kThread &&
           assembly_.feature(p.b).kind == FeatureKind::kHole) {
         p.type = PairType::kFixed;
@@ -634,15 +663,17 @@ class Recognizer {
 
   /// A tight thread in a tapped hole whose tip bears on a third part's shaft fixes the shaft.
   void ApplySetscrews() {
-    std::map<FeatureRef, FeatureRef> screwed_into;  // tight thread -> its tapped hole
+    // Per entry of features_: the tapped hole its tight thread is screwed into, first found.
+    std::vector<std::optional<FeatureRef>> screwed_into(features_.size());
     for (const Pair& p : pairs_) {
-      if (p.type == PairType::kFixed && p.fastening == PairFastening::kTight) {
-        screwed_into.emplace(p.a, p.b);
+      if (p.type == PairType::kFixed && p.fastening == PairFastening::kTight &&
+          !screwed_into[Index(p.a)]) {
+        screwed_into[Index(p.a)] = p.b;
       }
     }
     for (const auto& [thread, s] : setscrew_candidates_) {
-      const auto hole = screwed_into.find(thread->ref);
-      if (hole == screwed_into.end() || s->ref.part == hole->second.part) continue;
+      const std::optional<FeatureRef>& hole = screwed_into[Index(thread->ref)];
+      if (!hole || s->ref.part == hole->part) continue;
       const Eigen::Vector3d tip = thread->axis.end();
       if (AngleBetweenLines(thread->axis.direction, s->axis.direction) < kPi / 2 - A_) continue;
       const double along = (tip - s->axis.origin).dot(s->axis.direction);
@@ -653,7 +684,7 @@ class Recognizer {
       Pair fixed;
       fixed.type = PairType::kFixed;
       fixed.a = s->ref;
-      fixed.b = hole->second;
+      fixed.b = *hole;
       fixed.source = PairSource::kSetscrew;
       fixed.fastening = PairFastening::kSetscrew;
       fixed.dof = 0;
@@ -676,19 +707,22 @@ class Recognizer {
     }
   }
 
-  /// Orders by names, not indices, so that reordering the file changes nothing.
+  /// Orders by names (part id, then feature id), not indices, so that reordering the file
+  /// changes nothing.
   void Sort(Recognition& out) const {
-    std::vector<std::tuple<std::string, std::string, int, std::size_t>> keys;
+    using Key = std::array<std::size_t, 6>;
+    std::vector<Key> keys;
     keys.reserve(out.pairs.size());
     for (std::size_t i = 0; i < out.pairs.size(); ++i) {
       const Pair& p = out.pairs[i];
-      keys.emplace_back(assembly_.FeatureName(p.a), assembly_.FeatureName(p.b),
-                        static_cast<int>(p.source), i);
+      keys.push_back({assembly_.PartRank(p.a.part), assembly_.FeatureRank(p.a),
+                      assembly_.PartRank(p.b.part), assembly_.FeatureRank(p.b),
+                      static_cast<std::size_t>(p.source), i});
     }
     std::sort(keys.begin(), keys.end());
     std::vector<Pair> sorted;
     sorted.reserve(out.pairs.size());
-    for (const auto& key : keys) sorted.push_back(out.pairs[std::get<3>(key)]);
+    for (const Key& key : keys) sorted.push_back(std::move(out.pairs[key[5]]));
     out.pairs = std::move(sorted);
     std::sort(out.diagnostics.begin(), out.diagnostics.end(), DiagnosticLess);
   }

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 #include <numbers>
 #include <stdexcept>
@@ -103,6 +104,37 @@ TEST(Assembly, FeatureNameRoundTrips) {
     const auto ref = assembly.FindFeature(name);
     ASSERT_TRUE(ref) << name;
     EXPECT_EQ(assembly.FeatureName(*ref), name);
+  }
+}
+
+TEST(Assembly, RanksOrderPartsAndFeaturesByIdWhateverTheFileOrder) {
+  // Parts and features shuffled; sorting by rank must equal sorting the ids (the oracle).
+  AssemblySpec spec;
+  spec.name = "ranks";
+  const std::vector<std::string> part_ids = {"motor", "gear10", "gear2", "base", "Arm", "gear"};
+  const std::vector<std::string> feature_ids = {"teeth", "bore", "axle", "Z", "axle2"};
+  for (const std::string& id : part_ids) {
+    Part part;
+    part.id = id;
+    part.mesh = UnitCube();
+    for (const std::string& f : feature_ids)
+      part.features.push_back(MakeFeature(f, FeatureKind::kHole));
+    std::rotate(part.features.begin(), part.features.begin() + part.id.size() % 5,
+                part.features.end());
+    spec.parts.push_back(part);
+  }
+  const Assembly assembly(std::move(spec));
+  for (std::size_t x = 0; x < part_ids.size(); ++x) {
+    for (std::size_t y = 0; y < part_ids.size(); ++y) {
+      EXPECT_EQ(assembly.PartRank(x) < assembly.PartRank(y), part_ids[x] < part_ids[y]);
+    }
+    const auto& features = assembly.part(x).features;
+    for (std::size_t f = 0; f < features.size(); ++f) {
+      for (std::size_t g = 0; g < features.size(); ++g) {
+        EXPECT_EQ(assembly.FeatureRank({x, f}) < assembly.FeatureRank({x, g}),
+                  features[f].id < features[g].id);
+      }
+    }
   }
 }
 
