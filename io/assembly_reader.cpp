@@ -104,7 +104,9 @@ class Reader {
     } else {
       if (!parts) Fail("", "expected \"parts\" (an array of parts), found no such key");
       ReadParts(*parts, "/parts");
-      ReadPlacements(*parts, "/parts");
+      std::vector<std::pair<std::size_t, const Json*>> entries;
+      for (std::size_t i = 0; i < parts->size(); ++i) entries.emplace_back(i, &(*parts)[i]);
+      ReadPlacements(entries);
       // The heuristic reinterprets only inferred features, never written ones.
       const auto found = InferNutsOnBolts(&spec_.parts, spec_.tolerance.length,
                                           spec_.tolerance.angle, &recognised_);
@@ -355,7 +357,7 @@ class Reader {
         for (char& c : extension)
           c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
         if (extension == ".step" || extension == ".stp") {
-          part.mesh = LoadStepPart(part.mesh_source, p + "/mesh", &step_features);
+          part.mesh = LoadStepPart(part.mesh_source, p + "/mesh", &step_features, &part.notes);
         } else {
           part.mesh = LoadMesh(part.mesh_source, p + "/mesh");
         }
@@ -381,6 +383,7 @@ class Reader {
         }
       }
       recognised_.push_back(mesh && !Find(v, "features"));
+      entry_of_.emplace(spec_.parts.size(), p);
       part_index_.emplace(part.id, spec_.parts.size());
       spec_.parts.push_back(std::move(part));
     }
@@ -403,6 +406,7 @@ class Reader {
       part.X_WP = s.X_WP;
       part.group = s.path;
       part.features = std::move(s.features);
+      part.notes = std::move(s.notes);
       part_index_.emplace(part.id, spec_.parts.size());
       spec_.parts.push_back(std::move(part));
     }
@@ -412,10 +416,11 @@ class Reader {
   }
 
   // Entries next to an import: an imported part's id adds `ground` and features to it (an
-  // imported feature's id with `fastening` sets that); a new id adds a part (with a pose; a
-  // placement by features is not read there).
+  // imported feature's id with `fastening` sets that); a new id adds a part, with a pose or a
+  // placement by features (its own and the imported parts').
   void AddToImported(const Json& parts, const std::string& pointer) {
     if (!parts.is_array()) Fail(pointer, "expected an array of parts, found " + Describe(parts));
+    std::vector<std::pair<std::size_t, const Json*>> added;
     for (std::size_t i = 0; i < parts.size(); ++i) {
       const std::string p = JoinPointer(pointer, std::to_string(i));
       const Json& v = parts[i];
@@ -423,10 +428,8 @@ class Reader {
       const std::string id = String(Require(v, p, "id", "a part's id"), p + "/id");
       const auto it = part_index_.find(id);
       if (it == part_index_.end()) {
-        if (Find(v, "place")) {
-          Fail(p + "/place", "expected a pose for a part added next to an import, found a place");
-        }
         ReadPart(v, p);
+        added.emplace_back(spec_.parts.size() - 1, &v);
         continue;
       }
       CheckKeys(v, p, {"id", "ground", "features"});
@@ -459,13 +462,15 @@ class Reader {
         }
       }
     }
+    ReadPlacements(added);
   }
 
   // A STEP file as one rigid part: its solids' meshes and features at their placements (ids
   // prefixed "solidN_" when it holds several solids).
   std::shared_ptr<const TriangleMesh> LoadStepPart(const std::string& relative,
                                                    const std::string& pointer,
-                                                   std::vector<Feature>* features) {
+                                                   std::vector<Feature>* features,
+                                                   std::vector<std::string>* notes) {
     std::vector<StepSolid> solids;
     try {
       solids = mechanist::ReadStep((dir_ / relative).lexically_normal());
@@ -483,6 +488,9 @@ class Reader {
         f.axis = solids[k].X_WP.RotateDirection(f.axis);
         f.normal = solids[k].X_WP.RotateDirection(f.normal);
         features->push_back(f);
+      }
+      for (const std::string& note : solids[k].notes) {
+        notes->push_back(solids.size() > 1 ? "solid" + std::to_string(k + 1) + ": " + note : note);
       }
     }
     return mesh;
@@ -891,11 +899,19 @@ class Reader {
 
   // ---- placements ----
 
-  void ReadPlacements(const Json& parts, const std::string& pointer) {
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-      const Json* place = Find(parts[i], "place");
+  /// Where a part's entry is in the file: its JSON pointer, for messages about its `place`.
+  std::string EntryOf(std::size_t part) const {
+    const auto it = entry_of_.find(part);
+    return it == entry_of_.end() ? "/parts" : it->second;
+  }
+
+  /// The `place` of the parts read from the entries in `entries` (part index -> its entry),
+  /// solved once every part is known.
+  void ReadPlacements(const std::vector<std::pair<std::size_t, const Json*>>& entries) {
+    for (const auto& [i, entry] : entries) {
+      const Json* place = Find(*entry, "place");
       if (!place) continue;
-      const std::string p = JoinPointer(pointer, std::to_string(i)) + "/place";
+      const std::string p = EntryOf(i) + "/place";
       Part& part = spec_.parts[i];
       if (place->is_object()) {
         part.placement.push_back(ReadCondition(*place, p, i));
@@ -910,11 +926,11 @@ class Reader {
                     Describe(*place));
       }
     }
-    CheckPlacementTree(pointer);
+    CheckPlacementTree();
     try {
       ResolvePlacements(&spec_);
     } catch (const PlacementError& e) {
-      Fail(JoinPointer(pointer, std::to_string(e.part())) + "/place", e.what());
+      Fail(EntryOf(e.part()) + "/place", e.what());
     }
   }
 
@@ -952,15 +968,14 @@ class Reader {
   }
 
   /// Placements must form a tree rooted at parts with poses: no cycles.
-  void CheckPlacementTree(const std::string& pointer) const {
+  void CheckPlacementTree() const {
     enum class Mark { kNone, kVisiting, kDone };
     std::vector<Mark> marks(spec_.parts.size(), Mark::kNone);
     std::function<void(std::size_t)> visit = [&](std::size_t i) {
       if (marks[i] == Mark::kDone) return;
       if (marks[i] == Mark::kVisiting) {
-        Fail(JoinPointer(pointer, std::to_string(i)) + "/place",
-             "placement of part \"" + spec_.parts[i].id +
-                 "\" depends on itself through a cycle of placements");
+        Fail(EntryOf(i) + "/place", "placement of part \"" + spec_.parts[i].id +
+                                        "\" depends on itself through a cycle of placements");
       }
       marks[i] = Mark::kVisiting;
       for (const PlacementCondition& c : spec_.parts[i].placement) visit(c.target.part);
@@ -1232,6 +1247,7 @@ class Reader {
       recognised_;  // per part: its features were inferred (mesh or STEP), not written
   AssemblySpec spec_;
   std::map<std::string, std::size_t> part_index_;
+  std::map<std::size_t, std::string> entry_of_;  // part index -> its entry's JSON pointer
   std::map<std::filesystem::path, std::shared_ptr<const TriangleMesh>> mesh_cache_;
 };
 

@@ -26,10 +26,12 @@ std::vector<FeatureReportEntry> RecogniseAssemblyFeatures(const Assembly& assemb
       for (const Feature& f : part.features) {
         e.found.features.push_back({f, 0.0, "from the STEP file's exact faces"});
       }
+      e.found.notes = part.notes;
       entries.push_back(std::move(e));
       continue;
     }
     FeatureReportEntry e{part.id, part.X_WP, RecognizeFeatures(*part.mesh), true};
+    e.found.notes.insert(e.found.notes.end(), part.notes.begin(), part.notes.end());
     e.used = e.found.features.size() == part.features.size();
     for (std::size_t i = 0; e.used && i < part.features.size(); ++i) {
       e.used = part.features[i].id == e.found.features[i].feature.id &&

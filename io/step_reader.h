@@ -26,6 +26,11 @@ struct StepSolid {
   /// merged) are shafts when convex and through holes when concave, with the extent of their
   /// faces along the axis; planes are faces with their outward normal and extent.
   std::vector<Feature> features;
+  /// The faces that give no feature, in words: a cone covering 270 degrees or more as the
+  /// countersink of a coaxial hole whose radius its narrow end meets ("countersink of hole_1: 90
+  /// deg, diameter 6 to 12 mm"), the conical end of a coaxial shaft, or a cone of its own;
+  /// counts of partial cones, spheres, tori and free-form faces.
+  std::vector<std::string> notes;
 };
 
 /// Reads a STEP file (AP203/AP214) with its product structure through Open CASCADE's XCAF

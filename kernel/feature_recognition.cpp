@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <cstdint>
@@ -181,6 +182,59 @@ double SelfMismatch(const std::vector<double>& s, int shift) {
   return sum / n / std::max(*hi - *lo, 1e-12);
 }
 
+// Axes of the mesh's cylindrical patches, whatever their direction: faces joined across
+// shared edges whose normals turn by less than 30 degrees make smooth patches; a patch whose
+// area-weighted normal matrix sum(a n n^T) has one eigenvalue near zero (every normal across
+// one direction) and another well above it (the normals turn: no flat face) is a cylinder, or
+// part of one, along that direction. Cones and spheres have no such direction.
+std::vector<Vector3d> CylinderPatchAxes(const TriangleMesh& mesh,
+                                        const std::vector<Vector3d>& normal,
+                                        const std::vector<double>& area) {
+  const std::size_t nf = mesh.faces.size();
+  std::vector<std::array<std::int32_t, 3>> edges;  // (lower vertex, higher vertex, face)
+  edges.reserve(3 * nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t a = mesh.faces[f][k], b = mesh.faces[f][(k + 1) % 3];
+      edges.push_back({std::min(a, b), std::max(a, b), static_cast<std::int32_t>(f)});
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  const double kSmooth = std::cos(30 * kPi / 180);
+  Union patches(nf);
+  for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
+    for (std::size_t j = i + 1;
+         j < edges.size() && edges[j][0] == edges[i][0] && edges[j][1] == edges[i][1]; ++j) {
+      if (normal[edges[i][2]].dot(normal[edges[j][2]]) > kSmooth) {
+        patches.Join(edges[i][2], edges[j][2]);
+      }
+    }
+  }
+  std::vector<int> patch_of(nf, -1);
+  std::vector<Eigen::Matrix3d> sums;
+  std::vector<int> sizes;
+  for (std::size_t f = 0; f < nf; ++f) {
+    const int root = patches.Find(static_cast<int>(f));
+    if (patch_of[root] < 0) {
+      patch_of[root] = static_cast<int>(sums.size());
+      sums.push_back(Eigen::Matrix3d::Zero());
+      sizes.push_back(0);
+    }
+    sums[patch_of[root]] += area[f] * normal[f] * normal[f].transpose();
+    ++sizes[patch_of[root]];
+  }
+  std::vector<Vector3d> axes;
+  for (std::size_t p = 0; p < sums.size(); ++p) {
+    if (sizes[p] < 8) continue;
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(sums[p]);
+    const Vector3d lambda = eigen.eigenvalues();  // ascending
+    const double trace = lambda.sum();
+    if (trace <= 0 || lambda[0] > 4e-6 * trace || lambda[1] < 0.05 * trace) continue;
+    axes.push_back(Canonical(eigen.eigenvectors().col(0).normalized()));
+  }
+  return axes;
+}
+
 std::string Mm(double x) { return FormatNumber(x, 6) + " mm"; }
 
 }  // namespace
@@ -247,10 +301,12 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
   }
   std::vector<Vector3d> candidates;
   if (prismatic) candidates.push_back(axis);
-  for (const Vector3d& c :
-       {Vector3d(eigen.eigenvectors().col(0)), Vector3d(eigen.eigenvectors().col(1)),
-        Vector3d(eigen.eigenvectors().col(2)), Vector3d(Vector3d::UnitX()),
-        Vector3d(Vector3d::UnitY()), Vector3d(Vector3d::UnitZ())}) {
+  std::vector<Vector3d> directions = {
+      Vector3d(eigen.eigenvectors().col(0)), Vector3d(eigen.eigenvectors().col(1)),
+      Vector3d(eigen.eigenvectors().col(2)), Vector3d(Vector3d::UnitX()),
+      Vector3d(Vector3d::UnitY()),           Vector3d(Vector3d::UnitZ())};
+  for (const Vector3d& a : CylinderPatchAxes(mesh, normal, area)) directions.push_back(a);
+  for (const Vector3d& c : directions) {
     const Vector3d a = Canonical(c.normalized());
     const bool known = std::any_of(candidates.begin(), candidates.end(), [&](const Vector3d& b) {
       return std::abs(a.dot(b)) > 1 - 1e-6;

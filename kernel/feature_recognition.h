@@ -51,8 +51,11 @@ const std::vector<double>& StandardModules();
 /// - a convex outline that is long and repeats along its length on one side, with the same
 ///   module from its pitch (pitch / pi) and its depth, is a rack (teeth toward that side, the
 ///   pitch line one module below the tips).
-/// The walls across every other principal direction and coordinate axis are searched for
-/// cylinders only (an L-bracket's holes in both legs; a part that is no prism). Deterministic.
+/// The walls across every other principal direction and coordinate axis, and across the axis
+/// of every cylindrical patch (faces joined across edges where the normals turn by less than
+/// 30 degrees whose normals all lie across one direction and turn), are searched for cylinders
+/// only: an L-bracket's holes in both legs, a hole drilled at any angle, a part that is no
+/// prism. Deterministic.
 /// A part that is not prismatic gets a note saying so.
 MeshFeatures RecognizeFeatures(const TriangleMesh& mesh);
 

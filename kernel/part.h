@@ -40,6 +40,9 @@ struct Part {
   bool ground = false;
   std::string group;  ///< CAD product-structure path, informational
   std::vector<Feature> features;
+  /// What reading the part's source saw but made no feature of, in words (a STEP solid's
+  /// cones, spheres, tori and free-form faces); informational.
+  std::vector<std::string> notes;
 
   /// Index of the feature `feature_id`, or nothing.
   std::optional<std::size_t> FindFeature(const std::string& feature_id) const;

@@ -19,9 +19,12 @@
 #include <XCAFDoc_ShapeTool.hxx>
 #include <algorithm>
 #include <cmath>
+#include <gp_Cone.hxx>
 #include <map>
 #include <stdexcept>
 #include <tuple>
+
+#include "kernel/number_format.h"
 
 namespace mechanist {
 namespace {
@@ -63,14 +66,49 @@ struct Cylinder {
   double lo = 1e300, hi = -1e300;
 };
 
-// The mesh and features of one solid in its product's frame.
-void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>* features) {
+// A cone being gathered from its faces.
+struct Cone {
+  Eigen::Vector3d apex, direction;
+  double semi_angle = 0.0;  // radians
+  bool convex = true;
+  double coverage = 0.0;  // radians of the faces' angular spans, summed
+  double r_min = 1e300, r_max = -1e300;
+};
+
+std::string Mm(double x) { return FormatNumber(x) + " mm"; }
+
+// What a cone is beside the solid's cylinders: a countersink at a hole's mouth, a conical end
+// (a chamfer or a point) of a shaft, or a cone of its own.
+std::string DescribeCone(const Cone& c, const std::vector<Feature>& features) {
+  const double included = 2 * c.semi_angle * 180 / kPi;
+  const std::string size = FormatNumber(included) + " deg, diameter " + FormatNumber(2 * c.r_min) +
+                           " to " + Mm(2 * c.r_max);
+  for (const Feature& f : features) {
+    if (f.kind != (c.convex ? FeatureKind::kShaft : FeatureKind::kHole)) continue;
+    const Eigen::Vector3d d = c.apex - f.origin;
+    const double r = f.diameter / 2, tol = 1e-6 * std::max(1.0, r);
+    const bool coaxial = std::abs(std::abs(f.axis.dot(c.direction)) - 1) < 1e-9 &&
+                         (d - d.dot(f.axis) * f.axis).norm() < tol;
+    if (!coaxial) continue;
+    if (!c.convex && std::abs(c.r_min - r) < tol) return "countersink of " + f.id + ": " + size;
+    if (c.convex && (std::abs(c.r_max - r) < tol || std::abs(c.r_min - r) < tol)) {
+      return "conical end of " + f.id + ": " + size;
+    }
+  }
+  return std::string(c.convex ? "convex" : "concave") + " cone: " + size;
+}
+
+// The mesh and features of one solid in its product's frame, and notes on the faces that give
+// no feature.
+void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>* features,
+             std::vector<std::string>* notes) {
   Bnd_Box box;
   BRepBndLib::Add(solid, box);
   const double size = box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());
   BRepMesh_IncrementalMesh(solid, std::max(0.01, 1e-3 * size), false, 0.3, false);
   std::vector<Cylinder> cylinders;
-  int planes = 0;
+  std::vector<Cone> cones;
+  int planes = 0, spheres = 0, tori = 0, free_form = 0, partial_cones = 0;
   std::map<std::tuple<double, double, double>, std::int32_t> positions;
   auto* welded = &positions;
   for (TopExp_Explorer e(solid, TopAbs_FACE); e.More(); e.Next()) {
@@ -129,6 +167,41 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
         same->lo = std::min(same->lo, shift + (sign > 0 ? c.lo : -c.hi));
         same->hi = std::max(same->hi, shift + (sign > 0 ? c.hi : -c.lo));
       }
+    } else if (surface.GetType() == GeomAbs_Cone) {
+      const gp_Cone g = surface.Cone();
+      Cone c;
+      c.apex = ToEigen(g.Apex().XYZ());
+      c.direction = ToEigen(g.Axis().Direction().XYZ()).normalized();
+      c.semi_angle = std::abs(g.SemiAngle());
+      // As for a cylinder: the surface's normal points away from the axis in a direct frame.
+      c.convex = g.Position().Direct() != reversed;
+      double u0, u1, v0, v1;
+      BRepTools::UVBounds(face, u0, u1, v0, v1);
+      c.coverage = std::min(u1 - u0, 2 * kPi);
+      for (const Eigen::Vector3d& p : nodes) {
+        const Eigen::Vector3d d = p - c.apex;
+        const double r = (d - d.dot(c.direction) * c.direction).norm();
+        c.r_min = std::min(c.r_min, r);
+        c.r_max = std::max(c.r_max, r);
+      }
+      auto same = std::find_if(cones.begin(), cones.end(), [&](const Cone& o) {
+        return (o.apex - c.apex).norm() < 1e-6 * std::max(1.0, c.r_max) &&
+               o.direction.dot(c.direction) > 1 - 1e-9 &&
+               std::abs(o.semi_angle - c.semi_angle) < 1e-9 && o.convex == c.convex;
+      });
+      if (same == cones.end()) {
+        cones.push_back(c);
+      } else {
+        same->coverage += c.coverage;
+        same->r_min = std::min(same->r_min, c.r_min);
+        same->r_max = std::max(same->r_max, c.r_max);
+      }
+    } else if (surface.GetType() == GeomAbs_Sphere) {
+      ++spheres;
+    } else if (surface.GetType() == GeomAbs_Torus) {
+      ++tori;
+    } else if (surface.GetType() != GeomAbs_Plane && surface.GetType() != GeomAbs_Cylinder) {
+      ++free_form;
     } else if (surface.GetType() == GeomAbs_Plane && !nodes.empty()) {
       const gp_Pln plane = surface.Plane();
       Eigen::Vector3d n = ToEigen(plane.Axis().Direction().XYZ());
@@ -165,6 +238,24 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
     f.through = !c.convex;
     features->push_back(f);
   }
+  // The format has no cone, sphere or torus kind: these faces are named in notes.
+  for (const Cone& c : cones) {
+    if (c.coverage < 1.5 * kPi) {
+      ++partial_cones;
+      continue;
+    }
+    notes->push_back(DescribeCone(c, *features));
+  }
+  auto count = [&](int n, const std::string& what) {
+    if (n > 0) {
+      notes->push_back(std::to_string(n) + " " + what + (n == 1 ? " face" : " faces") +
+                       ": no feature (the format has no such kind)");
+    }
+  };
+  count(partial_cones, "partial conical");
+  count(spheres, "spherical");
+  count(tori, "toroidal");
+  count(free_form, "free-form");
 }
 
 class Walker {
@@ -198,19 +289,18 @@ class Walker {
       auto cached = cache_.find(key);
       if (cached == cache_.end()) {
         auto mesh = std::make_shared<TriangleMesh>();
-        std::vector<Feature> features;
-        Convert(e.Current(), mesh.get(), &features);
-        cached = cache_
-                     .emplace(key, std::make_pair(std::shared_ptr<const TriangleMesh>(mesh),
-                                                  std::move(features)))
-                     .first;
+        Definition definition;
+        Convert(e.Current(), mesh.get(), &definition.features, &definition.notes);
+        definition.mesh = mesh;
+        cached = cache_.emplace(key, std::move(definition)).first;
       }
       StepSolid s;
       s.path = index == 0 ? path : path + "_solid" + std::to_string(index + 1);
       s.product = NameOf(label);
       s.X_WP = ToRigid(location.Transformation());
-      s.mesh = cached->second.first;
-      s.features = cached->second.second;
+      s.mesh = cached->second.mesh;
+      s.features = cached->second.features;
+      s.notes = cached->second.notes;
       out_->push_back(std::move(s));
     }
   }
@@ -218,9 +308,13 @@ class Walker {
  private:
   Handle(XCAFDoc_ShapeTool) tool_;
   std::vector<StepSolid>* out_;
-  std::map<std::pair<int, int>,
-           std::pair<std::shared_ptr<const TriangleMesh>, std::vector<Feature>>>
-      cache_;
+  // A product's solid, converted once for all its instances.
+  struct Definition {
+    std::shared_ptr<const TriangleMesh> mesh;
+    std::vector<Feature> features;
+    std::vector<std::string> notes;
+  };
+  std::map<std::pair<int, int>, Definition> cache_;
 };
 
 }  // namespace

@@ -4,13 +4,18 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
 
 #include "io/assembly_reader.h"
+#include "io/feature_report.h"
 #include "io/input_error.h"
+#include "io/occt/step_fixtures.h"
+#include "io/step_reader.h"
 #include "kernel/mesh_check.h"
 #include "kernel/part_library.h"
 #include "reasoning/analysis.h"
@@ -116,15 +121,80 @@ TEST(StepImport, AnImportingFileAddsGroundAndNamesBadImports) {
       dir / "c.json");
   EXPECT_EQ(more.parts().size(), 19u);
   EXPECT_TRUE(more.part(*more.FindPart("base")).ground);
+  // A new part placed by its features onto an imported one: a pin of the plate hole's
+  // diameter inserted 3 mm into it lies on the hole's axis and turns in it.
+  const Assembly as1 =
+      ParseAssembly(R"({"mechanist": 1, "import": ")" + kAs1.string() + R"("})", dir / "f.json");
+  const FeatureRef hole = *as1.FindFeature("AS1_PE_ASM.PLATE/hole_1");
+  const Feature& h = as1.feature(hole);
+  const AxisSegment hole_W = h.WorldAxis(as1.part(hole.part).X_WP);
+  const Assembly pinned =
+      ParseAssembly(R"({"mechanist": 1, "import": ")" + kAs1.string() +
+                        R"(", "parts": [{"id": "pin", "library": {"kind": "shaft", "diameter": )" +
+                        std::to_string(h.diameter) + R"(, "length": 40},
+            "place": {"insert": "pin/shaft", "into": "AS1_PE_ASM.PLATE/hole_1", "depth": 3}}]})",
+                    dir / "g.json");
+  const Part& pin = pinned.part(*pinned.FindPart("pin"));
+  const AxisSegment pin_W = pin.features[0].WorldAxis(pin.X_WP);
+  EXPECT_NEAR(std::abs(pin_W.direction.dot(hole_W.direction)), 1.0, 1e-9);
+  const Eigen::Vector3d d = pin_W.origin - hole_W.origin;
+  EXPECT_LT((d - d.dot(hole_W.direction) * hole_W.direction).norm(), 1e-6);
+  const Analysis with_pin = Analyze(pinned);
+  bool turns = false;
+  for (const Pair& p : with_pin.pairs) {
+    turns |= (p.a.part == *pinned.FindPart("pin") || p.b.part == *pinned.FindPart("pin")) &&
+             (p.type == PairType::kCylindrical || p.type == PairType::kRevolute);
+  }
+  EXPECT_TRUE(turns);
+  // Its errors name the entry's place.
   try {
     ParseAssembly(R"({"mechanist": 1, "import": ")" + kAs1.string() +
-                      R"(", "parts": [{"id": "pin", "mesh": "x.stl",
-                      "place": {"insert": "pin/s", "into": "AS1_PE_ASM.PLATE/hole_1"}}]})",
+                      R"(", "parts": [{"id": "pin", "library": {"kind": "shaft", "diameter": 5,
+                      "length": 20}, "place": {"insert": "pin/shaft",
+                      "into": "AS1_PE_ASM.PLATE/no_such_hole"}}]})",
                   dir / "c.json");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_EQ(e.pointer(), "/parts/0/place");
+    EXPECT_EQ(e.pointer(), "/parts/0/place/into");
   }
+}
+
+TEST(StepImport, ConesSpheresAndToriAreNamedInNotes) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_cones";
+  std::filesystem::create_directories(dir);
+  testing::WriteConesAndBallStep(dir / "cones.step");
+  const std::vector<StepSolid> solids = ReadStep(dir / "cones.step");
+  ASSERT_EQ(solids.size(), 3u);
+  auto has = [](const StepSolid& s, const std::string& text) {
+    return std::any_of(s.notes.begin(), s.notes.end(),
+                       [&](const std::string& n) { return n == text; });
+  };
+  auto feature = [](const StepSolid& s, const std::string& id) -> const Feature* {
+    for (const Feature& f : s.features) {
+      if (f.id == id) return &f;
+    }
+    return nullptr;
+  };
+  // The block: its hole below the countersink, the countersink named after it.
+  const Feature* hole = feature(solids[0], "hole_1");
+  ASSERT_NE(hole, nullptr);
+  EXPECT_NEAR(hole->diameter, 6, 1e-9);
+  EXPECT_NEAR(hole->length, 7, 1e-6);
+  EXPECT_TRUE(has(solids[0], "countersink of hole_1: 90 deg, diameter 6 to 12 mm"))
+      << ::testing::PrintToString(solids[0].notes);
+  // The pin: its point, 2 atan(2.5 / 5) = 53.1301 degrees.
+  ASSERT_NE(feature(solids[1], "shaft_1"), nullptr);
+  EXPECT_TRUE(has(solids[1], "conical end of shaft_1: 53.1301 deg, diameter 0 to 5 mm"))
+      << ::testing::PrintToString(solids[1].notes);
+  // The ball: no feature, one spherical face.
+  EXPECT_TRUE(solids[2].features.empty());
+  EXPECT_TRUE(has(solids[2], "1 spherical face: no feature (the format has no such kind)"))
+      << ::testing::PrintToString(solids[2].notes);
+  // `mechanist features` lists the notes of imported parts.
+  const Assembly a = ReadAssembly(dir / "cones.step");
+  std::ostringstream listing;
+  WriteFeatureReport(RecogniseAssemblyFeatures(a), listing);
+  EXPECT_NE(listing.str().find("note: countersink of hole_1"), std::string::npos) << listing.str();
 }
 
 // A binary STL of `mesh`.

@@ -148,6 +148,73 @@ TEST(FeatureRecognition, AnLBracketsHolesAreFoundAlongBothOfTheirAxes) {
   EXPECT_EQ(found.features.size(), 3u);
 }
 
+// Appends `extra` to `mesh` (separate shells: recognition needs no closed mesh).
+void Append(TriangleMesh& mesh, const TriangleMesh& extra) {
+  const auto offset = static_cast<std::int32_t>(mesh.vertices.size());
+  mesh.vertices.insert(mesh.vertices.end(), extra.vertices.begin(), extra.vertices.end());
+  for (const auto& f : extra.faces)
+    mesh.faces.push_back({f[0] + offset, f[1] + offset, f[2] + offset});
+}
+
+// A tube wall of `segments` facets along z from 0 to `length`: facing out (a boss, a shaft)
+// or in (a bore).
+TriangleMesh Tube(double radius, double length, int segments, bool facing_out) {
+  MeshBuilder builder;
+  const Ring2d ring = Oriented(CircleRing(Eigen::Vector2d::Zero(), radius, segments), facing_out);
+  builder.AddWall(builder.AddRing(ring, 0), builder.AddRing(ring, length));
+  return builder.Release();
+}
+
+TEST(FeatureRecognition, CylindersAtAnyAngleAreFoundFromTheirOwnFacets) {
+  // A box whose principal directions are the coordinate axes, with a bore and a boss along
+  // directions that are neither: only the facets' own normals give their axes.
+  Region2d rect;
+  rect.outer = {{-50, -30}, {50, -30}, {50, 30}, {-50, 30}};
+  TriangleMesh mesh = ExtrudeRegion(rect, -20, 20);
+  auto pose = [](const Eigen::Vector3d& axis, const Eigen::Vector3d& at) {
+    return RigidTransform(
+        Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), axis).toRotationMatrix(), at);
+  };
+  const RigidTransform X_bore = pose(Eigen::Vector3d(1, 2, 3).normalized(), {5, -3, 2});
+  const RigidTransform X_boss = pose(Eigen::Vector3d(-2, 1, 0.5).normalized(), {-20, 10, -4});
+  // The truth: the tubes' z axes where the poses put them.
+  const Eigen::Vector3d bore_axis = X_bore.RotateDirection(Eigen::Vector3d::UnitZ());
+  const Eigen::Vector3d boss_axis = X_boss.RotateDirection(Eigen::Vector3d::UnitZ());
+  const Eigen::Vector3d bore_at = X_bore.translation(), boss_at = X_boss.translation();
+  Append(mesh, Moved(Tube(5, 30, 32, false), X_bore));
+  Append(mesh, Moved(Tube(3, 12, 24, true), X_boss));
+  const MeshFeatures found = RecognizeFeatures(mesh);
+  const RecognizedFeature* hole = Find(found, FeatureKind::kHole);
+  const RecognizedFeature* shaft = Find(found, FeatureKind::kShaft);
+  ASSERT_NE(hole, nullptr);
+  ASSERT_NE(shaft, nullptr);
+  EXPECT_NEAR(std::abs(hole->feature.axis.dot(bore_axis)), 1.0, 1e-12);
+  EXPECT_NEAR(std::abs(shaft->feature.axis.dot(boss_axis)), 1.0, 1e-12);
+  // Origins are rounded to 1e-6 mm (what float meshes resolve).
+  EXPECT_LT(DistanceToAxis(hole->feature, bore_at), 1e-6);
+  EXPECT_LT(DistanceToAxis(shaft->feature, boss_at), 1e-6);
+  // The vertices lie on the circles: diameters and lengths exact.
+  EXPECT_NEAR(hole->feature.diameter, 10.0, 1e-9);
+  EXPECT_NEAR(shaft->feature.diameter, 6.0, 1e-9);
+  EXPECT_NEAR(hole->feature.length, 30.0, 1e-9);
+  EXPECT_NEAR(shaft->feature.length, 12.0, 1e-9);
+  EXPECT_EQ(found.features.size(), 2u);
+}
+
+TEST(FeatureRecognition, ConesGiveNoCylinderAxis) {
+  // A cone's facets turn about its axis but lean toward it: no direction is across them all.
+  MeshBuilder builder;
+  const Ring2d small = CircleRing(Eigen::Vector2d::Zero(), 2, 32);
+  const Ring2d large = CircleRing(Eigen::Vector2d::Zero(), 6, 32);
+  builder.AddWall(builder.AddRing(small, 0), builder.AddRing(large, 4));
+  const TriangleMesh cone =
+      Moved(builder.Release(),
+            RigidTransform(
+                Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 1, 0).normalized()).toRotationMatrix(),
+                Eigen::Vector3d(1, 2, 3)));
+  EXPECT_TRUE(RecognizeFeatures(cone).features.empty());
+}
+
 TEST(FeatureRecognition, ABallHasNoFeatures) {
   const MeshFeatures ball = RecognizeFeatures(MakeUvSphere(5.0, 12, 24));
   EXPECT_TRUE(ball.features.empty());
