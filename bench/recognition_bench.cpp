@@ -10,12 +10,14 @@
 //
 // Usage: recognition_bench [max_parts]   (default 100000)
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "kernel/assembly.h"
 #include "kernel/assembly_state.h"
@@ -176,6 +178,13 @@ Assembly PlanetaryArray(int stages) {
   return Assembly(std::move(spec));
 }
 
+constexpr int kRuns = 7;
+
+double Median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
 }  // namespace
 }  // namespace mechanist
 
@@ -201,15 +210,13 @@ int main(int argc, char** argv) {
       const Assembly assembly = layout.per_row == -2 ? PlanetaryArray(parts / kPartsPerStage)
                                                      : Synthetic(cells, per_row, layout.row_pitch);
       const AssemblyState state = InitialState(assembly);
-      double best_recognise = 1e30, best_graph = 1e30, best_all = 1e30;
+      std::vector<double> recognise_ms, graph_ms, all_ms;
       std::size_t pair_count = 0, groups = 0;
       int dof = 0, redundant = 0;
-      // Best of at least 3 runs and of at least one second of runs: the small sizes, timed
-      // once, would be at the mercy of the machine's noise.
-      const auto started = std::chrono::steady_clock::now();
-      for (int repeat = 0;
-           repeat < 3 || std::chrono::steady_clock::now() - started < std::chrono::seconds(1);
-           ++repeat) {
+      // The median of the same number of runs at every size: a best of many runs of a small
+      // size against a best of few of a large one would flatter the small size and inflate the
+      // growth factor on a noisy machine.
+      for (int repeat = 0; repeat < kRuns; ++repeat) {
         const auto t0 = std::chrono::steady_clock::now();
         const Recognition r = RecognizePairs(assembly, state);
         const auto t1 = std::chrono::steady_clock::now();
@@ -223,15 +230,15 @@ int main(int argc, char** argv) {
         auto ms = [](auto a, auto b) {
           return std::chrono::duration<double, std::milli>(b - a).count();
         };
-        best_recognise = std::min(best_recognise, ms(t0, t1));
-        best_graph = std::min(best_graph, ms(t1, t2));
-        best_all = std::min(best_all, ms(t2, t3));
+        recognise_ms.push_back(ms(t0, t1));
+        graph_ms.push_back(ms(t1, t2));
+        all_ms.push_back(ms(t2, t3));
       }
-      std::printf(
-          "%10d %10zu %10zu %14.1f %12.1f %12.1f %6d %10d %10s\n", parts, pair_count, groups,
-          best_recognise, best_graph, best_all, dof, redundant,
-          previous > 0 ? (std::to_string(best_all / previous).substr(0, 5) + "x").c_str() : "-");
-      previous = best_all;
+      const double recognise = Median(recognise_ms), graph = Median(graph_ms), all = Median(all_ms);
+      std::printf("%10d %10zu %10zu %14.1f %12.1f %12.1f %6d %10d %10s\n", parts, pair_count,
+                  groups, recognise, graph, all, dof, redundant,
+                  previous > 0 ? (std::to_string(all / previous).substr(0, 5) + "x").c_str() : "-");
+      previous = all;
     }
   }
   return 0;
