@@ -512,7 +512,9 @@ int main(int argc, char** argv) {
 
   CLI::App* features = app.add_subcommand(
       "features", "Recognise the features of a mesh, or of an assembly's mesh parts");
-  features->add_option("FILE", file, "a mesh (.stl, .obj, .ply, .off), an assembly (.json) or a STEP file")
+  features
+      ->add_option("FILE", file,
+                   "a mesh (.stl, .obj, .ply, .off), an assembly (.json) or a STEP file")
       ->required();
   features->add_option("--json", json, "write the JSON report to this file");
 
