@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "kernel/compressed_rows.h"
 #include "kernel/line_geometry.h"
 #include "kernel/number_format.h"
 
@@ -40,24 +41,17 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
   };
 
   // The thread pairs of each tapped hole, by the hole's index among all features (pairs in
-  // order): flat arrays rather than a container per feature, for large assemblies.
+  // order).
   std::vector<std::size_t> first_feature(assembly.parts().size() + 1, 0);
   for (std::size_t q = 0; q < assembly.parts().size(); ++q) {
     first_feature[q + 1] = first_feature[q] + assembly.part(q).features.size();
   }
   auto index = [&](FeatureRef r) { return first_feature[r.part] + r.feature; };
-  std::vector<std::size_t> threads_start(first_feature.back() + 1, 0);
+  std::vector<std::pair<std::size_t, const Pair*>> thread_pairs;
   for (const Pair& pair : pairs) {
-    if (IsThreadPair(pair)) ++threads_start[index(pair.b) + 1];
+    if (IsThreadPair(pair)) thread_pairs.emplace_back(index(pair.b), &pair);
   }
-  for (std::size_t i = 1; i < threads_start.size(); ++i) threads_start[i] += threads_start[i - 1];
-  std::vector<const Pair*> threads_in(threads_start.back());
-  {
-    std::vector<std::size_t> next(threads_start.begin(), threads_start.end() - 1);
-    for (const Pair& pair : pairs) {
-      if (IsThreadPair(pair)) threads_in[next[index(pair.b)]++] = &pair;
-    }
-  }
+  const CompressedRows<const Pair*> threads_in(first_feature.back(), thread_pairs);
   std::vector<FeatureRef> threads;  // every thread feature, for nuts without one
   for (std::size_t q = 0; q < assembly.parts().size(); ++q) {
     for (std::size_t g = 0; g < assembly.part(q).features.size(); ++g) {
@@ -72,8 +66,8 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
       if (h.kind != FeatureKind::kTappedHole || !h.through) continue;
       const FeatureRef nut{p, f};
       bool engaged = false;
-      for (std::size_t k = threads_start[index(nut)]; k < threads_start[index(nut) + 1]; ++k) {
-        const Pair& pair = *threads_in[k];
+      for (const Pair* found : threads_in[index(nut)]) {
+        const Pair& pair = *found;
         engaged = true;
         const double overlap = AxialOverlap(world(pair.a), world(nut));
         if (overlap < h.length - L) {

@@ -62,19 +62,27 @@ KinematicModel::KinematicModel(const Assembly& assembly, const std::vector<Pair>
   const std::size_t bodies = subassemblies.size() + (has_ground ? 0 : 1);
   ground_ = has_ground ? 0 : subassemblies.size();
   parent_joint_.assign(bodies, std::nullopt);
-  BuildJoints(pairs);
-  BuildTree();
-  joints_of_.assign(bodies, {});
-  for (std::size_t k = 0; k < joints_.size(); ++k) {
-    if (!joints_[k].pair) continue;
-    joints_of_[joints_[k].body_a].push_back(k);
-    joints_of_[joints_[k].body_b].push_back(k);
+  // Every feature's world axis, computed once: the rows and the motion descriptions ask for
+  // them many times.
+  first_axis_.reserve(assembly.parts().size());
+  for (const Part& part : assembly.parts()) {
+    first_axis_.push_back(axes_.size());
+    for (const Feature& f : part.features) axes_.push_back(f.WorldAxis(part.X_WP));
   }
+  BuildJoints(pairs);
+  std::vector<std::pair<std::size_t, std::size_t>> joints_by_body;  // (body, joint)
+  joints_by_body.reserve(2 * joints_.size());
+  for (std::size_t k = 0; k < joints_.size(); ++k) {
+    joints_by_body.emplace_back(joints_[k].body_a, k);
+    joints_by_body.emplace_back(joints_[k].body_b, k);
+  }
+  joints_of_ = CompressedRows<std::size_t>(bodies, joints_by_body);
+  BuildTree();
   BuildRows(pairs);
 }
 
-AxisSegment KinematicModel::WorldAxis(FeatureRef f) const {
-  return assembly_.feature(f).WorldAxis(assembly_.part(f.part).X_WP);
+const AxisSegment& KinematicModel::WorldAxis(FeatureRef f) const {
+  return axes_[first_axis_[f.part] + f.feature];
 }
 
 ExactReal KinematicModel::Dot(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {
@@ -184,11 +192,6 @@ void KinematicModel::AddFreedoms(std::size_t joint) {
 
 void KinematicModel::BuildTree() {
   const std::size_t bodies = parent_joint_.size();
-  std::vector<std::vector<std::size_t>> adjacent(bodies);
-  for (std::size_t k = 0; k < joints_.size(); ++k) {
-    adjacent[joints_[k].body_a].push_back(k);
-    adjacent[joints_[k].body_b].push_back(k);
-  }
   std::vector<bool> seen(bodies, false);
   auto grow = [&](std::size_t root) {
     std::deque<std::size_t> queue{root};
@@ -197,7 +200,7 @@ void KinematicModel::BuildTree() {
       const std::size_t body = queue.front();
       queue.pop_front();
       order_.push_back(body);
-      for (std::size_t k : adjacent[body]) {
+      for (std::size_t k : joints_of_[body]) {
         Joint& j = joints_[k];
         const std::size_t other = j.body_a == body ? j.body_b : j.body_a;
         if (seen[other]) continue;
@@ -211,6 +214,8 @@ void KinematicModel::BuildTree() {
     }
   };
   grow(ground_);
+  std::vector<std::size_t> first_part(bodies, body_of_part_.size());
+  for (std::size_t part = body_of_part_.size(); part-- > 0;) first_part[body_of_part_[part]] = part;
   for (std::size_t body = 0; body < bodies; ++body) {
     if (seen[body]) continue;
     // Nothing holds this body to the ground: it floats, six freedoms about its first part.
@@ -219,11 +224,8 @@ void KinematicModel::BuildTree() {
     j.body_b = ground_;
     j.in_tree = true;
     j.child = body;
-    for (std::size_t part = 0; part < body_of_part_.size(); ++part) {
-      if (body_of_part_[part] == body) {
-        j.point_W = assembly_.part(part).X_WP.translation();
-        break;
-      }
+    if (first_part[body] < body_of_part_.size()) {
+      j.point_W = assembly_.part(first_part[body]).X_WP.translation();
     }
     joints_.push_back(j);
     parent_joint_[body] = joints_.size() - 1;
@@ -232,14 +234,14 @@ void KinematicModel::BuildTree() {
   }
 }
 
-template <typename Measure>
-void KinematicModel::AddPath(std::size_t body, double sign, const Measure& measure,
-                             LinearSystem::Row& terms) const {
+template <typename Measure, typename Sink>
+void KinematicModel::ForPath(std::size_t body, double sign, const Measure& measure,
+                             Sink&& sink) const {
   while (parent_joint_[body]) {
     const Joint& j = joints_[*parent_joint_[body]];
     const bool forward = body == j.body_a;  // twist(a) = twist(b) + freedoms
     const ExactReal s = Rational(forward == (sign > 0) ? 1 : -1);
-    for (std::size_t f : j.freedoms) terms.push_back({f, s * measure(freedoms_[f])});
+    for (std::size_t f : j.freedoms) sink(f, s * measure(freedoms_[f]));
     body = forward ? j.body_b : j.body_a;
   }
 }
@@ -269,8 +271,9 @@ LinearSystem::Row KinematicModel::Angular(std::size_t a, std::size_t b,
                                           const Eigen::Vector3d& d) const {
   LinearSystem::Row terms;
   auto measure = [&](const Freedom& f) { return AngularOf(f, d); };
-  AddPath(a, 1, measure, terms);
-  AddPath(b, -1, measure, terms);
+  auto add = [&](std::size_t f, ExactReal c) { terms.push_back({f, std::move(c)}); };
+  ForPath(a, 1, measure, add);
+  ForPath(b, -1, measure, add);
   return terms;
 }
 
@@ -278,9 +281,31 @@ LinearSystem::Row KinematicModel::Linear(std::size_t a, std::size_t b, const Eig
                                          const Eigen::Vector3d& d) const {
   LinearSystem::Row terms;
   auto measure = [&](const Freedom& f) { return LinearOf(f, p, d); };
-  AddPath(a, 1, measure, terms);
-  AddPath(b, -1, measure, terms);
+  auto add = [&](std::size_t f, ExactReal c) { terms.push_back({f, std::move(c)}); };
+  ForPath(a, 1, measure, add);
+  ForPath(b, -1, measure, add);
   return terms;
+}
+
+ExactReal KinematicModel::AngularRate(std::size_t a, std::size_t b, const Eigen::Vector3d& d,
+                                      const std::vector<ExactReal>& x) const {
+  ExactReal sum;
+  auto measure = [&](const Freedom& f) { return AngularOf(f, d); };
+  auto add = [&](std::size_t f, const ExactReal& c) { sum += c * x[f]; };
+  ForPath(a, 1, measure, add);
+  ForPath(b, -1, measure, add);
+  return sum;
+}
+
+ExactReal KinematicModel::LinearRate(std::size_t a, std::size_t b, const Eigen::Vector3d& p,
+                                     const Eigen::Vector3d& d,
+                                     const std::vector<ExactReal>& x) const {
+  ExactReal sum;
+  auto measure = [&](const Freedom& f) { return LinearOf(f, p, d); };
+  auto add = [&](std::size_t f, const ExactReal& c) { sum += c * x[f]; };
+  ForPath(a, 1, measure, add);
+  ForPath(b, -1, measure, add);
+  return sum;
 }
 
 std::vector<LinearSystem::Row> KinematicModel::JointConstraints(const Joint& j, std::size_t a,
@@ -345,7 +370,7 @@ bool KinematicModel::Carries(std::size_t body, FeatureRef f) const {
   // another stage's planet) does not count.
   const std::size_t target = body_of_part_[f.part];
   auto other = [](const Joint& j, std::size_t b) { return j.body_a == b ? j.body_b : j.body_a; };
-  const std::vector<std::size_t>& theirs = joints_of_[target];
+  const std::span<const std::size_t> theirs = joints_of_[target];
   // A direct joint is found from f's side first: a frame's list of joints is long, a moving
   // body's short.
   for (std::size_t k = 0; k < theirs.size() && k < kCarrierScanLimit; ++k) {
@@ -353,7 +378,7 @@ bool KinematicModel::Carries(std::size_t body, FeatureRef f) const {
     if (other(t, target) == body && carried_by(t)) return true;
   }
   std::vector<std::size_t> vias;  // bodies the carrier turns against about f's axis
-  const std::vector<std::size_t>& own = joints_of_[body];
+  const std::span<const std::size_t> own = joints_of_[body];
   for (std::size_t i = 0; i < own.size() && i < kCarrierScanLimit; ++i) {
     const Joint& j = joints_[own[i]];
     if (!carried_by(j)) continue;
@@ -374,7 +399,7 @@ bool KinematicModel::Carries(std::size_t body, FeatureRef f) const {
 std::optional<std::size_t> KinematicModel::CommonCarrier(FeatureRef f, FeatureRef g) const {
   std::vector<std::size_t> candidates{ground_, body_of_part_[f.part], body_of_part_[g.part]};
   for (std::size_t own : {body_of_part_[f.part], body_of_part_[g.part]}) {
-    const std::vector<std::size_t>& js = joints_of_[own];
+    const std::span<const std::size_t> js = joints_of_[own];
     for (std::size_t i = 0; i < js.size() && i < kCarrierScanLimit; ++i) {
       const Joint& j = joints_[js[i]];
       candidates.push_back(j.body_a == own ? j.body_b : j.body_a);

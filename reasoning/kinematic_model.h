@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "kernel/assembly.h"
+#include "kernel/compressed_rows.h"
 #include "kernel/diagnostic.h"
 #include "reasoning/exact_real.h"
 #include "reasoning/linear_system.h"
@@ -112,17 +113,23 @@ class KinematicModel {
   std::optional<std::size_t> ParentBody(std::size_t body) const;
   /// Evaluates a row at `x`.
   static ExactReal Evaluate(const LinearSystem::Row& row, const std::vector<ExactReal>& x);
+  /// Evaluate(Angular(a, b, direction_W), x), without building the row.
+  ExactReal AngularRate(std::size_t a, std::size_t b, const Eigen::Vector3d& direction_W,
+                        const std::vector<ExactReal>& x) const;
+  /// Evaluate(Linear(a, b, p_W, direction_W), x), without building the row.
+  ExactReal LinearRate(std::size_t a, std::size_t b, const Eigen::Vector3d& p_W,
+                       const Eigen::Vector3d& direction_W, const std::vector<ExactReal>& x) const;
 
   /// World axis of a feature at the file pose.
-  AxisSegment WorldAxis(FeatureRef f) const;
+  const AxisSegment& WorldAxis(FeatureRef f) const;
   /// Idealised dot product of unit vectors.
   ExactReal Dot(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
 
  private:
-  /// Adds (sign * measure of each freedom on the path of body) to `terms`.
-  template <typename Measure>
-  void AddPath(std::size_t body, double sign, const Measure& measure,
-               LinearSystem::Row& terms) const;
+  /// Calls sink(freedom, sign * measure of the freedom) for each freedom on the path of body
+  /// to the ground.
+  template <typename Measure, typename Sink>
+  void ForPath(std::size_t body, double sign, const Measure& measure, Sink&& sink) const;
   ExactReal AngularOf(const Freedom& f, const Eigen::Vector3d& d) const;
   ExactReal LinearOf(const Freedom& f, const Eigen::Vector3d& p, const Eigen::Vector3d& d) const;
   void BuildJoints(const std::vector<Pair>& pairs);
@@ -135,9 +142,11 @@ class KinematicModel {
   double cos_tol_, sin_tol_, length_tol_;
   std::size_t ground_ = 0;
   std::vector<std::size_t> body_of_part_;
+  std::vector<std::size_t> first_axis_;  // per part: its first feature's entry in axes_
+  std::vector<AxisSegment> axes_;        // per feature, parts in order
   std::vector<Joint> joints_;
   std::vector<Freedom> freedoms_;
-  std::vector<std::vector<std::size_t>> joints_of_;       // per body: its pair joints
+  CompressedRows<std::size_t> joints_of_;                 // per body: its pair joints
   std::vector<std::optional<std::size_t>> parent_joint_;  // per body; empty for roots
   std::vector<std::size_t> order_;                        // bodies, parents first
   std::vector<ConstraintRow> rows_;

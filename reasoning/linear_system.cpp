@@ -8,17 +8,18 @@
 namespace mechanist {
 namespace {
 
-using Terms = std::map<std::size_t, ExactReal>;
-
-/// Scales so that the largest |coefficient| is 1; the rhs with it.
-void Normalise(Terms& terms, ExactReal& rhs) {
+/// Scales so that the largest |coefficient| is 1 (the first of equals, in variable order); the
+/// rhs with it.
+void Normalise(LinearSystem::Row& terms, ExactReal& rhs) {
   const ExactReal* largest = nullptr;
-  for (const auto& [v, c] : terms) {
-    if (!largest || std::abs(c.value()) > std::abs(largest->value())) largest = &c;
+  for (const LinearSystem::Term& t : terms) {
+    if (!largest || std::abs(t.coefficient.value()) > std::abs(largest->value())) {
+      largest = &t.coefficient;
+    }
   }
   if (!largest) return;
   const ExactReal scale = largest->value() < 0 ? -*largest : *largest;
-  for (auto& [v, c] : terms) c = c / scale;
+  for (LinearSystem::Term& t : terms) t.coefficient = t.coefficient / scale;
   rhs = rhs / scale;
 }
 
@@ -35,57 +36,65 @@ LinearSystem::LinearSystem(std::size_t variable_count, double tolerance)
 }
 
 LinearSystem::Root LinearSystem::Find(std::size_t v) const {
-  std::vector<std::size_t> path;
-  while (parent_[v] != v) {
-    path.push_back(v);
-    v = parent_[v];
-  }
-  // Compress from the top down so that each factor composes with its parent's final factor.
-  for (auto it = path.rbegin(); it != path.rend(); ++it) {
-    const std::size_t p = parent_[*it];
-    if (p != v) factor_[*it] = factor_[*it] * factor_[p];
-    parent_[*it] = v;
-  }
-  return {v, path.empty() ? ExactReal(Rational(1)) : factor_[path.front()]};
+  const std::size_t parent = parent_[v];
+  if (parent == v) return {v, ExactReal(Rational(1))};
+  // Compressed from the top down (recursion: union by size keeps paths short) so that each
+  // factor composes with its parent's final factor.
+  const Root top = Find(parent);
+  if (parent != top.root) factor_[v] = factor_[v] * factor_[parent];
+  parent_[v] = top.root;
+  return {top.root, factor_[v]};
 }
 
 LinearSystem::Outcome LinearSystem::AddRow(const Row& row, const ExactReal& rhs) {
-  Terms terms;
-  // Per root, the largest term summed into it: an approximate sum is zero only relative to
-  // what cancelled in it, never for being small (a rate through a long chain of reductions
-  // is tiny and exact in its digits).
-  std::map<std::size_t, double> summed;
+  // Per root: the sum of its terms, and the largest term summed into it (an approximate sum is
+  // zero only relative to what cancelled in it, never for being small: a rate through a long
+  // chain of reductions is tiny and exact in its digits). Rows are short: a sorted vector.
+  struct Entry {
+    std::size_t root;
+    ExactReal sum;
+    double largest;
+  };
+  std::vector<Entry> entries;
+  entries.reserve(row.size());
   for (const Term& t : row) {
     const Root r = Find(t.variable);
     const ExactReal term = t.coefficient * r.factor;
-    terms[r.root] += term;
-    double& m = summed[r.root];
-    m = std::max(m, std::abs(term.value()));
+    auto it = std::find_if(entries.begin(), entries.end(),
+                           [&](const Entry& e) { return e.root == r.root; });
+    if (it == entries.end()) {
+      entries.push_back({r.root, term, std::abs(term.value())});
+    } else {
+      it->sum += term;
+      it->largest = std::max(it->largest, std::abs(term.value()));
+    }
   }
+  std::erase_if(entries, [&](const Entry& e) { return e.sum.IsZero(tolerance_ * e.largest); });
+  std::sort(entries.begin(), entries.end(),
+            [](const Entry& x, const Entry& y) { return x.root < y.root; });
+  Row terms;
+  terms.reserve(entries.size());
+  for (Entry& e : entries) terms.push_back({e.root, std::move(e.sum)});
   ExactReal b = rhs;
-  std::erase_if(terms,
-                [&](const auto& t) { return t.second.IsZero(tolerance_ * summed[t.first]); });
   Normalise(terms, b);
   if (terms.size() == 2 && b.IsZero(tolerance_)) {
-    auto x = terms.begin();
-    auto y = std::next(x);
-    if (!in_pivot_[x->first] && !in_pivot_[y->first]) {
+    const Term* x = &terms[0];
+    const Term* y = &terms[1];
+    if (!in_pivot_[x->variable] && !in_pivot_[y->variable]) {
       // a X + b Y = 0: the smaller group joins the larger one.
-      if (size_[x->first] < size_[y->first]) std::swap(x, y);
-      parent_[y->first] = x->first;
-      factor_[y->first] = -(x->second / y->second);
-      size_[x->first] += size_[y->first];
+      if (size_[x->variable] < size_[y->variable]) std::swap(x, y);
+      parent_[y->variable] = x->variable;
+      factor_[y->variable] = -(x->coefficient / y->coefficient);
+      size_[x->variable] += size_[y->variable];
       ++rank_;
       return Outcome::kIndependent;
     }
   }
-  Row reduced;
-  for (auto& [v, c] : terms) reduced.push_back({v, c});
-  return Eliminate(std::move(reduced), b);
+  return Eliminate(std::move(terms), b);
 }
 
 LinearSystem::Outcome LinearSystem::Eliminate(Row row, ExactReal rhs) {
-  Terms work;
+  std::map<std::size_t, ExactReal> work;
   // Per entry, the largest term summed into it while the row is reduced: what is left of an
   // approximate entry is zero when it is below the tolerance relative to that (cancellation
   // noise grows with the numbers cancelled), never for being small.

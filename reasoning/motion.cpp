@@ -5,7 +5,9 @@
 #include <cmath>
 #include <deque>
 #include <map>
+#include <span>
 
+#include "kernel/compressed_rows.h"
 #include "kernel/enum_names.h"
 #include "reasoning/kinematic_model.h"
 #include "reasoning/linear_system.h"
@@ -34,22 +36,25 @@ class Solver {
         pairs_(pairs),
         model_(assembly, pairs, subassemblies, subassembly_of),
         structural_(model_.freedoms().size(), kTolerance),
-        parts_of_body_(model_.body_count()),
         mm_per_length_(ExactReal::FromDecimal(assembly.units().mm_per_length)) {
+    std::vector<std::pair<std::size_t, std::size_t>> parts;  // (body, part)
+    parts.reserve(assembly.parts().size());
     for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
-      parts_of_body_[model_.body_of_part(p)].push_back(p);
+      parts.emplace_back(model_.body_of_part(p), p);
     }
+    parts_of_body_ = CompressedRows<std::size_t>(model_.body_count(), parts);
     for (const ConstraintRow& row : model_.rows()) {
       outcomes_.push_back(structural_.AddRow(row.terms));
     }
-    edges_.resize(model_.body_count());
+    std::vector<std::pair<std::size_t, std::pair<std::size_t, std::size_t>>> edges;
     for (std::size_t i = 0; i < pairs_.size(); ++i) {
       const std::size_t a = model_.body_of_part(pairs_[i].a.part);
       const std::size_t b = model_.body_of_part(pairs_[i].b.part);
       if (a == b) continue;
-      edges_[a].push_back({b, i});
-      edges_[b].push_back({a, i});
+      edges.push_back({a, {b, i}});
+      edges.push_back({b, {a, i}});
     }
+    edges_ = CompressedRows<std::pair<std::size_t, std::size_t>>(model_.body_count(), edges);
   }
 
   const KinematicModel& model() const { return model_; }
@@ -122,7 +127,7 @@ class Solver {
   }
 
   /// The parts of a body, ascending.
-  const std::vector<std::size_t>& PartsOf(std::size_t body) const { return parts_of_body_[body]; }
+  std::span<const std::size_t> PartsOf(std::size_t body) const { return parts_of_body_[body]; }
 
   /// Fills `motion`'s part and feature motions from the freedoms' rates `x`.
   void Describe(const std::vector<ExactReal>& x, DrivenMotion& motion) const {
@@ -136,12 +141,12 @@ class Solver {
       const std::size_t body = model_.body_of_part(p);
       const Part& part = assembly_.part(p);
       std::vector<FeatureRate>& rates = motion.features[p];
+      rates.reserve(part.features.size());
       for (std::size_t f = 0; f < part.features.size(); ++f) {
         const AxisSegment axis = model_.WorldAxis({p, f});
         rates.push_back(
-            {KinematicModel::Evaluate(model_.Angular(body, ground, axis.direction), x),
-             KinematicModel::Evaluate(model_.Linear(body, ground, axis.origin, axis.direction), x) /
-                 mm_per_length_});
+            {model_.AngularRate(body, ground, axis.direction, x),
+             model_.LinearRate(body, ground, axis.origin, axis.direction, x) / mm_per_length_});
       }
       motion.parts[p] = Classify(p, omega[body], v[body], rates);
       motion.parts[p].path = Path(body, x);
@@ -266,8 +271,8 @@ class Solver {
   KinematicModel model_;
   LinearSystem structural_;
   std::vector<LinearSystem::Outcome> outcomes_;
-  std::vector<std::vector<std::size_t>> parts_of_body_;
-  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> edges_;  // body: (body, pair)
+  CompressedRows<std::size_t> parts_of_body_;
+  CompressedRows<std::pair<std::size_t, std::size_t>> edges_;  // body: (body, pair)
   ExactReal mm_per_length_;  // reports give lengths in the file's units
 };
 
@@ -417,13 +422,19 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   std::vector<int> body_freedoms(model.body_count(), 0);
   for (std::size_t b = 0; b < model.body_count(); ++b) {
     if (body_twists[b].empty()) continue;
-    Eigen::MatrixXd m(static_cast<Eigen::Index>(body_twists[b].size()), 6);
-    for (std::size_t i = 0; i < body_twists[b].size(); ++i) {
-      m.row(static_cast<Eigen::Index>(i)) = body_twists[b][i].transpose();
-    }
-    Eigen::FullPivLU<Eigen::MatrixXd> lu(m);
-    lu.setThreshold(1e-9);
-    body_freedoms[b] = static_cast<int>(lu.rank());
+    // The rank of the stacked twists; a body moved by few of them needs no heap.
+    const auto rank = [&](auto m) {
+      for (std::size_t i = 0; i < body_twists[b].size(); ++i) {
+        m.row(static_cast<Eigen::Index>(i)) = body_twists[b][i].transpose();
+      }
+      Eigen::FullPivLU<decltype(m)> lu(m);
+      lu.setThreshold(1e-9);
+      return static_cast<int>(lu.rank());
+    };
+    const auto n = static_cast<Eigen::Index>(body_twists[b].size());
+    constexpr int kFew = 12;
+    body_freedoms[b] = n <= kFew ? rank(Eigen::Matrix<double, Eigen::Dynamic, 6, 0, kFew, 6>(n, 6))
+                                 : rank(Eigen::MatrixXd(n, 6));
   }
   for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
     mobility.part_freedoms.push_back(body_freedoms[model.body_of_part(p)]);
@@ -509,7 +520,7 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     const std::size_t child =
         model.parent_joint(j.body_a) && *model.parent_joint(j.body_a) == f.joint ? j.body_a
                                                                                  : j.body_b;
-    const std::vector<std::size_t>& own = solver.PartsOf(child);
+    const std::span<const std::size_t> own = solver.PartsOf(child);
     // Named by part ids, so that the file's order of parts changes nothing.
     const auto by_id = [&](std::size_t x, std::size_t y) {
       return assembly.PartRank(x) < assembly.PartRank(y);

@@ -1,23 +1,29 @@
 #include "reasoning/pair_graph.h"
 
 #include <algorithm>
-#include <string>
+#include <utility>
 
-// Boost 1.74's adjacency_list trips GCC 12's -Wmaybe-uninitialized in its own code.
+// Boost 1.74's graph headers trip GCC 12's -Wmaybe-uninitialized in their own code.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#include <boost/graph/adjacency_list.hpp>
-#include <boost/graph/connected_components.hpp>
+#include <boost/graph/compressed_sparse_row_graph.hpp>
+#include <boost/pending/disjoint_sets.hpp>
+#include <boost/property_map/property_map.hpp>
+#include <boost/range/iterator_range.hpp>
 #pragma GCC diagnostic pop
 
 namespace mechanist {
 
-using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS,
-                                    boost::no_property, std::size_t>;
+// Compressed sparse rows: one array of edges for the whole graph, not a container per vertex
+// (an assembly of 100,000 parts would otherwise cost hundreds of thousands of allocations).
+// Each pair is an edge in both directions; the edge property is the pair's index.
+using Graph = boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, std::size_t>;
 
 struct PairGraph::Impl {
-  Graph all;    ///< every pair; edge property: the pair's index
-  Graph fixed;  ///< fixed pairs, plus edges from ground parts to the world vertex (last)
+  Graph all;
+  /// Per part: its subassembly's representative among the parts joined by fixed pairs
+  /// (Boost's disjoint sets), ground parts joined to the world (vertex part_count()).
+  std::vector<std::size_t> group_of;
   std::vector<std::size_t> rank;  ///< per part: Assembly::PartRank
   std::vector<bool> ground;
 };
@@ -25,18 +31,35 @@ struct PairGraph::Impl {
 PairGraph::PairGraph(const Assembly& assembly, const std::vector<Pair>& pairs)
     : impl_(std::make_unique<Impl>()) {
   const std::size_t n = assembly.parts().size();
-  impl_->all = Graph(n);
-  impl_->fixed = Graph(n + 1);
+  std::vector<std::pair<std::size_t, std::size_t>> edges;
+  std::vector<std::size_t> index;
+  edges.reserve(2 * pairs.size());
+  index.reserve(2 * pairs.size());
   for (std::size_t i = 0; i < pairs.size(); ++i) {
-    const Pair& p = pairs[i];
-    boost::add_edge(p.a.part, p.b.part, i, impl_->all);
-    if (p.type == PairType::kFixed) boost::add_edge(p.a.part, p.b.part, i, impl_->fixed);
+    edges.emplace_back(pairs[i].a.part, pairs[i].b.part);
+    edges.emplace_back(pairs[i].b.part, pairs[i].a.part);
+    index.insert(index.end(), {i, i});
   }
+  impl_->all =
+      Graph(boost::edges_are_unsorted_multi_pass, edges.begin(), edges.end(), index.begin(), n);
+
+  std::vector<std::size_t> set_rank(n + 1), parent(n + 1);
+  using Map = boost::iterator_property_map<std::vector<std::size_t>::iterator,
+                                           boost::identity_property_map>;
+  boost::disjoint_sets<Map, Map> sets(Map(set_rank.begin()), Map(parent.begin()));
+  for (std::size_t v = 0; v <= n; ++v) sets.make_set(v);
+  for (const Pair& p : pairs) {
+    if (p.type == PairType::kFixed) sets.union_set(p.a.part, p.b.part);
+  }
+  impl_->rank.reserve(n);
+  impl_->ground.reserve(n);
   for (std::size_t part = 0; part < n; ++part) {
     impl_->rank.push_back(assembly.PartRank(part));
     impl_->ground.push_back(assembly.part(part).ground);
-    if (assembly.part(part).ground) boost::add_edge(part, n, pairs.size(), impl_->fixed);
+    if (assembly.part(part).ground) sets.union_set(part, n);
   }
+  impl_->group_of.resize(n);
+  for (std::size_t part = 0; part < n; ++part) impl_->group_of[part] = sets.find_set(part);
 }
 
 PairGraph::~PairGraph() = default;
@@ -56,15 +79,17 @@ std::vector<std::size_t> PairGraph::PairsOf(std::size_t part) const {
 
 std::vector<Subassembly> PairGraph::Subassemblies() const {
   const std::size_t n = part_count();
-  std::vector<int> component(n + 1);
-  const int count = boost::connected_components(impl_->fixed, component.data());
-  std::vector<Subassembly> groups(count);
+  std::vector<long> group_index(n + 1, -1);  // per representative
+  std::vector<Subassembly> groups;
   for (std::size_t part = 0; part < n; ++part) {
-    Subassembly& g = groups[component[part]];
-    g.parts.push_back(part);
-    g.ground = g.ground || impl_->ground[part];
+    long& g = group_index[impl_->group_of[part]];
+    if (g < 0) {
+      g = static_cast<long>(groups.size());
+      groups.emplace_back();
+    }
+    groups[static_cast<std::size_t>(g)].parts.push_back(part);
+    groups[static_cast<std::size_t>(g)].ground |= impl_->ground[part];
   }
-  std::erase_if(groups, [](const Subassembly& g) { return g.parts.empty(); });  // lone world
   const auto& rank = impl_->rank;
   for (Subassembly& g : groups) {
     std::sort(g.parts.begin(), g.parts.end(),

@@ -272,6 +272,11 @@ class Recognizer {
   // ---- output helpers ----
 
   std::string Name(const WorldFeature& w) const { return assembly_.FeatureName(w.ref); }
+  /// Whether x comes before y by (part id, feature id), without building names.
+  bool NameLess(const WorldFeature& x, const WorldFeature& y) const {
+    return std::pair(assembly_.PartRank(x.ref.part), assembly_.FeatureRank(x.ref)) <
+           std::pair(assembly_.PartRank(y.ref.part), assembly_.FeatureRank(y.ref));
+  }
 
   void AddPair(PairType type, const WorldFeature& a, const WorldFeature& b,
                PairFastening fastening = PairFastening::kNone) {
@@ -469,7 +474,7 @@ class Recognizer {
   void GearGear(const WorldFeature& x, const WorldFeature& y) {
     if (x.f->internal && y.f->internal) return;
     // Order by name so that the pair and its ratio do not depend on the file's order.
-    const bool swap = Name(y) < Name(x);
+    const bool swap = NameLess(y, x);
     const WorldFeature& g1 = swap ? y : x;
     const WorldFeature& g2 = swap ? x : y;
     if (AxialOverlap(g1.axis, g2.axis) <= L_) return;
@@ -609,7 +614,7 @@ class Recognizer {
       const double in_plane = (d - d.dot(n1) * n1).norm();
       if (in_plane >= extent(*x.f) + extent(*y.f) - L_) return;
     }
-    const bool swap = Name(y) < Name(x);
+    const bool swap = NameLess(y, x);
     AddPair(PairType::kPlanar, swap ? y : x, swap ? x : y);
   }
 
