@@ -155,8 +155,13 @@ class Assembly {
   std::size_t PartRank(std::size_t part) const { return part_rank_.at(part); }
   /// The feature's position among its part's features ordered by id; with PartRank, ordering
   /// by (part rank, feature rank) is ordering by (part id, feature id).
-  std::size_t FeatureRank(FeatureRef ref) const {
-    return feature_rank_.at(first_feature_.at(ref.part) + ref.feature);
+  std::size_t FeatureRank(FeatureRef ref) const { return feature_rank_[FeatureIndex(ref)]; }
+  /// The number of features of all parts.
+  std::size_t feature_count() const { return feature_rank_.size(); }
+  /// The feature's position among the features of all parts, parts in order: an index into
+  /// flat per-feature arrays of size feature_count().
+  std::size_t FeatureIndex(FeatureRef ref) const {
+    return first_feature_.at(ref.part) + ref.feature;
   }
 
  private:
@@ -166,7 +171,7 @@ class Assembly {
   AssemblySpec spec_;
   std::map<std::string, std::size_t, std::less<>> part_index_;
   std::vector<std::size_t> part_rank_;
-  std::vector<std::size_t> first_feature_;  ///< per part: its first entry in feature_rank_
+  std::vector<std::size_t> first_feature_;  ///< per part: the FeatureIndex of its first feature
   std::vector<std::uint32_t> feature_rank_;
 };
 

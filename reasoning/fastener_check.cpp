@@ -42,16 +42,11 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
 
   // The thread pairs of each tapped hole, by the hole's index among all features (pairs in
   // order).
-  std::vector<std::size_t> first_feature(assembly.parts().size() + 1, 0);
-  for (std::size_t q = 0; q < assembly.parts().size(); ++q) {
-    first_feature[q + 1] = first_feature[q] + assembly.part(q).features.size();
-  }
-  auto index = [&](FeatureRef r) { return first_feature[r.part] + r.feature; };
   std::vector<std::pair<std::size_t, const Pair*>> thread_pairs;
   for (const Pair& pair : pairs) {
-    if (IsThreadPair(pair)) thread_pairs.emplace_back(index(pair.b), &pair);
+    if (IsThreadPair(pair)) thread_pairs.emplace_back(assembly.FeatureIndex(pair.b), &pair);
   }
-  const CompressedRows<const Pair*> threads_in(first_feature.back(), thread_pairs);
+  const CompressedRows<const Pair*> threads_in(assembly.feature_count(), thread_pairs);
   std::vector<FeatureRef> threads;  // every thread feature, for nuts without one
   for (std::size_t q = 0; q < assembly.parts().size(); ++q) {
     for (std::size_t g = 0; g < assembly.part(q).features.size(); ++g) {
@@ -66,7 +61,7 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
       if (h.kind != FeatureKind::kTappedHole || !h.through) continue;
       const FeatureRef nut{p, f};
       bool engaged = false;
-      for (const Pair* found : threads_in[index(nut)]) {
+      for (const Pair* found : threads_in[assembly.FeatureIndex(nut)]) {
         const Pair& pair = *found;
         engaged = true;
         const double overlap = AxialOverlap(world(pair.a), world(nut));

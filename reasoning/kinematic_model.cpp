@@ -64,9 +64,8 @@ KinematicModel::KinematicModel(const Assembly& assembly, const std::vector<Pair>
   parent_joint_.assign(bodies, std::nullopt);
   // Every feature's world axis, computed once: the rows and the motion descriptions ask for
   // them many times.
-  first_axis_.reserve(assembly.parts().size());
+  axes_.reserve(assembly.feature_count());
   for (const Part& part : assembly.parts()) {
-    first_axis_.push_back(axes_.size());
     for (const Feature& f : part.features) axes_.push_back(f.WorldAxis(part.X_WP));
   }
   BuildJoints(pairs);
@@ -82,7 +81,7 @@ KinematicModel::KinematicModel(const Assembly& assembly, const std::vector<Pair>
 }
 
 const AxisSegment& KinematicModel::WorldAxis(FeatureRef f) const {
-  return axes_[first_axis_[f.part] + f.feature];
+  return axes_[assembly_.FeatureIndex(f)];
 }
 
 ExactReal KinematicModel::Dot(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const {

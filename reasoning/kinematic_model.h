@@ -142,8 +142,7 @@ class KinematicModel {
   double cos_tol_, sin_tol_, length_tol_;
   std::size_t ground_ = 0;
   std::vector<std::size_t> body_of_part_;
-  std::vector<std::size_t> first_axis_;  // per part: its first feature's entry in axes_
-  std::vector<AxisSegment> axes_;        // per feature, parts in order
+  std::vector<AxisSegment> axes_;  // per Assembly::FeatureIndex
   std::vector<Joint> joints_;
   std::vector<Freedom> freedoms_;
   CompressedRows<std::size_t> joints_of_;                 // per body: its pair joints

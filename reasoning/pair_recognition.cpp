@@ -45,13 +45,9 @@ class Recognizer {
         A_(assembly.tolerance().angle),
         near_L_(std::max(4 * L_, 0.5)),
         near_A_(std::max(4 * A_, 2.0 * kPi / 180.0)) {
-    std::size_t feature_count = 0;
-    for (const Part& part : assembly.parts()) feature_count += part.features.size();
-    features_.reserve(feature_count);
-    first_feature_.reserve(assembly.parts().size());
+    features_.reserve(assembly.feature_count());
     for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
       const Part& part = assembly.part(p);
-      first_feature_.push_back(features_.size());
       const Aabb part_box_W = WorldBox(assembly, state, p);
       for (std::size_t i = 0; i < part.features.size(); ++i) {
         WorldFeature w;
@@ -620,7 +616,7 @@ class Recognizer {
 
   // ---- overrides and side effects ----
 
-  std::size_t Index(FeatureRef ref) const { return first_feature_[ref.part] + ref.feature; }
+  std::size_t Index(FeatureRef ref) const { return assembly_.FeatureIndex(ref); }
   const WorldFeature& At(FeatureRef ref) const { return features_[Index(ref)]; }
 
   static bool SameFeatures(const Pair& p, FeatureRef f, FeatureRef g) {
@@ -734,8 +730,7 @@ class Recognizer {
 
   const Assembly& assembly_;
   const double L_, A_, near_L_, near_A_;
-  std::vector<WorldFeature> features_;      ///< in (part, feature) order
-  std::vector<std::size_t> first_feature_;  ///< per part: its first entry in features_
+  std::vector<WorldFeature> features_;  ///< per Assembly::FeatureIndex
   std::vector<Pair> pairs_;
   std::vector<Diagnostic> diagnostics_;
   /// (thread, shaft) feature pairs whose reach boxes overlap: possible setscrew contacts.

@@ -107,7 +107,7 @@ TEST(Assembly, FeatureNameRoundTrips) {
   }
 }
 
-TEST(Assembly, RanksOrderPartsAndFeaturesByIdWhateverTheFileOrder) {
+TEST(Assembly, IndicesAndRanksOfPartsAndFeatures) {
   // Parts and features shuffled; sorting by rank must equal sorting the ids (the oracle).
   AssemblySpec spec;
   spec.name = "ranks";
@@ -124,6 +124,14 @@ TEST(Assembly, RanksOrderPartsAndFeaturesByIdWhateverTheFileOrder) {
     spec.parts.push_back(part);
   }
   const Assembly assembly(std::move(spec));
+  // Flat indices count the features, parts in order.
+  std::size_t next = 0;
+  for (std::size_t x = 0; x < part_ids.size(); ++x) {
+    for (std::size_t f = 0; f < assembly.part(x).features.size(); ++f) {
+      EXPECT_EQ(assembly.FeatureIndex({x, f}), next++);
+    }
+  }
+  EXPECT_EQ(assembly.feature_count(), next);
   for (std::size_t x = 0; x < part_ids.size(); ++x) {
     for (std::size_t y = 0; y < part_ids.size(); ++y) {
       EXPECT_EQ(assembly.PartRank(x) < assembly.PartRank(y), part_ids[x] < part_ids[y]);
