@@ -28,7 +28,8 @@ struct StepSolid {
   std::vector<Feature> features;
   /// The faces that give no feature, in words: a cone covering 270 degrees or more as the
   /// countersink of a coaxial hole whose radius its narrow end meets ("countersink of hole_1: 90
-  /// deg, diameter 6 to 12 mm"), the conical end of a coaxial shaft, or a cone of its own;
+  /// deg, diameter 6 to 12 mm"), the conical end of a coaxial shaft that it narrows from, the
+  /// conical flare of one it widens from, or a cone of its own;
   /// counts of partial cones, spheres, tori and free-form faces.
   std::vector<std::string> notes;
 };

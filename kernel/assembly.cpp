@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 #include <stdexcept>
+#include <string_view>
 #include <utility>
 
 namespace mechanist {
@@ -45,6 +46,29 @@ Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
   part_rank_.resize(spec_.parts.size());
   std::size_t rank = 0;
   for (const auto& [id, part] : part_index_) part_rank_[part] = rank++;
+  // Features by name "id/feature": parts ordered as "id/" (ids hold no '/'), compared without
+  // building the strings, then each part's features by id.
+  std::vector<std::size_t> by_name(spec_.parts.size());
+  std::iota(by_name.begin(), by_name.end(), std::size_t{0});
+  std::sort(by_name.begin(), by_name.end(), [&](std::size_t x, std::size_t y) {
+    const std::string_view a = spec_.parts[x].id, b = spec_.parts[y].id;
+    const std::size_t n = std::min(a.size(), b.size());
+    if (const int c = a.compare(0, n, b, 0, n); c != 0) return c < 0;
+    const auto next = [n](std::string_view s) {
+      return static_cast<unsigned char>(s.size() > n ? s[n] : '/');
+    };
+    return next(a) != next(b) ? next(a) < next(b) : a.size() < b.size();
+  });
+  feature_name_rank_.resize(feature_rank_.size());
+  std::size_t offset = 0;
+  for (std::size_t part : by_name) {
+    const std::size_t count = spec_.parts[part].features.size();
+    for (std::size_t f = 0; f < count; ++f) {
+      feature_name_rank_[first_feature_[part] + f] =
+          offset + feature_rank_[first_feature_[part] + f];
+    }
+    offset += count;
+  }
   for (const Driver& d : spec_.drivers) {
     CheckRef(d.feature, "driver feature");
     if (d.relative_to) CheckPart(*d.relative_to, "driver relative_to");

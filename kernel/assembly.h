@@ -150,12 +150,15 @@ class Assembly {
   }
   /// "part_id/feature_id".
   std::string FeatureName(FeatureRef ref) const;
-  /// The part's position when the parts are ordered by id: sorting by ranks orders by name
-  /// (so that reports do not depend on the file's order) without comparing strings.
+  /// The part's position when the parts are ordered by id: sorting by it orders by id (so that
+  /// reports do not depend on the file's order) without comparing strings.
   std::size_t PartRank(std::size_t part) const { return part_rank_.at(part); }
-  /// The feature's position among its part's features ordered by id; with PartRank, ordering
-  /// by (part rank, feature rank) is ordering by (part id, feature id).
-  std::size_t FeatureRank(FeatureRef ref) const { return feature_rank_[FeatureIndex(ref)]; }
+  /// The feature's position when the features of all parts are ordered by name "id/feature"
+  /// (which differs from ordering by (part id, feature id) where an id extends another with a
+  /// character below '/', as "gear-2" does "gear").
+  std::size_t FeatureNameRank(FeatureRef ref) const {
+    return feature_name_rank_[FeatureIndex(ref)];
+  }
   /// The number of features of all parts.
   std::size_t feature_count() const { return feature_rank_.size(); }
   /// The feature's position among the features of all parts, parts in order: an index into
@@ -171,8 +174,9 @@ class Assembly {
   AssemblySpec spec_;
   std::map<std::string, std::size_t, std::less<>> part_index_;
   std::vector<std::size_t> part_rank_;
-  std::vector<std::size_t> first_feature_;  ///< per part: the FeatureIndex of its first feature
-  std::vector<std::uint32_t> feature_rank_;
+  std::vector<std::size_t> first_feature_;      ///< per part: the FeatureIndex of its first feature
+  std::vector<std::uint32_t> feature_rank_;     ///< per feature: its rank by id in its part
+  std::vector<std::size_t> feature_name_rank_;  ///< per feature: FeatureNameRank
 };
 
 }  // namespace mechanist

@@ -101,12 +101,12 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
     }
   }
 
-  // Parts held only by loose threads: flagged in one pass, their pairs listed in a second.
-  std::vector<bool> has_loose(assembly.parts().size(), false), firm(has_loose);
+  // Parts held only by loose threads: the parts with a firm fastening found in one pass, the
+  // loose pairs of the others listed in a second.
+  std::vector<bool> firm(assembly.parts().size(), false);
   for (const Pair& pair : pairs) {
-    if (pair.fastening == PairFastening::kNone) continue;
-    for (std::size_t part : {pair.a.part, pair.b.part}) {
-      (pair.fastening == PairFastening::kLoose ? has_loose : firm)[part] = true;
+    if (pair.fastening != PairFastening::kNone && pair.fastening != PairFastening::kLoose) {
+      firm[pair.a.part] = firm[pair.b.part] = true;
     }
   }
   std::map<std::size_t, std::string> loose;  // part -> its loose pairs, in pair order

@@ -49,7 +49,8 @@ LinearSystem::Root LinearSystem::Find(std::size_t v) const {
 LinearSystem::Outcome LinearSystem::AddRow(const Row& row, const ExactReal& rhs) {
   // Per root: the sum of its terms, and the largest term summed into it (an approximate sum is
   // zero only relative to what cancelled in it, never for being small: a rate through a long
-  // chain of reductions is tiny and exact in its digits). Rows are short: a sorted vector.
+  // chain of reductions is tiny and exact in its digits). The terms, sorted by root (stably:
+  // each root's terms are summed in the row's order), are merged in one pass.
   struct Entry {
     std::size_t root;
     ExactReal sum;
@@ -59,19 +60,24 @@ LinearSystem::Outcome LinearSystem::AddRow(const Row& row, const ExactReal& rhs)
   entries.reserve(row.size());
   for (const Term& t : row) {
     const Root r = Find(t.variable);
-    const ExactReal term = t.coefficient * r.factor;
-    auto it = std::find_if(entries.begin(), entries.end(),
-                           [&](const Entry& e) { return e.root == r.root; });
-    if (it == entries.end()) {
-      entries.push_back({r.root, term, std::abs(term.value())});
+    ExactReal term = t.coefficient * r.factor;
+    const double size = std::abs(term.value());
+    entries.push_back({r.root, std::move(term), size});
+  }
+  std::stable_sort(entries.begin(), entries.end(),
+                   [](const Entry& x, const Entry& y) { return x.root < y.root; });
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    if (kept > 0 && entries[kept - 1].root == entries[i].root) {
+      entries[kept - 1].sum += entries[i].sum;
+      entries[kept - 1].largest = std::max(entries[kept - 1].largest, entries[i].largest);
     } else {
-      it->sum += term;
-      it->largest = std::max(it->largest, std::abs(term.value()));
+      if (kept != i) entries[kept] = std::move(entries[i]);
+      ++kept;
     }
   }
+  entries.resize(kept);
   std::erase_if(entries, [&](const Entry& e) { return e.sum.IsZero(tolerance_ * e.largest); });
-  std::sort(entries.begin(), entries.end(),
-            [](const Entry& x, const Entry& y) { return x.root < y.root; });
   Row terms;
   terms.reserve(entries.size());
   for (Entry& e : entries) terms.push_back({e.root, std::move(e.sum)});

@@ -153,7 +153,7 @@ class Recognizer {
         for (int k = 0; k < 3; ++k) {
           low[i][k] = static_cast<std::int64_t>(std::floor((b.min[k] - all.min[k]) / cell));
           high[i][k] = static_cast<std::int64_t>(std::floor((b.max[k] - all.min[k]) / cell));
-          count *= high[i][k] - low[i][k] + 1;
+          count *= std::min(high[i][k] - low[i][k] + 1, kMaxCellsPerBox + 1);
         }
         if (count > kMaxCellsPerBox) {
           large.push_back(i);
@@ -164,7 +164,7 @@ class Recognizer {
       }
       bits = {};
       for (int k = 0; k < 3; ++k) {
-        while ((std::int64_t{1} << bits[k]) < extent[k]) ++bits[k];
+        while (bits[k] <= kKeyBits && (std::int64_t{1} << bits[k]) < extent[k]) ++bits[k];
       }
       if (bits[0] + bits[1] + bits[2] <= kKeyBits) break;
     }
@@ -268,10 +268,9 @@ class Recognizer {
   // ---- output helpers ----
 
   std::string Name(const WorldFeature& w) const { return assembly_.FeatureName(w.ref); }
-  /// Whether x comes before y by (part id, feature id), without building names.
+  /// Whether x's name comes before y's, without building names.
   bool NameLess(const WorldFeature& x, const WorldFeature& y) const {
-    return std::pair(assembly_.PartRank(x.ref.part), assembly_.FeatureRank(x.ref)) <
-           std::pair(assembly_.PartRank(y.ref.part), assembly_.FeatureRank(y.ref));
+    return assembly_.FeatureNameRank(x.ref) < assembly_.FeatureNameRank(y.ref);
   }
 
   void AddPair(PairType type, const WorldFeature& a, const WorldFeature& b,
@@ -708,22 +707,20 @@ class Recognizer {
     }
   }
 
-  /// Orders by names (part id, then feature id), not indices, so that reordering the file
-  /// changes nothing.
+  /// Orders by feature names, not indices, so that reordering the file changes nothing.
   void Sort(Recognition& out) const {
-    using Key = std::array<std::size_t, 6>;
+    using Key = std::array<std::size_t, 4>;
     std::vector<Key> keys;
     keys.reserve(out.pairs.size());
     for (std::size_t i = 0; i < out.pairs.size(); ++i) {
       const Pair& p = out.pairs[i];
-      keys.push_back({assembly_.PartRank(p.a.part), assembly_.FeatureRank(p.a),
-                      assembly_.PartRank(p.b.part), assembly_.FeatureRank(p.b),
+      keys.push_back({assembly_.FeatureNameRank(p.a), assembly_.FeatureNameRank(p.b),
                       static_cast<std::size_t>(p.source), i});
     }
     std::sort(keys.begin(), keys.end());
     std::vector<Pair> sorted;
     sorted.reserve(out.pairs.size());
-    for (const Key& key : keys) sorted.push_back(std::move(out.pairs[key[5]]));
+    for (const Key& key : keys) sorted.push_back(std::move(out.pairs[key[3]]));
     out.pairs = std::move(sorted);
     std::sort(out.diagnostics.begin(), out.diagnostics.end(), DiagnosticLess);
   }

@@ -78,7 +78,7 @@ struct Cone {
 std::string Mm(double x) { return FormatNumber(x) + " mm"; }
 
 // What a cone is beside the solid's cylinders: a countersink at a hole's mouth, a conical end
-// (a chamfer or a point) of a shaft, or a cone of its own.
+// (a chamfer or a point) of a shaft, a flare widening out of a shaft, or a cone of its own.
 std::string DescribeCone(const Cone& c, const std::vector<Feature>& features) {
   const double included = 2 * c.semi_angle * 180 / kPi;
   const std::string size = FormatNumber(included) + " deg, diameter " + FormatNumber(2 * c.r_min) +
@@ -91,8 +91,9 @@ std::string DescribeCone(const Cone& c, const std::vector<Feature>& features) {
                          (d - d.dot(f.axis) * f.axis).norm() < tol;
     if (!coaxial) continue;
     if (!c.convex && std::abs(c.r_min - r) < tol) return "countersink of " + f.id + ": " + size;
-    if (c.convex && (std::abs(c.r_max - r) < tol || std::abs(c.r_min - r) < tol)) {
-      return "conical end of " + f.id + ": " + size;
+    if (c.convex && std::abs(c.r_max - r) < tol) return "conical end of " + f.id + ": " + size;
+    if (c.convex && std::abs(c.r_min - r) < tol) {
+      return "conical flare of " + f.id + " (a countersunk head's underside?): " + size;
     }
   }
   return std::string(c.convex ? "convex" : "concave") + " cone: " + size;

@@ -111,14 +111,18 @@ TEST(Assembly, IndicesAndRanksOfPartsAndFeatures) {
   // Parts and features shuffled; sorting by rank must equal sorting the ids (the oracle).
   AssemblySpec spec;
   spec.name = "ranks";
-  const std::vector<std::string> part_ids = {"motor", "gear10", "gear2", "base", "Arm", "gear"};
+  // "gear" with "gear-2" and "gear.b": ids extended by characters below '/', where ordering by
+  // name "id/feature" and by id differ.
+  const std::vector<std::string> part_ids = {"motor", "gear10", "gear-2", "base",
+                                             "Arm",   "gear",   "gear.b", "gear2"};
   const std::vector<std::string> feature_ids = {"teeth", "bore", "axle", "Z", "axle2"};
   for (const std::string& id : part_ids) {
     Part part;
     part.id = id;
     part.mesh = UnitCube();
-    for (const std::string& f : feature_ids)
+    for (const std::string& f : feature_ids) {
       part.features.push_back(MakeFeature(f, FeatureKind::kHole));
+    }
     std::rotate(part.features.begin(), part.features.begin() + part.id.size() % 5,
                 part.features.end());
     spec.parts.push_back(part);
@@ -136,11 +140,15 @@ TEST(Assembly, IndicesAndRanksOfPartsAndFeatures) {
     for (std::size_t y = 0; y < part_ids.size(); ++y) {
       EXPECT_EQ(assembly.PartRank(x) < assembly.PartRank(y), part_ids[x] < part_ids[y]);
     }
-    const auto& features = assembly.part(x).features;
-    for (std::size_t f = 0; f < features.size(); ++f) {
-      for (std::size_t g = 0; g < features.size(); ++g) {
-        EXPECT_EQ(assembly.FeatureRank({x, f}) < assembly.FeatureRank({x, g}),
-                  features[f].id < features[g].id);
+  }
+  // Feature name ranks against comparing the names themselves.
+  for (std::size_t x = 0; x < part_ids.size(); ++x) {
+    for (std::size_t y = 0; y < part_ids.size(); ++y) {
+      for (std::size_t f = 0; f < feature_ids.size(); ++f) {
+        for (std::size_t g = 0; g < feature_ids.size(); ++g) {
+          EXPECT_EQ(assembly.FeatureNameRank({x, f}) < assembly.FeatureNameRank({y, g}),
+                    assembly.FeatureName({x, f}) < assembly.FeatureName({y, g}));
+        }
       }
     }
   }
