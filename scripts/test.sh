@@ -14,7 +14,8 @@ if ! command -v npm > /dev/null; then
 fi
 npm install --silent --no-save --no-package-lock --no-audit --no-fund \
   --prefix "$BUILD_DIR/npm" gltf-validator@2.0.0-dev.3.10
-export MECHANIST_CMAKE_ARGS="-DMECHANIST_GLTF_VALIDATOR=$PWD/$BUILD_DIR/npm/node_modules/gltf-validator"
+npm_dir=$(realpath "$BUILD_DIR/npm")  # BUILD_DIR may be relative or absolute
+export MECHANIST_CMAKE_ARGS="-DMECHANIST_GLTF_VALIDATOR=$npm_dir/node_modules/gltf-validator"
 
 scripts/build.sh
 # Rendering needs an X display: a virtual one, kept from resetting between test processes.
