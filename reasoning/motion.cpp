@@ -136,21 +136,24 @@ class Solver {
     const std::size_t ground = model_.ground();
     const std::size_t parts = assembly_.parts().size();
     motion.parts.resize(parts);
-    motion.features.resize(parts);
+    std::vector<std::pair<std::size_t, FeatureRate>> rates_by_part;
+    rates_by_part.reserve(assembly_.feature_count());
+    std::vector<FeatureRate> rates;
     for (std::size_t p = 0; p < parts; ++p) {
       const std::size_t body = model_.body_of_part(p);
       const Part& part = assembly_.part(p);
-      std::vector<FeatureRate>& rates = motion.features[p];
-      rates.reserve(part.features.size());
+      rates.clear();
       for (std::size_t f = 0; f < part.features.size(); ++f) {
         const AxisSegment axis = model_.WorldAxis({p, f});
         rates.push_back(
             {model_.AngularRate(body, ground, axis.direction, x),
              model_.LinearRate(body, ground, axis.origin, axis.direction, x) / mm_per_length_});
+        rates_by_part.emplace_back(p, rates.back());
       }
       motion.parts[p] = Classify(p, omega[body], v[body], rates);
       motion.parts[p].path = Path(body, x);
     }
+    motion.features = CompressedRows<FeatureRate>(parts, rates_by_part);
   }
 
  private:

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "kernel/assembly.h"
+#include "kernel/compressed_rows.h"
 #include "kernel/diagnostic.h"
 #include "kernel/screw_path.h"
 #include "reasoning/exact_real.h"
@@ -59,8 +60,8 @@ struct DrivenMotion {
   bool possible = true;
   bool contradiction = false;  ///< not possible because drivers contradict each other
   std::string reason;
-  std::vector<PartMotion> parts;                   ///< per part
-  std::vector<std::vector<FeatureRate>> features;  ///< per part, per feature
+  std::vector<PartMotion> parts;         ///< per part
+  CompressedRows<FeatureRate> features;  ///< per part: its features' rates, in feature order
 };
 
 /// Constraints of a pair implied by the other pairs (an over-constrained mechanism).

@@ -60,7 +60,7 @@ TEST(Motion, ReversingTheDriverNegatesEveryRate) {
   const Analysis f = Analyze(forward), b = Analyze(backward);
   const DrivenMotion& mf = f.motion.driven.back();
   const DrivenMotion& mb = b.motion.driven.back();
-  for (std::size_t p = 0; p < mf.features.size(); ++p) {
+  for (std::size_t p = 0; p < mf.features.key_count(); ++p) {
     for (std::size_t k = 0; k < mf.features[p].size(); ++k) {
       ASSERT_TRUE(mf.features[p][k].rotation.is_exact());
       EXPECT_EQ(*mb.features[p][k].rotation.exact(), -*mf.features[p][k].rotation.exact());
