@@ -6,7 +6,8 @@
 // all cells, and a square grid whose gears mesh with all four neighbours (closed loops,
 // redundant meshes), and a planetary array (stages of ring, sun, three planets on a carrier
 // whose output drives the next sun). Prints times per size and the growth factor of the full
-// analysis.
+// analysis, warm (the median of runs in a row) and cold (each run after the caches are
+// flushed).
 //
 // Usage: recognition_bench [max_parts]   (default 100000)
 
@@ -180,6 +181,14 @@ Assembly PlanetaryArray(int stages) {
 
 constexpr int kRuns = 7;
 
+// Writes a buffer larger than the caches, so that what a run reads next comes from memory.
+void EvictCaches() {
+  static std::vector<char> buffer(512u << 20);
+  for (std::size_t i = 0; i < buffer.size(); i += 64) buffer[i] = static_cast<char>(buffer[i] + 1);
+  volatile char sink = buffer[buffer.size() / 2];
+  (void)sink;
+}
+
 double Median(std::vector<double> v) {
   std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
   return v[v.size() / 2];
@@ -198,10 +207,10 @@ int main(int argc, char** argv) {
   };
   for (const Layout layout : {Layout{"rows", kCellsPerRow, 100.0}, Layout{"chain", 0, 100.0},
                               Layout{"grid", -1, 40.0}, Layout{"planetary", -2, 0.0}}) {
-    std::printf("layout %s\n%10s %10s %10s %14s %12s %12s %6s %10s %10s\n", layout.name, "parts",
-                "pairs", "subassem.", "recognise_ms", "graph_ms", "analysis_ms", "dof", "redundant",
-                "growth");
-    double previous = 0;
+    std::printf("layout %s\n%10s %10s %10s %14s %12s %12s %6s %10s %10s %10s %10s\n", layout.name,
+                "parts", "pairs", "subassem.", "recognise_ms", "graph_ms", "analysis_ms", "dof",
+                "redundant", "growth", "cold_ms", "cold_grow");
+    double previous = 0, previous_cold = 0;
     for (int parts = 1000; parts <= max_parts; parts *= 10) {
       const int cells = parts / kPartsPerCell;
       const int per_row = layout.per_row > 0    ? layout.per_row
@@ -210,7 +219,7 @@ int main(int argc, char** argv) {
       const Assembly assembly = layout.per_row == -2 ? PlanetaryArray(parts / kPartsPerStage)
                                                      : Synthetic(cells, per_row, layout.row_pitch);
       const AssemblyState state = InitialState(assembly);
-      std::vector<double> recognise_ms, graph_ms, all_ms;
+      std::vector<double> recognise_ms, graph_ms, all_ms, cold_ms;
       std::size_t pair_count = 0, groups = 0;
       int dof = 0, redundant = 0;
       // The median of the same number of runs at every size: a best of many runs of a small
@@ -233,12 +242,23 @@ int main(int argc, char** argv) {
         recognise_ms.push_back(ms(t0, t1));
         graph_ms.push_back(ms(t1, t2));
         all_ms.push_back(ms(t2, t3));
+        // The same analysis with the caches flushed first, as after other work: the warm runs
+        // above keep a small assembly's data in cache from one run to the next.
+        EvictCaches();
+        const auto t4 = std::chrono::steady_clock::now();
+        const Analysis cold = Analyze(assembly);
+        cold_ms.push_back(ms(t4, std::chrono::steady_clock::now()));
       }
-      const double recognise = Median(recognise_ms), graph = Median(graph_ms), all = Median(all_ms);
-      std::printf("%10d %10zu %10zu %14.1f %12.1f %12.1f %6d %10d %10s\n", parts, pair_count,
-                  groups, recognise, graph, all, dof, redundant,
-                  previous > 0 ? (std::to_string(all / previous).substr(0, 5) + "x").c_str() : "-");
+      const double recognise = Median(recognise_ms), graph = Median(graph_ms), all = Median(all_ms),
+                   cold = Median(cold_ms);
+      auto growth = [](double now, double before) {
+        return before > 0 ? std::to_string(now / before).substr(0, 5) + "x" : std::string("-");
+      };
+      std::printf("%10d %10zu %10zu %14.1f %12.1f %12.1f %6d %10d %10s %10.1f %10s\n", parts,
+                  pair_count, groups, recognise, graph, all, dof, redundant,
+                  growth(all, previous).c_str(), cold, growth(cold, previous_cold).c_str());
       previous = all;
+      previous_cold = cold;
     }
   }
   return 0;
