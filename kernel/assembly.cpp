@@ -15,9 +15,13 @@ std::optional<std::size_t> Part::FindFeature(const std::string& feature_id) cons
   return std::nullopt;
 }
 
-Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
+Assembly::Assembly(AssemblySpec spec)
+    : spec_(std::move(spec)), features_of_kind_(static_cast<std::size_t>(FeatureKind::kFace) + 1) {
   for (std::size_t i = 0; i < spec_.parts.size(); ++i) {
     const Part& part = spec_.parts[i];
+    for (std::size_t f = 0; f < part.features.size(); ++f) {
+      features_of_kind_.at(static_cast<std::size_t>(part.features[f].kind)).push_back({i, f});
+    }
     if (!part_index_.emplace(part.id, i).second) {
       throw std::invalid_argument("duplicate part id '" + part.id + "'");
     }

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <stdexcept>
 #include <span>
 #include <utility>
 #include <vector>
@@ -25,6 +27,16 @@ class CompressedRows {
     std::vector<std::size_t> next(start_.begin(), start_.end() - 1);
     items_.resize(entries.size());
     for (const auto& [key, item] : entries) items_[next[key]++] = item;
+  }
+
+  /// Rows given already grouped: key k's items are items[start[k] .. start[k + 1]). Throws
+  /// std::invalid_argument unless start begins at 0, never decreases and ends at items.size().
+  CompressedRows(std::vector<std::size_t> start, std::vector<T> items)
+      : start_(std::move(start)), items_(std::move(items)) {
+    if (start_.empty() || start_.front() != 0 || start_.back() != items_.size() ||
+        !std::is_sorted(start_.begin(), start_.end())) {
+      throw std::invalid_argument("CompressedRows: offsets do not partition the items");
+    }
   }
 
   std::size_t key_count() const { return start_.size() - 1; }

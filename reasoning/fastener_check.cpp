@@ -47,57 +47,48 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
     if (IsThreadPair(pair)) thread_pairs.emplace_back(assembly.FeatureIndex(pair.b), &pair);
   }
   const CompressedRows<const Pair*> threads_in(assembly.feature_count(), thread_pairs);
-  std::vector<FeatureRef> threads;  // every thread feature, for nuts without one
-  for (std::size_t q = 0; q < assembly.parts().size(); ++q) {
-    for (std::size_t g = 0; g < assembly.part(q).features.size(); ++g) {
-      if (assembly.part(q).features[g].kind == FeatureKind::kThread) threads.push_back({q, g});
-    }
-  }
-
-  for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
+  for (const FeatureRef nut : assembly.FeaturesOfKind(FeatureKind::kTappedHole)) {
+    const std::size_t p = nut.part;
     const Part& part = assembly.part(p);
-    for (std::size_t f = 0; f < part.features.size(); ++f) {
-      const Feature& h = part.features[f];
-      if (h.kind != FeatureKind::kTappedHole || !h.through) continue;
-      const FeatureRef nut{p, f};
-      bool engaged = false;
-      for (const Pair* found : threads_in[assembly.FeatureIndex(nut)]) {
-        const Pair& pair = *found;
-        engaged = true;
-        const double overlap = AxialOverlap(world(pair.a), world(nut));
-        if (overlap < h.length - L) {
-          too_short(pair.a, nut, h.length - overlap, "engages " + Mm(overlap) + " of");
-        }
+    const Feature& h = assembly.feature(nut);
+    if (!h.through) continue;
+    bool engaged = false;
+    for (const Pair* found : threads_in[assembly.FeatureIndex(nut)]) {
+      const Pair& pair = *found;
+      engaged = true;
+      const double overlap = AxialOverlap(world(pair.a), world(nut));
+      if (overlap < h.length - L) {
+        too_short(pair.a, nut, h.length - overlap, "engages " + Mm(overlap) + " of");
       }
-      if (engaged) continue;
-      // A thread of the nut's size on the nut's axis that stops short of it (a scan of the
-      // threads, for the rare nut that has none).
-      bool reported = false;
-      for (const FeatureRef& thread : threads) {
-        const Feature& t = assembly.feature(thread);
-        if (thread.part == p || std::abs(t.diameter - h.diameter) > L) continue;
-        const AxisSegment ta = world(thread), ha = world(nut);
-        if (AngleBetweenLines(ta.direction, ha.direction) > A ||
-            DistanceToLine(ta.origin, ha.origin, ha.direction) > L) {
-          continue;
-        }
-        const double overlap = AxialOverlap(ta, ha);
-        if (overlap > L || -overlap > h.length + h.diameter) continue;
-        too_short(thread, nut, h.length - overlap, "does not reach");
-        reported = true;
-        break;
+    }
+    if (engaged) continue;
+    // A thread of the nut's size on the nut's axis that stops short of it (a scan of the
+    // threads, for the rare nut that has none).
+    bool reported = false;
+    for (const FeatureRef& thread : assembly.FeaturesOfKind(FeatureKind::kThread)) {
+      const Feature& t = assembly.feature(thread);
+      if (thread.part == p || std::abs(t.diameter - h.diameter) > L) continue;
+      const AxisSegment ta = world(thread), ha = world(nut);
+      if (AngleBetweenLines(ta.direction, ha.direction) > A ||
+          DistanceToLine(ta.origin, ha.origin, ha.direction) > L) {
+        continue;
       }
-      const bool nut_like =
-          std::count_if(part.features.begin(), part.features.end(),
-                        [](const Feature& x) { return x.kind != FeatureKind::kFace; }) == 1;
-      if (!reported && nut_like) {
-        out.push_back({Severity::kWarning,
-                       "nut_without_bolt",
-                       "nut " + part.id + " has no thread in its tapped hole " +
-                           assembly.FeatureName(nut) + ": nothing holds it",
-                       {part.id},
-                       {assembly.FeatureName(nut)}});
-      }
+      const double overlap = AxialOverlap(ta, ha);
+      if (overlap > L || -overlap > h.length + h.diameter) continue;
+      too_short(thread, nut, h.length - overlap, "does not reach");
+      reported = true;
+      break;
+    }
+    const bool nut_like =
+        std::count_if(part.features.begin(), part.features.end(),
+                      [](const Feature& x) { return x.kind != FeatureKind::kFace; }) == 1;
+    if (!reported && nut_like) {
+      out.push_back({Severity::kWarning,
+                     "nut_without_bolt",
+                     "nut " + part.id + " has no thread in its tapped hole " +
+                         assembly.FeatureName(nut) + ": nothing holds it",
+                     {part.id},
+                     {assembly.FeatureName(nut)}});
     }
   }
 

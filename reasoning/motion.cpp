@@ -136,24 +136,25 @@ class Solver {
     const std::size_t ground = model_.ground();
     const std::size_t parts = assembly_.parts().size();
     motion.parts.resize(parts);
-    std::vector<std::pair<std::size_t, FeatureRate>> rates_by_part;
-    rates_by_part.reserve(assembly_.feature_count());
+    std::vector<std::size_t> start{0};  // per part: its first rate
+    start.reserve(parts + 1);
     std::vector<FeatureRate> rates;
+    rates.reserve(assembly_.feature_count());
     for (std::size_t p = 0; p < parts; ++p) {
       const std::size_t body = model_.body_of_part(p);
       const Part& part = assembly_.part(p);
-      rates.clear();
       for (std::size_t f = 0; f < part.features.size(); ++f) {
-        const AxisSegment axis = model_.WorldAxis({p, f});
+        const AxisSegment& axis = model_.WorldAxis({p, f});
         rates.push_back(
             {model_.AngularRate(body, ground, axis.direction, x),
              model_.LinearRate(body, ground, axis.origin, axis.direction, x) / mm_per_length_});
-        rates_by_part.emplace_back(p, rates.back());
       }
-      motion.parts[p] = Classify(p, omega[body], v[body], rates);
+      motion.parts[p] = Classify(p, omega[body], v[body],
+                                 std::span<const FeatureRate>(rates).subspan(start.back()));
       motion.parts[p].path = Path(body, x);
+      start.push_back(rates.size());
     }
-    motion.features = CompressedRows<FeatureRate>(parts, rates_by_part);
+    motion.features = CompressedRows<FeatureRate>(std::move(start), std::move(rates));
   }
 
  private:
@@ -230,7 +231,7 @@ class Solver {
   }
 
   PartMotion Classify(std::size_t p, const Eigen::Vector3d& omega, const Eigen::Vector3d& v_WO,
-                      const std::vector<FeatureRate>& rates) const {
+                      std::span<const FeatureRate> rates) const {
     PartMotion m;
     const bool turns = omega.norm() > kTolerance;
     if (!turns && v_WO.norm() <= kTolerance) return m;

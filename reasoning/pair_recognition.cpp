@@ -138,29 +138,35 @@ class Recognizer {
     constexpr std::int64_t kMaxCellsPerBox = 512;
     constexpr int kKeyBits = 32;       // an entry is its cell's key over its feature's index
     std::vector<std::uint32_t> large;  // boxes spanning too many cells: tested against all
-    std::vector<std::array<std::int64_t, 3>> low(features_.size()), high(features_.size());
+    // Cell coordinates fit 32 bits once the key does: 12 bytes a corner, for the cache.
+    std::vector<std::array<std::uint32_t, 3>> low(features_.size()), high(features_.size());
     std::array<int, 3> bits{};
     std::size_t entry_count = 0;
-    // Cells of the median reach, doubled while the grid needs more than kKeyBits bits of key
-    // (a huge assembly of small features: more candidates per cell, still every pair once).
-    for (double cell = std::max(extents[extents.size() / 2], 1e-3);; cell *= 2) {
+    // Cells of twice the median reach (most boxes then cover one or two cells along each axis:
+    // fewer entries to sort, a few more candidates per cell), doubled while the grid needs more
+    // than kKeyBits bits of key (a huge assembly of small features: more candidates per cell,
+    // still every pair once).
+    for (double cell = std::max(2 * extents[extents.size() / 2], 1e-3);; cell *= 2) {
       large.clear();
       entry_count = 0;
       std::array<std::int64_t, 3> extent{1, 1, 1};  // cells per axis over the small boxes
       for (std::uint32_t i = 0; i < features_.size(); ++i) {
         const Aabb& b = features_[i].reach;
         std::int64_t count = 1;
+        std::array<std::int64_t, 3> hi{};
         for (int k = 0; k < 3; ++k) {
-          low[i][k] = static_cast<std::int64_t>(std::floor((b.min[k] - all.min[k]) / cell));
-          high[i][k] = static_cast<std::int64_t>(std::floor((b.max[k] - all.min[k]) / cell));
-          count *= std::min(high[i][k] - low[i][k] + 1, kMaxCellsPerBox + 1);
+          const auto lo = static_cast<std::int64_t>(std::floor((b.min[k] - all.min[k]) / cell));
+          hi[k] = static_cast<std::int64_t>(std::floor((b.max[k] - all.min[k]) / cell));
+          count *= std::min(hi[k] - lo + 1, kMaxCellsPerBox + 1);
+          low[i][k] = static_cast<std::uint32_t>(lo);  // exact when the loop ends
+          high[i][k] = static_cast<std::uint32_t>(hi[k]);
         }
         if (count > kMaxCellsPerBox) {
           large.push_back(i);
           continue;
         }
         entry_count += static_cast<std::size_t>(count);
-        for (int k = 0; k < 3; ++k) extent[k] = std::max(extent[k], high[i][k] + 1);
+        for (int k = 0; k < 3; ++k) extent[k] = std::max(extent[k], hi[k] + 1);
       }
       bits = {};
       for (int k = 0; k < 3; ++k) {
@@ -177,47 +183,70 @@ class Recognizer {
         ++next_large;
         continue;
       }
-      for (std::int64_t x = low[i][0]; x <= high[i][0]; ++x) {
-        for (std::int64_t y = low[i][1]; y <= high[i][1]; ++y) {
-          for (std::int64_t z = low[i][2]; z <= high[i][2]; ++z) {
-            const std::uint64_t key = static_cast<std::uint64_t>(x) << shift_x |
-                                      static_cast<std::uint64_t>(y) << shift_y |
-                                      static_cast<std::uint64_t>(z);
+      for (std::uint64_t x = low[i][0]; x <= high[i][0]; ++x) {
+        for (std::uint64_t y = low[i][1]; y <= high[i][1]; ++y) {
+          for (std::uint64_t z = low[i][2]; z <= high[i][2]; ++z) {
+            const std::uint64_t key = x << shift_x | y << shift_y | z;
             entries.push_back(key << 32 | i);
           }
         }
       }
     }
-    // Least-significant-digit radix sort by cell key (8-bit digits: few enough buckets for
-    // the scattered writes to stay in cache at any size), stable, so entries of one cell stay
-    // in feature order: the same order as sorting the pairs, in linear time.
+    // Least-significant-digit radix sort by cell key, stable, so entries of one cell stay in
+    // feature order: the same order as sorting the pairs, in linear time. As few passes of at
+    // most 11-bit digits as the key needs (the counts stay in the L1 cache), every digit's
+    // counts taken in one read of the entries.
     {
-      constexpr int kDigitBits = 8;
-      constexpr std::uint64_t kMask = (std::uint64_t{1} << kDigitBits) - 1;
+      const int passes = (key_bits + 10) / 11;
+      const int digit_bits = passes > 0 ? (key_bits + passes - 1) / passes : 0;
+      const std::uint64_t mask = (std::uint64_t{1} << digit_bits) - 1;
+      std::vector<std::vector<std::size_t>> counts(passes, std::vector<std::size_t>(mask + 1, 0));
+      for (const std::uint64_t e : entries) {
+        for (int d = 0; d < passes; ++d) ++counts[d][(e >> (32 + d * digit_bits)) & mask];
+      }
       std::vector<std::uint64_t> buffer(entries.size());
-      std::array<std::size_t, std::size_t{1} << kDigitBits> count{};
-      for (int shift = 32; shift < 32 + key_bits; shift += kDigitBits) {
-        count.fill(0);
-        for (const std::uint64_t e : entries) ++count[(e >> shift) & kMask];
+      for (int d = 0; d < passes; ++d) {
+        std::vector<std::size_t>& next = counts[d];
         std::size_t sum = 0;
-        for (std::size_t& n : count) sum += std::exchange(n, sum);
-        for (const std::uint64_t e : entries) buffer[count[(e >> shift) & kMask]++] = e;
+        for (std::size_t& n : next) sum += std::exchange(n, sum);
+        const int shift = 32 + d * digit_bits;
+        for (const std::uint64_t e : entries) buffer[next[(e >> shift) & mask]++] = e;
         entries.swap(buffer);
       }
     }
+    // The reach boxes in floats rounded outward, with their parts: a compact first test before
+    // the exact one, so that rejected candidates touch 28 bytes each, not a whole feature.
+    struct CompactBox {
+      std::array<float, 3> lo, hi;
+      std::uint32_t part;
+    };
+    std::vector<CompactBox> boxes(features_.size());
+    for (std::size_t i = 0; i < features_.size(); ++i) {
+      const Aabb& b = features_[i].reach;
+      for (int k = 0; k < 3; ++k) {
+        boxes[i].lo[k] = std::nextafter(static_cast<float>(b.min[k]), -HUGE_VALF);
+        boxes[i].hi[k] = std::nextafter(static_cast<float>(b.max[k]), HUGE_VALF);
+      }
+      boxes[i].part = static_cast<std::uint32_t>(features_[i].ref.part);
+    }
     auto candidate = [&](std::uint32_t i, std::uint32_t j) {
+      const CompactBox &p = boxes[i], &q = boxes[j];
+      if (p.part == q.part) return;
+      for (int k = 0; k < 3; ++k) {
+        if (p.hi[k] < q.lo[k] || q.hi[k] < p.lo[k]) return;
+      }
       const WorldFeature& x = features_[i];
       const WorldFeature& y = features_[j];
-      if (x.ref.part != y.ref.part && x.reach.Intersects(y.reach)) test(x, y);
+      if (x.reach.Intersects(y.reach)) test(x, y);
     };
     for (std::size_t begin = 0; begin < entries.size();) {
       const std::uint64_t key = entries[begin] >> 32;
       std::size_t end = begin;
       while (end < entries.size() && entries[end] >> 32 == key) ++end;
-      const std::array<std::int64_t, 3> here{
-          static_cast<std::int64_t>(key >> shift_x),
-          static_cast<std::int64_t>((key >> shift_y) & ((std::uint64_t{1} << bits[1]) - 1)),
-          static_cast<std::int64_t>(key & ((std::uint64_t{1} << bits[2]) - 1))};
+      const std::array<std::uint32_t, 3> here{
+          static_cast<std::uint32_t>(key >> shift_x),
+          static_cast<std::uint32_t>((key >> shift_y) & ((std::uint64_t{1} << bits[1]) - 1)),
+          static_cast<std::uint32_t>(key & ((std::uint64_t{1} << bits[2]) - 1))};
       for (std::size_t a = begin; a < end; ++a) {
         for (std::size_t b = a + 1; b < end; ++b) {
           const auto i = static_cast<std::uint32_t>(entries[a]);
