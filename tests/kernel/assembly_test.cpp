@@ -154,6 +154,16 @@ TEST(Assembly, IndicesAndRanksOfPartsAndFeatures) {
   }
 }
 
+TEST(Assembly, ListsFeaturesByKind) {
+  const Assembly assembly(ValidSpec());
+  using Refs = std::vector<FeatureRef>;
+  EXPECT_EQ(assembly.FeaturesOfKind(FeatureKind::kHole), (Refs{{0, 0}}));
+  EXPECT_EQ(assembly.FeaturesOfKind(FeatureKind::kFace), (Refs{{0, 1}}));
+  EXPECT_EQ(assembly.FeaturesOfKind(FeatureKind::kShaft), (Refs{{1, 0}}));
+  EXPECT_EQ(assembly.FeaturesOfKind(FeatureKind::kGear), (Refs{{1, 1}}));
+  EXPECT_TRUE(assembly.FeaturesOfKind(FeatureKind::kThread).empty());
+}
+
 TEST(Assembly, SameFeatureIdInDifferentPartsIsAllowed) {
   AssemblySpec spec = ValidSpec();
   spec.parts[1].features[0].id = "bore";
