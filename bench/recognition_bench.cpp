@@ -10,6 +10,9 @@
 // flushed).
 //
 // Usage: recognition_bench [max_parts]   (default 100000)
+//        recognition_bench --grid-once N    one analysis of the grid layout of N parts, untimed
+//        recognition_bench --grid-setup N   only its setup (for valgrind: the difference of the
+//                                           two is the analysis)
 
 #include <algorithm>
 #include <chrono>
@@ -199,6 +202,15 @@ double Median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
   using namespace mechanist;
+  if (argc == 3 &&
+      (std::string(argv[1]) == "--grid-once" || std::string(argv[1]) == "--grid-setup")) {
+    const int cells = std::atoi(argv[2]) / kPartsPerCell;
+    const Assembly assembly = Synthetic(cells, static_cast<int>(std::ceil(std::sqrt(cells))), 40.0);
+    if (std::string(argv[1]) == "--grid-once") {
+      std::printf("%zu pairs\n", Analyze(assembly).pairs.size());
+    }
+    return 0;
+  }
   const int max_parts = argc > 1 ? std::atoi(argv[1]) : 100000;
   struct Layout {
     const char* name;
