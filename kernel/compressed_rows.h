@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <stdexcept>
 #include <span>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
