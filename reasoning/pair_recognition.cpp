@@ -62,6 +62,9 @@ class Recognizer {
   }
 
   Recognition Run() {
+    // About as many pairs as features in a mechanism (each joins two features; a gear may
+    // mesh with several): reserved, so that the pairs are not copied as the vector grows.
+    pairs_.reserve(features_.size());
     ForEachCandidate([this](const WorldFeature& x, const WorldFeature& y) { Test(x, y); });
     ApplyOverrides();
     ApplyClamps();
