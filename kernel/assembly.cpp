@@ -15,12 +15,11 @@ std::optional<std::size_t> Part::FindFeature(const std::string& feature_id) cons
   return std::nullopt;
 }
 
-Assembly::Assembly(AssemblySpec spec)
-    : spec_(std::move(spec)), features_of_kind_(static_cast<std::size_t>(FeatureKind::kFace) + 1) {
+Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
   for (std::size_t i = 0; i < spec_.parts.size(); ++i) {
     const Part& part = spec_.parts[i];
     for (std::size_t f = 0; f < part.features.size(); ++f) {
-      features_of_kind_.at(static_cast<std::size_t>(part.features[f].kind)).push_back({i, f});
+      features_of_kind_[part.features[f].kind].push_back({i, f});
     }
     if (!part_index_.emplace(part.id, i).second) {
       throw std::invalid_argument("duplicate part id '" + part.id + "'");
@@ -129,6 +128,12 @@ std::optional<FeatureRef> Assembly::FindFeature(const std::string& path) const {
   const auto feature = spec_.parts[*part].FindFeature(path.substr(slash + 1));
   if (!feature) return std::nullopt;
   return FeatureRef{*part, *feature};
+}
+
+const std::vector<FeatureRef>& Assembly::FeaturesOfKind(FeatureKind kind) const {
+  static const std::vector<FeatureRef> kNone;
+  const auto it = features_of_kind_.find(kind);
+  return it == features_of_kind_.end() ? kNone : it->second;
 }
 
 std::string Assembly::FeatureName(FeatureRef ref) const {

@@ -161,9 +161,7 @@ class Assembly {
   }
   /// The features of one kind, parts and features in order: a check that concerns one kind
   /// need not read every feature.
-  const std::vector<FeatureRef>& FeaturesOfKind(FeatureKind kind) const {
-    return features_of_kind_.at(static_cast<std::size_t>(kind));
-  }
+  const std::vector<FeatureRef>& FeaturesOfKind(FeatureKind kind) const;
   /// The number of features of all parts.
   std::size_t feature_count() const { return feature_rank_.size(); }
   /// The feature's position among the features of all parts, parts in order: an index into
@@ -182,7 +180,7 @@ class Assembly {
   std::vector<std::size_t> first_feature_;      ///< per part: the FeatureIndex of its first feature
   std::vector<std::uint32_t> feature_rank_;     ///< per feature: its rank by id in its part
   std::vector<std::size_t> feature_name_rank_;  ///< per feature: FeatureNameRank
-  std::vector<std::vector<FeatureRef>> features_of_kind_;  ///< per FeatureKind
+  std::map<FeatureKind, std::vector<FeatureRef>> features_of_kind_;
 };
 
 }  // namespace mechanist

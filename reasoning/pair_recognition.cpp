@@ -161,7 +161,8 @@ class Recognizer {
           const auto lo = static_cast<std::int64_t>(std::floor((b.min[k] - all.min[k]) / cell));
           hi[k] = static_cast<std::int64_t>(std::floor((b.max[k] - all.min[k]) / cell));
           count *= std::min(hi[k] - lo + 1, kMaxCellsPerBox + 1);
-          low[i][k] = static_cast<std::uint32_t>(lo);  // exact when the loop ends
+          // Exact, once the loop ends, for the boxes that are entered in cells.
+          low[i][k] = static_cast<std::uint32_t>(lo);
           high[i][k] = static_cast<std::uint32_t>(hi[k]);
         }
         if (count > kMaxCellsPerBox) {
@@ -197,8 +198,8 @@ class Recognizer {
     }
     // Least-significant-digit radix sort by cell key, stable, so entries of one cell stay in
     // feature order: the same order as sorting the pairs, in linear time. As few passes of at
-    // most 11-bit digits as the key needs (the counts stay in the L1 cache), every digit's
-    // counts taken in one read of the entries.
+    // most 11-bit digits as the key needs (a pass's 2048 counts stay in the L1 cache), every
+    // digit's counts taken in one read of the entries.
     {
       const int passes = (key_bits + 10) / 11;
       const int digit_bits = passes > 0 ? (key_bits + passes - 1) / passes : 0;
@@ -695,13 +696,13 @@ class Recognizer {
 
   /// A tight thread in a tapped hole whose tip bears on a third part's shaft fixes the shaft.
   void ApplySetscrews() {
-    // Per entry of features_: the tapped hole its tight thread is screwed into, first found.
+    // Per entry of features_: the tapped hole its tight thread is screwed into, the first by
+    // name when there are several (not the first found, which depends on the broad phase).
     std::vector<std::optional<FeatureRef>> screwed_into(features_.size());
     for (const Pair& p : pairs_) {
-      if (p.type == PairType::kFixed && p.fastening == PairFastening::kTight &&
-          !screwed_into[Index(p.a)]) {
-        screwed_into[Index(p.a)] = p.b;
-      }
+      if (p.type != PairType::kFixed || p.fastening != PairFastening::kTight) continue;
+      std::optional<FeatureRef>& hole = screwed_into[Index(p.a)];
+      if (!hole || assembly_.FeatureNameRank(p.b) < assembly_.FeatureNameRank(*hole)) hole = p.b;
     }
     for (const auto& [thread, s] : setscrew_candidates_) {
       const std::optional<FeatureRef>& hole = screwed_into[Index(thread->ref)];

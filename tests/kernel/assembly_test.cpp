@@ -136,6 +136,10 @@ TEST(Assembly, IndicesAndRanksOfPartsAndFeatures) {
     }
   }
   EXPECT_EQ(assembly.feature_count(), next);
+  // All of them are holes: listed by kind in the same order.
+  const std::vector<FeatureRef>& holes = assembly.FeaturesOfKind(FeatureKind::kHole);
+  ASSERT_EQ(holes.size(), next);
+  for (std::size_t i = 0; i < holes.size(); ++i) EXPECT_EQ(assembly.FeatureIndex(holes[i]), i);
   for (std::size_t x = 0; x < part_ids.size(); ++x) {
     for (std::size_t y = 0; y < part_ids.size(); ++y) {
       EXPECT_EQ(assembly.PartRank(x) < assembly.PartRank(y), part_ids[x] < part_ids[y]);
