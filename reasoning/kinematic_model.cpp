@@ -536,10 +536,4 @@ Eigen::Matrix<double, 6, 1> KinematicModel::BodyTwist(
   return twist;
 }
 
-ExactReal KinematicModel::Evaluate(const LinearSystem::Row& row, const std::vector<ExactReal>& x) {
-  ExactReal sum;
-  for (const LinearSystem::Term& t : row) sum += t.coefficient * x[t.variable];
-  return sum;
-}
-
 }  // namespace mechanist

@@ -111,12 +111,11 @@ class KinematicModel {
                                             const std::vector<ExactReal>& x) const;
   /// The parent of `body` in the tree, or nothing for the ground.
   std::optional<std::size_t> ParentBody(std::size_t body) const;
-  /// Evaluates a row at `x`.
-  static ExactReal Evaluate(const LinearSystem::Row& row, const std::vector<ExactReal>& x);
-  /// Evaluate(Angular(a, b, direction_W), x), without building the row.
+  /// The rate of Angular(a, b, direction_W) at the freedoms' rates `x` (the row's terms
+  /// summed), without building the row.
   ExactReal AngularRate(std::size_t a, std::size_t b, const Eigen::Vector3d& direction_W,
                         const std::vector<ExactReal>& x) const;
-  /// Evaluate(Linear(a, b, p_W, direction_W), x), without building the row.
+  /// The rate of Linear(a, b, p_W, direction_W) at `x`, without building the row.
   ExactReal LinearRate(std::size_t a, std::size_t b, const Eigen::Vector3d& p_W,
                        const Eigen::Vector3d& direction_W, const std::vector<ExactReal>& x) const;
 

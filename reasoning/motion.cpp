@@ -458,7 +458,9 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   const std::vector<ImposedMotion> imposed = DriverMotions(assembly);
   std::vector<std::string> labels;
   for (const Driver& d : assembly.drivers()) labels.push_back("driver " + d.id);
-  LinearSystem driven_system = solver.structural();
+  // The system with the drivers' rows, for the free motions (the structural one when there is
+  // no driver; filled by the solve below otherwise, not copied first).
+  LinearSystem driven_system(0, kTolerance);
   // With one driver, its motion at its rate is its motion at unit rate scaled (velocities
   // are linear in the drivers' rates): one solve instead of two.
   const bool one_driver = imposed.size() == 1 && imposed.front().rate != 0.0;
@@ -511,7 +513,8 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     has_pair[model.body_of_part(p.a.part)] = has_pair[model.body_of_part(p.b.part)] = true;
   }
   std::vector<bool> reported(model.joints().size(), false);
-  for (const LinearSystem::Row& n : driven_system.NullSpace()) {
+  const LinearSystem& free_system = imposed.empty() ? solver.structural() : driven_system;
+  for (const LinearSystem::Row& n : free_system.NullSpace()) {
     if (n.empty()) continue;
     const Freedom& f = model.freedoms()[n.front().variable];
     const Joint& j = model.joints()[f.joint];

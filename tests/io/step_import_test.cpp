@@ -195,6 +195,14 @@ TEST(StepImport, ConesSpheresAndToriAreNamedInNotes) {
   std::ostringstream listing;
   WriteFeatureReport(RecogniseAssemblyFeatures(a), listing);
   EXPECT_NE(listing.str().find("note: countersink of hole_1"), std::string::npos) << listing.str();
+  // A part whose mesh is the STEP file keeps its solids' notes, named by solid.
+  const Assembly whole = ParseAssembly(
+      R"({"mechanist": 1, "parts": [{"id": "all", "mesh": "cones.step"}]})", dir / "w.json");
+  const std::vector<std::string>& notes = whole.part(0).notes;
+  EXPECT_NE(std::find(notes.begin(), notes.end(),
+                      "solid1: countersink of hole_1: 90 deg, diameter 6 to 12 mm"),
+            notes.end())
+      << ::testing::PrintToString(notes);
 }
 
 // A binary STL of `mesh`.
