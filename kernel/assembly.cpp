@@ -18,8 +18,10 @@ std::optional<std::size_t> Part::FindFeature(const std::string& feature_id) cons
 Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
   for (std::size_t i = 0; i < spec_.parts.size(); ++i) {
     const Part& part = spec_.parts[i];
+    ground_.push_back(part.ground);
     for (std::size_t f = 0; f < part.features.size(); ++f) {
       features_of_kind_[part.features[f].kind].push_back({i, f});
+      feature_kind_.push_back(part.features[f].kind);
     }
     if (!part_index_.emplace(part.id, i).second) {
       throw std::invalid_argument("duplicate part id '" + part.id + "'");

@@ -166,6 +166,16 @@ class Assembly {
   std::size_t feature_count() const { return feature_rank_.size(); }
   /// The feature's position among the features of all parts, parts in order: an index into
   /// flat per-feature arrays of size feature_count().
+  /// Whether part `part` is fixed to the world, from a compact per-part table.
+  bool IsGround(std::size_t part) const { return ground_.at(part); }
+  /// The kind of feature `ref`, from a compact per-feature table: loops over pairs read it
+  /// without touching the Feature itself.
+  FeatureKind kind(FeatureRef ref) const { return feature_kind_[FeatureIndex(ref)]; }
+  /// The number of features of part `part`, from the compact per-part table.
+  std::size_t FeatureCount(std::size_t part) const {
+    return (part + 1 < first_feature_.size() ? first_feature_[part + 1] : feature_count()) -
+           first_feature_.at(part);
+  }
   std::size_t FeatureIndex(FeatureRef ref) const {
     return first_feature_.at(ref.part) + ref.feature;
   }
@@ -180,6 +190,8 @@ class Assembly {
   std::vector<std::size_t> first_feature_;      ///< per part: the FeatureIndex of its first feature
   std::vector<std::uint32_t> feature_rank_;     ///< per feature: its rank by id in its part
   std::vector<std::size_t> feature_name_rank_;  ///< per feature: FeatureNameRank
+  std::vector<FeatureKind> feature_kind_;       ///< per feature: its kind
+  std::vector<bool> ground_;                    ///< per part: Part::ground
   std::map<FeatureKind, std::vector<FeatureRef>> features_of_kind_;
 };
 

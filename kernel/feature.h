@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -10,7 +11,7 @@
 namespace mechanist {
 
 /// The kinds of connection feature of the assembly format (spec, "Features").
-enum class FeatureKind {
+enum class FeatureKind : std::uint8_t {
   kShaft,
   kHole,
   kThread,

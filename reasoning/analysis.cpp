@@ -22,8 +22,8 @@ Analysis Analyze(const Assembly& assembly, const std::vector<Pair>& extra) {
   for (std::size_t s = 0; s < analysis.subassemblies.size(); ++s) {
     for (std::size_t part : analysis.subassemblies[s].parts) analysis.subassembly_of[part] = s;
   }
-  analysis.motion =
-      AnalyzeMotion(assembly, analysis.pairs, analysis.subassemblies, analysis.subassembly_of);
+  analysis.motion = AnalyzeMotion(assembly, analysis.pairs, analysis.subassemblies,
+                                  analysis.subassembly_of, std::move(recognition.axes_W));
   analysis.diagnostics = CheckAssembly(assembly);
   const auto fasteners = CheckFasteners(assembly, analysis.pairs);
   const std::vector<Diagnostic>* findings[] = {&recognition.diagnostics, &fasteners,

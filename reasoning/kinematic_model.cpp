@@ -4,9 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
-#include <map>
+#include <stdexcept>
 
 #include "kernel/line_geometry.h"
+#include "kernel/radix_sort.h"
 
 namespace mechanist {
 namespace {
@@ -52,21 +53,29 @@ void Append(LinearSystem::Row& to, const LinearSystem::Row& from, const ExactRea
 
 KinematicModel::KinematicModel(const Assembly& assembly, const std::vector<Pair>& pairs,
                                const std::vector<Subassembly>& subassemblies,
-                               const std::vector<std::size_t>& subassembly_of)
+                               const std::vector<std::size_t>& subassembly_of,
+                               std::vector<AxisSegment> axes_W)
     : assembly_(assembly),
       cos_tol_(std::cos(assembly.tolerance().angle)),
       sin_tol_(std::sin(assembly.tolerance().angle)),
       length_tol_(assembly.tolerance().length),
-      body_of_part_(subassembly_of) {
+      body_of_part_(subassembly_of),
+      axes_(std::move(axes_W)) {
   const bool has_ground = !subassemblies.empty() && subassemblies.front().ground;
   const std::size_t bodies = subassemblies.size() + (has_ground ? 0 : 1);
   ground_ = has_ground ? 0 : subassemblies.size();
   parent_joint_.assign(bodies, std::nullopt);
-  // Every feature's world axis, computed once: the rows and the motion descriptions ask for
-  // them many times.
-  axes_.reserve(assembly.feature_count());
-  for (const Part& part : assembly.parts()) {
-    for (const Feature& f : part.features) axes_.push_back(f.WorldAxis(part.X_WP));
+  // Every feature's world axis, once (the rows and the motion descriptions ask for them many
+  // times), unless recognition gave them: a read of every part and feature fewer.
+  if (axes_.empty()) {
+    axes_.reserve(assembly.feature_count());
+    for (const Part& part : assembly.parts()) {
+      for (const Feature& f : part.features) axes_.push_back(f.WorldAxis(part.X_WP));
+    }
+  } else if (axes_.size() != assembly.feature_count()) {
+    throw std::invalid_argument("KinematicModel: " + std::to_string(axes_.size()) +
+                                " world axes for " + std::to_string(assembly.feature_count()) +
+                                " features");
   }
   BuildJoints(pairs);
   std::vector<std::pair<std::size_t, std::size_t>> joints_by_body;  // (body, joint)
@@ -93,7 +102,7 @@ ExactReal KinematicModel::Dot(const Eigen::Vector3d& a, const Eigen::Vector3d& b
 }
 
 void KinematicModel::BuildJoints(const std::vector<Pair>& pairs) {
-  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> joints_between;
+  std::vector<Joint> candidates;
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const Pair& p = pairs[i];
     if (!IsLowerPair(p.type)) continue;
@@ -113,26 +122,48 @@ void KinematicModel::BuildJoints(const std::vector<Pair>& pairs) {
     if (p.type == PairType::kScrew) {
       j.lead = ExactReal::FromDecimal(p.travel_per_revolution.value_or(0.0));
     }
-    // A shaft in two coaxial bearings of one part is one joint, not a redundant pair. Only the
-    // joints between the same two bodies are compared (indexed by the pair of bodies: the
-    // ground may have a joint with every other body).
-    bool duplicate = false;
-    auto& between = joints_between[{std::min(j.body_a, j.body_b), std::max(j.body_a, j.body_b)}];
-    for (std::size_t k : between) {
-      const Joint& o = joints_[k];
-      // Two threads on one axis are two constraints unless their leads agree: never merged.
-      if (o.type != j.type || p.type == PairType::kScrew) continue;
-      if (std::abs(o.axis_W.dot(j.axis_W)) < cos_tol_) continue;
-      if (p.type != PairType::kPrismatic &&
-          DistanceToLine(j.point_W, o.point_W, o.axis_W) > length_tol_) {
-        continue;
+    candidates.push_back(j);
+  }
+  // A shaft in two coaxial bearings of one part is one joint, not a redundant pair: a joint is
+  // dropped when an earlier kept joint between the same two bodies has its type and axis. The
+  // joints are grouped by their two bodies with a stable radix sort (in pair order within a
+  // group; the ground may have a joint with every other body), not by a map of lists.
+  const int body_bits = BitWidth(parent_joint_.size());
+  if (2 * body_bits > 64) throw std::length_error("KinematicModel: too many bodies");
+  struct Key {
+    std::uint64_t bodies;
+    std::size_t candidate;
+  };
+  std::vector<Key> keys;
+  keys.reserve(candidates.size());
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    const Joint& j = candidates[c];
+    keys.push_back(
+        {std::uint64_t{std::min(j.body_a, j.body_b)} << body_bits | std::max(j.body_a, j.body_b),
+         c});
+  }
+  RadixSort(keys, 2 * body_bits, [](const Key& k) { return k.bodies; });
+  auto same = [&](const Joint& o, const Joint& j) {
+    // Two threads on one axis are two constraints unless their leads agree: never merged.
+    if (o.type != j.type || j.type == PairType::kScrew) return false;
+    if (std::abs(o.axis_W.dot(j.axis_W)) < cos_tol_) return false;
+    return j.type == PairType::kPrismatic ||
+           DistanceToLine(j.point_W, o.point_W, o.axis_W) <= length_tol_;
+  };
+  std::vector<bool> duplicate(candidates.size(), false);
+  for (std::size_t begin = 0, end = 0; begin < keys.size(); begin = end) {
+    while (end < keys.size() && keys[end].bodies == keys[begin].bodies) ++end;
+    for (std::size_t k = begin + 1; k < end; ++k) {
+      const std::size_t c = keys[k].candidate;
+      for (std::size_t e = begin; e < k && !duplicate[c]; ++e) {
+        const std::size_t earlier = keys[e].candidate;
+        duplicate[c] = !duplicate[earlier] && same(candidates[earlier], candidates[c]);
       }
-      duplicate = true;
-      break;
     }
-    if (duplicate) continue;
-    between.push_back(joints_.size());
-    joints_.push_back(j);
+  }
+  joints_.reserve(candidates.size());
+  for (std::size_t c = 0; c < candidates.size(); ++c) {
+    if (!duplicate[c]) joints_.push_back(std::move(candidates[c]));
   }
 }
 
@@ -353,7 +384,7 @@ std::vector<LinearSystem::Row> KinematicModel::JointConstraints(const Joint& j, 
 bool KinematicModel::Carries(std::size_t body, FeatureRef f) const {
   if (body == body_of_part_[f.part]) return true;
   const AxisSegment axis = WorldAxis(f);
-  const bool slides = assembly_.feature(f).kind == FeatureKind::kRack;
+  const bool slides = assembly_.kind(f) == FeatureKind::kRack;
   auto carried_by = [&](const Joint& j) {
     if (std::abs(j.axis_W.dot(axis.direction)) < cos_tol_) return false;
     if (slides) return j.type == PairType::kPrismatic;

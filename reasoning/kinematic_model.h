@@ -63,9 +63,13 @@ struct ConstraintRow {
 /// approximate numbers, so rates are exact exactly when the mechanism's ratios are rational.
 class KinematicModel {
  public:
+  /// `axes_W`: every feature's world axis at the file's poses, per Assembly::FeatureIndex, as
+  /// recognition gives them (Recognition::axes_W); empty: computed here. Throws
+  /// std::invalid_argument when given for another number of features.
   KinematicModel(const Assembly& assembly, const std::vector<Pair>& pairs,
                  const std::vector<Subassembly>& subassemblies,
-                 const std::vector<std::size_t>& subassembly_of);
+                 const std::vector<std::size_t>& subassembly_of,
+                 std::vector<AxisSegment> axes_W = {});
 
   std::size_t body_count() const { return parent_joint_.size(); }
   std::size_t ground() const { return ground_; }

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
-#include <map>
 #include <span>
 
 #include "kernel/compressed_rows.h"
@@ -31,10 +30,10 @@ class Solver {
  public:
   Solver(const Assembly& assembly, const std::vector<Pair>& pairs,
          const std::vector<Subassembly>& subassemblies,
-         const std::vector<std::size_t>& subassembly_of)
+         const std::vector<std::size_t>& subassembly_of, std::vector<AxisSegment> axes_W = {})
       : assembly_(assembly),
         pairs_(pairs),
-        model_(assembly, pairs, subassemblies, subassembly_of),
+        model_(assembly, pairs, subassemblies, subassembly_of, std::move(axes_W)),
         structural_(model_.freedoms().size(), kTolerance),
         mm_per_length_(ExactReal::FromDecimal(assembly.units().mm_per_length)) {
     std::vector<std::pair<std::size_t, std::size_t>> parts;  // (body, part)
@@ -48,6 +47,7 @@ class Solver {
     }
     std::vector<std::pair<std::size_t, std::pair<std::size_t, std::size_t>>> edges;
     for (std::size_t i = 0; i < pairs_.size(); ++i) {
+      self_locking_worms_ |= pairs_[i].type == PairType::kWormGear && pairs_[i].self_locking;
       const std::size_t a = model_.body_of_part(pairs_[i].a.part);
       const std::size_t b = model_.body_of_part(pairs_[i].b.part);
       if (a == b) continue;
@@ -142,8 +142,8 @@ class Solver {
     rates.reserve(assembly_.feature_count());
     for (std::size_t p = 0; p < parts; ++p) {
       const std::size_t body = model_.body_of_part(p);
-      const Part& part = assembly_.part(p);
-      for (std::size_t f = 0; f < part.features.size(); ++f) {
+      // From the compact tables, not the Part: a read of every part fewer.
+      for (std::size_t f = 0; f < assembly_.FeatureCount(p); ++f) {
         const AxisSegment& axis = model_.WorldAxis({p, f});
         rates.push_back(
             {model_.AngularRate(body, ground, axis.direction, x),
@@ -177,6 +177,7 @@ class Solver {
   /// Self-locking worm gears that the imposed motions would reach from the wheel's side first:
   /// breadth-first from the driven bodies over joints and couplings, not through the ground.
   std::vector<std::size_t> BackDrivenWorms(const std::vector<ImposedMotion>& imposed) const {
+    if (!self_locking_worms_) return {};
     const std::size_t bodies = model_.body_count();
     std::vector<bool> seen(bodies, false);
     std::deque<std::size_t> queue;
@@ -236,14 +237,14 @@ class Solver {
     const bool turns = omega.norm() > kTolerance;
     if (!turns && v_WO.norm() <= kTolerance) return m;
     const Eigen::Vector3d axis = turns ? omega.normalized() : v_WO.normalized();
-    const Part& part = assembly_.part(p);
-    // Of the features along the motion, the first by id, so that the file's order of features
-    // does not change the report.
-    for (std::size_t f = 0; f < part.features.size(); ++f) {
+    // Of the features along the motion, the first by id (within a part, name order is id
+    // order), so that the file's order of features does not change the report.
+    for (std::size_t f = 0; f < assembly_.FeatureCount(p); ++f) {
       const AxisSegment a = model_.WorldAxis({p, f});
       const ExactReal along = model_.Dot(a.direction, axis);
       if (!along.is_exact() || along.exact()->is_zero()) continue;
-      if (m.axis_feature && part.features[m.axis_feature->feature].id <= part.features[f].id) {
+      if (m.axis_feature &&
+          assembly_.FeatureNameRank(*m.axis_feature) <= assembly_.FeatureNameRank({p, f})) {
         continue;
       }
       m.axis_feature = FeatureRef{p, f};
@@ -265,7 +266,7 @@ class Solver {
       m.kind = m.translation.IsZero(kTolerance) ? MotionKind::kRotation : MotionKind::kScrew;
     } else {
       m.kind = MotionKind::kTranslation;
-      m.point_W = part.X_WP.translation();
+      m.point_W = assembly_.part(p).X_WP.translation();
     }
     return m;
   }
@@ -277,7 +278,8 @@ class Solver {
   std::vector<LinearSystem::Outcome> outcomes_;
   CompressedRows<std::size_t> parts_of_body_;
   CompressedRows<std::pair<std::size_t, std::size_t>> edges_;  // body: (body, pair)
-  ExactReal mm_per_length_;  // reports give lengths in the file's units
+  ExactReal mm_per_length_;          // reports give lengths in the file's units
+  bool self_locking_worms_ = false;  // whether any worm gear pair is self-locking
 };
 
 std::vector<ImposedMotion> DriverMotions(const Assembly& assembly) {
@@ -290,7 +292,7 @@ std::vector<ImposedMotion> DriverMotions(const Assembly& assembly) {
 
 /// The bodies that a sparse velocity vector moves: the subtrees below its joints.
 std::vector<std::size_t> MovedBodies(const KinematicModel& model,
-                                     const std::vector<std::vector<std::size_t>>& children,
+                                     const CompressedRows<std::size_t>& children,
                                      const LinearSystem::Row& vector) {
   std::vector<std::size_t> bodies;
   std::vector<std::size_t> stack;
@@ -358,8 +360,9 @@ DrivenMotion SolveImposed(const Assembly& assembly, const std::vector<Pair>& pai
 
 MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& pairs,
                              const std::vector<Subassembly>& subassemblies,
-                             const std::vector<std::size_t>& subassembly_of) {
-  const Solver solver(assembly, pairs, subassemblies, subassembly_of);
+                             const std::vector<std::size_t>& subassembly_of,
+                             std::vector<AxisSegment> axes_W) {
+  const Solver solver(assembly, pairs, subassemblies, subassembly_of, std::move(axes_W));
   const KinematicModel& model = solver.model();
   MotionAnalysis result;
   result.diagnostics = model.diagnostics();
@@ -381,12 +384,14 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   };
 
   // Redundant constraints, per pair.
-  std::map<std::size_t, int> redundant;
+  std::vector<int> redundant(pairs.size(), 0);
   for (std::size_t r = 0; r < model.rows().size(); ++r) {
     if (solver.outcomes()[r] == LinearSystem::Outcome::kRedundant)
       ++redundant[model.rows()[r].pair];
   }
-  for (const auto& [pair, count] : redundant) {
+  for (std::size_t pair = 0; pair < pairs.size(); ++pair) {
+    const int count = redundant[pair];
+    if (count == 0) continue;
     mobility.redundant += count;
     mobility.redundant_pairs.push_back({pair, count});
     result.diagnostics.push_back(
@@ -399,29 +404,30 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   }
 
   // Allowable motion per part and jams, from the undriven motions.
-  std::vector<std::vector<std::size_t>> children(model.body_count());
+  std::vector<std::pair<std::size_t, std::size_t>> tree_edges;  // (parent, child)
   for (std::size_t body : model.order()) {
     if (const auto& j = model.parent_joint(body)) {
       const Joint& joint = model.joints()[*j];
-      children[joint.body_a == body ? joint.body_b : joint.body_a].push_back(body);
+      tree_edges.emplace_back(joint.body_a == body ? joint.body_b : joint.body_a, body);
     }
   }
+  const CompressedRows<std::size_t> children(model.body_count(), tree_edges);
   std::vector<bool> moves(model.freedoms().size(), false);
   std::vector<std::vector<Eigen::Matrix<double, 6, 1>>> body_twists(model.body_count());
+  // One basis motion's rates, dense for lookup and cleared after it (a mechanism of 100,000
+  // parts may have a thousand basis motions).
+  std::vector<double> x(model.freedoms().size(), 0.0);
   for (const LinearSystem::Row& n : solver.structural().NullSpace()) {
-    std::map<std::size_t, double> x;
     for (const LinearSystem::Term& t : n) {
       moves[t.variable] = true;
       x[t.variable] = t.coefficient.value();
     }
-    const auto rate = [&](std::size_t k) {
-      const auto it = x.find(k);
-      return it == x.end() ? 0.0 : it->second;
-    };
+    const auto rate = [&](std::size_t k) { return x[k]; };
     for (std::size_t body : MovedBodies(model, children, n)) {
       const Eigen::Matrix<double, 6, 1> twist = model.BodyTwist(body, rate);
       if (twist.norm() > kTolerance) body_twists[body].push_back(twist.normalized());
     }
+    for (const LinearSystem::Term& t : n) x[t.variable] = 0.0;
   }
   std::vector<int> body_freedoms(model.body_count(), 0);
   for (std::size_t b = 0; b < model.body_count(); ++b) {

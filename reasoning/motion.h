@@ -113,10 +113,12 @@ struct ImposedMotion {
 
 /// Velocity analysis (joint space, see KinematicModel) of the recognised `pairs`: mobility,
 /// redundant constraints, jams, free motions and each driver's motion, exact where the
-/// mechanism's ratios are rational (tooth counts, thread leads).
+/// mechanism's ratios are rational (tooth counts, thread leads). `axes_W`: the features' world
+/// axes at the file's poses when recognition gave them (see KinematicModel); empty: computed.
 MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& pairs,
                              const std::vector<Subassembly>& subassemblies,
-                             const std::vector<std::size_t>& subassembly_of);
+                             const std::vector<std::size_t>& subassembly_of,
+                             std::vector<AxisSegment> axes_W = {});
 
 /// The motion when `imposed` run together (the first at its rate, the others as given) and
 /// every free motion is held still. Worm gears that are not back-drivable lock when the motion

@@ -35,28 +35,28 @@ PairGraph::PairGraph(const Assembly& assembly, const std::vector<Pair>& pairs)
   std::vector<std::size_t> index;
   edges.reserve(2 * pairs.size());
   index.reserve(2 * pairs.size());
-  for (std::size_t i = 0; i < pairs.size(); ++i) {
-    edges.emplace_back(pairs[i].a.part, pairs[i].b.part);
-    edges.emplace_back(pairs[i].b.part, pairs[i].a.part);
-    index.insert(index.end(), {i, i});
-  }
-  impl_->all =
-      Graph(boost::edges_are_unsorted_multi_pass, edges.begin(), edges.end(), index.begin(), n);
-
   std::vector<std::size_t> set_rank(n + 1), parent(n + 1);
   using Map = boost::iterator_property_map<std::vector<std::size_t>::iterator,
                                            boost::identity_property_map>;
   boost::disjoint_sets<Map, Map> sets(Map(set_rank.begin()), Map(parent.begin()));
   for (std::size_t v = 0; v <= n; ++v) sets.make_set(v);
-  for (const Pair& p : pairs) {
+  // One read of the pairs for the edges and the fixed unions.
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const Pair& p = pairs[i];
+    edges.emplace_back(p.a.part, p.b.part);
+    edges.emplace_back(p.b.part, p.a.part);
+    index.insert(index.end(), {i, i});
     if (p.type == PairType::kFixed) sets.union_set(p.a.part, p.b.part);
   }
+  impl_->all =
+      Graph(boost::edges_are_unsorted_multi_pass, edges.begin(), edges.end(), index.begin(), n);
+
   impl_->rank.reserve(n);
   impl_->ground.reserve(n);
   for (std::size_t part = 0; part < n; ++part) {
     impl_->rank.push_back(assembly.PartRank(part));
-    impl_->ground.push_back(assembly.part(part).ground);
-    if (assembly.part(part).ground) sets.union_set(part, n);
+    impl_->ground.push_back(assembly.IsGround(part));
+    if (assembly.IsGround(part)) sets.union_set(part, n);
   }
   impl_->group_of.resize(n);
   for (std::size_t part = 0; part < n; ++part) impl_->group_of[part] = sets.find_set(part);

@@ -5,12 +5,14 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <utility>
 
 #include "kernel/line_geometry.h"
 #include "kernel/number_format.h"
+#include "kernel/radix_sort.h"
 
 namespace mechanist {
 namespace {
@@ -27,11 +29,60 @@ constexpr double kMinThreadDiameterRatio = 0.6;
 
 /// A feature at its world pose, with the box it can reach a partner from.
 struct WorldFeature {
+  Aabb reach;  ///< first, with the kind: what the broad phase and the dispatch read
+  FeatureKind kind = FeatureKind::kShaft;
   FeatureRef ref;
   const Feature* f = nullptr;
-  AxisSegment axis;  ///< world
+  const AxisSegment& axis;  ///< world; held in the recogniser's array of axes, handed out
   Eigen::Vector3d normal_W = Eigen::Vector3d::Zero();
-  Aabb reach;
+};
+
+/// Keys of grid cells along a Morton (Z-order) curve: the bits of the three cell coordinates
+/// interleaved, so that cells near in key order are near in space along every axis. The broad
+/// phase visits cells in key order; neighbouring cells share features, which then stay in the
+/// cache whichever axis the file lists its parts along (with one axis most significant, the
+/// visit runs down long columns and reloads each feature from memory in every column).
+class MortonKeys {
+ public:
+  /// For cell coordinates of `bits` bits along x, y, z, 32 bits in all at most.
+  explicit MortonKeys(const std::array<int, 3>& bits) {
+    std::array<std::array<int, 32>, 3> position{};  // key bit of each coordinate bit
+    int next = 0;
+    for (int b = 0; b < 32; ++b) {
+      for (int k = 2; k >= 0; --k) {
+        if (b < bits[k]) position[k][b] = next++;
+      }
+    }
+    for (int k = 0; k < 3; ++k) {
+      for (int b = 0; b < bits[k]; ++b) {
+        const int q = position[k][b];  // key bit q is bit b of coordinate k
+        for (std::uint32_t v = 0; v < 256; ++v) {
+          if (v >> (b % 8) & 1) spread_[k][b / 8][v] |= std::uint32_t{1} << q;
+          if (v >> (q % 8) & 1) gather_[k][q / 8][v] |= std::uint32_t{1} << b;
+        }
+      }
+    }
+  }
+
+  std::uint32_t Key(const std::array<std::uint32_t, 3>& cell) const {
+    std::uint32_t key = 0;
+    for (int k = 0; k < 3; ++k) {
+      for (int i = 0; i < 4; ++i) key |= spread_[k][i][cell[k] >> (8 * i) & 0xff];
+    }
+    return key;
+  }
+
+  std::array<std::uint32_t, 3> Cell(std::uint32_t key) const {
+    std::array<std::uint32_t, 3> cell{};
+    for (int k = 0; k < 3; ++k) {
+      for (int i = 0; i < 4; ++i) cell[k] |= gather_[k][i][key >> (8 * i) & 0xff];
+    }
+    return cell;
+  }
+
+ private:
+  // Per axis and byte: the key bits of a coordinate byte, the coordinate bits of a key byte.
+  std::array<std::array<std::array<std::uint32_t, 256>, 4>, 3> spread_{}, gather_{};
 };
 
 std::string Mm(double x) { return FormatNumber(x) + " mm"; }
@@ -45,20 +96,31 @@ class Recognizer {
         A_(assembly.tolerance().angle),
         near_L_(std::max(4 * L_, 0.5)),
         near_A_(std::max(4 * A_, 2.0 * kPi / 180.0)) {
+    // Reserved: the features refer to their axes in this array.
+    axes_.reserve(assembly.feature_count());
     features_.reserve(assembly.feature_count());
     for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
       const Part& part = assembly.part(p);
       const Aabb part_box_W = WorldBox(assembly, state, p);
       for (std::size_t i = 0; i < part.features.size(); ++i) {
-        WorldFeature w;
-        w.ref = {p, i};
-        w.f = &part.features[i];
-        w.axis = w.f->WorldAxis(state.X_WP[p]);
-        w.normal_W = state.X_WP[p].RotateDirection(w.f->normal);
+        const Feature& f = part.features[i];
+        axes_.push_back(f.WorldAxis(state.X_WP[p]));
+        WorldFeature w{.reach = {},
+                       .kind = f.kind,
+                       .ref = {p, i},
+                       .f = &f,
+                       .axis = axes_.back(),
+                       .normal_W = state.X_WP[p].RotateDirection(f.normal)};
         w.reach = ReachBox(w, part_box_W);
         features_.push_back(w);
       }
     }
+  }
+
+  /// The world axes, once Run has finished with them.
+  std::vector<AxisSegment> TakeAxes() {
+    features_.clear();
+    return std::move(axes_);
   }
 
   Recognition Run() {
@@ -67,10 +129,11 @@ class Recognizer {
     pairs_.reserve(features_.size());
     ForEachCandidate([this](const WorldFeature& x, const WorldFeature& y) { Test(x, y); });
     ApplyOverrides();
-    ApplyClamps();
-    ApplySetscrews();
+    const std::vector<std::optional<FeatureRef>> screwed_into = TightThreads();
+    ApplyClamps(screwed_into);
+    ApplySetscrews(screwed_into);
     ReportUnconnected();
-    Recognition out{std::move(pairs_), std::move(diagnostics_)};
+    Recognition out{std::move(pairs_), std::move(diagnostics_), {}};
     Sort(out);
     return out;
   }
@@ -178,7 +241,8 @@ class Recognizer {
       }
       if (bits[0] + bits[1] + bits[2] <= kKeyBits) break;
     }
-    const int shift_y = bits[2], shift_x = bits[1] + bits[2], key_bits = shift_x + bits[0];
+    const MortonKeys morton(bits);
+    const int key_bits = bits[0] + bits[1] + bits[2];
     std::vector<std::uint64_t> entries;
     entries.reserve(entry_count);
     std::size_t next_large = 0;
@@ -187,37 +251,17 @@ class Recognizer {
         ++next_large;
         continue;
       }
-      for (std::uint64_t x = low[i][0]; x <= high[i][0]; ++x) {
-        for (std::uint64_t y = low[i][1]; y <= high[i][1]; ++y) {
-          for (std::uint64_t z = low[i][2]; z <= high[i][2]; ++z) {
-            const std::uint64_t key = x << shift_x | y << shift_y | z;
-            entries.push_back(key << 32 | i);
+      for (std::uint32_t x = low[i][0]; x <= high[i][0]; ++x) {
+        for (std::uint32_t y = low[i][1]; y <= high[i][1]; ++y) {
+          for (std::uint32_t z = low[i][2]; z <= high[i][2]; ++z) {
+            entries.push_back(std::uint64_t{morton.Key({x, y, z})} << 32 | i);
           }
         }
       }
     }
-    // Least-significant-digit radix sort by cell key, stable, so entries of one cell stay in
-    // feature order: the same order as sorting the pairs, in linear time. As few passes of at
-    // most 11-bit digits as the key needs (a pass's 2048 counts stay in the L1 cache), every
-    // digit's counts taken in one read of the entries.
-    {
-      const int passes = (key_bits + 10) / 11;
-      const int digit_bits = passes > 0 ? (key_bits + passes - 1) / passes : 0;
-      const std::uint64_t mask = (std::uint64_t{1} << digit_bits) - 1;
-      std::vector<std::vector<std::size_t>> counts(passes, std::vector<std::size_t>(mask + 1, 0));
-      for (const std::uint64_t e : entries) {
-        for (int d = 0; d < passes; ++d) ++counts[d][(e >> (32 + d * digit_bits)) & mask];
-      }
-      std::vector<std::uint64_t> buffer(entries.size());
-      for (int d = 0; d < passes; ++d) {
-        std::vector<std::size_t>& next = counts[d];
-        std::size_t sum = 0;
-        for (std::size_t& n : next) sum += std::exchange(n, sum);
-        const int shift = 32 + d * digit_bits;
-        for (const std::uint64_t e : entries) buffer[next[(e >> shift) & mask]++] = e;
-        entries.swap(buffer);
-      }
-    }
+    // Stable, so entries of one cell stay in feature order: the same order as sorting the
+    // pairs, in linear time.
+    RadixSort(entries, key_bits, [](std::uint64_t e) { return e >> 32; });
     // The reach boxes in floats rounded outward, with their parts: a compact first test before
     // the exact one, so that rejected candidates touch 28 bytes each, not a whole feature.
     struct CompactBox {
@@ -233,24 +277,24 @@ class Recognizer {
       }
       boxes[i].part = static_cast<std::uint32_t>(features_[i].ref.part);
     }
+    // The candidates that pass the compact test are tested afterwards in the order of their
+    // first feature: the features are then read in the file's order, which the memory
+    // prefetches, rather than cell by cell, which it cannot foresee.
+    std::vector<std::uint64_t> found;  // first feature's index over the second's
+    found.reserve(entries.size());
     auto candidate = [&](std::uint32_t i, std::uint32_t j) {
       const CompactBox &p = boxes[i], &q = boxes[j];
       if (p.part == q.part) return;
       for (int k = 0; k < 3; ++k) {
         if (p.hi[k] < q.lo[k] || q.hi[k] < p.lo[k]) return;
       }
-      const WorldFeature& x = features_[i];
-      const WorldFeature& y = features_[j];
-      if (x.reach.Intersects(y.reach)) test(x, y);
+      found.push_back(std::uint64_t{i} << 32 | j);
     };
     for (std::size_t begin = 0; begin < entries.size();) {
       const std::uint64_t key = entries[begin] >> 32;
       std::size_t end = begin;
       while (end < entries.size() && entries[end] >> 32 == key) ++end;
-      const std::array<std::uint32_t, 3> here{
-          static_cast<std::uint32_t>(key >> shift_x),
-          static_cast<std::uint32_t>((key >> shift_y) & ((std::uint64_t{1} << bits[1]) - 1)),
-          static_cast<std::uint32_t>(key & ((std::uint64_t{1} << bits[2]) - 1))};
+      const std::array<std::uint32_t, 3> here = morton.Cell(static_cast<std::uint32_t>(key));
       for (std::size_t a = begin; a < end; ++a) {
         for (std::size_t b = a + 1; b < end; ++b) {
           const auto i = static_cast<std::uint32_t>(entries[a]);
@@ -270,13 +314,19 @@ class Recognizer {
         candidate(std::min(i, j), std::max(i, j));
       }
     }
+    RadixSort(found, BitWidth(features_.size()), [](std::uint64_t e) { return e >> 32; });
+    for (const std::uint64_t e : found) {
+      const WorldFeature& x = features_[e >> 32];
+      const WorldFeature& y = features_[e & 0xffffffffu];
+      if (x.reach.Intersects(y.reach)) test(x, y);
+    }
   }
 
   // ---- dispatch ----
 
   void Test(const WorldFeature& x, const WorldFeature& y) {
     using K = FeatureKind;
-    const K a = x.f->kind, b = y.f->kind;
+    const K a = x.kind, b = y.kind;
     auto is = [&](K p, K q) { return a == p && b == q; };
     auto either = [&](K p, K q, auto rule) {
       if (is(p, q))
@@ -673,18 +723,24 @@ class Recognizer {
     }
   }
 
-  /// A tight thread fixed in a nut or tapped hole clamps the parts of its clearance holes.
-  void ApplyClamps() {
-    std::vector<bool> clamping(features_.size(), false);  // per entry of features_
+  /// Per entry of features_: the tapped hole or nut its tight thread is fixed in, the first by
+  /// name when there are several (not the first found, which depends on the broad phase).
+  std::vector<std::optional<FeatureRef>> TightThreads() const {
+    std::vector<std::optional<FeatureRef>> screwed_into(features_.size());
     for (const Pair& p : pairs_) {
-      if (p.type == PairType::kFixed && p.fastening == PairFastening::kTight) {
-        clamping[Index(p.a)] = true;
-      }
+      if (p.type != PairType::kFixed || p.fastening != PairFastening::kTight) continue;
+      std::optional<FeatureRef>& hole = screwed_into[Index(p.a)];
+      if (!hole || assembly_.FeatureNameRank(p.b) < assembly_.FeatureNameRank(*hole)) hole = p.b;
     }
+    return screwed_into;
+  }
+
+  /// A tight thread fixed in a nut or tapped hole clamps the parts of its clearance holes.
+  void ApplyClamps(const std::vector<std::optional<FeatureRef>>& screwed_into) {
     for (Pair& p : pairs_) {
-      if (p.type == PairType::kCylindrical && clamping[Index(p.a)] &&
-          assembly_.feature(p.a).kind == FeatureKind::kThread &&
-          assembly_.feature(p.b).kind == FeatureKind::kHole) {
+      if (p.type == PairType::kCylindrical && screwed_into[Index(p.a)] &&
+          assembly_.kind(p.a) == FeatureKind::kThread &&
+          assembly_.kind(p.b) == FeatureKind::kHole) {
         p.type = PairType::kFixed;
         p.dof = 0;
         p.source = PairSource::kClamp;
@@ -695,15 +751,7 @@ class Recognizer {
   }
 
   /// A tight thread in a tapped hole whose tip bears on a third part's shaft fixes the shaft.
-  void ApplySetscrews() {
-    // Per entry of features_: the tapped hole its tight thread is screwed into, the first by
-    // name when there are several (not the first found, which depends on the broad phase).
-    std::vector<std::optional<FeatureRef>> screwed_into(features_.size());
-    for (const Pair& p : pairs_) {
-      if (p.type != PairType::kFixed || p.fastening != PairFastening::kTight) continue;
-      std::optional<FeatureRef>& hole = screwed_into[Index(p.a)];
-      if (!hole || assembly_.FeatureNameRank(p.b) < assembly_.FeatureNameRank(*hole)) hole = p.b;
-    }
+  void ApplySetscrews(const std::vector<std::optional<FeatureRef>>& screwed_into) {
     for (const auto& [thread, s] : setscrew_candidates_) {
       const std::optional<FeatureRef>& hole = screwed_into[Index(thread->ref)];
       if (!hole || s->ref.part == hole->part) continue;
@@ -730,8 +778,8 @@ class Recognizer {
     std::vector<bool> connected(assembly_.parts().size(), false);
     for (const Pair& p : pairs_) connected[p.a.part] = connected[p.b.part] = true;
     for (std::size_t i = 0; i < connected.size(); ++i) {
+      if (connected[i] || assembly_.IsGround(i)) continue;
       const Part& part = assembly_.part(i);
-      if (connected[i] || part.ground) continue;
       diagnostics_.push_back({Severity::kWarning,
                               "part_unconnected",
                               "part '" + part.id + "' is in no pair: nothing holds or guides it",
@@ -740,26 +788,45 @@ class Recognizer {
     }
   }
 
-  /// Orders by feature names, not indices, so that reordering the file changes nothing.
+  /// Orders by feature names, then source, then as found, not by indices, so that reordering
+  /// the file changes nothing. A radix sort of packed keys: linear at 100,000 parts.
   void Sort(Recognition& out) const {
-    using Key = std::array<std::size_t, 4>;
+    struct Key {
+      std::uint64_t names_and_source;
+      std::size_t pair;
+    };
+    constexpr int kSourceBits = 3;
+    static_assert(static_cast<int>(PairSource::kInferred) < (1 << kSourceBits));
+    const int rank_bits = BitWidth(assembly_.feature_count());
+    if (2 * rank_bits + kSourceBits > 64) {
+      throw std::length_error("pair recognition: too many features to sort pairs");
+    }
     std::vector<Key> keys;
     keys.reserve(out.pairs.size());
     for (std::size_t i = 0; i < out.pairs.size(); ++i) {
       const Pair& p = out.pairs[i];
-      keys.push_back({assembly_.FeatureNameRank(p.a), assembly_.FeatureNameRank(p.b),
-                      static_cast<std::size_t>(p.source), i});
+      keys.push_back({(std::uint64_t{assembly_.FeatureNameRank(p.a)} << rank_bits |
+                       assembly_.FeatureNameRank(p.b))
+                              << kSourceBits |
+                          static_cast<std::uint64_t>(p.source),
+                      i});
     }
-    std::sort(keys.begin(), keys.end());
+    RadixSort(keys, 2 * rank_bits + kSourceBits, [](const Key& k) { return k.names_and_source; });
     std::vector<Pair> sorted;
     sorted.reserve(out.pairs.size());
-    for (const Key& key : keys) sorted.push_back(std::move(out.pairs[key[3]]));
+    // A gather in name order: the pairs asked for a few steps ahead are fetched meanwhile.
+    constexpr std::size_t kAhead = 8;
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+      if (k + kAhead < keys.size()) __builtin_prefetch(&out.pairs[keys[k + kAhead].pair]);
+      sorted.push_back(std::move(out.pairs[keys[k].pair]));
+    }
     out.pairs = std::move(sorted);
     std::sort(out.diagnostics.begin(), out.diagnostics.end(), DiagnosticLess);
   }
 
   const Assembly& assembly_;
   const double L_, A_, near_L_, near_A_;
+  std::vector<AxisSegment> axes_;       ///< per Assembly::FeatureIndex: world axes
   std::vector<WorldFeature> features_;  ///< per Assembly::FeatureIndex
   std::vector<Pair> pairs_;
   std::vector<Diagnostic> diagnostics_;
@@ -770,7 +837,10 @@ class Recognizer {
 }  // namespace
 
 Recognition RecognizePairs(const Assembly& assembly, const AssemblyState& state) {
-  return Recognizer(assembly, state).Run();
+  Recognizer recognizer(assembly, state);
+  Recognition out = recognizer.Run();
+  out.axes_W = recognizer.TakeAxes();
+  return out;
 }
 
 }  // namespace mechanist

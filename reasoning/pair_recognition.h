@@ -13,6 +13,9 @@ namespace mechanist {
 struct Recognition {
   std::vector<Pair> pairs;              ///< sorted by ("a" name, "b" name)
   std::vector<Diagnostic> diagnostics;  ///< sorted by (code, features, message)
+  /// Every feature's axis in world coordinates at the recognised poses (mm), per
+  /// Assembly::FeatureIndex: for the motion analysis, which would otherwise compute them again.
+  std::vector<AxisSegment> axes_W;
 };
 
 /// Recognises the pairs of spec/assembly-format.md ("Recognition") between features of

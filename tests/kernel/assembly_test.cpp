@@ -168,6 +168,34 @@ TEST(Assembly, ListsFeaturesByKind) {
   EXPECT_TRUE(assembly.FeaturesOfKind(FeatureKind::kThread).empty());
 }
 
+TEST(Assembly, CompactTablesAgreeWithTheParts) {
+  // Parts of 0, 3 and 1 features, the middle one ground: the per-feature kinds, per-part
+  // ground flags and feature counts against the parts themselves.
+  AssemblySpec spec;
+  const std::vector<std::vector<FeatureKind>> kinds = {
+      {}, {FeatureKind::kGear, FeatureKind::kHole, FeatureKind::kFace}, {FeatureKind::kShaft}};
+  for (std::size_t p = 0; p < kinds.size(); ++p) {
+    Part part;
+    part.id = "part" + std::to_string(p);
+    part.mesh = UnitCube();
+    part.ground = p == 1;
+    for (std::size_t f = 0; f < kinds[p].size(); ++f) {
+      part.features.push_back(MakeFeature("f" + std::to_string(f), kinds[p][f]));
+    }
+    spec.parts.push_back(part);
+  }
+  const Assembly assembly(std::move(spec));
+  for (std::size_t p = 0; p < kinds.size(); ++p) {
+    EXPECT_EQ(assembly.IsGround(p), assembly.part(p).ground);
+    EXPECT_EQ(assembly.FeatureCount(p), assembly.part(p).features.size());
+    for (std::size_t f = 0; f < kinds[p].size(); ++f) {
+      EXPECT_EQ(assembly.kind({p, f}), assembly.feature({p, f}).kind);
+    }
+  }
+  EXPECT_THROW(assembly.IsGround(3), std::out_of_range);
+  EXPECT_THROW(assembly.FeatureCount(3), std::out_of_range);
+}
+
 TEST(Assembly, SameFeatureIdInDifferentPartsIsAllowed) {
   AssemblySpec spec = ValidSpec();
   spec.parts[1].features[0].id = "bore";

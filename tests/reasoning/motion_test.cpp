@@ -10,6 +10,8 @@
 #include <cmath>
 
 #include "reasoning/analysis.h"
+#include "reasoning/pair_graph.h"
+#include "reasoning/pair_recognition.h"
 #include "test_assembly.h"
 
 namespace mechanist {
@@ -199,7 +201,7 @@ TEST(Motion, GearTriangleJams) {
 // Two planetary stages stacked on one axis, the first carrier's output pressed into the
 // second sun: each stage divides by 1 + 60/20 = 4. The stages' carrier pins lie on the same
 // lines; a pin of one stage must not be taken as carrying the other stage's planet axis.
-TEST(Motion, StackedPlanetaryStagesMultiply) {
+Assembly TwoStagePlanetary() {
   const double kPi = 3.14159265358979323846;
   auto gear = [](const std::string& id, int teeth, Eigen::Vector3d at, bool internal) {
     return MakeFeature(id, K::kGear, at, kZ, [&](Feature& g) {
@@ -248,7 +250,11 @@ TEST(Motion, StackedPlanetaryStagesMultiply) {
   motor.id = "motor";
   motor.feature = {1, 0};  // sun0/teeth
   spec.drivers = {motor};
-  const Assembly a(std::move(spec));
+  return Assembly(std::move(spec));
+}
+
+TEST(Motion, StackedPlanetaryStagesMultiply) {
+  const Assembly a = TwoStagePlanetary();
   const Analysis an = Analyze(a);
   EXPECT_EQ(an.motion.mobility.dof, 1);
   EXPECT_EQ(an.motion.mobility.redundant, 4);
@@ -258,6 +264,34 @@ TEST(Motion, StackedPlanetaryStagesMultiply) {
   EXPECT_EQ(Exact(Rate(a, an, "carrier1/center")), "-1/16");
   // Relative to its carrier a planet turns -(20/20)(w_sun - w_carrier): 1/16 - 3/16 absolute.
   EXPECT_EQ(Exact(Rate(a, an, "planet10/teeth")), "-1/8");
+}
+
+// The world axes that recognition hands to the motion analysis (so that it need not read
+// every feature again) give the same motion as the axes the model computes itself.
+TEST(Motion, AxesFromRecognitionGiveTheSameMotionAsComputedOnes) {
+  const Assembly a = TwoStagePlanetary();
+  Recognition r = RecognizePairs(a, InitialState(a));
+  const std::vector<Subassembly> groups = PairGraph(a, r.pairs).Subassemblies();
+  std::vector<std::size_t> group_of(a.parts().size());
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    for (std::size_t p : groups[g].parts) group_of[p] = g;
+  }
+  ASSERT_EQ(r.axes_W.size(), a.feature_count());
+  EXPECT_THROW(AnalyzeMotion(a, r.pairs, groups, group_of, std::vector<AxisSegment>(3)),
+               std::invalid_argument);
+  const MotionAnalysis given = AnalyzeMotion(a, r.pairs, groups, group_of, r.axes_W);
+  const MotionAnalysis computed = AnalyzeMotion(a, r.pairs, groups, group_of);
+  EXPECT_EQ(given.mobility.dof, computed.mobility.dof);
+  EXPECT_EQ(given.mobility.redundant, computed.mobility.redundant);
+  ASSERT_EQ(given.driven.size(), computed.driven.size());
+  for (std::size_t d = 0; d < given.driven.size(); ++d) {
+    for (std::size_t p = 0; p < a.parts().size(); ++p) {
+      const PartMotion &x = given.driven[d].parts[p], &y = computed.driven[d].parts[p];
+      EXPECT_EQ(x.kind, y.kind) << a.part(p).id;
+      EXPECT_EQ(Exact(x.rotation), Exact(y.rotation)) << a.part(p).id;
+      EXPECT_EQ(x.axis_W, y.axis_W) << a.part(p).id;
+    }
+  }
 }
 
 TEST(Motion, DifferentialAddsItsInputsByWillis) {
