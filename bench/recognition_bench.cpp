@@ -9,10 +9,18 @@
 // analysis, warm (the median of runs in a row) and cold (each run after the caches are
 // flushed).
 //
-// Usage: recognition_bench [max_parts]   (default 100000)
+// Usage: recognition_bench [--default-heap] [max_parts]   (default 100000)
 //        recognition_bench --grid-once N    one analysis of the grid layout of N parts, untimed
 //        recognition_bench --grid-setup N   only its setup (for valgrind: the difference of the
 //                                           two is the analysis)
+//
+// The heap keeps the memory that an analysis frees for the next one (mallopt), as a program
+// that analyses many times would: by default glibc returns large blocks to the system, and
+// each run then pays a page fault for every page it touches again (12-15 us each on the
+// project's virtual machine), which swamps the analysis above about 10,000 parts and varies
+// from run to run. --default-heap measures with glibc's defaults.
+
+#include <malloc.h>  // mallopt
 
 #include <algorithm>
 #include <chrono>
@@ -211,6 +219,17 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  bool default_heap = false;
+  if (argc > 1 && std::string(argv[1]) == "--default-heap") {
+    default_heap = true;
+    --argc, ++argv;
+  }
+  if (!default_heap) {
+    mallopt(M_MMAP_THRESHOLD, 1 << 30);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
+    mallopt(M_TOP_PAD, 64 << 20);
+  }
+  std::printf("heap: %s\n", default_heap ? "glibc defaults" : "freed memory kept (mallopt)");
   const int max_parts = argc > 1 ? std::atoi(argv[1]) : 100000;
   struct Layout {
     const char* name;

@@ -46,10 +46,12 @@ class Solver {
       outcomes_.push_back(structural_.AddRow(row.terms));
     }
     std::vector<std::pair<std::size_t, std::pair<std::size_t, std::size_t>>> edges;
+    has_pair_.assign(model_.body_count(), false);
     for (std::size_t i = 0; i < pairs_.size(); ++i) {
       self_locking_worms_ |= pairs_[i].type == PairType::kWormGear && pairs_[i].self_locking;
       const std::size_t a = model_.body_of_part(pairs_[i].a.part);
       const std::size_t b = model_.body_of_part(pairs_[i].b.part);
+      has_pair_[a] = has_pair_[b] = true;
       if (a == b) continue;
       edges.push_back({a, {b, i}});
       edges.push_back({b, {a, i}});
@@ -125,6 +127,9 @@ class Solver {
   std::string PairName(std::size_t pair) const {
     return assembly_.FeatureName(pairs_[pair].a) + " + " + assembly_.FeatureName(pairs_[pair].b);
   }
+
+  /// Whether a part of `body` is in a pair (with a part of another body or of its own).
+  bool HasPair(std::size_t body) const { return has_pair_[body]; }
 
   /// The parts of a body, ascending.
   std::span<const std::size_t> PartsOf(std::size_t body) const { return parts_of_body_[body]; }
@@ -280,6 +285,7 @@ class Solver {
   CompressedRows<std::pair<std::size_t, std::size_t>> edges_;  // body: (body, pair)
   ExactReal mm_per_length_;          // reports give lengths in the file's units
   bool self_locking_worms_ = false;  // whether any worm gear pair is self-locking
+  std::vector<bool> has_pair_;       // per body: HasPair
 };
 
 std::vector<ImposedMotion> DriverMotions(const Assembly& assembly) {
@@ -514,10 +520,6 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
 
   // Free motions: what the drivers leave undetermined. A floating body is one free motion
   // with all its freedoms; a body with no pair at all is reported as unconnected already.
-  std::vector<bool> has_pair(model.body_count(), false);
-  for (const Pair& p : pairs) {
-    has_pair[model.body_of_part(p.a.part)] = has_pair[model.body_of_part(p.b.part)] = true;
-  }
   std::vector<bool> reported(model.joints().size(), false);
   const LinearSystem& free_system = imposed.empty() ? solver.structural() : driven_system;
   for (const LinearSystem::Row& n : free_system.NullSpace()) {
@@ -543,7 +545,7 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
       for (std::size_t p : solver.PartsOf(body)) free.parts.push_back(p);
     }
     std::sort(free.parts.begin(), free.parts.end(), by_id);
-    if (has_pair[child]) {
+    if (solver.HasPair(child)) {
       std::string message = assembly.part(free.part).id + " " + free.freedom;
       if (free.pair) message += " (" + std::string(ToString(pairs[*free.pair].type)) + " pair)";
       message += ": nothing drives or holds this motion";

@@ -89,13 +89,20 @@ std::string Mm(double x) { return FormatNumber(x) + " mm"; }
 std::string Deg(double radians) { return FormatNumber(radians * 180.0 / kPi) + " deg"; }
 
 class Recognizer {
+  /// A tight thread, by FeatureIndex, and the tapped hole or nut it is fixed in.
+  struct Screwed {
+    std::size_t thread;
+    FeatureRef hole;
+  };
+
  public:
   Recognizer(const Assembly& assembly, const AssemblyState& state)
       : assembly_(assembly),
         L_(assembly.tolerance().length),
         A_(assembly.tolerance().angle),
         near_L_(std::max(4 * L_, 0.5)),
-        near_A_(std::max(4 * A_, 2.0 * kPi / 180.0)) {
+        near_A_(std::max(4 * A_, 2.0 * kPi / 180.0)),
+        rank_bits_(BitWidth(assembly.feature_count())) {
     // Reserved: the features refer to their axes in this array.
     axes_.reserve(assembly.feature_count());
     features_.reserve(assembly.feature_count());
@@ -129,12 +136,25 @@ class Recognizer {
     pairs_.reserve(features_.size());
     ForEachCandidate([this](const WorldFeature& x, const WorldFeature& y) { Test(x, y); });
     ApplyOverrides();
-    const std::vector<std::optional<FeatureRef>> screwed_into = TightThreads();
-    ApplyClamps(screwed_into);
-    ApplySetscrews(screwed_into);
-    ReportUnconnected();
-    Recognition out{std::move(pairs_), std::move(diagnostics_), {}};
-    Sort(out);
+    const std::vector<Screwed> screwed = TightThreads();
+    ApplySetscrews(screwed);
+    if (2 * rank_bits_ + kSourceBits > 64) {
+      throw std::length_error("pair recognition: too many features to sort pairs");
+    }
+    // One pass over the pairs for the clamps, the parts in pairs and the sort keys: at 100,000
+    // parts the pairs no longer fit in the cache, and every pass reads them from memory.
+    std::vector<bool> connected(assembly_.parts().size(), false);
+    std::vector<SortKey> keys;
+    keys.reserve(pairs_.size());
+    for (std::size_t i = 0; i < pairs_.size(); ++i) {
+      Pair& p = pairs_[i];
+      ApplyClamp(p, screwed);
+      connected[p.a.part] = connected[p.b.part] = true;
+      keys.push_back({Key(p), i});
+    }
+    ReportUnconnected(connected);
+    Recognition out{Sorted(std::move(keys)), std::move(diagnostics_), {}};
+    std::sort(out.diagnostics.begin(), out.diagnostics.end(), DiagnosticLess);
     return out;
   }
 
@@ -366,6 +386,9 @@ class Recognizer {
     p.dof = DegreesOfFreedom(type);
     SetCoupling(p, a, b);
     pairs_.push_back(p);
+    if (type == PairType::kFixed && fastening == PairFastening::kTight) {
+      tight_.push_back({Index(a.ref), b.ref});
+    }
   }
 
   /// The coupling parameters of a screw, gear, worm_gear or rack_pinion pair from its
@@ -709,6 +732,10 @@ class Recognizer {
     for (const PairOverride& o : assembly_.overrides()) {
       std::erase_if(pairs_,
                     [&](const Pair& p) { return SameFeatures(p, o.features[0], o.features[1]); });
+      std::erase_if(tight_, [&](const Screwed& t) {
+        return (t.thread == Index(o.features[0]) && t.hole == o.features[1]) ||
+               (t.thread == Index(o.features[1]) && t.hole == o.features[0]);
+      });
       if (!o.type) continue;
       const WorldFeature* a = &At(o.features[0]);
       const WorldFeature* b = &At(o.features[1]);
@@ -723,37 +750,46 @@ class Recognizer {
     }
   }
 
-  /// Per entry of features_: the tapped hole or nut its tight thread is fixed in, the first by
-  /// name when there are several (not the first found, which depends on the broad phase).
-  std::vector<std::optional<FeatureRef>> TightThreads() const {
-    std::vector<std::optional<FeatureRef>> screwed_into(features_.size());
-    for (const Pair& p : pairs_) {
-      if (p.type != PairType::kFixed || p.fastening != PairFastening::kTight) continue;
-      std::optional<FeatureRef>& hole = screwed_into[Index(p.a)];
-      if (!hole || assembly_.FeatureNameRank(p.b) < assembly_.FeatureNameRank(*hole)) hole = p.b;
+  /// The tapped hole or nut each tight thread is fixed in, the first by name when there are
+  /// several (not the first found, which depends on the broad phase), by thread.
+  std::vector<Screwed> TightThreads() {
+    RadixSort(tight_, BitWidth(features_.size()), [](const Screwed& t) { return t.thread; });
+    std::vector<Screwed> screwed;
+    for (const Screwed& t : tight_) {
+      if (screwed.empty() || screwed.back().thread != t.thread) {
+        screwed.push_back(t);
+      } else if (assembly_.FeatureNameRank(t.hole) <
+                 assembly_.FeatureNameRank(screwed.back().hole)) {
+        screwed.back().hole = t.hole;
+      }
     }
-    return screwed_into;
+    return screwed;
+  }
+
+  /// The tapped hole or nut the thread of FeatureIndex `thread` is fixed in, if it is tight.
+  static const FeatureRef* ScrewedInto(const std::vector<Screwed>& screwed, std::size_t thread) {
+    const auto it =
+        std::lower_bound(screwed.begin(), screwed.end(), thread,
+                         [](const Screwed& s, std::size_t index) { return s.thread < index; });
+    return it != screwed.end() && it->thread == thread ? &it->hole : nullptr;
   }
 
   /// A tight thread fixed in a nut or tapped hole clamps the parts of its clearance holes.
-  void ApplyClamps(const std::vector<std::optional<FeatureRef>>& screwed_into) {
-    for (Pair& p : pairs_) {
-      if (p.type == PairType::kCylindrical && screwed_into[Index(p.a)] &&
-          assembly_.kind(p.a) == FeatureKind::kThread &&
-          assembly_.kind(p.b) == FeatureKind::kHole) {
-        p.type = PairType::kFixed;
-        p.dof = 0;
-        p.source = PairSource::kClamp;
-        p.fastening = PairFastening::kClamp;
-        p.via = p.a;
-      }
+  void ApplyClamp(Pair& p, const std::vector<Screwed>& screwed) const {
+    if (p.type == PairType::kCylindrical && assembly_.kind(p.a) == FeatureKind::kThread &&
+        assembly_.kind(p.b) == FeatureKind::kHole && ScrewedInto(screwed, Index(p.a))) {
+      p.type = PairType::kFixed;
+      p.dof = 0;
+      p.source = PairSource::kClamp;
+      p.fastening = PairFastening::kClamp;
+      p.via = p.a;
     }
   }
 
   /// A tight thread in a tapped hole whose tip bears on a third part's shaft fixes the shaft.
-  void ApplySetscrews(const std::vector<std::optional<FeatureRef>>& screwed_into) {
+  void ApplySetscrews(const std::vector<Screwed>& screwed) {
     for (const auto& [thread, s] : setscrew_candidates_) {
-      const std::optional<FeatureRef>& hole = screwed_into[Index(thread->ref)];
+      const FeatureRef* hole = ScrewedInto(screwed, Index(thread->ref));
       if (!hole || s->ref.part == hole->part) continue;
       const Eigen::Vector3d tip = thread->axis.end();
       if (AngleBetweenLines(thread->axis.direction, s->axis.direction) < kPi / 2 - A_) continue;
@@ -774,9 +810,7 @@ class Recognizer {
     }
   }
 
-  void ReportUnconnected() {
-    std::vector<bool> connected(assembly_.parts().size(), false);
-    for (const Pair& p : pairs_) connected[p.a.part] = connected[p.b.part] = true;
+  void ReportUnconnected(const std::vector<bool>& connected) {
     for (std::size_t i = 0; i < connected.size(); ++i) {
       if (connected[i] || assembly_.IsGround(i)) continue;
       const Part& part = assembly_.part(i);
@@ -788,47 +822,46 @@ class Recognizer {
     }
   }
 
-  /// Orders by feature names, then source, then as found, not by indices, so that reordering
-  /// the file changes nothing. A radix sort of packed keys: linear at 100,000 parts.
-  void Sort(Recognition& out) const {
-    struct Key {
-      std::uint64_t names_and_source;
-      std::size_t pair;
-    };
-    constexpr int kSourceBits = 3;
-    static_assert(static_cast<int>(PairSource::kInferred) < (1 << kSourceBits));
-    const int rank_bits = BitWidth(assembly_.feature_count());
-    if (2 * rank_bits + kSourceBits > 64) {
-      throw std::length_error("pair recognition: too many features to sort pairs");
-    }
-    std::vector<Key> keys;
-    keys.reserve(out.pairs.size());
-    for (std::size_t i = 0; i < out.pairs.size(); ++i) {
-      const Pair& p = out.pairs[i];
-      keys.push_back({(std::uint64_t{assembly_.FeatureNameRank(p.a)} << rank_bits |
-                       assembly_.FeatureNameRank(p.b))
-                              << kSourceBits |
-                          static_cast<std::uint64_t>(p.source),
-                      i});
-    }
-    RadixSort(keys, 2 * rank_bits + kSourceBits, [](const Key& k) { return k.names_and_source; });
+  /// A pair's place in the order of the pairs, and its index as found.
+  struct SortKey {
+    std::uint64_t names_and_source;
+    std::size_t pair;
+  };
+  static constexpr int kSourceBits = 3;
+  static_assert(static_cast<int>(PairSource::kInferred) < (1 << kSourceBits));
+
+  /// Pairs order by feature names, then source, then as found, not by indices, so that
+  /// reordering the file changes nothing: the name ranks and the source packed in one key.
+  std::uint64_t Key(const Pair& p) const {
+    return (std::uint64_t{assembly_.FeatureNameRank(p.a)} << rank_bits_ |
+            assembly_.FeatureNameRank(p.b))
+               << kSourceBits |
+           static_cast<std::uint64_t>(p.source);
+  }
+
+  /// The pairs in the order of their keys: a radix sort, linear at 100,000 parts.
+  std::vector<Pair> Sorted(std::vector<SortKey> keys) {
+    RadixSort(keys, 2 * rank_bits_ + kSourceBits,
+              [](const SortKey& k) { return k.names_and_source; });
     std::vector<Pair> sorted;
-    sorted.reserve(out.pairs.size());
+    sorted.reserve(pairs_.size());
     // A gather in name order: the pairs asked for a few steps ahead are fetched meanwhile.
     constexpr std::size_t kAhead = 8;
     for (std::size_t k = 0; k < keys.size(); ++k) {
-      if (k + kAhead < keys.size()) __builtin_prefetch(&out.pairs[keys[k + kAhead].pair]);
-      sorted.push_back(std::move(out.pairs[keys[k].pair]));
+      if (k + kAhead < keys.size()) __builtin_prefetch(&pairs_[keys[k + kAhead].pair]);
+      sorted.push_back(std::move(pairs_[keys[k].pair]));
     }
-    out.pairs = std::move(sorted);
-    std::sort(out.diagnostics.begin(), out.diagnostics.end(), DiagnosticLess);
+    return sorted;
   }
 
   const Assembly& assembly_;
   const double L_, A_, near_L_, near_A_;
+  const int rank_bits_;                 ///< bits of a feature's name rank
   std::vector<AxisSegment> axes_;       ///< per Assembly::FeatureIndex: world axes
   std::vector<WorldFeature> features_;  ///< per Assembly::FeatureIndex
   std::vector<Pair> pairs_;
+  /// Tight fixed pairs as recognised: (thread's FeatureIndex, tapped hole or nut).
+  std::vector<Screwed> tight_;
   std::vector<Diagnostic> diagnostics_;
   /// (thread, shaft) feature pairs whose reach boxes overlap: possible setscrew contacts.
   std::vector<std::pair<const WorldFeature*, const WorldFeature*>> setscrew_candidates_;

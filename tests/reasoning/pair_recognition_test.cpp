@@ -196,13 +196,14 @@ TEST(PairRecognition, ThreadInPlainHole) {
 }
 
 // A bolt down through two plates into a nut under them.
-Assembly BoltedStack(Fastening fastening) {
+Assembly BoltedStack(Fastening fastening, std::vector<PairOverride> overrides = {}) {
   const V down = -V::UnitZ();
   Feature t = Thread(6, 1, 20, V(0, 0, 10), down, fastening);
   Feature h1 = Hole(6.6, 5, V(0, 0, 10)), h2 = Hole(6.6, 5, V(0, 0, 5));
   Feature nut = Tapped(6, 1, 5, V(0, 0, 0), down);
   return MakeAssembly({MakePart("bottom", {h2}, RigidTransform(), true), MakePart("top", {h1}),
-                       MakePart("bolt", {t}), MakePart("nut", {nut})});
+                       MakePart("bolt", {t}), MakePart("nut", {nut})},
+                      std::move(overrides));
 }
 
 TEST(PairRecognition, TightBoltClampsEveryPartItPassesThrough) {
@@ -215,6 +216,12 @@ TEST(PairRecognition, TightBoltClampsEveryPartItPassesThrough) {
   // A loose thread is a screw pair and clamps nothing.
   const Analysis loose = Analyze(BoltedStack(Fastening::kLoose));
   EXPECT_EQ(loose.subassemblies.size(), 4u);  // bolt and nut make a screw pair: all separate
+  // An override that forbids the bolt-nut pair (named nut first) leaves nothing to clamp.
+  const FeatureRef bolt{2, 0}, nut{3, 0};
+  const Analysis forbidden =
+      Analyze(BoltedStack(Fastening::kTight, {PairOverride{{nut, bolt}, std::nullopt}}));
+  EXPECT_EQ(forbidden.pairs.size(), 2u);
+  for (const Pair& p : forbidden.pairs) EXPECT_EQ(p.type, PairType::kCylindrical);
 }
 
 TEST(PairRecognition, SetscrewFixesTheShaftItBearsOn) {
