@@ -4,6 +4,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <string_view>
+#include <unordered_map>
 #include <utility>
 
 namespace mechanist {
@@ -16,17 +17,23 @@ std::optional<std::size_t> Part::FindFeature(const std::string& feature_id) cons
 }
 
 Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
+  std::unordered_map<const TriangleMesh*, Aabb> boxes;  // per distinct mesh
   for (std::size_t i = 0; i < spec_.parts.size(); ++i) {
     const Part& part = spec_.parts[i];
     ground_.push_back(part.ground);
     for (std::size_t f = 0; f < part.features.size(); ++f) {
       features_of_kind_[part.features[f].kind].push_back({i, f});
       feature_kind_.push_back(part.features[f].kind);
+      feature_origin_.push_back(part.features[f].origin);
     }
     if (!part_index_.emplace(part.id, i).second) {
       throw std::invalid_argument("duplicate part id '" + part.id + "'");
     }
     if (!part.mesh) throw std::invalid_argument("part '" + part.id + "' has no mesh");
+    file_poses_.push_back(part.X_WP);
+    const auto [box, added] = boxes.try_emplace(part.mesh.get());
+    if (added) box->second = part.mesh->Bounds();
+    mesh_box_.push_back(box->second);
     std::vector<std::uint32_t> by_id(part.features.size());
     std::iota(by_id.begin(), by_id.end(), 0);
     std::sort(by_id.begin(), by_id.end(), [&](std::uint32_t x, std::uint32_t y) {

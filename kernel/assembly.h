@@ -179,6 +179,17 @@ class Assembly {
   std::size_t FeatureIndex(FeatureRef ref) const {
     return first_feature_.at(ref.part) + ref.feature;
   }
+  /// The origin of feature `ref` in its part's frame (mm), from a compact per-feature table:
+  /// checks over every feature read it without touching the Feature itself.
+  const Eigen::Vector3d& FeatureOrigin(FeatureRef ref) const {
+    return feature_origin_[FeatureIndex(ref)];
+  }
+  /// Every part's pose in the file (Part::X_WP), contiguous: the initial state is a copy, and
+  /// recognition at the file's poses reads them without one.
+  const std::vector<RigidTransform>& FilePoses() const { return file_poses_; }
+  /// The part's mesh box in part coordinates (mm), computed once per distinct mesh when the
+  /// assembly is made: instances share one mesh, and each analysis asks for every part's box.
+  const Aabb& MeshBox(std::size_t part) const { return mesh_box_.at(part); }
 
  private:
   void CheckRef(FeatureRef ref, const char* what) const;
@@ -191,7 +202,10 @@ class Assembly {
   std::vector<std::uint32_t> feature_rank_;     ///< per feature: its rank by id in its part
   std::vector<std::size_t> feature_name_rank_;  ///< per feature: FeatureNameRank
   std::vector<FeatureKind> feature_kind_;       ///< per feature: its kind
-  std::vector<bool> ground_;                    ///< per part: Part::ground
+  std::vector<Eigen::Vector3d> feature_origin_;  ///< per feature: Feature::origin
+  std::vector<bool> ground_;                     ///< per part: Part::ground
+  std::vector<RigidTransform> file_poses_;       ///< per part: Part::X_WP
+  std::vector<Aabb> mesh_box_;                   ///< per part: its mesh's Bounds()
   std::map<FeatureKind, std::vector<FeatureRef>> features_of_kind_;
 };
 

@@ -42,17 +42,20 @@ void AddMeshDiagnostics(const Part& part, const MeshCheck& check, std::vector<Di
 std::vector<Diagnostic> CheckAssembly(const Assembly& assembly) {
   std::vector<Diagnostic> out = assembly.findings();
   std::map<const TriangleMesh*, MeshCheck> checked;  // instances share one mesh
-  for (const Part& part : assembly.parts()) {
+  for (std::size_t i = 0; i < assembly.parts().size(); ++i) {
+    const Part& part = assembly.part(i);
     auto it = checked.find(part.mesh.get());
     if (it == checked.end()) it = checked.emplace(part.mesh.get(), CheckMesh(*part.mesh)).first;
     AddMeshDiagnostics(part, it->second, out);
 
-    const Aabb box = part.mesh->Bounds();
+    const Aabb& box = assembly.MeshBox(i);
     const double margin = std::max(1.0, box.size().norm());
-    for (const Feature& f : part.features) {
-      const Eigen::Vector3d outside =
-          (box.min - f.origin).cwiseMax(f.origin - box.max).cwiseMax(0.0);
+    // Origins from the compact table: the Features themselves are read only to name one.
+    for (std::size_t k = 0; k < assembly.FeatureCount(i); ++k) {
+      const Eigen::Vector3d& origin = assembly.FeatureOrigin({i, k});
+      const Eigen::Vector3d outside = (box.min - origin).cwiseMax(origin - box.max).cwiseMax(0.0);
       if (!box.empty() && outside.norm() > margin) {
+        const Feature& f = part.features[k];
         out.push_back({Severity::kWarning,
                        "feature_outside_part",
                        "feature '" + part.id + "/" + f.id + "' has its origin " +

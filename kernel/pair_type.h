@@ -1,12 +1,14 @@
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string_view>
 
 namespace mechanist {
 
-/// The kinds of pair (kinematic relation) between two parts (spec, "Recognition").
-enum class PairType {
+/// The kinds of pair (kinematic relation) between two parts (spec, "Recognition"). One byte:
+/// it is stored in every pair.
+enum class PairType : std::uint8_t {
   kFixed,
   kRevolute,
   kCylindrical,

@@ -241,6 +241,7 @@ Assembly Adjusted(const Assembly& assembly, AdjustmentSummary* summary) {
 
 void SuggestAdjustments(const Assembly& assembly, const std::vector<Pair>& pairs,
                         std::vector<Diagnostic>* diagnostics) {
+  if (assembly.adjustments().empty()) return;  // nothing to suggest: no finding is read
   static const std::set<std::string> kNearMisses = {
       "gear_center_distance",        "gear_axes_not_parallel",   "worm_center_distance",
       "worm_axes_not_perpendicular", "rack_pitch_line_distance", "axes_not_collinear"};

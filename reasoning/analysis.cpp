@@ -1,9 +1,8 @@
 #include "reasoning/analysis.h"
 
-#include <algorithm>
+#include <iterator>
 
 #include "kernel/assembly_check.h"
-#include "kernel/assembly_state.h"
 #include "reasoning/adjustment.h"
 #include "reasoning/fastener_check.h"
 #include "reasoning/pair_recognition.h"
@@ -14,7 +13,7 @@ Analysis Analyze(const Assembly& assembly) { return Analyze(assembly, {}); }
 
 Analysis Analyze(const Assembly& assembly, const std::vector<Pair>& extra) {
   Analysis analysis;
-  Recognition recognition = RecognizePairs(assembly, InitialState(assembly));
+  Recognition recognition = RecognizePairs(assembly);
   analysis.pairs = std::move(recognition.pairs);
   analysis.pairs.insert(analysis.pairs.end(), extra.begin(), extra.end());
   analysis.subassemblies = PairGraph(assembly, analysis.pairs).Subassemblies();
@@ -25,14 +24,17 @@ Analysis Analyze(const Assembly& assembly, const std::vector<Pair>& extra) {
   analysis.motion = AnalyzeMotion(assembly, analysis.pairs, analysis.subassemblies,
                                   analysis.subassembly_of, std::move(recognition.axes_W));
   analysis.diagnostics = CheckAssembly(assembly);
-  const auto fasteners = CheckFasteners(assembly, analysis.pairs);
-  const std::vector<Diagnostic>* findings[] = {&recognition.diagnostics, &fasteners,
-                                               &analysis.motion.diagnostics};
-  for (const std::vector<Diagnostic>* found : findings) {
-    analysis.diagnostics.insert(analysis.diagnostics.end(), found->begin(), found->end());
+  std::vector<Diagnostic> fasteners = CheckFasteners(assembly, analysis.pairs);
+  std::vector<std::size_t> run_starts = {0};
+  for (std::vector<Diagnostic>* found :
+       {&recognition.diagnostics, &fasteners, &analysis.motion.diagnostics}) {
+    run_starts.push_back(analysis.diagnostics.size());
+    analysis.diagnostics.insert(analysis.diagnostics.end(), std::make_move_iterator(found->begin()),
+                                std::make_move_iterator(found->end()));
+    found->clear();
   }
   SuggestAdjustments(assembly, analysis.pairs, &analysis.diagnostics);
-  std::sort(analysis.diagnostics.begin(), analysis.diagnostics.end(), DiagnosticLess);
+  SortDiagnosticRuns(&analysis.diagnostics, run_starts);
   return analysis;
 }
 

@@ -16,7 +16,7 @@ struct Analysis {
   std::vector<Pair> pairs;
   std::vector<Subassembly> subassemblies;
   std::vector<std::size_t> subassembly_of;  ///< per part: index into `subassemblies`
-  /// Mobility and the drivers' motion.
+  /// Mobility and the drivers' motion; its findings are moved into `diagnostics`.
   MotionAnalysis motion;
   /// Description checks (meshes, features), recognition's near misses and the motion
   /// analysis' findings, in DiagnosticLess order.

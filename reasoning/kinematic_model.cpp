@@ -169,6 +169,7 @@ void KinematicModel::BuildJoints(const std::vector<Pair>& pairs) {
 
 void KinematicModel::AddFreedoms(std::size_t joint) {
   Joint& j = joints_[joint];
+  const std::size_t first = freedoms_.size();
   auto add = [&](Freedom::Kind kind, const Eigen::Vector3d& point, const Eigen::Vector3d& dir) {
     Freedom f;
     f.kind = kind;
@@ -176,7 +177,6 @@ void KinematicModel::AddFreedoms(std::size_t joint) {
     f.direction_W = dir;
     f.lead = kind == Freedom::Kind::kScrew ? j.lead : ExactReal();
     f.joint = joint;
-    j.freedoms.push_back(freedoms_.size());
     freedoms_.push_back(f);
   };
   using K = Freedom::Kind;
@@ -187,37 +187,38 @@ void KinematicModel::AddFreedoms(std::size_t joint) {
   if (!j.pair) {  // floating
     for (int i = 0; i < 3; ++i) add(K::kRotation, p, Eigen::Vector3d::Unit(i));
     for (int i = 0; i < 3; ++i) add(K::kTranslation, p, Eigen::Vector3d::Unit(i));
-    return;
+  } else {
+    switch (j.type) {
+      case PairType::kRevolute:
+        add(K::kRotation, p, u);
+        break;
+      case PairType::kCylindrical:
+        add(K::kRotation, p, u);
+        add(K::kTranslation, p, u);
+        break;
+      case PairType::kScrew:
+        add(K::kScrew, p, u);
+        break;
+      case PairType::kPrismatic:
+        add(K::kTranslation, p, u);
+        break;
+      case PairType::kPinSlot:
+        add(K::kRotation, p, u);
+        add(K::kTranslation, p, j.slide_W);
+        break;
+      case PairType::kSpherical:
+        for (int i = 0; i < 3; ++i) add(K::kRotation, p, Eigen::Vector3d::Unit(i));
+        break;
+      case PairType::kPlanar:
+        add(K::kRotation, p, u);
+        add(K::kTranslation, p, e1);
+        add(K::kTranslation, p, e2);
+        break;
+      default:
+        break;
+    }
   }
-  switch (j.type) {
-    case PairType::kRevolute:
-      add(K::kRotation, p, u);
-      break;
-    case PairType::kCylindrical:
-      add(K::kRotation, p, u);
-      add(K::kTranslation, p, u);
-      break;
-    case PairType::kScrew:
-      add(K::kScrew, p, u);
-      break;
-    case PairType::kPrismatic:
-      add(K::kTranslation, p, u);
-      break;
-    case PairType::kPinSlot:
-      add(K::kRotation, p, u);
-      add(K::kTranslation, p, j.slide_W);
-      break;
-    case PairType::kSpherical:
-      for (int i = 0; i < 3; ++i) add(K::kRotation, p, Eigen::Vector3d::Unit(i));
-      break;
-    case PairType::kPlanar:
-      add(K::kRotation, p, u);
-      add(K::kTranslation, p, e1);
-      add(K::kTranslation, p, e2);
-      break;
-    default:
-      break;
-  }
+  j.freedoms = std::views::iota(first, freedoms_.size());
 }
 
 void KinematicModel::BuildTree() {

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <ranges>
 #include <string>
 #include <vector>
 
@@ -35,7 +36,9 @@ struct Joint {
   std::optional<std::size_t> pair;  ///< index into the analysis pairs; empty: floating
   PairType type = PairType::kRevolute;
   std::size_t body_a = 0, body_b = 0;
-  std::vector<std::size_t> freedoms;  ///< unknown indices, when the joint is in the tree
+  /// Unknown indices, when the joint is in the tree: consecutive, so a range rather than a
+  /// list (no allocation per joint).
+  std::ranges::iota_view<std::size_t, std::size_t> freedoms;
   bool in_tree = false;
   std::size_t child = 0;  ///< in the tree: the body it holds to its parent
   Eigen::Vector3d point_W = Eigen::Vector3d::Zero();  ///< on its axis (or the ball's centre)

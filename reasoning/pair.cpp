@@ -4,6 +4,9 @@
 
 namespace mechanist {
 
+// See the field order in pair.h.
+static_assert(sizeof(Pair) <= 112, "Pair has grown: the analysis reads every pair several times");
+
 namespace {
 
 constexpr EnumNames<PairSource, 5> kSources = {{

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -11,7 +12,7 @@
 namespace mechanist {
 
 /// Why a pair exists.
-enum class PairSource {
+enum class PairSource : std::uint8_t {
   kRecognised,  ///< the features satisfy a row of the recognition table
   kOverride,    ///< forced by the file's `overrides`
   kClamp,       ///< a tight fastener through a clearance hole clamps the hole's part
@@ -20,7 +21,7 @@ enum class PairSource {
 };
 
 /// How a pair is held, where that matters to the user.
-enum class PairFastening { kNone, kPressFit, kTight, kLoose, kClamp, kSetscrew };
+enum class PairFastening : std::uint8_t { kNone, kPressFit, kTight, kLoose, kClamp, kSetscrew };
 
 std::string_view ToString(PairSource source);
 /// "", "press_fit", "tight", "loose", "clamp", "setscrew".
@@ -30,12 +31,16 @@ std::string_view ToString(PairFastening fastening);
 /// is the convex (inserted) feature, the worm, or the pinion; for gear pairs the one listed
 /// first in the file.
 struct Pair {
+  // Ordered by alignment (112 bytes, not 128): an assembly of 100,000 parts has about as
+  // many pairs, and the analysis reads them several times.
   PairType type = PairType::kFixed;
-  FeatureRef a, b;
   PairSource source = PairSource::kRecognised;
   PairFastening fastening = PairFastening::kNone;
+  /// worm_gear: true when the wheel cannot drive the worm (lead angle below friction angle).
+  bool self_locking = false;
   /// Relative degrees of freedom; empty for couplings (gear, worm_gear, rack_pinion).
   std::optional<int> dof;
+  FeatureRef a, b;
   /// gear and worm_gear: b's angular rate about b's feature axis per unit rate of a about
   /// a's feature axis, relative to the body that carries both axes (exact).
   std::optional<Rational> ratio;
@@ -43,8 +48,6 @@ struct Pair {
   /// (positive for right-hand threads). rack_pinion: mm the rack (b) travels along its axis
   /// per revolution of the pinion (a) about its axis.
   std::optional<double> travel_per_revolution;
-  /// worm_gear: true when the wheel cannot drive the worm (lead angle below friction angle).
-  bool self_locking = false;
   /// kClamp and kSetscrew: the fastener's thread that makes the pair.
   std::optional<FeatureRef> via;
 };

@@ -24,7 +24,7 @@ struct PairGraph::Impl {
   /// Per part: its subassembly's representative among the parts joined by fixed pairs
   /// (Boost's disjoint sets), ground parts joined to the world (vertex part_count()).
   std::vector<std::size_t> group_of;
-  std::vector<std::size_t> rank;  ///< per part: Assembly::PartRank
+  std::vector<std::size_t> by_id;  ///< the parts ordered by id (inverse of Assembly::PartRank)
   std::vector<bool> ground;
 };
 
@@ -51,10 +51,10 @@ PairGraph::PairGraph(const Assembly& assembly, const std::vector<Pair>& pairs)
   impl_->all =
       Graph(boost::edges_are_unsorted_multi_pass, edges.begin(), edges.end(), index.begin(), n);
 
-  impl_->rank.reserve(n);
+  impl_->by_id.resize(n);
   impl_->ground.reserve(n);
   for (std::size_t part = 0; part < n; ++part) {
-    impl_->rank.push_back(assembly.PartRank(part));
+    impl_->by_id.at(assembly.PartRank(part)) = part;
     impl_->ground.push_back(assembly.IsGround(part));
     if (assembly.IsGround(part)) sets.union_set(part, n);
   }
@@ -81,7 +81,9 @@ std::vector<Subassembly> PairGraph::Subassemblies() const {
   const std::size_t n = part_count();
   std::vector<long> group_index(n + 1, -1);  // per representative
   std::vector<Subassembly> groups;
-  for (std::size_t part = 0; part < n; ++part) {
+  // Parts in id order: each group's parts come in order and the groups in the order of their
+  // first parts, with no sort (the ground group of a large assembly holds most of its parts).
+  for (std::size_t part : impl_->by_id) {
     long& g = group_index[impl_->group_of[part]];
     if (g < 0) {
       g = static_cast<long>(groups.size());
@@ -90,15 +92,10 @@ std::vector<Subassembly> PairGraph::Subassemblies() const {
     groups[static_cast<std::size_t>(g)].parts.push_back(part);
     groups[static_cast<std::size_t>(g)].ground |= impl_->ground[part];
   }
-  const auto& rank = impl_->rank;
-  for (Subassembly& g : groups) {
-    std::sort(g.parts.begin(), g.parts.end(),
-              [&](std::size_t x, std::size_t y) { return rank[x] < rank[y]; });
-  }
-  std::sort(groups.begin(), groups.end(), [&](const Subassembly& x, const Subassembly& y) {
-    if (x.ground != y.ground) return x.ground;
-    return rank[x.parts.front()] < rank[y.parts.front()];
-  });
+  // All ground parts are one group: it goes first, the others keep their order.
+  const auto ground =
+      std::find_if(groups.begin(), groups.end(), [](const Subassembly& g) { return g.ground; });
+  if (ground != groups.end()) std::rotate(groups.begin(), ground, ground + 1);
   return groups;
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -96,7 +97,8 @@ class Recognizer {
   };
 
  public:
-  Recognizer(const Assembly& assembly, const AssemblyState& state)
+  /// At poses `X_WP`, one per part.
+  Recognizer(const Assembly& assembly, std::span<const RigidTransform> X_WP)
       : assembly_(assembly),
         L_(assembly.tolerance().length),
         A_(assembly.tolerance().angle),
@@ -108,16 +110,16 @@ class Recognizer {
     features_.reserve(assembly.feature_count());
     for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
       const Part& part = assembly.part(p);
-      const Aabb part_box_W = WorldBox(assembly, state, p);
+      const Aabb part_box_W = TransformBox(X_WP[p], assembly.MeshBox(p));
       for (std::size_t i = 0; i < part.features.size(); ++i) {
         const Feature& f = part.features[i];
-        axes_.push_back(f.WorldAxis(state.X_WP[p]));
+        axes_.push_back(f.WorldAxis(X_WP[p]));
         WorldFeature w{.reach = {},
                        .kind = f.kind,
                        .ref = {p, i},
                        .f = &f,
                        .axis = axes_.back(),
-                       .normal_W = state.X_WP[p].RotateDirection(f.normal)};
+                       .normal_W = X_WP[p].RotateDirection(f.normal)};
         w.reach = ReachBox(w, part_box_W);
         features_.push_back(w);
       }
@@ -869,11 +871,27 @@ class Recognizer {
 
 }  // namespace
 
-Recognition RecognizePairs(const Assembly& assembly, const AssemblyState& state) {
-  Recognizer recognizer(assembly, state);
+namespace {
+
+Recognition Recognize(const Assembly& assembly, std::span<const RigidTransform> X_WP) {
+  Recognizer recognizer(assembly, X_WP);
   Recognition out = recognizer.Run();
   out.axes_W = recognizer.TakeAxes();
   return out;
+}
+
+}  // namespace
+
+Recognition RecognizePairs(const Assembly& assembly, const AssemblyState& state) {
+  if (state.X_WP.size() != assembly.parts().size()) {
+    throw std::invalid_argument("RecognizePairs: " + std::to_string(state.X_WP.size()) +
+                                " poses for " + std::to_string(assembly.parts().size()) + " parts");
+  }
+  return Recognize(assembly, state.X_WP);
+}
+
+Recognition RecognizePairs(const Assembly& assembly) {
+  return Recognize(assembly, assembly.FilePoses());
 }
 
 }  // namespace mechanist

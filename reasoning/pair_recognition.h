@@ -39,6 +39,10 @@ struct Recognition {
 ///   ball_socket_mismatch; and part_unconnected for a non-ground part in no pair.
 /// Near-miss windows: angles up to max(4 x tolerance, 2 degrees), offsets up to
 /// max(4 x tolerance, 0.5 mm), centre distances off by less than one module.
+/// Throws std::invalid_argument unless `state` has one pose per part.
 Recognition RecognizePairs(const Assembly& assembly, const AssemblyState& state);
+
+/// RecognizePairs at the file's poses, read from the assembly without making a state.
+Recognition RecognizePairs(const Assembly& assembly);
 
 }  // namespace mechanist

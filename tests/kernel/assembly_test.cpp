@@ -169,31 +169,46 @@ TEST(Assembly, ListsFeaturesByKind) {
 }
 
 TEST(Assembly, CompactTablesAgreeWithTheParts) {
-  // Parts of 0, 3 and 1 features, the middle one ground: the per-feature kinds, per-part
-  // ground flags and feature counts against the parts themselves.
+  // Parts of 0, 3 and 1 features, the middle one ground, the last with a mesh of its own
+  // (the first two share one) and each at its own pose: the per-feature kinds and origins,
+  // per-part ground flags, feature counts, file poses and mesh boxes against the parts
+  // themselves.
   AssemblySpec spec;
   const std::vector<std::vector<FeatureKind>> kinds = {
       {}, {FeatureKind::kGear, FeatureKind::kHole, FeatureKind::kFace}, {FeatureKind::kShaft}};
+  const auto shared = UnitCube();
+  auto stretched = std::make_shared<TriangleMesh>(*shared);
+  for (Eigen::Vector3d& v : stretched->vertices) v.x() *= 3;
   for (std::size_t p = 0; p < kinds.size(); ++p) {
     Part part;
     part.id = "part" + std::to_string(p);
-    part.mesh = UnitCube();
+    part.mesh = p == 2 ? std::shared_ptr<const TriangleMesh>(stretched) : shared;
     part.ground = p == 1;
+    part.X_WP = RigidTransform::Translation(Eigen::Vector3d(p, 2.0 * p, -1));
     for (std::size_t f = 0; f < kinds[p].size(); ++f) {
       part.features.push_back(MakeFeature("f" + std::to_string(f), kinds[p][f]));
+      part.features.back().origin = Eigen::Vector3d(0.5 * f, p, 0.25);
     }
     spec.parts.push_back(part);
   }
   const Assembly assembly(std::move(spec));
+  ASSERT_EQ(assembly.FilePoses().size(), kinds.size());
   for (std::size_t p = 0; p < kinds.size(); ++p) {
     EXPECT_EQ(assembly.IsGround(p), assembly.part(p).ground);
     EXPECT_EQ(assembly.FeatureCount(p), assembly.part(p).features.size());
+    EXPECT_TRUE(assembly.FilePoses()[p].IsNearlyEqualTo(assembly.part(p).X_WP, 0.0, 0.0)) << p;
+    const Aabb expected = assembly.part(p).mesh->Bounds();
+    EXPECT_EQ(assembly.MeshBox(p).min, expected.min) << p;
+    EXPECT_EQ(assembly.MeshBox(p).max, expected.max) << p;
     for (std::size_t f = 0; f < kinds[p].size(); ++f) {
       EXPECT_EQ(assembly.kind({p, f}), assembly.feature({p, f}).kind);
+      EXPECT_EQ(assembly.FeatureOrigin({p, f}), assembly.feature({p, f}).origin);
     }
   }
+  EXPECT_EQ(assembly.MeshBox(2).max.x(), 3.0);
   EXPECT_THROW(assembly.IsGround(3), std::out_of_range);
   EXPECT_THROW(assembly.FeatureCount(3), std::out_of_range);
+  EXPECT_THROW(assembly.MeshBox(3), std::out_of_range);
 }
 
 TEST(Assembly, SameFeatureIdInDifferentPartsIsAllowed) {

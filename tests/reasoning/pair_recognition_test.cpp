@@ -573,6 +573,33 @@ TEST(PairRecognition, RigidMotionOfTheWholeAssemblyChangesNothing) {
   }
 }
 
+TEST(PairRecognition, WithoutAStateItRecognisesAtTheFilePoses) {
+  // The same pairs, diagnostics and world axes as with the initial state; a state of the
+  // wrong size is bad input.
+  const Assembly a = BoltedStack(Fastening::kTight);
+  const Recognition with_state = Recognize(a);
+  const Recognition without = RecognizePairs(a);
+  ASSERT_EQ(without.pairs.size(), with_state.pairs.size());
+  for (std::size_t i = 0; i < without.pairs.size(); ++i) {
+    EXPECT_EQ(without.pairs[i].type, with_state.pairs[i].type);
+    EXPECT_EQ(without.pairs[i].a, with_state.pairs[i].a);
+    EXPECT_EQ(without.pairs[i].b, with_state.pairs[i].b);
+    EXPECT_EQ(without.pairs[i].source, with_state.pairs[i].source);
+  }
+  ASSERT_EQ(without.diagnostics.size(), with_state.diagnostics.size());
+  for (std::size_t i = 0; i < without.diagnostics.size(); ++i) {
+    EXPECT_EQ(without.diagnostics[i].message, with_state.diagnostics[i].message);
+  }
+  ASSERT_EQ(without.axes_W.size(), with_state.axes_W.size());
+  for (std::size_t i = 0; i < without.axes_W.size(); ++i) {
+    EXPECT_EQ(without.axes_W[i].origin, with_state.axes_W[i].origin);
+    EXPECT_EQ(without.axes_W[i].direction, with_state.axes_W[i].direction);
+  }
+  AssemblyState short_state = InitialState(a);
+  short_state.X_WP.pop_back();
+  EXPECT_THROW(RecognizePairs(a, short_state), std::invalid_argument);
+}
+
 // Oracle for the broad phase: every candidate found by brute force over all feature pairs.
 TEST(PairRecognition, GridBroadPhaseMatchesAllPairsOnRandomGearField) {
   std::mt19937 random(11);
