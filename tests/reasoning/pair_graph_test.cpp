@@ -2,6 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
 #include "test_assembly.h"
 
 namespace mechanist {
@@ -37,6 +43,62 @@ TEST(PairGraph, SubassembliesAreFixedComponentsWithAllGroundPartsJoined) {
   EXPECT_FALSE(groups[1].ground);
   EXPECT_EQ(groups[1].parts, (std::vector<std::size_t>{4, 3}));  // d, e
   EXPECT_EQ(groups[2].parts, (std::vector<std::size_t>{5}));
+}
+
+TEST(PairGraph, SubassembliesMatchABruteForceGroupingOnRandomAssemblies) {
+  // Oracle: components labelled by relaxing over the fixed pairs to the largest label (every
+  // ground part starts with the largest, n, so they form one component), each ordered by id, the
+  // ground one first and the others by their first id. Ids are shuffled against the file order, so
+  // that a floating group can come before the ground one by id.
+  std::mt19937 random(3);
+  for (int trial = 0; trial < 50; ++trial) {
+    const std::size_t n = 1 + random() % 12;
+    std::vector<std::string> ids;
+    for (std::size_t i = 0; i < n; ++i) ids.push_back("p" + std::to_string(100 + i));
+    std::shuffle(ids.begin(), ids.end(), random);
+    std::vector<Part> parts;
+    for (std::size_t i = 0; i < n; ++i) {
+      parts.push_back(MakePart(ids[i], {}, RigidTransform(), random() % 4 == 0));
+    }
+    std::vector<Pair> pairs;
+    for (std::size_t k = random() % (2 * n); k > 0; --k) {
+      pairs.push_back(
+          Edge(random() % n, random() % n, random() % 3 ? PairType::kFixed : PairType::kRevolute));
+    }
+    const Assembly assembly = MakeAssembly(parts);
+    std::vector<std::size_t> label(n);
+    for (std::size_t i = 0; i < n; ++i) label[i] = assembly.IsGround(i) ? n : i;
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (const Pair& p : pairs) {
+        if (p.type != PairType::kFixed) continue;
+        std::size_t& x = label[p.a.part];
+        std::size_t& y = label[p.b.part];
+        if (x != y) x = y = std::max(x, y), changed = true;
+      }
+    }
+    std::map<std::size_t, std::vector<std::size_t>> components;
+    for (std::size_t i = 0; i < n; ++i) components[label[i]].push_back(i);
+    const auto by_id = [&](std::size_t x, std::size_t y) { return ids[x] < ids[y]; };
+    std::vector<Subassembly> expected;
+    for (auto& [l, members] : components) {
+      std::sort(members.begin(), members.end(), by_id);
+      Subassembly s;
+      s.parts = members;
+      s.ground = l == n;
+      expected.push_back(s);
+    }
+    std::sort(expected.begin(), expected.end(), [&](const Subassembly& x, const Subassembly& y) {
+      if (x.ground != y.ground) return x.ground;
+      return by_id(x.parts.front(), y.parts.front());
+    });
+    const std::vector<Subassembly> groups = PairGraph(assembly, pairs).Subassemblies();
+    ASSERT_EQ(groups.size(), expected.size()) << "trial " << trial;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      EXPECT_EQ(groups[g].parts, expected[g].parts) << "trial " << trial << ", group " << g;
+      EXPECT_EQ(groups[g].ground, expected[g].ground) << "trial " << trial << ", group " << g;
+    }
+  }
 }
 
 TEST(PairGraph, NoGroundPartMeansNoGroundSubassembly) {
