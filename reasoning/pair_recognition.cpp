@@ -869,10 +869,6 @@ class Recognizer {
   std::vector<std::pair<const WorldFeature*, const WorldFeature*>> setscrew_candidates_;
 };
 
-}  // namespace
-
-namespace {
-
 Recognition Recognize(const Assembly& assembly, std::span<const RigidTransform> X_WP) {
   Recognizer recognizer(assembly, X_WP);
   Recognition out = recognizer.Run();
