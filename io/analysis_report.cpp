@@ -104,7 +104,6 @@ void WriteAnalysisSummary(const Assembly& assembly, const Analysis& analysis, st
   out << "mobility: " << mobility.dof << " (" << mobility.redundant << " redundant constraints, "
       << mobility.free_motions.size() << " free motions)\n";
   for (const DrivenMotion& m : analysis.motion.driven) {
-    if (!m.driver && analysis.motion.driven.size() == 2) break;  // the same as the only driver
     out << DrivenTitle(assembly, m) << ":\n";
     if (!m.possible) {
       out << "  cannot run: " << m.reason << "\n";

@@ -9,23 +9,34 @@
 #include "kernel/number_format.h"
 
 namespace mechanist {
+
+static_assert(sizeof(ExactReal) == 16, "ExactReal has grown: rows, rates and motions hold many");
+
 namespace {
 
-/// Runs an exact operation, or gives nothing when an operand is approximate or it overflows.
+/// Runs an exact operation, or gives nothing when the result overflows.
 template <typename Op>
-std::optional<Rational> Exactly(const std::optional<Rational>& a, const std::optional<Rational>& b,
-                                Op op) {
-  if (!a || !b) return std::nullopt;
+std::optional<Rational> Exactly(const Rational& a, const Rational& b, Op op) {
   try {
-    return op(*a, *b);
+    return op(a, b);
   } catch (const std::overflow_error&) {
     return std::nullopt;
   }
 }
 
+/// The exact result when there is one, else the approximate value.
+ExactReal Result(const std::optional<Rational>& exact, double approximate) {
+  return exact ? ExactReal(*exact) : ExactReal::Approximate(approximate);
+}
+
 }  // namespace
 
-ExactReal ExactReal::Approximate(double value) { return ExactReal(value, std::nullopt); }
+ExactReal ExactReal::Approximate(double value) {
+  ExactReal r;
+  r.numerator_ = std::bit_cast<std::int64_t>(value);
+  r.denominator_ = 0;
+  return r;
+}
 
 ExactReal ExactReal::FromDecimal(double value) {
   if (!std::isfinite(value)) return Approximate(value);
@@ -44,7 +55,9 @@ ExactReal ExactReal::FromDecimal(double value) {
       Rational r(mantissa);
       for (; exponent > 0; --exponent) r = r * Rational(10);
       for (; exponent < 0; ++exponent) r = r / Rational(10);
-      return ExactReal(value, r);
+      // Its nearest double is `value`: at most 15 digits over a power of ten that fits in 64
+      // bits are both exact doubles, and their quotient is rounded once.
+      return r;
     } catch (const std::overflow_error&) {
       return Approximate(value);
     }
@@ -53,39 +66,43 @@ ExactReal ExactReal::FromDecimal(double value) {
 }
 
 bool ExactReal::IsZero(double tolerance) const {
-  return exact_ ? exact_->is_zero() : std::abs(value_) <= tolerance;
+  return is_exact() ? numerator_ == 0 : std::abs(value()) <= tolerance;
 }
 
 std::string ExactReal::ToString() const {
-  return exact_ ? exact_->ToString() : FormatNumber(value_, 10);
+  return is_exact() ? exact()->ToString() : FormatNumber(value(), 10);
 }
 
 ExactReal ExactReal::operator-() const {
-  return ExactReal(-value_, exact_ ? std::optional<Rational>(-*exact_) : std::nullopt);
+  if (!is_exact()) return Approximate(-value());
+  ExactReal r;  // |p| <= INT64_MAX for every Rational, so -p fits
+  r.numerator_ = -numerator_;
+  r.denominator_ = denominator_;
+  return r;
 }
 
 ExactReal ExactReal::operator+(const ExactReal& o) const {
-  auto exact =
-      Exactly(exact_, o.exact_, [](const Rational& a, const Rational& b) { return a + b; });
-  return ExactReal(exact ? exact->ToDouble() : value_ + o.value_, exact);
+  if (!is_exact() || !o.is_exact()) return Approximate(value() + o.value());
+  return Result(Exactly(*exact(), *o.exact(), [](const Rational& a, const Rational& b) { return a + b; }),
+                value() + o.value());
 }
 
 ExactReal ExactReal::operator*(const ExactReal& o) const {
   // An exact zero annihilates even an approximate factor: a structural zero stays exact.
-  if ((exact_ && exact_->is_zero()) || (o.exact_ && o.exact_->is_zero())) return ExactReal();
-  auto exact =
-      Exactly(exact_, o.exact_, [](const Rational& a, const Rational& b) { return a * b; });
-  return ExactReal(exact ? exact->ToDouble() : value_ * o.value_, exact);
+  if (is_exact_zero() || o.is_exact_zero()) return ExactReal();
+  if (!is_exact() || !o.is_exact()) return Approximate(value() * o.value());
+  return Result(Exactly(*exact(), *o.exact(), [](const Rational& a, const Rational& b) { return a * b; }),
+                value() * o.value());
 }
 
 ExactReal ExactReal::operator/(const ExactReal& o) const {
-  if (o.exact_ ? o.exact_->is_zero() : o.value_ == 0.0) {
+  if (o.is_exact() ? o.numerator_ == 0 : o.value() == 0.0) {
     throw std::domain_error("division by zero");
   }
-  if (exact_ && exact_->is_zero()) return ExactReal();
-  auto exact =
-      Exactly(exact_, o.exact_, [](const Rational& a, const Rational& b) { return a / b; });
-  return ExactReal(exact ? exact->ToDouble() : value_ / o.value_, exact);
+  if (is_exact_zero()) return ExactReal();
+  if (!is_exact() || !o.is_exact()) return Approximate(value() / o.value());
+  return Result(Exactly(*exact(), *o.exact(), [](const Rational& a, const Rational& b) { return a / b; }),
+                value() / o.value());
 }
 
 }  // namespace mechanist

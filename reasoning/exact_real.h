@@ -1,5 +1,7 @@
 #pragma once
 
+#include <bit>
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -15,9 +17,9 @@ namespace mechanist {
 /// does not fit in 64 bits.
 class ExactReal {
  public:
-  ExactReal() : value_(0.0), exact_(Rational(0)) {}
+  ExactReal() : numerator_(0), denominator_(1) {}
   ExactReal(const Rational& exact)  // NOLINT: implicit on purpose, like Rational's
-      : value_(exact.ToDouble()), exact_(exact) {}
+      : numerator_(exact.numerator()), denominator_(exact.denominator()) {}
   /// An approximate number.
   static ExactReal Approximate(double value);
   /// The exact value of a decimal number as a user writes it (1.5 -> 3/2, 0.25 -> 1/4): the
@@ -25,9 +27,16 @@ class ExactReal {
   /// approximate when that needs more than 64 bits.
   static ExactReal FromDecimal(double value);
 
-  double value() const { return value_; }
-  const std::optional<Rational>& exact() const { return exact_; }
-  bool is_exact() const { return exact_.has_value(); }
+  /// The value, the exact one rounded to the nearest double.
+  double value() const {
+    return denominator_ != 0 ? static_cast<double>(numerator_) / static_cast<double>(denominator_)
+                             : std::bit_cast<double>(numerator_);
+  }
+  std::optional<Rational> exact() const {
+    if (!is_exact()) return std::nullopt;
+    return Rational::FromReduced(numerator_, denominator_);
+  }
+  bool is_exact() const { return denominator_ != 0; }
   /// Exactly zero when exact; otherwise |value| <= tolerance.
   bool IsZero(double tolerance) const;
   /// "p/q" when exact, otherwise FormatNumber(value, 10).
@@ -42,9 +51,13 @@ class ExactReal {
   ExactReal& operator+=(const ExactReal& o) { return *this = *this + o; }
 
  private:
-  ExactReal(double value, std::optional<Rational> exact) : value_(value), exact_(exact) {}
-  double value_;
-  std::optional<Rational> exact_;
+  bool is_exact_zero() const { return denominator_ != 0 && numerator_ == 0; }
+  // 16 bytes, not a double beside an optional Rational (32): linear-system rows, feature rates
+  // and part motions hold many of them. Exact: the reduced p/q with q > 0, whose nearest double
+  // is the value (every exact result was that double before too). Approximate: q = 0 and p
+  // holds the double's bits.
+  std::int64_t numerator_;
+  std::int64_t denominator_;
 };
 
 }  // namespace mechanist

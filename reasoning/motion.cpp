@@ -73,22 +73,6 @@ class Solver {
     return motion;
   }
 
-  /// `motion` (solved with rates `x`) with every rate multiplied by `factor`: the motion of
-  /// the same drivers at other rates, without solving again (velocities are linear in the
-  /// drivers' rates).
-  DrivenMotion Scaled(const DrivenMotion& motion, const std::vector<ExactReal>& x,
-                      const ExactReal& factor) const {
-    DrivenMotion scaled;
-    scaled.possible = motion.possible;
-    scaled.contradiction = motion.contradiction;
-    scaled.reason = motion.reason;
-    std::vector<ExactReal> y;
-    y.reserve(x.size());
-    for (const ExactReal& value : x) y.push_back(value * factor);
-    Describe(y, scaled);
-    return scaled;
-  }
-
   /// The rates `x` of the model's freedoms under `imposed`, and whether they are possible.
   DrivenMotion SolveRates(const std::vector<ImposedMotion>& imposed,
                           const std::vector<std::string>& labels, std::vector<ExactReal>& x,
@@ -353,8 +337,7 @@ std::string FreedomWords(const Assembly& assembly, const std::vector<Pair>& pair
 std::string_view ToString(MotionKind kind) { return NameOf(kMotionKindNames, kind); }
 
 const DrivenMotion* MotionAnalysis::ForExpectations() const {
-  if (driven.empty()) return nullptr;
-  return driven.size() == 2 ? &driven.front() : &driven.back();
+  return driven.empty() ? nullptr : &driven.back();
 }
 
 DrivenMotion SolveImposed(const Assembly& assembly, const std::vector<Pair>& pairs,
@@ -480,9 +463,9 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   // no driver; filled by the solve below otherwise, not copied first).
   LinearSystem driven_system(0, kTolerance);
   // With one driver, its motion at its rate is its motion at unit rate scaled (velocities
-  // are linear in the drivers' rates): one solve instead of two.
-  const bool one_driver = imposed.size() == 1 && imposed.front().rate != 0.0;
-  std::optional<DrivenMotion> together;
+  // are linear in the drivers' rates), so it has no combined entry, and the unit-rate system
+  // has the free motions of the rate's (a zero rate holds the driver either way).
+  const bool one_driver = imposed.size() == 1;
   for (std::size_t i = 0; i < imposed.size(); ++i) {
     // Driver i first, at unit rate (one revolution, or one of the file's length units: rates
     // are mm inside), then the others held still.
@@ -498,19 +481,11 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     }
     std::vector<ExactReal> x;
     DrivenMotion m = solver.SolveRates(alone, names, x, one_driver ? &driven_system : nullptr);
-    if (one_driver) {
-      together = solver.Scaled(
-          m, x, ExactReal::FromDecimal(imposed[i].rate) / ExactReal::FromDecimal(unit));
-    }
     solver.Describe(x, m);
     m.driver = i;
     result.driven.push_back(std::move(m));
   }
-  if (together) {
-    result.driven.push_back(std::move(*together));
-  } else if (!imposed.empty()) {
-    result.driven.push_back(solver.Solve(imposed, labels, &driven_system));
-  }
+  if (imposed.size() > 1) result.driven.push_back(solver.Solve(imposed, labels, &driven_system));
   for (const DrivenMotion& m : result.driven) {
     // Per driver, a locked driver; together, contradicting drivers (a driver held still while
     // another drives its freedom is no finding of its own).

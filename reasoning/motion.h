@@ -91,15 +91,15 @@ struct Mobility {
 /// The motion analysis of an assembly at its file poses.
 struct MotionAnalysis {
   Mobility mobility;
-  /// One entry per driver (unit rate, others held), then the drivers together; empty without
-  /// drivers.
+  /// One entry per driver (unit rate, others held), then, with several drivers, all of them
+  /// at their rates (one driver at its rate is its unit-rate entry scaled, so it has no such
+  /// entry); empty without drivers.
   std::vector<DrivenMotion> driven;
   /// Jams, free motions, redundant constraints, locked drivers, non-back-drivable worms.
   std::vector<Diagnostic> diagnostics;
 
-  /// The motion an expectation's "ratio" refers to: the only driver's at unit rate (`driven`
-  /// then holds it and the combined entry), or all drivers at their rates; nullptr without
-  /// drivers.
+  /// The motion an expectation's "ratio" refers to: the only driver's at unit rate, or all
+  /// drivers at their rates (the last entry of `driven`); nullptr without drivers.
   const DrivenMotion* ForExpectations() const;
 };
 

@@ -43,7 +43,7 @@ MotionRun PlanRun(const Assembly& assembly, const Analysis& analysis,
     }
     if (!std::isfinite(run.amount)) run.amount = 0.0;
   }
-  // driven: one entry per driver, then all together.
+  // driven: one entry per driver, then, with several, all together.
   const DrivenMotion& motion = driver ? driven[*driver] : driven.back();
   if (!motion.possible) {
     run.possible = false;

@@ -1,5 +1,6 @@
 #include "reasoning/rational.h"
 
+#include <cassert>
 #include <numeric>
 #include <stdexcept>
 
@@ -39,6 +40,14 @@ Rational::Rational(std::int64_t numerator, std::int64_t denominator) {
   const std::int64_t g = std::gcd(numerator, denominator);
   numerator_ = (denominator < 0 ? -numerator : numerator) / (g == 0 ? 1 : g);
   denominator_ = (denominator < 0 ? -denominator : denominator) / (g == 0 ? 1 : g);
+}
+
+Rational Rational::FromReduced(std::int64_t numerator, std::int64_t denominator) {
+  assert(denominator > 0 && std::gcd(numerator, denominator) == 1);
+  Rational r;
+  r.numerator_ = numerator;
+  r.denominator_ = denominator;
+  return r;
 }
 
 std::string Rational::ToString() const {

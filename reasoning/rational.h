@@ -16,6 +16,10 @@ class Rational {
   /// Throws std::invalid_argument for a zero denominator.
   Rational(std::int64_t numerator, std::int64_t denominator);
 
+  /// p/q already in lowest terms with q > 0, as another Rational gave them: no reduction.
+  /// Checked in debug builds.
+  static Rational FromReduced(std::int64_t numerator, std::int64_t denominator);
+
   std::int64_t numerator() const { return numerator_; }
   std::int64_t denominator() const { return denominator_; }
   double ToDouble() const { return static_cast<double>(numerator_) / denominator_; }

@@ -5,6 +5,7 @@
 #include "io/assembly_reader.h"
 #include "kernel/collision_model.h"
 #include "reasoning/analysis.h"
+#include "reasoning/motion_run.h"
 #include "reasoning/operation_check.h"
 #include "text_edit.h"
 
@@ -39,7 +40,7 @@ TEST(Motion, SelfLockingWormCannotBeDrivenFromItsWheel) {
                                    R"("part": "worm_wheel", "feature": "teeth")");
   const Assembly locked = ParseAssembly(text, kWorm);
   const Analysis an = Analyze(locked);
-  ASSERT_EQ(an.motion.driven.size(), 2u);
+  ASSERT_EQ(an.motion.driven.size(), 1u);
   EXPECT_FALSE(an.motion.driven[0].possible);
   EXPECT_NE(an.motion.driven[0].reason.find("not back-drivable"), std::string::npos)
       << an.motion.driven[0].reason;
@@ -58,14 +59,33 @@ TEST(Motion, ReversingTheDriverNegatesEveryRate) {
   const Assembly forward = ParseAssembly(text, path);
   const Assembly backward = ParseAssembly(Replace(text, R"("rate": 1)", R"("rate": -1)"), path);
   const Analysis f = Analyze(forward), b = Analyze(backward);
-  const DrivenMotion& mf = f.motion.driven.back();
-  const DrivenMotion& mb = b.motion.driven.back();
+  // The reported ratios are per unit driver rate, the same whichever way the driver turns.
+  ASSERT_EQ(f.motion.driven.size(), 1u);
+  ASSERT_EQ(b.motion.driven.size(), 1u);
+  const DrivenMotion& mf = f.motion.driven.front();
+  const DrivenMotion& mb = b.motion.driven.front();
   for (std::size_t p = 0; p < mf.features.key_count(); ++p) {
     for (std::size_t k = 0; k < mf.features[p].size(); ++k) {
       ASSERT_TRUE(mf.features[p][k].rotation.is_exact());
-      EXPECT_EQ(*mb.features[p][k].rotation.exact(), -*mf.features[p][k].rotation.exact());
+      EXPECT_EQ(*mb.features[p][k].rotation.exact(), *mf.features[p][k].rotation.exact());
     }
   }
+  // The run goes the other way: every joint screw of every part at the negated rate.
+  const MotionRun rf = PlanRun(forward, f, std::nullopt, std::nullopt);
+  const MotionRun rb = PlanRun(backward, b, std::nullopt, std::nullopt);
+  std::size_t turning = 0;
+  for (std::size_t p = 0; p < forward.parts().size(); ++p) {
+    const std::vector<ScrewMotion>& sf = rf.paths[p].screws;
+    const std::vector<ScrewMotion>& sb = rb.paths[p].screws;
+    ASSERT_EQ(sf.size(), sb.size()) << forward.part(p).id;
+    for (std::size_t k = 0; k < sf.size(); ++k) {
+      EXPECT_EQ(sb[k].axis_W, sf[k].axis_W) << forward.part(p).id;
+      EXPECT_EQ(sb[k].turns_per_unit, -sf[k].turns_per_unit) << forward.part(p).id;
+      EXPECT_EQ(sb[k].travel_per_unit, -sf[k].travel_per_unit) << forward.part(p).id;
+      turning += sf[k].turns_per_unit != 0.0;
+    }
+  }
+  EXPECT_GE(turning, 5u);  // the sun, three planets and the carrier
 }
 
 TEST(Motion, ThreePlanetsAreTwoRedundantConstraintsNotALock) {

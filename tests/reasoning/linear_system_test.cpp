@@ -98,14 +98,5 @@ TEST(LinearSystem, ApproximateCoefficientsStayApproximate) {
   EXPECT_TRUE(x[0].is_exact());
 }
 
-TEST(ExactReal, DecimalsAreReadAsWritten) {
-  EXPECT_EQ(*ExactReal::FromDecimal(1.5).exact(), Rational(3, 2));
-  EXPECT_EQ(*ExactReal::FromDecimal(0.1).exact(), Rational(1, 10));
-  EXPECT_EQ(*ExactReal::FromDecimal(25.4).exact(), Rational(127, 5));
-  EXPECT_EQ(*ExactReal::FromDecimal(-3).exact(), Rational(-3));
-  EXPECT_FALSE(ExactReal::FromDecimal(3.141592653589793).is_exact());
-  EXPECT_EQ(ExactReal(Rational(1, 40)).ToString(), "1/40");
-}
-
 }  // namespace
 }  // namespace mechanist

@@ -339,6 +339,19 @@ TEST(Motion, DifferentialAddsItsInputsByWillis) {
   EXPECT_EQ(Exact(Rate(a, an, "carrier/shaft")), "5/3");
   // Relative to the carrier the planet turns -(20/10)(1 - 1/3) per unit sun rate.
   EXPECT_EQ(Exact(Rate(a, an, "planet/teeth", true, &an.motion.driven[0])), "-1");
+  // Both drivers reversed: every rate of the combined motion negated, exactly.
+  spec.drivers = {driver("sun", -1), driver("ring", -2)};
+  const Assembly reversed(spec);
+  const Analysis back = Analyze(reversed);
+  const DrivenMotion &forward = an.motion.driven.back(), &backward = back.motion.driven.back();
+  for (std::size_t p = 0; p < forward.features.key_count(); ++p) {
+    for (std::size_t k = 0; k < forward.features[p].size(); ++k) {
+      ASSERT_TRUE(forward.features[p][k].rotation.is_exact()) << a.part(p).id;
+      EXPECT_EQ(*backward.features[p][k].rotation.exact(), -*forward.features[p][k].rotation.exact())
+          << a.part(p).id;
+    }
+  }
+  EXPECT_EQ(Exact(Rate(reversed, back, "carrier/shaft")), "-5/3");
 }
 
 TEST(Motion, RackTravelsPiTimesPitchDiameterPerRevolution) {
