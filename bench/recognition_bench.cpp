@@ -6,8 +6,8 @@
 // all cells, and a square grid whose gears mesh with all four neighbours (closed loops,
 // redundant meshes), and a planetary array (stages of ring, sun, three planets on a carrier
 // whose output drives the next sun). Prints times per size and the growth factor of the full
-// analysis, warm (the median of runs in a row) and cold (each run after the caches are
-// flushed).
+// analysis, warm (after an analysis of the same assembly) and cold (after the caches are
+// flushed): medians of 11 rounds, each round running every size in turn.
 //
 // Usage: recognition_bench [--default-heap] [max_parts]   (default 100000)
 //        recognition_bench --grid-once N    one analysis of the grid layout of N parts, untimed
@@ -29,10 +29,10 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kernel/assembly.h"
-#include "kernel/assembly_state.h"
 #include "reasoning/analysis.h"
 #include "reasoning/pair_graph.h"
 #include "reasoning/pair_recognition.h"
@@ -190,7 +190,7 @@ Assembly PlanetaryArray(int stages) {
   return Assembly(std::move(spec));
 }
 
-constexpr int kRuns = 7;
+constexpr int kRuns = 11;
 
 // Writes a buffer larger than the caches, so that what a run reads next comes from memory.
 void EvictCaches() {
@@ -241,52 +241,66 @@ int main(int argc, char** argv) {
     std::printf("layout %s\n%10s %10s %10s %14s %12s %12s %6s %10s %10s %10s %10s\n", layout.name,
                 "parts", "pairs", "subassem.", "recognise_ms", "graph_ms", "analysis_ms", "dof",
                 "redundant", "growth", "cold_ms", "cold_grow");
-    double previous = 0, previous_cold = 0;
+    struct Size {
+      Size(int n, Assembly a) : parts(n), assembly(std::move(a)) {}
+      int parts;
+      Assembly assembly;
+      std::vector<double> recognise_ms, graph_ms, all_ms, cold_ms;
+      std::size_t pair_count = 0, groups = 0;
+      int dof = 0, redundant = 0;
+    };
+    std::vector<Size> sizes;
     for (int parts = 1000; parts <= max_parts; parts *= 10) {
       const int cells = parts / kPartsPerCell;
       const int per_row = layout.per_row > 0    ? layout.per_row
                           : layout.per_row == 0 ? cells
                                                 : static_cast<int>(std::ceil(std::sqrt(cells)));
-      const Assembly assembly = layout.per_row == -2 ? PlanetaryArray(parts / kPartsPerStage)
-                                                     : Synthetic(cells, per_row, layout.row_pitch);
-      const AssemblyState state = InitialState(assembly);
-      std::vector<double> recognise_ms, graph_ms, all_ms, cold_ms;
-      std::size_t pair_count = 0, groups = 0;
-      int dof = 0, redundant = 0;
-      // The median of the same number of runs at every size: a best of many runs of a small
-      // size against a best of few of a large one would flatter the small size and inflate the
-      // growth factor on a noisy machine.
-      for (int repeat = 0; repeat < kRuns; ++repeat) {
+      sizes.emplace_back(parts, layout.per_row == -2 ? PlanetaryArray(parts / kPartsPerStage)
+                                                     : Synthetic(cells, per_row, layout.row_pitch));
+    }
+    auto ms = [](auto a, auto b) {
+      return std::chrono::duration<double, std::milli>(b - a).count();
+    };
+    // The median of the same number of runs at every size (a best of many runs of a small
+    // size against a best of few of a large one would flatter the small size), and the sizes
+    // in turn within each round, so that a slower spell of the shared host falls on all sizes
+    // alike instead of on whichever size it happens to meet.
+    for (int round = 0; round < kRuns; ++round) {
+      for (Size& size : sizes) {
+        const Assembly& assembly = size.assembly;
+        // Warm: an analysis first (untimed), so that the one timed after recognition and the
+        // graph finds this size's data and freed memory in the cache as in a run of analyses
+        // of one assembly, whatever size ran before it.
+        { const Analysis warm_up = Analyze(assembly); }
         const auto t0 = std::chrono::steady_clock::now();
-        const Recognition r = RecognizePairs(assembly, state);
+        const Recognition r = RecognizePairs(assembly);
         const auto t1 = std::chrono::steady_clock::now();
-        groups = PairGraph(assembly, r.pairs).Subassemblies().size();
+        size.groups = PairGraph(assembly, r.pairs).Subassemblies().size();
         const auto t2 = std::chrono::steady_clock::now();
         const Analysis analysis = Analyze(assembly);
         const auto t3 = std::chrono::steady_clock::now();
-        pair_count = r.pairs.size();
-        dof = analysis.motion.mobility.dof;
-        redundant = analysis.motion.mobility.redundant;
-        auto ms = [](auto a, auto b) {
-          return std::chrono::duration<double, std::milli>(b - a).count();
-        };
-        recognise_ms.push_back(ms(t0, t1));
-        graph_ms.push_back(ms(t1, t2));
-        all_ms.push_back(ms(t2, t3));
-        // The same analysis with the caches flushed first, as after other work: the warm runs
-        // above keep a small assembly's data in cache from one run to the next.
+        size.pair_count = r.pairs.size();
+        size.dof = analysis.motion.mobility.dof;
+        size.redundant = analysis.motion.mobility.redundant;
+        size.recognise_ms.push_back(ms(t0, t1));
+        size.graph_ms.push_back(ms(t1, t2));
+        size.all_ms.push_back(ms(t2, t3));
+        // The same analysis with the caches flushed first, as after other work.
         EvictCaches();
         const auto t4 = std::chrono::steady_clock::now();
         const Analysis cold = Analyze(assembly);
-        cold_ms.push_back(ms(t4, std::chrono::steady_clock::now()));
+        size.cold_ms.push_back(ms(t4, std::chrono::steady_clock::now()));
       }
-      const double recognise = Median(recognise_ms), graph = Median(graph_ms), all = Median(all_ms),
-                   cold = Median(cold_ms);
+    }
+    double previous = 0, previous_cold = 0;
+    for (const Size& size : sizes) {
+      const double recognise = Median(size.recognise_ms), graph = Median(size.graph_ms),
+                   all = Median(size.all_ms), cold = Median(size.cold_ms);
       auto growth = [](double now, double before) {
         return before > 0 ? std::to_string(now / before).substr(0, 5) + "x" : std::string("-");
       };
-      std::printf("%10d %10zu %10zu %14.1f %12.1f %12.1f %6d %10d %10s %10.1f %10s\n", parts,
-                  pair_count, groups, recognise, graph, all, dof, redundant,
+      std::printf("%10d %10zu %10zu %14.1f %12.1f %12.1f %6d %10d %10s %10.1f %10s\n", size.parts,
+                  size.pair_count, size.groups, recognise, graph, all, size.dof, size.redundant,
                   growth(all, previous).c_str(), cold, growth(cold, previous_cold).c_str());
       previous = all;
       previous_cold = cold;

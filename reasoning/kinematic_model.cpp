@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <stdexcept>
@@ -45,9 +46,6 @@ void Complete(const Eigen::Vector3d& u, Eigen::Vector3d& e1, Eigen::Vector3d& e2
   e2 = u.cross(e1);
 }
 
-void Append(LinearSystem::Row& to, const LinearSystem::Row& from, const ExactReal& scale) {
-  for (const LinearSystem::Term& t : from) to.push_back({t.variable, scale * t.coefficient});
-}
 
 }  // namespace
 
@@ -161,10 +159,13 @@ void KinematicModel::BuildJoints(const std::vector<Pair>& pairs) {
       }
     }
   }
-  joints_.reserve(candidates.size());
+  // Kept in place, not copied into a second array.
+  std::size_t kept = 0;
   for (std::size_t c = 0; c < candidates.size(); ++c) {
-    if (!duplicate[c]) joints_.push_back(std::move(candidates[c]));
+    if (!duplicate[c]) candidates[kept++] = std::move(candidates[c]);
   }
+  candidates.resize(kept);
+  joints_ = std::move(candidates);
 }
 
 void KinematicModel::AddFreedoms(std::size_t joint) {
@@ -308,6 +309,14 @@ LinearSystem::Row KinematicModel::Angular(std::size_t a, std::size_t b,
   return terms;
 }
 
+void KinematicModel::AppendAngular(LinearSystem::Row& row, std::size_t a, std::size_t b,
+                                   const Eigen::Vector3d& d, const ExactReal& scale) const {
+  auto measure = [&](const Freedom& f) { return AngularOf(f, d); };
+  auto add = [&](std::size_t f, const ExactReal& c) { row.push_back({f, scale * c}); };
+  ForPath(a, 1, measure, add);
+  ForPath(b, -1, measure, add);
+}
+
 LinearSystem::Row KinematicModel::Linear(std::size_t a, std::size_t b, const Eigen::Vector3d& p,
                                          const Eigen::Vector3d& d) const {
   LinearSystem::Row terms;
@@ -358,7 +367,7 @@ std::vector<LinearSystem::Row> KinematicModel::JointConstraints(const Joint& j, 
     case PairType::kScrew: {
       angular(e1), angular(e2), linear(e1), linear(e2);
       LinearSystem::Row advance = Linear(a, b, p, u);
-      Append(advance, Angular(a, b, u), -j.lead);
+      AppendAngular(advance, a, b, u, -j.lead);
       rows.push_back(std::move(advance));
       break;
     }
@@ -408,19 +417,21 @@ bool KinematicModel::Carries(std::size_t body, FeatureRef f) const {
     const Joint& t = joints_[theirs[k]];
     if (other(t, target) == body && carried_by(t)) return true;
   }
-  std::vector<std::size_t> vias;  // bodies the carrier turns against about f's axis
+  // Bodies the carrier turns against about f's axis (on the stack: asked for every coupling).
+  std::array<std::size_t, kCarrierScanLimit> vias;
+  std::size_t via_count = 0;
   const std::span<const std::size_t> own = joints_of_[body];
   for (std::size_t i = 0; i < own.size() && i < kCarrierScanLimit; ++i) {
     const Joint& j = joints_[own[i]];
     if (!carried_by(j)) continue;
     const std::size_t via = other(j, body);
     if (via == target) return true;
-    vias.push_back(via);
+    vias[via_count++] = via;
   }
-  if (vias.empty()) return false;
-  for (std::size_t k = 0; k < theirs.size() && k < kCarrierScanLimit; ++k) {
+  const auto vias_end = vias.begin() + static_cast<std::ptrdiff_t>(via_count);
+  for (std::size_t k = 0; k < theirs.size() && k < kCarrierScanLimit && via_count > 0; ++k) {
     const Joint& t = joints_[theirs[k]];
-    if (std::find(vias.begin(), vias.end(), other(t, target)) != vias.end() && carried_by(t)) {
+    if (std::find(vias.begin(), vias_end, other(t, target)) != vias_end && carried_by(t)) {
       return true;
     }
   }
@@ -428,16 +439,19 @@ bool KinematicModel::Carries(std::size_t body, FeatureRef f) const {
 }
 
 std::optional<std::size_t> KinematicModel::CommonCarrier(FeatureRef f, FeatureRef g) const {
-  std::vector<std::size_t> candidates{ground_, body_of_part_[f.part], body_of_part_[g.part]};
+  // On the stack: asked for every coupling.
+  std::array<std::size_t, 3 + 2 * kCarrierScanLimit> candidates{ground_, body_of_part_[f.part],
+                                                               body_of_part_[g.part]};
+  std::size_t count = 3;
   for (std::size_t own : {body_of_part_[f.part], body_of_part_[g.part]}) {
     const std::span<const std::size_t> js = joints_of_[own];
     for (std::size_t i = 0; i < js.size() && i < kCarrierScanLimit; ++i) {
       const Joint& j = joints_[js[i]];
-      candidates.push_back(j.body_a == own ? j.body_b : j.body_a);
+      candidates[count++] = j.body_a == own ? j.body_b : j.body_a;
     }
   }
-  for (std::size_t c : candidates) {
-    if (Carries(c, f) && Carries(c, g)) return c;
+  for (std::size_t k = 0; k < count; ++k) {
+    if (Carries(candidates[k], f) && Carries(candidates[k], g)) return candidates[k];
   }
   return std::nullopt;
 }
@@ -469,7 +483,7 @@ void KinematicModel::BuildRows(const std::vector<Pair>& pairs) {
           rack ? Linear(B, *C, b.origin, b.direction) : Angular(B, *C, b.direction);
       const ExactReal ratio =
           rack ? ExactReal::Approximate(*p.travel_per_revolution) : ExactReal(*p.ratio);
-      Append(row, Angular(A, *C, a.direction), -ratio);
+      AppendAngular(row, A, *C, a.direction, -ratio);
       rows_.push_back({std::move(row), i});
       continue;
     }

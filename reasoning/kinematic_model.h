@@ -137,6 +137,9 @@ class KinematicModel {
   template <typename Measure, typename Sink>
   void ForPath(std::size_t body, double sign, const Measure& measure, Sink&& sink) const;
   ExactReal AngularOf(const Freedom& f, const Eigen::Vector3d& d) const;
+  /// Appends `scale` times the terms of Angular(a, b, d) to `row`.
+  void AppendAngular(LinearSystem::Row& row, std::size_t a, std::size_t b, const Eigen::Vector3d& d,
+                     const ExactReal& scale) const;
   ExactReal LinearOf(const Freedom& f, const Eigen::Vector3d& p, const Eigen::Vector3d& d) const;
   void BuildJoints(const std::vector<Pair>& pairs);
   void BuildTree();

@@ -366,13 +366,20 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     for (std::size_t p : parts) ids.push_back(assembly.part(p).id);
     return ids;
   };
+  // Built in place (an initializer list would copy each name once more).
   auto pair_parts = [&](std::size_t pair) {
-    return std::vector<std::string>{assembly.part(pairs[pair].a.part).id,
-                                    assembly.part(pairs[pair].b.part).id};
+    std::vector<std::string> ids;
+    ids.reserve(2);
+    ids.push_back(assembly.part(pairs[pair].a.part).id);
+    ids.push_back(assembly.part(pairs[pair].b.part).id);
+    return ids;
   };
   auto pair_features = [&](std::size_t pair) {
-    return std::vector<std::string>{assembly.FeatureName(pairs[pair].a),
-                                    assembly.FeatureName(pairs[pair].b)};
+    std::vector<std::string> names;
+    names.reserve(2);
+    names.push_back(assembly.FeatureName(pairs[pair].a));
+    names.push_back(assembly.FeatureName(pairs[pair].b));
+    return names;
   };
 
   // Redundant constraints, per pair.
@@ -386,14 +393,20 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     if (count == 0) continue;
     mobility.redundant += count;
     mobility.redundant_pairs.push_back({pair, count});
-    // The features' names once, for the message and the list (an over-constrained grid of
-    // 100,000 parts names 20,000 pairs).
+    // The features' names once, for the message and the list, and the message appended into
+    // one buffer (an over-constrained grid of 100,000 parts names 20,000 pairs).
     std::vector<std::string> features = pair_features(pair);
-    std::string message = std::string(ToString(pairs[pair].type)) + " pair " + features[0] + " + " +
-                          features[1] + ": " + std::to_string(count) +
-                          (count == 1 ? " of its constraints is" : " of its constraints are") +
-                          " implied by the other pairs (over-constrained: it must be made "
-                          "accurately)";
+    constexpr std::string_view kImplied =
+        " implied by the other pairs (over-constrained: it must be made accurately)";
+    const std::string_view type = ToString(pairs[pair].type);
+    const std::string number = std::to_string(count);
+    std::string message;
+    message.reserve(type.size() + features[0].size() + features[1].size() + number.size() +
+                    kImplied.size() + 40);
+    message.append(type).append(" pair ").append(features[0]).append(" + ").append(features[1]);
+    message.append(": ").append(number);
+    message.append(count == 1 ? " of its constraints is" : " of its constraints are");
+    message.append(kImplied);
     result.diagnostics.push_back({Severity::kInfo, "redundant_constraints", std::move(message),
                                   pair_parts(pair), std::move(features)});
   }

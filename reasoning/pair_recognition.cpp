@@ -28,9 +28,8 @@ constexpr double kMaxShaftClearance = 0.05;
 constexpr double kMaxClearanceHoleRatio = 1.3;
 constexpr double kMinThreadDiameterRatio = 0.6;
 
-/// A feature at its world pose, with the box it can reach a partner from.
+/// A feature at its world pose (its reach box is kept apart, for the broad phase).
 struct WorldFeature {
-  Aabb reach;  ///< first, with the kind: what the broad phase and the dispatch read
   FeatureKind kind = FeatureKind::kShaft;
   FeatureRef ref;
   const Feature* f = nullptr;
@@ -108,19 +107,19 @@ class Recognizer {
     // Reserved: the features refer to their axes in this array.
     axes_.reserve(assembly.feature_count());
     features_.reserve(assembly.feature_count());
+    reach_.reserve(assembly.feature_count());
     for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
       const Part& part = assembly.part(p);
       const Aabb part_box_W = TransformBox(X_WP[p], assembly.MeshBox(p));
       for (std::size_t i = 0; i < part.features.size(); ++i) {
         const Feature& f = part.features[i];
         axes_.push_back(f.WorldAxis(X_WP[p]));
-        WorldFeature w{.reach = {},
-                       .kind = f.kind,
+        WorldFeature w{.kind = f.kind,
                        .ref = {p, i},
                        .f = &f,
                        .axis = axes_.back(),
                        .normal_W = X_WP[p].RotateDirection(f.normal)};
-        w.reach = ReachBox(w, part_box_W);
+        reach_.push_back(ReachBox(w, part_box_W));
         features_.push_back(w);
       }
     }
@@ -215,12 +214,26 @@ class Recognizer {
   template <typename Test>
   void ForEachCandidate(Test test) const {
     if (features_.empty()) return;
+    // The reach boxes in floats rounded outward, with their parts: a compact first test before
+    // the exact one, so that rejected candidates touch 28 bytes each, not a whole feature.
+    // Made in the same read of the boxes as their extents.
+    struct CompactBox {
+      std::array<float, 3> lo, hi;
+      std::uint32_t part;
+    };
+    std::vector<CompactBox> boxes(features_.size());
     std::vector<double> extents;
     extents.reserve(features_.size());
     Aabb all;
-    for (const WorldFeature& w : features_) {
-      extents.push_back(w.reach.size().maxCoeff());
-      all.Extend(w.reach);
+    for (std::size_t i = 0; i < features_.size(); ++i) {
+      const Aabb& b = reach_[i];
+      extents.push_back(b.size().maxCoeff());
+      all.Extend(b);
+      for (int k = 0; k < 3; ++k) {
+        boxes[i].lo[k] = std::nextafter(static_cast<float>(b.min[k]), -HUGE_VALF);
+        boxes[i].hi[k] = std::nextafter(static_cast<float>(b.max[k]), HUGE_VALF);
+      }
+      boxes[i].part = static_cast<std::uint32_t>(features_[i].ref.part);
     }
     std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
     constexpr std::int64_t kMaxCellsPerBox = 512;
@@ -239,7 +252,7 @@ class Recognizer {
       entry_count = 0;
       std::array<std::int64_t, 3> extent{1, 1, 1};  // cells per axis over the small boxes
       for (std::uint32_t i = 0; i < features_.size(); ++i) {
-        const Aabb& b = features_[i].reach;
+        const Aabb& b = reach_[i];
         std::int64_t count = 1;
         std::array<std::int64_t, 3> hi{};
         for (int k = 0; k < 3; ++k) {
@@ -284,21 +297,6 @@ class Recognizer {
     // Stable, so entries of one cell stay in feature order: the same order as sorting the
     // pairs, in linear time.
     RadixSort(entries, key_bits, [](std::uint64_t e) { return e >> 32; });
-    // The reach boxes in floats rounded outward, with their parts: a compact first test before
-    // the exact one, so that rejected candidates touch 28 bytes each, not a whole feature.
-    struct CompactBox {
-      std::array<float, 3> lo, hi;
-      std::uint32_t part;
-    };
-    std::vector<CompactBox> boxes(features_.size());
-    for (std::size_t i = 0; i < features_.size(); ++i) {
-      const Aabb& b = features_[i].reach;
-      for (int k = 0; k < 3; ++k) {
-        boxes[i].lo[k] = std::nextafter(static_cast<float>(b.min[k]), -HUGE_VALF);
-        boxes[i].hi[k] = std::nextafter(static_cast<float>(b.max[k]), HUGE_VALF);
-      }
-      boxes[i].part = static_cast<std::uint32_t>(features_[i].ref.part);
-    }
     // The candidates that pass the compact test are tested afterwards in the order of their
     // first feature: the features are then read in the file's order, which the memory
     // prefetches, rather than cell by cell, which it cannot foresee.
@@ -338,9 +336,8 @@ class Recognizer {
     }
     RadixSort(found, BitWidth(features_.size()), [](std::uint64_t e) { return e >> 32; });
     for (const std::uint64_t e : found) {
-      const WorldFeature& x = features_[e >> 32];
-      const WorldFeature& y = features_[e & 0xffffffffu];
-      if (x.reach.Intersects(y.reach)) test(x, y);
+      const std::size_t i = e >> 32, j = e & 0xffffffffu;
+      if (reach_[i].Intersects(reach_[j])) test(features_[i], features_[j]);
     }
   }
 
@@ -848,9 +845,15 @@ class Recognizer {
     std::vector<Pair> sorted;
     sorted.reserve(pairs_.size());
     // A gather in name order: the pairs asked for a few steps ahead are fetched meanwhile.
-    constexpr std::size_t kAhead = 8;
+    constexpr std::size_t kAhead = 16;
     for (std::size_t k = 0; k < keys.size(); ++k) {
-      if (k + kAhead < keys.size()) __builtin_prefetch(&pairs_[keys[k + kAhead].pair]);
+      if (k + kAhead < keys.size()) {
+        // Every cache line of the pair: 112 bytes straddle two or three.
+        const char* ahead = reinterpret_cast<const char*>(&pairs_[keys[k + kAhead].pair]);
+        __builtin_prefetch(ahead);
+        __builtin_prefetch(ahead + 64);
+        __builtin_prefetch(ahead + sizeof(Pair) - 1);
+      }
       sorted.push_back(std::move(pairs_[keys[k].pair]));
     }
     return sorted;
@@ -861,6 +864,9 @@ class Recognizer {
   const int rank_bits_;                 ///< bits of a feature's name rank
   std::vector<AxisSegment> axes_;       ///< per Assembly::FeatureIndex: world axes
   std::vector<WorldFeature> features_;  ///< per Assembly::FeatureIndex
+  /// Per Assembly::FeatureIndex: the box a feature can reach a partner from (apart from the
+  /// features: the broad phase reads only these, several times).
+  std::vector<Aabb> reach_;
   std::vector<Pair> pairs_;
   /// Tight fixed pairs as recognised: (thread's FeatureIndex, tapped hole or nut).
   std::vector<Screwed> tight_;
