@@ -31,6 +31,8 @@ Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
     }
     if (!part.mesh) throw std::invalid_argument("part '" + part.id + "' has no mesh");
     file_poses_.push_back(part.X_WP);
+    part_id_.push_back(AppendName({part.id}));
+    for (const Feature& f : part.features) feature_name_.push_back(AppendName({part.id, "/", f.id}));
     const auto [box, added] = boxes.try_emplace(part.mesh.get());
     if (added) box->second = part.mesh->Bounds();
     mesh_box_.push_back(box->second);
@@ -146,7 +148,28 @@ const std::vector<FeatureRef>& Assembly::FeaturesOfKind(FeatureKind kind) const 
 }
 
 std::string Assembly::FeatureName(FeatureRef ref) const {
-  return spec_.parts.at(ref.part).id + "/" + feature(ref).id;
+  if (ref.feature >= FeatureCount(ref.part)) {
+    throw std::out_of_range("FeatureName: part " + std::to_string(ref.part) + " has no feature " +
+                            std::to_string(ref.feature));
+  }
+  const NameSpan name = feature_name_[FeatureIndex(ref)];
+  return names_.substr(name.offset, name.size);
+}
+
+std::string_view Assembly::PartId(std::size_t part) const {
+  const NameSpan id = part_id_.at(part);
+  return std::string_view(names_).substr(id.offset, id.size);
+}
+
+Assembly::NameSpan Assembly::AppendName(std::initializer_list<std::string_view> pieces) {
+  std::size_t size = 0;
+  for (std::string_view piece : pieces) size += piece.size();
+  if (names_.size() + size > UINT32_MAX) {
+    throw std::length_error("assembly: the part and feature names exceed 4 GB");
+  }
+  const NameSpan span{static_cast<std::uint32_t>(names_.size()), static_cast<std::uint32_t>(size)};
+  for (std::string_view piece : pieces) names_.append(piece);
+  return span;
 }
 
 }  // namespace mechanist

@@ -3,9 +3,11 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "kernel/diagnostic.h"
@@ -148,8 +150,12 @@ class Assembly {
   const Feature& feature(FeatureRef ref) const {
     return spec_.parts.at(ref.part).features.at(ref.feature);
   }
-  /// "part_id/feature_id".
+  /// "part_id/feature_id", from the compact table of names (see PartId).
   std::string FeatureName(FeatureRef ref) const;
+  /// The part's id, from a compact table of all names made with the assembly: reports name
+  /// thousands of parts and features in no particular order, and at 100,000 parts the table
+  /// stays in the cache where reading the parts themselves would go to memory for each name.
+  std::string_view PartId(std::size_t part) const;
   /// The part's position when the parts are ordered by id: sorting by it orders by id (so that
   /// reports do not depend on the file's order) without comparing strings.
   std::size_t PartRank(std::size_t part) const { return part_rank_.at(part); }
@@ -194,6 +200,9 @@ class Assembly {
  private:
   void CheckRef(FeatureRef ref, const char* what) const;
   void CheckPart(std::size_t part, const char* what) const;
+  struct NameSpan;
+  /// Appends the pieces to names_, as one name.
+  NameSpan AppendName(std::initializer_list<std::string_view> pieces);
 
   AssemblySpec spec_;
   std::map<std::string, std::size_t, std::less<>> part_index_;
@@ -207,6 +216,13 @@ class Assembly {
   std::vector<RigidTransform> file_poses_;       ///< per part: Part::X_WP
   std::vector<Aabb> mesh_box_;                   ///< per part: its mesh's Bounds()
   std::map<FeatureKind, std::vector<FeatureRef>> features_of_kind_;
+  /// Where a name lies in names_.
+  struct NameSpan {
+    std::uint32_t offset = 0, size = 0;
+  };
+  std::string names_;                     ///< every part id and "part_id/feature_id", in order
+  std::vector<NameSpan> part_id_;         ///< per part: its id in names_
+  std::vector<NameSpan> feature_name_;    ///< per feature: its "part_id/feature_id" in names_
 };
 
 }  // namespace mechanist

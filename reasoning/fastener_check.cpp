@@ -36,7 +36,7 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
                        assembly.FeatureName(nut) + " (" + Mm(assembly.feature(nut).length) +
                        " long): it is " + Mm(shortfall) +
                        " too short for the parts it passes and its nut",
-                   {assembly.part(thread.part).id, assembly.part(nut.part).id},
+                   {std::string(assembly.PartId(thread.part)), std::string(assembly.PartId(nut.part))},
                    {assembly.FeatureName(thread), assembly.FeatureName(nut)}});
   };
 

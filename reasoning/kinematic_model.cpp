@@ -493,7 +493,7 @@ void KinematicModel::BuildRows(const std::vector<Pair>& pairs) {
            "coupling_without_carrier",
            "worm gear " + assembly_.FeatureName(p.a) + " + " + assembly_.FeatureName(p.b) +
                ": no part carries both axes, so the motion analysis leaves this coupling out",
-           {assembly_.part(p.a.part).id, assembly_.part(p.b.part).id},
+           {std::string(assembly_.PartId(p.a.part)), std::string(assembly_.PartId(p.b.part))},
            {assembly_.FeatureName(p.a), assembly_.FeatureName(p.b)}});
       continue;
     }

@@ -363,15 +363,15 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
 
   auto part_ids = [&](const std::vector<std::size_t>& parts) {
     std::vector<std::string> ids;
-    for (std::size_t p : parts) ids.push_back(assembly.part(p).id);
+    for (std::size_t p : parts) ids.emplace_back(assembly.PartId(p));
     return ids;
   };
   // Built in place (an initializer list would copy each name once more).
   auto pair_parts = [&](std::size_t pair) {
     std::vector<std::string> ids;
     ids.reserve(2);
-    ids.push_back(assembly.part(pairs[pair].a.part).id);
-    ids.push_back(assembly.part(pairs[pair].b.part).id);
+    ids.emplace_back(assembly.PartId(pairs[pair].a.part));
+    ids.emplace_back(assembly.PartId(pairs[pair].b.part));
     return ids;
   };
   auto pair_features = [&](std::size_t pair) {
@@ -540,7 +540,7 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     }
     std::sort(free.parts.begin(), free.parts.end(), by_id);
     if (solver.HasPair(child)) {
-      std::string message = assembly.part(free.part).id + " " + free.freedom;
+      std::string message = std::string(assembly.PartId(free.part)) + " " + free.freedom;
       if (free.pair) message += " (" + std::string(ToString(pairs[*free.pair].type)) + " pair)";
       message += ": nothing drives or holds this motion";
       result.diagnostics.push_back(

@@ -430,7 +430,7 @@ class Recognizer {
                             code,
                             std::string(ToString(a.f->kind)) + " " + Name(a) + " and " +
                                 std::string(ToString(b.f->kind)) + " " + Name(b) + ": " + message,
-                            {assembly_.part(a.ref.part).id, assembly_.part(b.ref.part).id},
+                            {std::string(assembly_.PartId(a.ref.part)), std::string(assembly_.PartId(b.ref.part))},
                             {Name(a), Name(b)}});
   }
 

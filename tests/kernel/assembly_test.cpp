@@ -171,8 +171,8 @@ TEST(Assembly, ListsFeaturesByKind) {
 TEST(Assembly, CompactTablesAgreeWithTheParts) {
   // Parts of 0, 3 and 1 features, the middle one ground, the last with a mesh of its own
   // (the first two share one) and each at its own pose: the per-feature kinds and origins,
-  // per-part ground flags, feature counts, file poses and mesh boxes against the parts
-  // themselves.
+  // per-part ground flags, ids, feature counts, file poses and mesh boxes, and the feature
+  // names against the parts themselves.
   AssemblySpec spec;
   const std::vector<std::vector<FeatureKind>> kinds = {
       {}, {FeatureKind::kGear, FeatureKind::kHole, FeatureKind::kFace}, {FeatureKind::kShaft}};
@@ -200,15 +200,23 @@ TEST(Assembly, CompactTablesAgreeWithTheParts) {
     const Aabb expected = assembly.part(p).mesh->Bounds();
     EXPECT_EQ(assembly.MeshBox(p).min, expected.min) << p;
     EXPECT_EQ(assembly.MeshBox(p).max, expected.max) << p;
+    EXPECT_EQ(assembly.PartId(p), assembly.part(p).id);
     for (std::size_t f = 0; f < kinds[p].size(); ++f) {
       EXPECT_EQ(assembly.kind({p, f}), assembly.feature({p, f}).kind);
       EXPECT_EQ(assembly.FeatureOrigin({p, f}), assembly.feature({p, f}).origin);
+      EXPECT_EQ(assembly.FeatureName({p, f}),
+                assembly.part(p).id + "/" + assembly.feature({p, f}).id);
     }
   }
   EXPECT_EQ(assembly.MeshBox(2).max.x(), 3.0);
   EXPECT_THROW(assembly.IsGround(3), std::out_of_range);
   EXPECT_THROW(assembly.FeatureCount(3), std::out_of_range);
   EXPECT_THROW(assembly.MeshBox(3), std::out_of_range);
+  EXPECT_THROW(assembly.PartId(3), std::out_of_range);
+  // A feature index past its part's features is no feature (not the next part's first).
+  EXPECT_THROW(assembly.FeatureName({1, 3}), std::out_of_range);
+  EXPECT_THROW(assembly.FeatureName({0, 0}), std::out_of_range);
+  EXPECT_THROW(assembly.FeatureName({3, 0}), std::out_of_range);
 }
 
 TEST(Assembly, SameFeatureIdInDifferentPartsIsAllowed) {
