@@ -28,11 +28,39 @@ constexpr double kMaxShaftClearance = 0.05;
 constexpr double kMaxClearanceHoleRatio = 1.3;
 constexpr double kMinThreadDiameterRatio = 0.6;
 
+/// The parameters of a feature that the fits compare, copied from the Feature (80 bytes, not
+/// its 210 with its id): the candidates are tested reading one array in order, not each part's
+/// own list of features.
+struct FeatureParams {
+  explicit FeatureParams(const Feature& f)
+      : diameter(f.diameter),
+        pitch(f.pitch),
+        width(f.width),
+        height(f.height),
+        depth(f.depth),
+        module(f.module),
+        pitch_diameter(f.pitch_diameter),
+        teeth(f.teeth),
+        starts(f.starts),
+        hand(f.hand),
+        fastening(f.fastening),
+        kind(f.kind),
+        through(f.through),
+        retained(f.retained),
+        internal(f.internal) {}
+  double diameter, pitch, width, height, depth, module, pitch_diameter;
+  int teeth, starts;
+  Hand hand;
+  Fastening fastening;
+  FeatureKind kind;
+  bool through, retained, internal;
+};
+static_assert(sizeof(FeatureParams) <= 80, "FeatureParams has grown: the narrow phase reads it");
+
 /// A feature at its world pose (its reach box is kept apart, for the broad phase).
 struct WorldFeature {
-  FeatureKind kind = FeatureKind::kShaft;
+  FeatureParams f;
   FeatureRef ref;
-  const Feature* f = nullptr;
   const AxisSegment& axis;  ///< world; held in the recogniser's array of axes, handed out
   Eigen::Vector3d normal_W = Eigen::Vector3d::Zero();
 };
@@ -114,9 +142,8 @@ class Recognizer {
       for (std::size_t i = 0; i < part.features.size(); ++i) {
         const Feature& f = part.features[i];
         axes_.push_back(f.WorldAxis(X_WP[p]));
-        WorldFeature w{.kind = f.kind,
+        WorldFeature w{.f = FeatureParams(f),
                        .ref = {p, i},
-                       .f = &f,
                        .axis = axes_.back(),
                        .normal_W = X_WP[p].RotateDirection(f.normal)};
         reach_.push_back(ReachBox(w, part_box_W));
@@ -163,7 +190,7 @@ class Recognizer {
   // ---- broad phase ----
 
   Aabb ReachBox(const WorldFeature& w, const Aabb& part_box_W) const {
-    const Feature& f = *w.f;
+    const FeatureParams& f = w.f;
     const double margin = near_L_ + L_;
     double radius = 0.0;
     switch (f.kind) {
@@ -345,7 +372,7 @@ class Recognizer {
 
   void Test(const WorldFeature& x, const WorldFeature& y) {
     using K = FeatureKind;
-    const K a = x.kind, b = y.kind;
+    const K a = x.f.kind, b = y.f.kind;
     auto is = [&](K p, K q) { return a == p && b == q; };
     auto either = [&](K p, K q, auto rule) {
       if (is(p, q))
@@ -395,8 +422,8 @@ class Recognizer {
   /// Features of other kinds (a forced "gear" between two shafts) leave them unset.
   void SetCoupling(Pair& p, const WorldFeature& a, const WorldFeature& b) const {
     using K = FeatureKind;
-    const Feature& fa = *a.f;
-    const Feature& fb = *b.f;
+    const FeatureParams& fa = a.f;
+    const FeatureParams& fb = b.f;
     if (p.type == PairType::kScrew && fa.kind == K::kThread) {
       p.travel_per_revolution = fa.starts * fa.pitch * (fa.hand == Hand::kRight ? 1.0 : -1.0);
     } else if (p.type == PairType::kGear && fa.kind == K::kGear && fb.kind == K::kGear) {
@@ -428,8 +455,8 @@ class Recognizer {
             const std::string& message) {
     diagnostics_.push_back({Severity::kWarning,
                             code,
-                            std::string(ToString(a.f->kind)) + " " + Name(a) + " and " +
-                                std::string(ToString(b.f->kind)) + " " + Name(b) + ": " + message,
+                            std::string(ToString(a.f.kind)) + " " + Name(a) + " and " +
+                                std::string(ToString(b.f.kind)) + " " + Name(b) + ": " + message,
                             {std::string(assembly_.PartId(a.ref.part)), std::string(assembly_.PartId(b.ref.part))},
                             {Name(a), Name(b)}});
   }
@@ -453,10 +480,10 @@ class Recognizer {
       }
       return false;
     }
-    if (c.axis.direction.dot(h.axis.direction) < 0 && !h.f->through) {
+    if (c.axis.direction.dot(h.axis.direction) < 0 && !h.f.through) {
       Near("feature_sense_reversed", c, h,
            "collinear and overlapping, but the convex feature points out of the blind " +
-               std::string(ToString(h.f->kind)) +
+               std::string(ToString(h.f.kind)) +
                " (a convex axis points toward its free end, a concave one into the material)");
       return false;
     }
@@ -465,14 +492,14 @@ class Recognizer {
 
   void ShaftHole(const WorldFeature& s, const WorldFeature& h) {
     // A shaft much thinner than the hole passes through it without touching it.
-    if (h.f->diameter - s.f->diameter > kMaxShaftClearance * h.f->diameter + L_) return;
+    if (h.f.diameter - s.f.diameter > kMaxShaftClearance * h.f.diameter + L_) return;
     if (!Seated(s, h)) return;
-    if (s.f->diameter <= h.f->diameter + L_) {
-      AddPair(s.f->retained || h.f->retained ? PairType::kRevolute : PairType::kCylindrical, s, h);
-    } else if (h.f->retained) {
+    if (s.f.diameter <= h.f.diameter + L_) {
+      AddPair(s.f.retained || h.f.retained ? PairType::kRevolute : PairType::kCylindrical, s, h);
+    } else if (h.f.retained) {
       Near("shaft_larger_than_hole", s, h,
-           "shaft diameter " + Mm(s.f->diameter) + " is larger than the retained hole's " +
-               Mm(h.f->diameter) + " (required at most hole + " + Mm(L_) +
+           "shaft diameter " + Mm(s.f.diameter) + " is larger than the retained hole's " +
+               Mm(h.f.diameter) + " (required at most hole + " + Mm(L_) +
                " for a part meant to turn)");
     } else {
       AddPair(PairType::kFixed, s, h, PairFastening::kPressFit);
@@ -480,41 +507,41 @@ class Recognizer {
   }
 
   void ThreadHole(const WorldFeature& t, const WorldFeature& h) {
-    if (h.f->diameter > kMaxClearanceHoleRatio * t.f->diameter + L_) return;
+    if (h.f.diameter > kMaxClearanceHoleRatio * t.f.diameter + L_) return;
     if (!Seated(t, h)) return;
-    if (h.f->diameter + L_ >= t.f->diameter) {
+    if (h.f.diameter + L_ >= t.f.diameter) {
       AddPair(PairType::kCylindrical, t, h);
     } else {
       Near("hole_smaller_than_thread", t, h,
-           "hole diameter " + Mm(h.f->diameter) + " is smaller than the thread's " +
-               Mm(t.f->diameter) + " (required at least the thread's major diameter)");
+           "hole diameter " + Mm(h.f.diameter) + " is smaller than the thread's " +
+               Mm(t.f.diameter) + " (required at least the thread's major diameter)");
     }
   }
 
   void ThreadTapped(const WorldFeature& t, const WorldFeature& h) {
     // A thread far smaller than the tapped hole passes through it (a spindle through the
     // bonnet's seat): neither a pair nor a near miss.
-    if (std::min(t.f->diameter, h.f->diameter) <
-        kMinThreadDiameterRatio * std::max(t.f->diameter, h.f->diameter)) {
+    if (std::min(t.f.diameter, h.f.diameter) <
+        kMinThreadDiameterRatio * std::max(t.f.diameter, h.f.diameter)) {
       return;
     }
     if (!Seated(t, h)) return;
     std::vector<std::string> mismatches;
-    if (std::abs(t.f->diameter - h.f->diameter) > L_) {
-      mismatches.push_back("diameter: thread M" + FormatNumber(t.f->diameter) + ", tapped hole M" +
-                           FormatNumber(h.f->diameter));
+    if (std::abs(t.f.diameter - h.f.diameter) > L_) {
+      mismatches.push_back("diameter: thread M" + FormatNumber(t.f.diameter) + ", tapped hole M" +
+                           FormatNumber(h.f.diameter));
     }
-    if (std::abs(t.f->pitch - h.f->pitch) > 1e-6 * std::max(t.f->pitch, h.f->pitch)) {
-      mismatches.push_back("pitch: thread " + Mm(t.f->pitch) + ", tapped hole " + Mm(h.f->pitch));
+    if (std::abs(t.f.pitch - h.f.pitch) > 1e-6 * std::max(t.f.pitch, h.f.pitch)) {
+      mismatches.push_back("pitch: thread " + Mm(t.f.pitch) + ", tapped hole " + Mm(h.f.pitch));
     }
-    if (t.f->starts != h.f->starts) {
-      mismatches.push_back("starts: thread " + std::to_string(t.f->starts) + ", tapped hole " +
-                           std::to_string(h.f->starts));
+    if (t.f.starts != h.f.starts) {
+      mismatches.push_back("starts: thread " + std::to_string(t.f.starts) + ", tapped hole " +
+                           std::to_string(h.f.starts));
     }
-    if (t.f->hand != h.f->hand) {
+    if (t.f.hand != h.f.hand) {
       mismatches.push_back(std::string("hand: thread ") +
-                           (t.f->hand == Hand::kRight ? "right" : "left") + ", tapped hole " +
-                           (h.f->hand == Hand::kRight ? "right" : "left"));
+                           (t.f.hand == Hand::kRight ? "right" : "left") + ", tapped hole " +
+                           (h.f.hand == Hand::kRight ? "right" : "left"));
     }
     if (!mismatches.empty()) {
       std::string message = "threads do not match (required equal)";
@@ -522,7 +549,7 @@ class Recognizer {
       Near("thread_mismatch", t, h, message);
       return;
     }
-    if (t.f->fastening == Fastening::kTight) {
+    if (t.f.fastening == Fastening::kTight) {
       AddPair(PairType::kFixed, t, h, PairFastening::kTight);
     } else {
       AddPair(PairType::kScrew, t, h, PairFastening::kLoose);
@@ -537,12 +564,12 @@ class Recognizer {
     const LineLineClosest c =
         ClosestPointsOfLines(s.axis.origin, s.axis.direction, sl.axis.origin, sl.axis.direction);
     if (c.distance > L_ || c.t < -L_ || c.t > sl.axis.length + L_) return;
-    if (c.s < -L_ - sl.f->depth || c.s > s.axis.length - L_) return;
-    if (s.f->diameter <= sl.f->width + L_) {
+    if (c.s < -L_ - sl.f.depth || c.s > s.axis.length - L_) return;
+    if (s.f.diameter <= sl.f.width + L_) {
       AddPair(PairType::kPinSlot, s, sl);
     } else {
       Near("pin_wider_than_slot", s, sl,
-           "pin diameter " + Mm(s.f->diameter) + " is wider than the slot's " + Mm(sl.f->width) +
+           "pin diameter " + Mm(s.f.diameter) + " is wider than the slot's " + Mm(sl.f.width) +
                " (required at most the slot width)");
     }
   }
@@ -554,13 +581,13 @@ class Recognizer {
     }
     const Eigen::Vector3d d = k.axis.origin - sl.axis.origin;
     const Eigen::Vector3d side = sl.axis.direction.cross(sl.normal_W);
-    if (std::abs(d.dot(side)) > L_ || std::abs(d.dot(sl.normal_W)) > sl.f->depth + L_) return;
+    if (std::abs(d.dot(side)) > L_ || std::abs(d.dot(sl.normal_W)) > sl.f.depth + L_) return;
     if (AxialOverlap(k.axis, sl.axis) <= L_) return;
-    if (k.f->width <= sl.f->width + L_) {
+    if (k.f.width <= sl.f.width + L_) {
       AddPair(PairType::kPrismatic, k, sl);
     } else {
       Near("key_wider_than_slot", k, sl,
-           "key width " + Mm(k.f->width) + " is wider than the slot's " + Mm(sl.f->width) +
+           "key width " + Mm(k.f.width) + " is wider than the slot's " + Mm(sl.f.width) +
                " (required at most the slot width)");
     }
   }
@@ -572,14 +599,14 @@ class Recognizer {
   }
 
   void GearGear(const WorldFeature& x, const WorldFeature& y) {
-    if (x.f->internal && y.f->internal) return;
+    if (x.f.internal && y.f.internal) return;
     // Order by name so that the pair and its ratio do not depend on the file's order.
     const bool swap = NameLess(y, x);
     const WorldFeature& g1 = swap ? y : x;
     const WorldFeature& g2 = swap ? x : y;
     if (AxialOverlap(g1.axis, g2.axis) <= L_) return;
-    const Feature& f1 = *g1.f;
-    const Feature& f2 = *g2.f;
+    const FeatureParams& f1 = g1.f;
+    const FeatureParams& f2 = g2.f;
     const double angle = AngleBetweenLines(g1.axis.direction, g2.axis.direction);
     const Eigen::Vector3d mid2 = g2.axis.origin + 0.5 * g2.axis.length * g2.axis.direction;
     const double d = DistanceToLine(mid2, g1.axis.origin, g1.axis.direction);
@@ -626,8 +653,8 @@ class Recognizer {
     const LineLineClosest c =
         ClosestPointsOfLines(w.axis.origin, w.axis.direction, g.axis.origin, g.axis.direction);
     if (c.s < -L_ || c.s > w.axis.length + L_ || c.t < -L_ || c.t > g.axis.length + L_) return;
-    const Feature& fw = *w.f;
-    const Feature& fg = *g.f;
+    const FeatureParams& fw = w.f;
+    const FeatureParams& fg = g.f;
     if (!SameModule(fw.module, fg.module)) {
       const double a_worm = (fw.pitch_diameter + fw.module * fg.teeth) / 2;
       const double a_wheel = (fw.pitch_diameter + fg.module * fg.teeth) / 2;
@@ -658,7 +685,7 @@ class Recognizer {
   }
 
   void GearRack(const WorldFeature& g, const WorldFeature& r) {
-    if (g.f->internal) return;
+    if (g.f.internal) return;
     const double to_axis = AngleBetweenLines(g.axis.direction, r.axis.direction);
     const double to_normal = AngleBetweenLines(g.axis.direction, r.normal_W);
     const LineLineClosest c =
@@ -667,24 +694,24 @@ class Recognizer {
     const Eigen::Vector3d p_gear = g.axis.origin + c.s * g.axis.direction;
     const Eigen::Vector3d p_rack = r.axis.origin + c.t * r.axis.direction;
     if ((p_gear - p_rack).dot(r.normal_W) <= 0) return;  // the pinion is on the other side
-    if (!SameModule(g.f->module, r.f->module)) {
-      if (std::abs(c.distance - g.f->module * g.f->teeth / 2) < g.f->module ||
-          std::abs(c.distance - r.f->module * g.f->teeth / 2) < r.f->module) {
+    if (!SameModule(g.f.module, r.f.module)) {
+      if (std::abs(c.distance - g.f.module * g.f.teeth / 2) < g.f.module ||
+          std::abs(c.distance - r.f.module * g.f.teeth / 2) < r.f.module) {
         Near(
             "rack_module_mismatch", g, r,
-            "modules differ: " + Mm(g.f->module) + " and " + Mm(r.f->module) + " (required equal)");
+            "modules differ: " + Mm(g.f.module) + " and " + Mm(r.f.module) + " (required equal)");
       }
       return;
     }
-    const double a = g.f->module * g.f->teeth / 2;
+    const double a = g.f.module * g.f.teeth / 2;
     const double error = std::abs(c.distance - a);
     const bool square = to_axis >= kPi / 2 - A_ && to_normal >= kPi / 2 - A_;
     if (square && error <= L_) {
       AddPair(PairType::kRackPinion, g, r);
-    } else if (square && error < g.f->module) {
+    } else if (square && error < g.f.module) {
       Near("rack_pitch_line_distance", g, r,
            "pitch line at " + Mm(c.distance) + " from the pinion's axis, required " + Mm(a) +
-               " = " + FormatNumber(g.f->module) + " x " + std::to_string(g.f->teeth) +
+               " = " + FormatNumber(g.f.module) + " x " + std::to_string(g.f.teeth) +
                " / 2 (off by " + Mm(c.distance - a) + ", tolerance " + Mm(L_) + ")");
     }
   }
@@ -693,13 +720,13 @@ class Recognizer {
 
   void BallSocket(const WorldFeature& b, const WorldFeature& s) {
     const double offset = (b.axis.origin - s.axis.origin).norm();
-    const double difference = std::abs(b.f->diameter - s.f->diameter);
+    const double difference = std::abs(b.f.diameter - s.f.diameter);
     if (offset <= L_ && difference <= L_) {
       AddPair(PairType::kSpherical, b, s);
-    } else if (offset < std::min(b.f->diameter, s.f->diameter) / 2) {
+    } else if (offset < std::min(b.f.diameter, s.f.diameter) / 2) {
       Near("ball_socket_mismatch", b, s,
-           "centres " + Mm(offset) + " apart and diameters " + Mm(b.f->diameter) + " and " +
-               Mm(s.f->diameter) + " (required same centre and diameter within " + Mm(L_) + ")");
+           "centres " + Mm(offset) + " apart and diameters " + Mm(b.f.diameter) + " and " +
+               Mm(s.f.diameter) + " (required same centre and diameter within " + Mm(L_) + ")");
     }
   }
 
@@ -709,10 +736,10 @@ class Recognizer {
     if (n1.dot(n2) >= 0 || AngleBetweenLines(n1, n2) > A_) return;
     const Eigen::Vector3d d = y.axis.origin - x.axis.origin;
     if (std::abs(d.dot(n1)) > L_) return;
-    auto extent = [](const Feature& f) { return std::hypot(f.width, f.height) / 2; };
-    if (x.f->width > 0 && x.f->height > 0 && y.f->width > 0 && y.f->height > 0) {
+    auto extent = [](const FeatureParams& f) { return std::hypot(f.width, f.height) / 2; };
+    if (x.f.width > 0 && x.f.height > 0 && y.f.width > 0 && y.f.height > 0) {
       const double in_plane = (d - d.dot(n1) * n1).norm();
-      if (in_plane >= extent(*x.f) + extent(*y.f) - L_) return;
+      if (in_plane >= extent(x.f) + extent(y.f) - L_) return;
     }
     const bool swap = NameLess(y, x);
     AddPair(PairType::kPlanar, swap ? y : x, swap ? x : y);
@@ -739,7 +766,7 @@ class Recognizer {
       const WorldFeature* a = &At(o.features[0]);
       const WorldFeature* b = &At(o.features[1]);
       // The convex feature, the worm or the pinion first, as for recognised pairs.
-      const auto kind_a = a->f->kind, kind_b = b->f->kind;
+      const auto kind_a = a->f.kind, kind_b = b->f.kind;
       if ((IsConcave(kind_a) && IsConvex(kind_b)) || kind_b == FeatureKind::kWorm ||
           kind_a == FeatureKind::kRack) {
         std::swap(a, b);
@@ -796,7 +823,7 @@ class Recognizer {
       if (along < -L_ || along > s->axis.length + L_) continue;
       const Eigen::Vector3d foot = s->axis.origin + along * s->axis.direction;
       if ((foot - tip).dot(thread->axis.direction) <= 0) continue;  // pointing away
-      if (std::abs((foot - tip).norm() - s->f->diameter / 2) > L_) continue;
+      if (std::abs((foot - tip).norm() - s->f.diameter / 2) > L_) continue;
       Pair fixed;
       fixed.type = PairType::kFixed;
       fixed.a = s->ref;
