@@ -17,10 +17,15 @@ std::optional<std::size_t> Part::FindFeature(const std::string& feature_id) cons
 }
 
 Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
+  // FeatureRef holds 32-bit indices.
+  if (spec_.parts.size() > UINT32_MAX) throw std::length_error("assembly: too many parts");
   std::unordered_map<const TriangleMesh*, Aabb> boxes;  // per distinct mesh
   for (std::size_t i = 0; i < spec_.parts.size(); ++i) {
     const Part& part = spec_.parts[i];
     ground_.push_back(part.ground);
+    if (part.features.size() > UINT32_MAX) {
+      throw std::length_error("part '" + part.id + "' has too many features");
+    }
     for (std::size_t f = 0; f < part.features.size(); ++f) {
       features_of_kind_[part.features[f].kind].push_back({i, f});
       feature_kind_.push_back(part.features[f].kind);

@@ -124,6 +124,7 @@ class Assembly {
  public:
   /// Takes the description. Throws std::invalid_argument for duplicate part or feature ids,
   /// a part without a mesh, or an index that refers to no part or feature.
+  /// Throws std::length_error beyond 2^32 - 1 parts, or features in a part (FeatureRef).
   explicit Assembly(AssemblySpec spec);
 
   /// The description it holds (to derive a changed assembly from).

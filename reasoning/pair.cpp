@@ -5,7 +5,7 @@
 namespace mechanist {
 
 // See the field order in pair.h.
-static_assert(sizeof(Pair) <= 112, "Pair has grown: the analysis reads every pair several times");
+static_assert(sizeof(Pair) <= 88, "Pair has grown: the analysis reads every pair several times");
 
 namespace {
 

@@ -31,8 +31,8 @@ std::string_view ToString(PairFastening fastening);
 /// is the convex (inserted) feature, the worm, or the pinion; for gear pairs the one listed
 /// first in the file.
 struct Pair {
-  // Ordered by alignment (112 bytes, not 128): an assembly of 100,000 parts has about as
-  // many pairs, and the analysis reads them several times.
+  // Ordered by alignment (88 bytes, with 32-bit feature references): an assembly of 100,000
+  // parts has about as many pairs, and the analysis reads them several times.
   PairType type = PairType::kFixed;
   PairSource source = PairSource::kRecognised;
   PairFastening fastening = PairFastening::kNone;
