@@ -17,6 +17,9 @@ constexpr double kTwoPi = 6.283185307179586;
 // Carriers are looked for among a body's joints only up to this many: a frame that holds
 // thousands of shafts is found through the shafts' own joints instead.
 constexpr std::size_t kCarrierScanLimit = 64;
+// Passes over the pairs (in name order, which scatters their features over the axes) fetch
+// the axes of the pair this many ahead while they work on the current one.
+constexpr std::size_t kAxesAhead = 12;
 
 bool IsLowerPair(PairType t) {
   switch (t) {
@@ -99,9 +102,20 @@ ExactReal KinematicModel::Dot(const Eigen::Vector3d& a, const Eigen::Vector3d& b
   return ExactReal::Approximate(d);
 }
 
+void KinematicModel::PrefetchAxes(const Pair& p) const {
+  for (FeatureRef f : {p.a, p.b}) {
+    const char* axis = reinterpret_cast<const char*>(&axes_[assembly_.FeatureIndex(f)]);
+    __builtin_prefetch(axis);
+    __builtin_prefetch(axis + sizeof(AxisSegment) - 1);
+  }
+}
+
 void KinematicModel::BuildJoints(const std::vector<Pair>& pairs) {
   std::vector<Joint> candidates;
   for (std::size_t i = 0; i < pairs.size(); ++i) {
+    if (i + kAxesAhead < pairs.size() && IsLowerPair(pairs[i + kAxesAhead].type)) {
+      PrefetchAxes(pairs[i + kAxesAhead]);
+    }
     const Pair& p = pairs[i];
     if (!IsLowerPair(p.type)) continue;
     Joint j;
@@ -461,7 +475,14 @@ void KinematicModel::BuildRows(const std::vector<Pair>& pairs) {
   for (const Joint& j : joints_) {
     if (j.pair && !j.in_tree) off_tree[*j.pair] = &j;
   }
+  auto coupling = [](const Pair& p) {
+    return ((p.type == PairType::kGear || p.type == PairType::kWormGear) && p.ratio) ||
+           (p.type == PairType::kRackPinion && p.travel_per_revolution);
+  };
   for (std::size_t i = 0; i < pairs.size(); ++i) {
+    if (i + kAxesAhead < pairs.size() && coupling(pairs[i + kAxesAhead])) {
+      PrefetchAxes(pairs[i + kAxesAhead]);
+    }
     const Pair& p = pairs[i];
     if (off_tree[i]) {
       for (auto& row : JointConstraints(*off_tree[i], off_tree[i]->body_a, off_tree[i]->body_b)) {
@@ -469,9 +490,8 @@ void KinematicModel::BuildRows(const std::vector<Pair>& pairs) {
       }
       continue;
     }
-    const bool gear = p.type == PairType::kGear || p.type == PairType::kWormGear;
+    if (!coupling(p)) continue;
     const bool rack = p.type == PairType::kRackPinion;
-    if ((!gear || !p.ratio) && (!rack || !p.travel_per_revolution)) continue;
     const std::size_t A = body_of_part_[p.a.part];
     const std::size_t B = body_of_part_[p.b.part];
     if (A == B) continue;
