@@ -241,9 +241,9 @@ int main(int argc, char** argv) {
   for (const Layout layout : {Layout{"rows", kCellsPerRow, 100.0}, Layout{"chain", 0, 100.0},
                               Layout{"grid", -1, 40.0}, Layout{"planetary", -2, 0.0}}) {
     std::printf("layout %s\n%9s %8s %9s %8s %7s %6s %9s | %8s %7s %8s %7s | %8s %7s %8s %7s\n",
-                layout.name, "parts", "pairs", "subassem.", "recog_ms", "graph", "dof",
-                "redundant", "warm_ms", "growth", "warm_min", "growth", "cold_ms", "growth",
-                "cold_min", "growth");
+                layout.name, "parts", "pairs", "subassem.", "recog_ms", "graph", "dof", "redundant",
+                "warm_ms", "growth", "warm_min", "growth", "cold_ms", "growth", "cold_min",
+                "growth");
     struct Size {
       Size(int n, Assembly a) : parts(n), assembly(std::move(a)) {}
       int parts;

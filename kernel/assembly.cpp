@@ -37,7 +37,8 @@ Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
     if (!part.mesh) throw std::invalid_argument("part '" + part.id + "' has no mesh");
     file_poses_.push_back(part.X_WP);
     part_id_.push_back(AppendName({part.id}));
-    for (const Feature& f : part.features) feature_name_.push_back(AppendName({part.id, "/", f.id}));
+    for (const Feature& f : part.features)
+      feature_name_.push_back(AppendName({part.id, "/", f.id}));
     const auto [box, added] = boxes.try_emplace(part.mesh.get());
     if (added) box->second = part.mesh->Bounds();
     mesh_box_.push_back(box->second);

@@ -221,9 +221,9 @@ class Assembly {
   struct NameSpan {
     std::uint32_t offset = 0, size = 0;
   };
-  std::string names_;                     ///< every part id and "part_id/feature_id", in order
-  std::vector<NameSpan> part_id_;         ///< per part: its id in names_
-  std::vector<NameSpan> feature_name_;    ///< per feature: its "part_id/feature_id" in names_
+  std::string names_;                   ///< every part id and "part_id/feature_id", in order
+  std::vector<NameSpan> part_id_;       ///< per part: its id in names_
+  std::vector<NameSpan> feature_name_;  ///< per feature: its "part_id/feature_id" in names_
 };
 
 }  // namespace mechanist

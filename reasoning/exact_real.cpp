@@ -83,16 +83,18 @@ ExactReal ExactReal::operator-() const {
 
 ExactReal ExactReal::operator+(const ExactReal& o) const {
   if (!is_exact() || !o.is_exact()) return Approximate(value() + o.value());
-  return Result(Exactly(*exact(), *o.exact(), [](const Rational& a, const Rational& b) { return a + b; }),
-                value() + o.value());
+  return Result(
+      Exactly(*exact(), *o.exact(), [](const Rational& a, const Rational& b) { return a + b; }),
+      value() + o.value());
 }
 
 ExactReal ExactReal::operator*(const ExactReal& o) const {
   // An exact zero annihilates even an approximate factor: a structural zero stays exact.
   if (is_exact_zero() || o.is_exact_zero()) return ExactReal();
   if (!is_exact() || !o.is_exact()) return Approximate(value() * o.value());
-  return Result(Exactly(*exact(), *o.exact(), [](const Rational& a, const Rational& b) { return a * b; }),
-                value() * o.value());
+  return Result(
+      Exactly(*exact(), *o.exact(), [](const Rational& a, const Rational& b) { return a * b; }),
+      value() * o.value());
 }
 
 ExactReal ExactReal::operator/(const ExactReal& o) const {
@@ -101,8 +103,9 @@ ExactReal ExactReal::operator/(const ExactReal& o) const {
   }
   if (is_exact_zero()) return ExactReal();
   if (!is_exact() || !o.is_exact()) return Approximate(value() / o.value());
-  return Result(Exactly(*exact(), *o.exact(), [](const Rational& a, const Rational& b) { return a / b; }),
-                value() / o.value());
+  return Result(
+      Exactly(*exact(), *o.exact(), [](const Rational& a, const Rational& b) { return a / b; }),
+      value() / o.value());
 }
 
 }  // namespace mechanist

@@ -30,14 +30,14 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
   };
   auto too_short = [&](FeatureRef thread, FeatureRef nut, double shortfall,
                        const std::string& how) {
-    out.push_back({Severity::kWarning,
-                   "bolt_too_short",
-                   "thread " + assembly.FeatureName(thread) + " " + how + " tapped hole " +
-                       assembly.FeatureName(nut) + " (" + Mm(assembly.feature(nut).length) +
-                       " long): it is " + Mm(shortfall) +
-                       " too short for the parts it passes and its nut",
-                   {std::string(assembly.PartId(thread.part)), std::string(assembly.PartId(nut.part))},
-                   {assembly.FeatureName(thread), assembly.FeatureName(nut)}});
+    out.push_back(
+        {Severity::kWarning,
+         "bolt_too_short",
+         "thread " + assembly.FeatureName(thread) + " " + how + " tapped hole " +
+             assembly.FeatureName(nut) + " (" + Mm(assembly.feature(nut).length) +
+             " long): it is " + Mm(shortfall) + " too short for the parts it passes and its nut",
+         {std::string(assembly.PartId(thread.part)), std::string(assembly.PartId(nut.part))},
+         {assembly.FeatureName(thread), assembly.FeatureName(nut)}});
   };
 
   // One read of the pairs (100,000 parts make 15 MB of them): the thread pairs of each tapped

@@ -49,7 +49,6 @@ void Complete(const Eigen::Vector3d& u, Eigen::Vector3d& e1, Eigen::Vector3d& e2
   e2 = u.cross(e1);
 }
 
-
 }  // namespace
 
 KinematicModel::KinematicModel(const Assembly& assembly, const std::vector<Pair>& pairs,
@@ -455,7 +454,7 @@ bool KinematicModel::Carries(std::size_t body, FeatureRef f) const {
 std::optional<std::size_t> KinematicModel::CommonCarrier(FeatureRef f, FeatureRef g) const {
   // On the stack: asked for every coupling.
   std::array<std::size_t, 3 + 2 * kCarrierScanLimit> candidates{ground_, body_of_part_[f.part],
-                                                               body_of_part_[g.part]};
+                                                                body_of_part_[g.part]};
   std::size_t count = 3;
   for (std::size_t own : {body_of_part_[f.part], body_of_part_[g.part]}) {
     const std::span<const std::size_t> js = joints_of_[own];

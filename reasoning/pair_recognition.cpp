@@ -453,12 +453,13 @@ class Recognizer {
 
   void Near(const char* code, const WorldFeature& a, const WorldFeature& b,
             const std::string& message) {
-    diagnostics_.push_back({Severity::kWarning,
-                            code,
-                            std::string(ToString(a.f.kind)) + " " + Name(a) + " and " +
-                                std::string(ToString(b.f.kind)) + " " + Name(b) + ": " + message,
-                            {std::string(assembly_.PartId(a.ref.part)), std::string(assembly_.PartId(b.ref.part))},
-                            {Name(a), Name(b)}});
+    diagnostics_.push_back(
+        {Severity::kWarning,
+         code,
+         std::string(ToString(a.f.kind)) + " " + Name(a) + " and " +
+             std::string(ToString(b.f.kind)) + " " + Name(b) + ": " + message,
+         {std::string(assembly_.PartId(a.ref.part)), std::string(assembly_.PartId(b.ref.part))},
+         {Name(a), Name(b)}});
   }
 
   // ---- axial fits ----
@@ -697,9 +698,8 @@ class Recognizer {
     if (!SameModule(g.f.module, r.f.module)) {
       if (std::abs(c.distance - g.f.module * g.f.teeth / 2) < g.f.module ||
           std::abs(c.distance - r.f.module * g.f.teeth / 2) < r.f.module) {
-        Near(
-            "rack_module_mismatch", g, r,
-            "modules differ: " + Mm(g.f.module) + " and " + Mm(r.f.module) + " (required equal)");
+        Near("rack_module_mismatch", g, r,
+             "modules differ: " + Mm(g.f.module) + " and " + Mm(r.f.module) + " (required equal)");
       }
       return;
     }

@@ -30,8 +30,8 @@ TEST(ExactReal, ExactDecimalsReadBackAsTheirDouble) {
     const std::int64_t mantissa =
         static_cast<std::int64_t>(random() % static_cast<std::uint64_t>(std::pow(10, digits)));
     const int exponent = static_cast<int>(random() % 24) - 18;
-    const double value = (trial % 2 ? -1.0 : 1.0) * std::stod(std::to_string(mantissa) + "e" +
-                                                              std::to_string(exponent));
+    const double value = (trial % 2 ? -1.0 : 1.0) *
+                         std::stod(std::to_string(mantissa) + "e" + std::to_string(exponent));
     const ExactReal r = ExactReal::FromDecimal(value);
     EXPECT_EQ(r.value(), value) << mantissa << "e" << exponent;
     if (r.is_exact()) {
@@ -43,8 +43,8 @@ TEST(ExactReal, ExactDecimalsReadBackAsTheirDouble) {
 }
 
 TEST(ExactReal, ApproximateValuesKeepEveryBit) {
-  for (const double v : {0.1, -0.0, 3.141592653589793, -1e300, 5e-324,
-                         std::numeric_limits<double>::infinity()}) {
+  for (const double v :
+       {0.1, -0.0, 3.141592653589793, -1e300, 5e-324, std::numeric_limits<double>::infinity()}) {
     const ExactReal r = ExactReal::Approximate(v);
     EXPECT_FALSE(r.is_exact());
     EXPECT_FALSE(r.exact().has_value());

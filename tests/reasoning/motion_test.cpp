@@ -347,7 +347,8 @@ TEST(Motion, DifferentialAddsItsInputsByWillis) {
   for (std::size_t p = 0; p < forward.features.key_count(); ++p) {
     for (std::size_t k = 0; k < forward.features[p].size(); ++k) {
       ASSERT_TRUE(forward.features[p][k].rotation.is_exact()) << a.part(p).id;
-      EXPECT_EQ(*backward.features[p][k].rotation.exact(), -*forward.features[p][k].rotation.exact())
+      EXPECT_EQ(*backward.features[p][k].rotation.exact(),
+                -*forward.features[p][k].rotation.exact())
           << a.part(p).id;
     }
   }
