@@ -53,9 +53,8 @@ class ExactReal {
  private:
   bool is_exact_zero() const { return denominator_ != 0 && numerator_ == 0; }
   // 16 bytes, not a double beside an optional Rational (32): linear-system rows, feature rates
-  // and part motions hold many of them. Exact: the reduced p/q with q > 0, whose nearest double
-  // is the value (every exact result was that double before too). Approximate: q = 0 and p
-  // holds the double's bits.
+  // and part motions hold many of them. Exact: the reduced p/q with q > 0, and value() its
+  // nearest double. Approximate: q = 0, and p holds the double's bits.
   std::int64_t numerator_;
   std::int64_t denominator_;
 };

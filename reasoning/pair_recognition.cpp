@@ -260,7 +260,7 @@ class Recognizer {
         boxes[i].lo[k] = std::nextafter(static_cast<float>(b.min[k]), -HUGE_VALF);
         boxes[i].hi[k] = std::nextafter(static_cast<float>(b.max[k]), HUGE_VALF);
       }
-      boxes[i].part = static_cast<std::uint32_t>(features_[i].ref.part);
+      boxes[i].part = features_[i].ref.part;
     }
     std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
     constexpr std::int64_t kMaxCellsPerBox = 512;
