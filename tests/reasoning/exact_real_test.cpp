@@ -71,7 +71,9 @@ TEST(ExactReal, ArithmeticAgreesWithRationalsAndDoubles) {
     EXPECT_EQ(*(x * y).exact(), a * b);
     EXPECT_EQ(*(-x).exact(), -a);
     EXPECT_EQ((x + y).value(), (a + b).ToDouble());
-    if (!b.is_zero()) EXPECT_EQ(*(x / y).exact(), a / b);
+    if (!b.is_zero()) {
+      EXPECT_EQ(*(x / y).exact(), a / b);
+    }
     const double d = static_cast<double>(small()) / 7.0;
     const ExactReal z = ExactReal::Approximate(d);
     EXPECT_FALSE((x + z).is_exact());
