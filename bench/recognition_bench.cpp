@@ -7,7 +7,7 @@
 // redundant meshes), and a planetary array (stages of ring, sun, three planets on a carrier
 // whose output drives the next sun). Prints times per size and the growth factor of the full
 // analysis, warm (after an analysis of the same assembly) and cold (after the caches are
-// flushed): medians of 11 rounds, each round running every size in turn.
+// flushed): medians and minima of 11 rounds, each round running every size in turn.
 //
 // Usage: recognition_bench [--default-heap] [max_parts]   (default 100000)
 //        recognition_bench --grid-once N    one analysis of the grid layout of N parts, untimed
