@@ -72,7 +72,12 @@ mechanist::Assembly Load(const std::string& file, std::ostream& out) {
                          (rotate ? assembly.units().rad_per_angle : assembly.units().mm_per_length);
     out << "adjusted: " << a.id << " = "
         << mechanist::FormatNumber(std::round(value * 1e6) / 1e6 + 0.0, 9) << " "
-        << (rotate ? assembly.units().angle : assembly.units().length) << "\n";
+        << (rotate ? assembly.units().angle : assembly.units().length);
+    const auto& loosened = summary.adjustments[k].loosened;
+    for (std::size_t f = 0; f < loosened.size(); ++f) {
+      out << (f ? ", " : ", locked; tightened: ") << assembly.FeatureName(loosened[f]);
+    }
+    out << "\n";
   }
   if (!summary.all_met) out << "adjusted: some goals are not met (mechanist adjust tells)\n";
   return adjusted;

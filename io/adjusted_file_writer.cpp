@@ -26,6 +26,26 @@ std::string Rebase(const std::string& path, const std::filesystem::path& from,
       .generic_string();
 }
 
+// Writes `fastening: tight` for feature `id` into the part's entry: in the library
+// parameters when the library part defines the feature (a bolt's or setscrew's thread), else
+// in the feature's own entry, added (as for an imported part) when there is none.
+void Tighten(Json* entry, const std::string& id) {
+  const Json* library = entry->contains("library") ? &(*entry)["library"] : nullptr;
+  if (library && library->is_object() && id == "thread" &&
+      (library->value("kind", "") == "hex_bolt" || library->value("kind", "") == "setscrew")) {
+    (*entry)["library"]["fastening"] = "tight";
+    return;
+  }
+  if (!entry->contains("features")) (*entry)["features"] = Json::array();
+  for (Json& f : (*entry)["features"]) {
+    if (f.contains("id") && f["id"] == id) {
+      f["fastening"] = "tight";
+      return;
+    }
+  }
+  (*entry)["features"].push_back(Json{{"id", id}, {"fastening", "tight"}});
+}
+
 }  // namespace
 
 std::string AdjustedAssemblyText(const Assembly& original, const Assembly& adjusted,
@@ -51,6 +71,15 @@ std::string AdjustedAssemblyText(const Assembly& original, const Assembly& adjus
     }
     if (entry && entry->contains("mesh") && (*entry)["mesh"].is_string()) {
       (*entry)["mesh"] = Rebase((*entry)["mesh"].get<std::string>(), from, to);
+    }
+    for (std::size_t f = 0; f < part.features.size(); ++f) {
+      if (part.features[f].fastening != original.part(p).features[f].fastening) {
+        if (!entry) {
+          root["parts"].push_back(Json{{"id", part.id}});
+          entry = &root["parts"].back();
+        }
+        Tighten(entry, part.features[f].id);
+      }
     }
     if (part.X_WP.IsNearlyEqualTo(original.part(p).X_WP, 0.0, 0.0)) continue;
     if (!entry) {  // an imported part: an entry with its id overrides it

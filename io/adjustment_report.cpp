@@ -73,16 +73,20 @@ void WriteAdjustmentSummary(const Assembly& assembly, const AdjustmentSummary& s
     out << "  " << a.id << ": " << (rotate ? "rotate " : "translate ") << assembly.part(a.moves).id
         << (rotate ? " about " : " along ") << assembly.FeatureName(a.axis);
     if (!o.used) {
-      out << ": no goal depends on it, left at 0\n";
-      continue;
+      out << ": no goal depends on it, left at 0";
+    } else {
+      out << " by " << Fixed(InFileUnits(assembly, a, o.value)) << " " << UnitOf(assembly, a)
+          << " (range " << FormatNumber(InFileUnits(assembly, a, a.lower)) << " .. "
+          << FormatNumber(InFileUnits(assembly, a, a.upper)) << ")";
+      if (o.active != AdjustmentOutcome::Bound::kNone)
+        out << ", at its " << BoundName(o.active) << " bound";
+      out << "; carries";
+      for (const std::size_t p : o.carried) out << " " << assembly.part(p).id;
     }
-    out << " by " << Fixed(InFileUnits(assembly, a, o.value)) << " " << UnitOf(assembly, a)
-        << " (range " << FormatNumber(InFileUnits(assembly, a, a.lower)) << " .. "
-        << FormatNumber(InFileUnits(assembly, a, a.upper)) << ")";
-    if (o.active != AdjustmentOutcome::Bound::kNone)
-      out << ", at its " << BoundName(o.active) << " bound";
-    out << "; carries";
-    for (const std::size_t p : o.carried) out << " " << assembly.part(p).id;
+    // Locked, the loose fastenings that allowed it are tightened (ApplyAdjustments).
+    for (std::size_t f = 0; f < o.loosened.size(); ++f) {
+      out << (f ? ", " : "; locked, tightens ") << assembly.FeatureName(o.loosened[f]);
+    }
     out << "\n";
   }
   for (std::size_t g = 0; g < assembly.goals().size(); ++g) {
@@ -119,8 +123,9 @@ std::string AdjustmentJson(const Assembly& assembly, const AdjustmentSummary& su
   for (std::size_t k = 0; k < assembly.adjustments().size(); ++k) {
     const Adjustment& a = assembly.adjustments()[k];
     const AdjustmentOutcome& o = summary.adjustments[k];
-    Json carried = Json::array();
+    Json carried = Json::array(), tightened = Json::array();
     for (const std::size_t p : o.carried) carried.push_back(assembly.part(p).id);
+    for (const FeatureRef f : o.loosened) tightened.push_back(assembly.FeatureName(f));
     report["adjustments"].push_back(Json{
         {"id", a.id},
         {"moves", assembly.part(a.moves).id},
@@ -131,7 +136,8 @@ std::string AdjustmentJson(const Assembly& assembly, const AdjustmentSummary& su
         {"used", o.used},
         {"active_bound",
          o.active == AdjustmentOutcome::Bound::kNone ? Json(nullptr) : Json(BoundName(o.active))},
-        {"carried", carried}});
+        {"carried", carried},
+        {"tightened", tightened}});
   }
   report["goals"] = Json::array();
   for (std::size_t g = 0; g < assembly.goals().size(); ++g) {

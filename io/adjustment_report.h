@@ -17,7 +17,8 @@ void WriteAdjustmentSummary(const Assembly& assembly, const AdjustmentSummary& s
 
 /// The adjustment JSON report: {"assembly", "all_met", "solver": {"status", "message",
 /// "iterations", "initial_cost", "final_cost"}, "adjustments": [{"id", "moves", "kind",
-/// "axis", "value", "unit", "used", "active_bound" (null, "lower", "upper"), "carried"}],
+/// "axis", "value", "unit", "used", "active_bound" (null, "lower", "upper"), "carried",
+/// "tightened" (the loose threads locking it tightens)}],
 /// "goals": [{"kind", "features", "met", "before", "after"}]}, errors as {"distance" (mm),
 /// "angle" (degrees), "axial" (mm), "engaged", "met"}; values in the file's units
 /// (rotations in its angle unit), 9 significant digits.

@@ -47,7 +47,8 @@ std::string DrivenTitle(const Assembly& assembly, const DrivenMotion& m) {
   if (!m.driver) return "all drivers at their rates";
   const Driver& d = assembly.drivers()[*m.driver];
   return "driver " + d.id + " (" + assembly.FeatureName(d.feature) + " " +
-         (d.motion == Driver::Motion::kRotation ? "rotation" : "translation") + ", per unit rate)";
+         (d.motion == Driver::Motion::kRotation ? "rotation" : "translation") + ", per unit rate" +
+         (d.rate == 0.0 ? "; held (rate 0): what it drives when released)" : ")");
 }
 
 std::string Describe(const Assembly& assembly, const PartMotion& m) {
@@ -211,10 +212,12 @@ std::string AnalysisJson(const Assembly& assembly, const Analysis& analysis) {
       }
       parts.push_back(std::move(j));
     }
-    motion.push_back({{"driver", m.driver ? Json(assembly.drivers()[*m.driver].id) : Json(nullptr)},
-                      {"possible", m.possible},
-                      {"reason", m.reason},
-                      {"parts", parts}});
+    Json entry = {{"driver", m.driver ? Json(assembly.drivers()[*m.driver].id) : Json(nullptr)},
+                  {"possible", m.possible},
+                  {"reason", m.reason},
+                  {"parts", parts}};
+    if (m.driver && assembly.drivers()[*m.driver].rate == 0.0) entry["held"] = true;
+    motion.push_back(std::move(entry));
   }
   report["motion"] = std::move(motion);
   Json diagnostics = Json::array();

@@ -349,7 +349,6 @@ class Reader {
       const Json* mesh = Find(v, "mesh");
       const Json* library = Find(v, "library");
       if (mesh && library) Fail(p, "expected either \"mesh\" or \"library\", found both");
-      if (!mesh && !library) Fail(p, "expected \"mesh\" or \"library\", found neither");
       std::vector<Feature> step_features;
       if (mesh) {
         part.mesh_source = String(*mesh, p + "/mesh");
@@ -361,7 +360,7 @@ class Reader {
         } else {
           part.mesh = LoadMesh(part.mesh_source, p + "/mesh");
         }
-      } else {
+      } else if (library) {
         LibraryPart generated = MakeLibrary(*library, p + "/library");
         part.mesh_source = "library:" + String(library->at("kind"), p + "/library/kind");
         part.mesh = std::make_shared<const TriangleMesh>(std::move(generated.mesh));
@@ -393,11 +392,13 @@ class Reader {
   void ReadImport(const Json& v, const std::string& p) {
     const std::string relative = String(v, p);
     std::vector<StepSolid> solids;
+    std::vector<StepMessage> messages;
     try {
-      solids = mechanist::ReadStep((dir_ / relative).lexically_normal());
+      solids = mechanist::ReadStep((dir_ / relative).lexically_normal(), &messages);
     } catch (const std::exception& e) {
       Fail(p, "cannot import \"" + relative + "\": " + e.what());
     }
+    AddStepMessages(relative, messages);
     for (StepSolid& s : solids) {
       Part part;
       part.id = s.path;
@@ -465,6 +466,29 @@ class Reader {
     ReadPlacements(added);
   }
 
+  // Open CASCADE's messages on reading `relative` as findings `step_reader` (an error as a
+  // warning, since the file was still read; a warning as info), repeats counted once.
+  void AddStepMessages(const std::string& relative, const std::vector<StepMessage>& messages) {
+    std::vector<std::pair<const StepMessage*, std::size_t>> unique;  // first of a text, count
+    for (const StepMessage& m : messages) {
+      auto same = std::find_if(unique.begin(), unique.end(),
+                               [&](const auto& u) { return u.first->text == m.text; });
+      if (same == unique.end()) {
+        unique.emplace_back(&m, 1);
+      } else {
+        ++same->second;
+      }
+    }
+    for (const auto& [m, count] : unique) {
+      spec_.findings.push_back({m->error ? Severity::kWarning : Severity::kInfo,
+                                "step_reader",
+                                relative + ": Open CASCADE's STEP reader: " + m->text +
+                                    (count > 1 ? " (" + std::to_string(count) + " times)" : ""),
+                                {},
+                                {}});
+    }
+  }
+
   // A STEP file as one rigid part: its solids' meshes and features at their placements (ids
   // prefixed "solidN_" when it holds several solids).
   std::shared_ptr<const TriangleMesh> LoadStepPart(const std::string& relative,
@@ -472,11 +496,13 @@ class Reader {
                                                    std::vector<Feature>* features,
                                                    std::vector<std::string>* notes) {
     std::vector<StepSolid> solids;
+    std::vector<StepMessage> messages;
     try {
-      solids = mechanist::ReadStep((dir_ / relative).lexically_normal());
+      solids = mechanist::ReadStep((dir_ / relative).lexically_normal(), &messages);
     } catch (const std::exception& e) {
       Fail(pointer, "cannot use mesh \"" + relative + "\": " + e.what());
     }
+    AddStepMessages(relative, messages);
     auto mesh = std::make_shared<TriangleMesh>();
     for (std::size_t k = 0; k < solids.size(); ++k) {
       TriangleMesh placed = *solids[k].mesh;
@@ -1016,8 +1042,7 @@ class Reader {
     const bool translation = d.motion == Driver::Motion::kTranslation;
     const double scale = translation ? spec_.units.mm_per_length : 1.0;
     if (const Json* r = Find(v, "rate")) {
-      d.rate = Number(*r, p + "/rate") * scale;
-      if (d.rate == 0) Fail(p + "/rate", "expected a non-zero rate, found 0");
+      d.rate = Number(*r, p + "/rate") * scale;  // 0 holds the driver's freedom still
     } else {
       d.rate = scale;
     }

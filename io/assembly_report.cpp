@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "kernel/assembly_check.h"
 #include "kernel/number_format.h"
 
 namespace mechanist {
@@ -34,6 +35,10 @@ Json ContactJson(const Assembly& assembly, const Analysis& analysis, const PartC
   j["verdict"] = std::string(ToString(c.verdict));
   j["depth"] = std::isfinite(c.measure.depth) ? Json(Num(c.measure.depth)) : Json(nullptr);
   j["depth_bound"] = Num(c.measure.depth_bound);
+  Json open = Json::array();  // the parts whose open sheets left the depth unknown
+  if (c.measure.open[0]) open.push_back(assembly.part(c.part_a).id);
+  if (c.measure.open[1]) open.push_back(assembly.part(c.part_b).id);
+  j["open_sheets"] = open;
   j["location"] = Point(c.measure.p_W);
   j["contained"] = c.measure.contained == 0
                        ? Json(nullptr)
@@ -42,11 +47,27 @@ Json ContactJson(const Assembly& assembly, const Analysis& analysis, const PartC
   return j;
 }
 
+// "the mesh of P is an open sheet: it has no inside" for the parts whose meshes made the
+// depth unknown.
+std::string OpenSheets(const Assembly& assembly, const PartContact& c) {
+  std::string ids;
+  for (int k = 0; k < 2; ++k) {
+    if (c.measure.open[k])
+      ids += (ids.empty() ? "" : " and ") + assembly.part(k ? c.part_b : c.part_a).id;
+  }
+  const bool both = c.measure.open[0] && c.measure.open[1];
+  return "the mesh" + std::string(both ? "es of " : " of ") + ids + (both ? " are" : " is") +
+         " an open sheet with no inside";
+}
+
 std::string ContactText(const Assembly& assembly, const Analysis& analysis, const PartContact& c) {
   std::string s = assembly.part(c.part_a).id + " and " + assembly.part(c.part_b).id + ": " +
                   std::string(ToString(c.verdict));
-  s += std::isfinite(c.measure.depth) ? ", depth " + FormatNumber(c.measure.depth) + " mm"
-                                      : ", depth unknown (a mesh is not closed)";
+  if (std::isfinite(c.measure.depth)) {
+    s += ", depth " + FormatNumber(c.measure.depth) + " mm";
+  } else {
+    s += ", depth unknown (" + OpenSheets(assembly, c) + ")";
+  }
   s += " at " + Text(c.measure.p_W);
   if (c.measure.contained != 0) {
     s += ", " + assembly.part(c.measure.contained == 1 ? c.part_a : c.part_b).id +
@@ -115,6 +136,26 @@ Json ClashJson(const Assembly& assembly, const OperationClash& c) {
 
 }  // namespace
 
+void WriteSkippedParts(const Assembly& assembly, std::ostream& out) {
+  const std::vector<std::size_t> skipped = PartsWithoutGeometry(assembly);
+  if (skipped.empty()) return;
+  out << "  skipped, no geometry (features only):";
+  for (std::size_t k = 0; k < skipped.size(); ++k) {
+    out << (k ? ", " : " ") << assembly.PartId(skipped[k]);
+  }
+  out << "\n";
+}
+
+namespace {
+
+Json SkippedJson(const Assembly& assembly) {
+  Json ids = Json::array();
+  for (const std::size_t p : PartsWithoutGeometry(assembly)) ids.push_back(assembly.PartId(p));
+  return ids;
+}
+
+}  // namespace
+
 void WriteOperationSummary(const Assembly& assembly, const OperationCheck& check,
                            std::ostream& out) {
   out << "sweep over " << FormatNumber(check.amount) << " " << DriverUnit(assembly, check) << ": ";
@@ -124,6 +165,7 @@ void WriteOperationSummary(const Assembly& assembly, const OperationCheck& check
   }
   out << check.clashes.size() << " clashes, " << check.undecided.size() << " undecided ("
       << check.pairs_swept << " pairs of parts swept)\n";
+  WriteSkippedParts(assembly, out);
   for (const OperationClash& c : check.clashes) {
     out << "  clash: " << assembly.part(c.part_a).id << " and " << assembly.part(c.part_b).id
         << " meet at " << FormatNumber(c.at) << ", at " << Text(c.p_W) << "\n";
@@ -168,6 +210,7 @@ void WriteOperationSummary(const Assembly& assembly, const OperationCheck& check
 std::string OperationJson(const Assembly& assembly, const OperationCheck& check) {
   Json report;
   report["assembly"] = assembly.name();
+  report["skipped"] = SkippedJson(assembly);
   report["driver"] = check.driver ? Json(assembly.drivers()[*check.driver].id) : Json(nullptr);
   report["amount"] = Num(check.amount);
   report["possible"] = check.possible;
@@ -204,6 +247,7 @@ void WriteInterferenceSummary(const Assembly& assembly, const Analysis& analysis
   }
   out << "interference: " << clashes << " clashes, " << fits << " designed fits, " << touching
       << " touching contacts (tolerance " << FormatNumber(assembly.tolerance().length) << " mm)\n";
+  WriteSkippedParts(assembly, out);
   for (const ContactVerdict v : {ContactVerdict::kClash, ContactVerdict::kDesignedFit}) {
     for (const PartContact& c : contacts) {
       if (c.verdict == v) out << "  " << ContactText(assembly, analysis, c) << "\n";
@@ -215,6 +259,7 @@ std::string InterferenceJson(const Assembly& assembly, const Analysis& analysis,
                              const std::vector<PartContact>& contacts) {
   Json report;
   report["assembly"] = assembly.name();
+  report["skipped"] = SkippedJson(assembly);
   std::size_t clashes = 0;
   Json list = Json::array();
   for (const PartContact& c : contacts) {
@@ -230,6 +275,7 @@ void WriteAssemblySummary(const Assembly& assembly, const Analysis& analysis,
                           const AssemblyPlan& plan, std::ostream& out) {
   out << "assemblable: " << (plan.assemblable ? "yes" : "no") << " ("
       << (plan.from_steps ? "the file's steps" : "sequence found by disassembly") << ")\n";
+  WriteSkippedParts(assembly, out);
   out << "in place first:";
   for (const std::size_t p : plan.base) out << " " << assembly.part(p).id;
   out << "\n";
@@ -248,6 +294,7 @@ std::string AssemblyPlanJson(const Assembly& assembly, const Analysis& analysis,
                              const AssemblyPlan& plan) {
   Json report;
   report["assembly"] = assembly.name();
+  report["skipped"] = SkippedJson(assembly);
   report["assemblable"] = plan.assemblable;
   report["source"] = plan.from_steps ? "steps" : "search";
   Json base = Json::array();

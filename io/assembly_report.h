@@ -12,13 +12,19 @@
 
 namespace mechanist {
 
+/// Writes "  skipped, no geometry (features only): a, b" naming the features-only parts
+/// (PartsWithoutGeometry) that the geometric checks leave out; nothing when there are none.
+/// The JSON reports of interference, assemble, sweep and gaps list them as "skipped".
+void WriteSkippedParts(const Assembly& assembly, std::ostream& out);
+
 /// `mechanist interference` summary: one line per pair of parts that penetrate (clashes, then
 /// designed fits), with depth (mm) and location (world), then a count of touching contacts.
 void WriteInterferenceSummary(const Assembly& assembly, const Analysis& analysis,
                               const std::vector<PartContact>& contacts, std::ostream& out);
 
-/// The interference JSON report: {"assembly", "clashes": n, "contacts": [{"parts", "verdict",
-/// "depth", "depth_bound", "location", "contained", "pair"}]}; numbers to 9 significant digits.
+/// The interference JSON report: {"assembly", "skipped": [part ids], "clashes": n, "contacts":
+/// [{"parts", "verdict", "depth", "depth_bound", "location", "contained", "pair"}]}; numbers to 9
+/// significant digits.
 std::string InterferenceJson(const Assembly& assembly, const Analysis& analysis,
                              const std::vector<PartContact>& contacts);
 
@@ -27,8 +33,8 @@ std::string InterferenceJson(const Assembly& assembly, const Analysis& analysis,
 void WriteAssemblySummary(const Assembly& assembly, const Analysis& analysis,
                           const AssemblyPlan& plan, std::ostream& out);
 
-/// The assembly JSON report: {"assembly", "assemblable", "source": "steps"|"search", "base",
-/// "steps": [{"part", "carried", "feature", "into", "direction", "travel", "clear",
+/// The assembly JSON report: {"assembly", "skipped", "assemblable", "source": "steps"|"search",
+/// "base", "steps": [{"part", "carried", "feature", "into", "direction", "travel", "clear",
 /// "blocked_by": [{"part", "travel", "short_by", "location"}], "pair"}], "unplaced" (same
 /// shape), "clashes": [...]}.
 std::string AssemblyPlanJson(const Assembly& assembly, const Analysis& analysis,
@@ -39,8 +45,9 @@ std::string AssemblyPlanJson(const Assembly& assembly, const Analysis& analysis,
 void WriteOperationSummary(const Assembly& assembly, const OperationCheck& check,
                            std::ostream& out);
 
-/// The sweep JSON report: {"assembly", "driver" (id or null for all), "amount", "possible",
-/// "reason", "pairs_swept", "clashes": [{"parts", "at", "distance", "location"}], "undecided":
+/// The sweep JSON report: {"assembly", "skipped", "driver" (id or null for all), "amount",
+/// "possible", "reason", "pairs_swept", "clashes": [{"parts", "at", "distance", "location"}],
+/// "undecided":
 /// [...]}.
 std::string OperationJson(const Assembly& assembly, const OperationCheck& check);
 

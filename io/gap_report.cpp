@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
+#include "io/assembly_report.h"
+#include "kernel/assembly_check.h"
 #include "kernel/number_format.h"
 
 namespace mechanist {
@@ -34,6 +36,7 @@ void WriteGapSummary(const Assembly& assembly, const GapSearch& search, std::ost
   out << "gaps: " << search.gaps.size() << " enclosed gap" << (search.gaps.size() == 1 ? "" : "s")
       << " at voxel " << FormatNumber(search.voxel) << " mm (grid " << n[0] << " x " << n[1]
       << " x " << n[2] << ", " << tree.leaf_count() << " octree cells)\n";
+  WriteSkippedParts(assembly, out);
   for (std::size_t g = 0; g < search.gaps.size(); ++g) {
     const Gap& gap = search.gaps[g];
     out << "  gap " << g + 1 << ": " << FormatNumber(gap.volume) << " +/- "
@@ -48,6 +51,9 @@ std::string GapJson(const Assembly& assembly, const GapSearch& search) {
   const OccupancyOctree& tree = *search.octree;
   Json report;
   report["assembly"] = assembly.name();
+  Json skipped = Json::array();
+  for (const std::size_t p : PartsWithoutGeometry(assembly)) skipped.push_back(assembly.PartId(p));
+  report["skipped"] = skipped;
   report["voxel"] = Num(search.voxel);
   report["grid"] = Json::array({tree.extent()[0], tree.extent()[1], tree.extent()[2]});
   report["cells"] = tree.leaf_count();

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "io/display_colors.h"
+#include "io/feature_lines.h"
 
 namespace mechanist {
 namespace {
@@ -27,6 +28,8 @@ constexpr int kFloat = 5126;
 constexpr int kUnsignedInt = 5125;
 constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
+constexpr int kLines = 1;  // primitive modes
+constexpr int kTriangles = 4;
 
 // The binary chunk and the JSON that describes it.
 class GltfBuilder {
@@ -87,13 +90,36 @@ class GltfBuilder {
     for (const TriangleMesh::Face& f : mesh.faces) {
       for (const std::int32_t i : f) indices.push_back(static_cast<std::uint32_t>(i));
     }
+    return AddPrimitive(positions, indices, material, name, kTriangles);
+  }
+
+  // Line segments (mode LINES) along each polyline of `lines`.
+  int AddLines(const std::vector<std::vector<Eigen::Vector3d>>& lines, int material,
+               const std::string& name) {
+    std::vector<float> positions;
+    std::vector<std::uint32_t> indices;
+    for (const std::vector<Eigen::Vector3d>& line : lines) {
+      const auto first = static_cast<std::uint32_t>(positions.size() / 3);
+      for (const Eigen::Vector3d& v : line) {
+        for (int i = 0; i < 3; ++i) positions.push_back(static_cast<float>(v[i]));
+      }
+      for (std::uint32_t k = 1; k < line.size(); ++k) {
+        indices.insert(indices.end(), {first + k - 1, first + k});
+      }
+    }
+    return AddPrimitive(positions, indices, material, name, kLines);
+  }
+
+  // A mesh of one primitive of `mode` over `positions` (x, y, z in turn) and `indices`.
+  int AddPrimitive(const std::vector<float>& positions, const std::vector<std::uint32_t>& indices,
+                   int material, const std::string& name, int mode) {
     const int position = AddFloats(positions, 3, "VEC3", kArrayBuffer, true);
     const int index = AddIndices(indices);
     doc["meshes"].push_back({{"name", name},
                              {"primitives", json::array({{{"attributes", {{"POSITION", position}}},
                                                           {"indices", index},
                                                           {"material", material},
-                                                          {"mode", 4}}})}});
+                                                          {"mode", mode}}})}});
     return static_cast<int>(doc["meshes"].size()) - 1;
   }
 
@@ -168,11 +194,19 @@ std::string GlbAnimation(const Assembly& assembly, const Analysis& analysis,
     const Eigen::Vector3d rgb = clash ? ClashColor() : colors.part[p];
     const auto key = std::make_pair(rgb.x(), std::make_pair(rgb.y(), rgb.z()));
     json node = {{"name", part.id}};
-    if (part.mesh && !part.mesh->faces.empty()) {
+    const auto material_of = [&] {
       auto material = material_of_color.find(key);
       if (material == material_of_color.end()) {
         material = material_of_color.emplace(key, b.AddMaterial(rgb, 1.0)).first;
       }
+      return material;
+    };
+    if (!part.HasGeometry() && !part.features.empty()) {
+      // A features-only part is drawn by its feature lines.
+      node["mesh"] =
+          b.AddLines(FeatureLines(part, true), material_of()->second, part.id + " features");
+    } else if (part.HasGeometry()) {
+      const auto material = material_of();
       auto mesh = mesh_of.find({part.mesh.get(), material->second});
       if (mesh == mesh_of.end()) {
         mesh = mesh_of

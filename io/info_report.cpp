@@ -102,9 +102,13 @@ void WriteInfo(const Assembly& assembly, std::ostream& out) {
     const Part& part = assembly.part(i);
     const Aabb box_W = WorldBox(assembly, state, i);
     out << "  " << part.id << (part.ground ? " [ground]" : "")
-        << (part.placement.empty() ? "" : " [placed by features]") << ": " << part.mesh_source
-        << ", " << part.mesh->faces.size() << " triangles, box " << Vec(box_W.min) << " .. "
-        << Vec(box_W.max) << " mm";
+        << (part.placement.empty() ? "" : " [placed by features]") << ": ";
+    if (part.HasGeometry()) {
+      out << part.mesh_source << ", " << part.mesh->faces.size() << " triangles, box "
+          << Vec(box_W.min) << " .. " << Vec(box_W.max) << " mm";
+    } else {
+      out << "no mesh (features only)";
+    }
     if (!part.group.empty()) out << ", group " << part.group;
     out << "\n";
     for (const Feature& f : part.features)

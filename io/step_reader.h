@@ -34,10 +34,20 @@ struct StepSolid {
   std::vector<std::string> notes;
 };
 
+/// A message of Open CASCADE's reader about the file: of warning gravity or above, or one of
+/// its error reports, e.g. "ERR StepReaderData Entite #2878 Type:PRODUCT_CATEGORY_RELATIONSHIP
+/// Param.n0 3: #999998 Not found".
+struct StepMessage {
+  bool error = false;  ///< an error report or fail gravity; otherwise a warning
+  std::string text;    ///< one line: blank runs and "***" as single spaces
+};
+
 /// Reads a STEP file (AP203/AP214) with its product structure through Open CASCADE's XCAF
 /// reader, triangulates each solid (0.01 mm or 0.1% of its size, whichever is coarser, and
-/// 0.3 rad) and takes features from its analytic faces. Throws std::runtime_error when it
-/// cannot be read or holds no solid.
-std::vector<StepSolid> ReadStep(const std::filesystem::path& file);
+/// 0.3 rad) and takes features from its analytic faces. Open CASCADE's messages go to
+/// `messages` (when given), never to stdout. Throws std::runtime_error when it cannot be read
+/// or holds no solid.
+std::vector<StepSolid> ReadStep(const std::filesystem::path& file,
+                                std::vector<StepMessage>* messages = nullptr);
 
 }  // namespace mechanist

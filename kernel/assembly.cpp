@@ -21,7 +21,7 @@ Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
   if (spec_.parts.size() > UINT32_MAX) throw std::length_error("assembly: too many parts");
   std::unordered_map<const TriangleMesh*, Aabb> boxes;  // per distinct mesh
   for (std::size_t i = 0; i < spec_.parts.size(); ++i) {
-    const Part& part = spec_.parts[i];
+    Part& part = spec_.parts[i];
     ground_.push_back(part.ground);
     if (part.features.size() > UINT32_MAX) {
       throw std::length_error("part '" + part.id + "' has too many features");
@@ -34,7 +34,10 @@ Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
     if (!part_index_.emplace(part.id, i).second) {
       throw std::invalid_argument("duplicate part id '" + part.id + "'");
     }
-    if (!part.mesh) throw std::invalid_argument("part '" + part.id + "' has no mesh");
+    if (!part.mesh) {
+      static const auto kNoMesh = std::make_shared<const TriangleMesh>();
+      part.mesh = kNoMesh;  // a features-only part
+    }
     file_poses_.push_back(part.X_WP);
     part_id_.push_back(AppendName({part.id}));
     for (const Feature& f : part.features)

@@ -122,8 +122,9 @@ struct AssemblySpec {
 /// (poses during motion) lives in AssemblyState.
 class Assembly {
  public:
-  /// Takes the description. Throws std::invalid_argument for duplicate part or feature ids,
-  /// a part without a mesh, or an index that refers to no part or feature.
+  /// Takes the description; a part without a mesh (null) gets an empty one: a features-only
+  /// part (Part::HasGeometry). Throws std::invalid_argument for duplicate part or feature ids,
+  /// or an index that refers to no part or feature.
   /// Throws std::length_error beyond 2^32 - 1 parts, or features in a part (FeatureRef).
   explicit Assembly(AssemblySpec spec);
 

@@ -44,9 +44,11 @@ std::vector<Diagnostic> CheckAssembly(const Assembly& assembly) {
   std::map<const TriangleMesh*, MeshCheck> checked;  // instances share one mesh
   for (std::size_t i = 0; i < assembly.parts().size(); ++i) {
     const Part& part = assembly.part(i);
-    auto it = checked.find(part.mesh.get());
-    if (it == checked.end()) it = checked.emplace(part.mesh.get(), CheckMesh(*part.mesh)).first;
-    AddMeshDiagnostics(part, it->second, out);
+    if (part.HasGeometry()) {  // a features-only part has no mesh to check
+      auto it = checked.find(part.mesh.get());
+      if (it == checked.end()) it = checked.emplace(part.mesh.get(), CheckMesh(*part.mesh)).first;
+      AddMeshDiagnostics(part, it->second, out);
+    }
 
     const Aabb& box = assembly.MeshBox(i);
     const double margin = std::max(1.0, box.size().norm());
@@ -67,6 +69,17 @@ std::vector<Diagnostic> CheckAssembly(const Assembly& assembly) {
     }
   }
   return out;
+}
+
+std::vector<std::size_t> PartsWithoutGeometry(const Assembly& assembly) {
+  std::vector<std::size_t> parts;
+  for (std::size_t i = 0; i < assembly.parts().size(); ++i) {
+    if (!assembly.part(i).HasGeometry()) parts.push_back(i);
+  }
+  std::sort(parts.begin(), parts.end(), [&](std::size_t a, std::size_t b) {
+    return assembly.PartRank(a) < assembly.PartRank(b);
+  });
+  return parts;
 }
 
 }  // namespace mechanist

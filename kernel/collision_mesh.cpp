@@ -9,13 +9,14 @@
 
 #include "kernel/exact_predicates.h"
 #include "kernel/triangle_geometry.h"
+#include "kernel/winding_number.h"
 
 namespace mechanist {
 namespace {
 
 constexpr std::int32_t kLeafSize = 4;
 
-// Directions for the parity test: no two parallel and none along a coordinate axis or a
+// Directions for the ray crossing test: no two parallel and none along a coordinate axis or a
 // diagonal, so that rays rarely graze the edges of CAD meshes (mostly axis-aligned).
 const std::array<Eigen::Vector3d, 6> kRayDirections = {
     Eigen::Vector3d(0.5773502691896258, 0.6180339887498949, 0.5331652197),
@@ -178,6 +179,27 @@ CollisionMesh::CollisionMesh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(s
   if (closed_ && mesh_->SignedVolume() < 0.0) {
     for (Eigen::Vector3d& n : normals_) n = -n;
   }
+  solid_ = closed_ || WindingNumberIsIntegral();
+}
+
+bool CollisionMesh::WindingNumberIsIntegral() const {
+  // Points a little off both sides of up to 32 faces spread over the mesh: beside a solid's
+  // face the winding number is an integer on either side; beside an open sheet, near a half.
+  const auto& F = mesh_->faces;
+  const double offset = 1e-4 * std::max(bounds().size().norm(), 1e-9);
+  const std::size_t step = std::max<std::size_t>(1, F.size() / 32);
+  int near = 0, tested = 0;
+  for (std::size_t f = 0; f < F.size(); f += step) {
+    if (normals_[f].isZero()) continue;
+    const auto [a, b, c] = Triangle(static_cast<std::int32_t>(f));
+    const Eigen::Vector3d centroid = (a + b + c) / 3.0;
+    for (const double side : {-1.0, 1.0}) {
+      const double w = WindingNumber(*mesh_, centroid + side * offset * normals_[f]);
+      near += std::abs(w - std::round(w)) <= 0.2;
+      ++tested;
+    }
+  }
+  return tested > 0 && 2 * near >= tested;
 }
 
 void CollisionMesh::BuildEdges(const std::vector<std::int32_t>& canonical) {
@@ -241,14 +263,15 @@ std::array<Eigen::Vector3d, 3> CollisionMesh::Triangle(std::int32_t face) const 
 bool CollisionMesh::Contains(const Eigen::Vector3d& p_M) const {
   const Aabb& box = bounds();
   if (box.empty() || !box.Intersects(Aabb{p_M, p_M})) return false;
+  if (solid_ && !closed_) return std::abs(WindingNumber(*mesh_, p_M)) >= 0.5;
   const double length = 2.0 * (box.size().norm() + (p_M - box.center()).norm()) + 1.0;
   const double margin = 1e-9 * (1.0 + box.size().norm());
-  bool parity = false;
+  int winding = 0;
   for (const Eigen::Vector3d& direction : kRayDirections) {
     const Eigen::Vector3d d = direction.normalized() * length;
     const Eigen::Vector3d q = p_M + d;
     bool degenerate = false;
-    parity = false;
+    winding = 0;
     std::vector<std::int32_t> stack = {0};
     while (!stack.empty() && !degenerate) {
       const Node& node = nodes_[stack.back()];
@@ -284,10 +307,10 @@ bool CollisionMesh::Contains(const Eigen::Vector3d& p_M) const {
           degenerate = true;
           break;
         }
-        if (e1 == e2 && e2 == e3) parity = !parity;
+        if (e1 == e2 && e2 == e3) winding += sp;
       }
     }
-    if (!degenerate) return parity;
+    if (!degenerate) return winding != 0;
   }
   // Every ray grazed an edge: the closest face's side decides.
   const Closest closest = ClosestPoint(p_M);

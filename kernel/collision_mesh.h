@@ -62,16 +62,25 @@ class CollisionMesh {
   /// True when every edge has exactly two faces with opposite orientation (a closed, oriented
   /// surface): inside tests are then meaningful.
   bool closed() const { return closed_; }
+  /// True when the mesh bounds a solid: closed(), or a mesh whose generalized winding number
+  /// (WindingNumber) is within 0.2 of an integer at most points just off its faces, as for
+  /// several closed shells in one mesh, boxes that share faces, T-junctions or small cracks
+  /// (multi-body parts exported as one STL). False for open sheets, whose winding number is
+  /// near a half beside them: they have no inside, and contact depths against them are unknown.
+  bool solid() const { return solid_; }
   /// Bounds of the mesh in its own frame.
   const Aabb& bounds() const { return nodes_.front().box_M; }
 
   /// Triangle `face`'s corners in frame M.
   std::array<Eigen::Vector3d, 3> Triangle(std::int32_t face) const;
 
-  /// True when the point p_M lies strictly inside the closed mesh, by the parity of exact ray
-  /// crossings (a ray that grazes an edge or vertex is replaced by the next of a fixed list of
-  /// directions). Points on the surface (exactly, on a face) are not inside. Meaningful only for
-  /// closed() meshes; for others it reports the parity anyway.
+  /// True when the point p_M lies strictly inside the closed mesh: when the exact ray crossings,
+  /// counted with the sign of the side of each face that p_M is on, do not sum to zero (the
+  /// winding number along the ray, so that closed shells which overlap or share faces in one
+  /// mesh are one solid; a ray that grazes an edge or vertex is replaced by the next of a fixed
+  /// list of directions); points on the surface (exactly, on a face) are not inside. For a
+  /// solid() mesh that is not closed, when the generalized winding number at p_M is 0.5 or more
+  /// in magnitude (O(faces) a query). Meaningful only for solid() meshes.
   bool Contains(const Eigen::Vector3d& p_M) const;
 
   /// The point of the surface closest to p_M, its distance (mm) and face.
@@ -83,6 +92,8 @@ class CollisionMesh {
   Closest ClosestPoint(const Eigen::Vector3d& p_M) const;
 
  private:
+  // True when the winding number is near an integer just off most of the sampled faces.
+  bool WindingNumberIsIntegral() const;
   // Fills edges_, face_edges_ and closed_ with vertices identified by `canonical`.
   void BuildEdges(const std::vector<std::int32_t>& canonical);
 
@@ -94,6 +105,7 @@ class CollisionMesh {
   std::vector<Edge> edges_;
   std::vector<std::array<std::int32_t, 3>> face_edges_;
   bool closed_ = false;
+  bool solid_ = false;
 };
 
 }  // namespace mechanist

@@ -225,10 +225,10 @@ ContactMeasure MeasureContact(const CollisionMesh& a, const RigidTransform& X_WA
     const auto& vb = b.mesh().vertices;
     const auto& fa = a.mesh().faces;
     const auto& fb = b.mesh().faces;
-    if (b.closed() && !fa.empty() && b.Contains(X_BA * va[fa.front()[0]])) {
+    if (b.solid() && !fa.empty() && b.Contains(X_BA * va[fa.front()[0]])) {
       result.contained = 1;
       measure(a, X_BA, X_WA, b, box_b_in_a, crossing_a);
-    } else if (a.closed() && !fb.empty() && a.Contains(X_AB * vb[fb.front()[0]])) {
+    } else if (a.solid() && !fb.empty() && a.Contains(X_AB * vb[fb.front()[0]])) {
       result.contained = 2;
       measure(b, X_AB, X_WB, a, box_a_in_b, crossing_b);
     } else {
@@ -238,7 +238,8 @@ ContactMeasure MeasureContact(const CollisionMesh& a, const RigidTransform& X_WA
     const auto [fa, fb] = pairs.front();
     const auto [p, q, r] = a.Triangle(fa);
     result.p_W = X_WA * ((p + q + r) / 3.0);
-    if (!a.closed() || !b.closed()) {
+    if (!a.solid() || !b.solid()) {
+      result.open = {!a.solid(), !b.solid()};
       result.kind = ContactMeasure::Kind::kPenetrating;
       result.depth = std::numeric_limits<double>::infinity();
       return result;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -43,7 +44,7 @@ struct ContactMeasure {
   /// tolerance, at most 8 intervals per edge) of every face whose box meets the other solid's
   /// box. The distance is 1-Lipschitz along the surface, so it underestimates the true maximum
   /// by at most `depth_bound`, the largest sample spacing used. Infinity when a mesh that crosses
-  /// the other is not closed (no inside to measure).
+  /// the other is an open sheet (not CollisionMesh::solid(): no inside to measure).
   double depth = 0.0;
   double depth_bound = 0.0;
   /// Where: the deepest point found, or a point of the first crossing, in world coordinates.
@@ -52,10 +53,12 @@ struct ContactMeasure {
   /// 2 when B is inside A, 0 otherwise. FCL's surface test misses this case.
   int contained = 0;
   std::size_t crossing_pairs = 0;  ///< triangle pairs that share a point
+  /// Whether A's and B's meshes are open sheets, when the depth is unknown because of them.
+  std::array<bool, 2> open = {false, false};
 };
 
 /// Classifies the contact of A and B: separate, touching (depth <= `tolerance`, mm) or
-/// penetrating. Containment is tested only for closed meshes.
+/// penetrating. Containment is tested only for solid() meshes.
 ContactMeasure MeasureContact(const CollisionMesh& a, const RigidTransform& X_WA,
                               const CollisionMesh& b, const RigidTransform& X_WB, double tolerance);
 

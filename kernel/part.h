@@ -28,9 +28,11 @@ struct PlacementCondition {
 /// as the file gives it. Immutable once the Assembly holds it.
 struct Part {
   std::string id;
-  /// The mesh in part coordinates (mm); shared between parts with the same source.
+  /// The mesh in part coordinates (mm); shared between parts with the same source. Empty (no
+  /// faces) for a features-only part, a kinematic sketch without geometry.
   std::shared_ptr<const TriangleMesh> mesh;
-  /// Where the mesh came from: a file path as written in the file, or "library:<kind>".
+  /// Where the mesh came from: a file path as written in the file, or "library:<kind>"; empty
+  /// for a features-only part.
   std::string mesh_source;
   /// X_WP, the pose in the file (identity when the file gives none or places the part).
   RigidTransform X_WP;
@@ -43,6 +45,10 @@ struct Part {
   /// What reading the part's source saw but made no feature of, in words (a STEP solid's
   /// cones, spheres, tori and free-form faces); informational.
   std::vector<std::string> notes;
+
+  /// False for a features-only part (no mesh, or one without faces): the commands that need
+  /// geometry (interference, assembly paths, swept checks, gaps) skip it.
+  bool HasGeometry() const { return mesh && !mesh->faces.empty(); }
 
   /// Index of the feature `feature_id`, or nothing.
   std::optional<std::size_t> FindFeature(const std::string& feature_id) const;

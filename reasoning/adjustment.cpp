@@ -97,6 +97,30 @@ AssemblyState AdjustedState(const Assembly& assembly,
   return state;
 }
 
+bool IsLooseThread(const Assembly& assembly, FeatureRef ref) {
+  const Feature& f = assembly.feature(ref);
+  return f.kind == FeatureKind::kThread && f.fastening == Fastening::kLoose;
+}
+
+// The loose threads of the pairs between a part in `carried` and one that is not, without
+// repeats, in feature-name order.
+std::vector<FeatureRef> LooseThreadsAcross(const Assembly& assembly, const std::vector<Pair>& pairs,
+                                           const std::set<std::size_t>& carried) {
+  std::vector<FeatureRef> loose;
+  for (const Pair& pair : pairs) {
+    if (carried.count(pair.a.part) == carried.count(pair.b.part)) continue;
+    for (const FeatureRef f : {pair.a, pair.b}) {
+      if (IsLooseThread(assembly, f)) loose.push_back(f);
+    }
+  }
+  const auto by_name = [&](FeatureRef x, FeatureRef y) {
+    return assembly.FeatureNameRank(x) < assembly.FeatureNameRank(y);
+  };
+  std::sort(loose.begin(), loose.end(), by_name);
+  loose.erase(std::unique(loose.begin(), loose.end()), loose.end());
+  return loose;
+}
+
 }  // namespace
 
 std::vector<std::size_t> CarriedParts(const Assembly& assembly, const std::vector<Pair>& pairs,
@@ -170,6 +194,7 @@ AdjustmentSummary SolveAdjustments(const Assembly& assembly, const std::vector<P
     AdjustmentOutcome& out = summary.adjustments[k];
     out.carried = CarriedParts(assembly, pairs, k);
     const std::set<std::size_t> carried(out.carried.begin(), out.carried.end());
+    out.loosened = LooseThreadsAcross(assembly, pairs, carried);
     for (const Goal& goal : assembly.goals()) {
       out.used =
           out.used || carried.count(goal.features[0].part) != carried.count(goal.features[1].part);
@@ -225,8 +250,26 @@ Assembly ApplyAdjustments(const Assembly& assembly, const AdjustmentSummary& sum
   AssemblySpec spec = assembly.spec();
   for (std::size_t p = 0; p < spec.parts.size(); ++p) spec.parts[p].X_WP = summary.state.X_WP[p];
   for (std::size_t k = 0; k < spec.adjustments.size(); ++k) {
-    spec.adjustments[k].lower -= summary.adjustments[k].value;
-    spec.adjustments[k].upper -= summary.adjustments[k].value;
+    const AdjustmentOutcome& out = summary.adjustments[k];
+    spec.adjustments[k].lower -= out.value;
+    spec.adjustments[k].upper -= out.value;
+    if (out.loosened.empty()) continue;
+    std::string names;
+    std::vector<std::string> parts, features;
+    for (const FeatureRef f : out.loosened) {
+      spec.parts[f.part].features[f.feature].fastening = Fastening::kTight;
+      names += (names.empty() ? "" : ", ") + assembly.FeatureName(f);
+      parts.emplace_back(assembly.PartId(f.part));
+      features.push_back(assembly.FeatureName(f));
+    }
+    std::sort(parts.begin(), parts.end());
+    parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
+    spec.findings.push_back({Severity::kInfo, "adjustment_locked",
+                             "adjustment " + spec.adjustments[k].id +
+                                 " is locked at its solved value: its loose fastening" +
+                                 (out.loosened.size() > 1 ? "s " : " ") + names +
+                                 (out.loosened.size() > 1 ? " are" : " is") + " taken as tightened",
+                             parts, features});
   }
   return Assembly(std::move(spec));
 }

@@ -48,6 +48,10 @@ struct AdjustmentOutcome {
   enum class Bound { kNone, kLower, kUpper };
   Bound active = Bound::kNone;       ///< a bound of `range` the solution sits on
   std::vector<std::size_t> carried;  ///< CarriedParts
+  /// The loose threads that let the carried parts move against the rest (a thread with
+  /// `fastening: loose` in a pair between a carried part and one that is not): locking the
+  /// adjustment tightens them. In feature-name order.
+  std::vector<FeatureRef> loosened;
 };
 
 /// The result of SolveAdjustments, as data (like Ceres' summary).
@@ -70,9 +74,11 @@ struct AdjustmentSummary {
 /// axis; adjustments apply in file order, each about its axis as the earlier ones left it.
 AdjustmentSummary SolveAdjustments(const Assembly& assembly, const std::vector<Pair>& pairs);
 
-/// The assembly with the adjustments locked at their solved values: the carried parts at
-/// their solved poses, and each range shifted by its value so that it bounds the same
-/// positions as before.
+/// The assembly with the adjustments locked at their solved values (spec, "Adjustments and
+/// goals"): the carried parts at their solved poses, each range shifted by its value so that
+/// it bounds the same positions as before, and the loose threads that allowed an adjustment
+/// (AdjustmentOutcome::loosened) taken as tightened, each said in an info finding
+/// `adjustment_locked` of the assembly.
 Assembly ApplyAdjustments(const Assembly& assembly, const AdjustmentSummary& summary);
 
 /// The assembly as the designer tightens it: when it declares adjustments and goals, solved

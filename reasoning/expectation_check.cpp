@@ -120,7 +120,11 @@ ExpectationResult CheckMoves(const Assembly& assembly, const Analysis& analysis,
   r.what = assembly.part(part).id + (e.flag ? " moves" : " does not move");
   std::string moved_by;
   for (const DrivenMotion& m : analysis.motion.driven) {
-    if (!m.driver || !m.possible || m.parts[part].kind == MotionKind::kNone) continue;
+    // A held driver (rate 0) moves nothing; its entry is what it would drive if released.
+    if (!m.driver || assembly.drivers()[*m.driver].rate == 0.0 || !m.possible ||
+        m.parts[part].kind == MotionKind::kNone) {
+      continue;
+    }
     moved_by += (moved_by.empty() ? "" : ", ") + assembly.drivers()[*m.driver].id;
   }
   r.passed = moved_by.empty() != e.flag;

@@ -43,6 +43,11 @@ MotionRun PlanRun(const Assembly& assembly, const Analysis& analysis,
     }
     if (!std::isfinite(run.amount)) run.amount = 0.0;
   }
+  if (driver && drivers[*driver].rate == 0.0) {
+    run.possible = false;
+    run.reason = "driver " + drivers[*driver].id + " is held (rate 0): nothing runs";
+    return run;
+  }
   // driven: one entry per driver, then, with several, all together.
   const DrivenMotion& motion = driver ? driven[*driver] : driven.back();
   if (!motion.possible) {

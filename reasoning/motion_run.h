@@ -31,8 +31,9 @@ struct MotionRun {
 /// The run of `driver` (with a single driver and none named, that driver; with several and
 /// none named, all together) over `amount` (default: the driver's `amount`; for all drivers
 /// the shortest time in which one of them completes its amount), with the motion of
-/// `analysis`. Throws std::invalid_argument for a driver index out of range or an amount that
-/// is negative or not finite.
+/// `analysis`; a held driver (rate 0) named or alone does not run (`possible` false). Throws
+/// std::invalid_argument for a driver index out of range or an amount that is negative or not
+/// finite.
 MotionRun PlanRun(const Assembly& assembly, const Analysis& analysis,
                   std::optional<std::size_t> driver, std::optional<double> amount);
 

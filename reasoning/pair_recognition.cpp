@@ -219,13 +219,13 @@ class Recognizer {
       case FeatureKind::kFace:
         if (f.width > 0 && f.height > 0) {
           radius = std::hypot(f.width, f.height) / 2;
-        } else {
+        } else if (!part_box_W.empty()) {
           Aabb box = part_box_W;
           box.min.array() -= margin;
           box.max.array() += margin;
           return box;
         }
-        break;
+        break;  // a features-only part's face without extents reaches near its origin
     }
     Aabb box;
     box.Extend(w.axis.origin);

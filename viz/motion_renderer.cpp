@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "io/display_colors.h"
+#include "io/feature_lines.h"
 #include "kernel/aabb.h"
 #include "kernel/assembly_state.h"
 #include "viz/display.h"
@@ -52,20 +53,14 @@ vtkSmartPointer<vtkPolyData> Triangles(const TriangleMesh& mesh) {
   return data;
 }
 
-// The axes of a part's features (part frame): each feature's axis segment, lengthened at both
-// ends so that it shows outside the material, or a short stub for a feature without length.
-vtkSmartPointer<vtkPolyData> FeatureAxes(const Part& part) {
+// The lines of a part's features (FeatureLines) as VTK polylines, in the part's frame.
+vtkSmartPointer<vtkPolyData> FeatureAxes(const Part& part, bool pitch_circles) {
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> lines;
-  for (const Feature& f : part.features) {
-    if (f.kind == FeatureKind::kFace) continue;  // a plane: its normal is no axis
-    const double size =
-        std::max({f.length, f.diameter, f.pitch_diameter, f.module * std::max(f.teeth, 1), 2.0});
-    const double margin = 0.25 * size;
-    const Eigen::Vector3d a = f.origin - margin * f.axis;
-    const Eigen::Vector3d b = f.origin + (std::max(f.length, 0.0) + margin) * f.axis;
-    const vtkIdType ids[2] = {points->InsertNextPoint(a.data()), points->InsertNextPoint(b.data())};
-    lines->InsertNextCell(2, ids);
+  for (const std::vector<Eigen::Vector3d>& line : FeatureLines(part, pitch_circles)) {
+    std::vector<vtkIdType> ids;
+    for (const Eigen::Vector3d& p : line) ids.push_back(points->InsertNextPoint(p.data()));
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
   }
   auto data = vtkSmartPointer<vtkPolyData>::New();
   data->SetPoints(points);
@@ -136,14 +131,16 @@ MotionRenderer::MotionRenderer(const Assembly& assembly, const Analysis& analysi
       if (gaps) r.parts[p]->GetProperty()->SetOpacity(0.25);
       r.renderer->AddActor(r.parts[p]);
     }
-    if (options.feature_axes && !part.features.empty()) {
+    // A features-only part is drawn by its axes alone, in its own colour and always.
+    const bool sketch = !part.HasGeometry();
+    if ((options.feature_axes || sketch) && !part.features.empty()) {
       vtkNew<vtkPolyDataMapper> mapper;
-      mapper->SetInputData(FeatureAxes(part));
+      mapper->SetInputData(FeatureAxes(part, sketch));
       r.axes[p] = vtkSmartPointer<vtkActor>::New();
       r.axes[p]->SetMapper(mapper);
-      const Eigen::Vector3d c = AxisColor();
+      const Eigen::Vector3d c = sketch ? r.colors[p] : AxisColor();
       r.axes[p]->GetProperty()->SetColor(c.x(), c.y(), c.z());
-      r.axes[p]->GetProperty()->SetLineWidth(1.0);
+      r.axes[p]->GetProperty()->SetLineWidth(sketch ? 4.0 : 1.0);
       r.axes[p]->GetProperty()->LightingOff();
       r.renderer->AddActor(r.axes[p]);
     }
@@ -152,6 +149,10 @@ MotionRenderer::MotionRenderer(const Assembly& assembly, const Analysis& analysi
   for (const AssemblyState& state : animation.states) {
     for (std::size_t p = 0; p < n; ++p) {
       if (r.parts[p]) bounds.Extend(WorldBox(assembly, state, p));
+      if (r.axes[p] && !r.parts[p]) {
+        const double* b = r.axes[p]->GetMapper()->GetInput()->GetBounds();
+        bounds.Extend(TransformBox(state.X_WP[p], Aabb{{b[0], b[2], b[4]}, {b[1], b[3], b[5]}}));
+      }
     }
   }
   if (gaps) {

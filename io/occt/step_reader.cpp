@@ -7,6 +7,9 @@
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_Printer.hxx>
 #include <Poly_Triangulation.hxx>
 #include <STEPCAFControl_Reader.hxx>
 #include <TDF_LabelSequence.hxx>
@@ -18,10 +21,12 @@
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <gp_Cone.hxx>
 #include <map>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 
 #include "kernel/number_format.h"
@@ -318,10 +323,65 @@ class Walker {
   std::map<std::pair<int, int>, Definition> cache_;
 };
 
+// Keeps Open CASCADE's messages about the file (which its default printer writes on stdout, in
+// the middle of reports): those of warning gravity and above, and the reader's "*** ERR"
+// reports, which it sends as traces and information (the entity and the reference it misses,
+// then a count of unresolved references). Progress traces are dropped. Whitespace runs and
+// "***" become single spaces.
+class CollectingPrinter : public Message_Printer {
+ public:
+  explicit CollectingPrinter(std::vector<StepMessage>* messages) : messages_(messages) {
+    SetTraceLevel(Message_Trace);
+  }
+
+ protected:
+  void send(const TCollection_AsciiString& text, const Message_Gravity gravity) const override {
+    const std::string raw = text.ToCString();
+    const bool error = gravity >= Message_Fail || raw.find("ERR ") != std::string::npos;
+    if (!error && gravity < Message_Warning) return;
+    std::string line;
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      const bool stars = raw.compare(i, 3, "***") == 0;
+      if (stars || std::isspace(static_cast<unsigned char>(raw[i]))) {
+        if (!line.empty() && line.back() != ' ') line += ' ';
+        if (stars) i += 2;
+      } else {
+        line += raw[i];
+      }
+    }
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    if (!line.empty()) messages_->push_back({error, line});
+  }
+
+ private:
+  std::vector<StepMessage>* messages_;
+};
+
+// While alive, Open CASCADE's default messenger sends to a CollectingPrinter instead of its
+// own printers (restored on destruction, also when reading throws).
+class MessageCapture {
+ public:
+  explicit MessageCapture(std::vector<StepMessage>* messages)
+      : messenger_(Message::DefaultMessenger()), saved_(messenger_->Printers()) {
+    messenger_->ChangePrinters().Clear();
+    messenger_->AddPrinter(new CollectingPrinter(messages));
+  }
+  ~MessageCapture() { messenger_->ChangePrinters() = saved_; }
+  MessageCapture(const MessageCapture&) = delete;
+  MessageCapture& operator=(const MessageCapture&) = delete;
+
+ private:
+  Handle(Message_Messenger) messenger_;
+  Message_SequenceOfPrinters saved_;
+};
+
 }  // namespace
 
-std::vector<StepSolid> ReadStep(const std::filesystem::path& file) {
+std::vector<StepSolid> ReadStep(const std::filesystem::path& file,
+                                std::vector<StepMessage>* messages) {
   if (!std::filesystem::exists(file)) throw std::runtime_error("no such file");
+  std::vector<StepMessage> ignored;
+  const MessageCapture capture(messages ? messages : &ignored);
   Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
   Handle(TDocStd_Document) document;
   app->NewDocument("MDTV-XCAF", document);

@@ -65,6 +65,31 @@ TEST(Cli, ValidateAndInfoOnTheMainExample) {
   EXPECT_EQ(Mechanist("info " + Example("robot_hand_worm")).out, info.out);
 }
 
+TEST(Cli, FeaturesOnlyPartsAreAnalysedAndSkippedByTheGeometricCommands) {
+  const std::string sketch = Example("planetary_differential_sketch");
+  const CommandResult validate = Mechanist("validate " + sketch);
+  EXPECT_EQ(validate.exit_code, 0) << validate.out;
+  EXPECT_NE(validate.out.find("valid (5 parts"), std::string::npos) << validate.out;
+  const CommandResult info = Mechanist("info " + sketch);
+  EXPECT_NE(info.out.find("carrier: no mesh (features only)"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("brake: rotation of ring/teeth relative to the ground, 0 rev/s"),
+            std::string::npos)
+      << info.out;
+  const CommandResult check = Mechanist("check " + sketch);
+  EXPECT_EQ(check.exit_code, 0) << check.out;
+  EXPECT_NE(check.out.find("8 passed, 0 failed"), std::string::npos) << check.out;
+  const std::string skipped =
+      "skipped, no geometry (features only): carrier, frame, planet, ring, sun";
+  for (const std::string command : {"interference", "assemble", "sweep", "gaps --voxel 1"}) {
+    const CommandResult run = Mechanist(command + " " + sketch);
+    EXPECT_EQ(run.exit_code, 0) << command << ": " << run.out;
+    EXPECT_NE(run.out.find(skipped), std::string::npos) << command << ": " << run.out;
+  }
+  const CommandResult brake = Mechanist("sweep " + sketch + " --driver brake");
+  EXPECT_NE(brake.out.find("driver brake is held (rate 0): nothing runs"), std::string::npos)
+      << brake.out;
+}
+
 TEST(Cli, BadInputExitsWithTwoAndNamesThePlace) {
   const std::filesystem::path file =
       std::filesystem::temp_directory_path() / "mechanist_cli_bad.json";

@@ -175,6 +175,52 @@ TEST(Adjustment, TheAdjustedFileReadsBackAsTheAdjustedAssembly) {
   EXPECT_NEAR(none.adjustments[0].value, 0.0, 1e-9);
 }
 
+TEST(Adjustment, LockingTightensTheLooseBoltTheMotorSwungOn) {
+  // The motor hung on bolt a alone, loosely fastened so that it can be swung (Abe et al.,
+  // section 3.5); bolt b sits in its wide hole and holds nothing to the housing. Locked, the
+  // loose bolt is taken as tightened: it clamps the motor to the housing, which then carries
+  // both the worm's and the wheel's axes.
+  const std::string text = Replace(ReadText(kSwung), R"("pitch": 0.5, "length": 12},)",
+                                   R"("pitch": 0.5, "length": 12, "fastening": "loose"},)");
+  const Assembly swung = ParseAssembly(text, kSwung);
+  const AdjustmentSummary s = Solve(swung);
+  ASSERT_TRUE(s.all_met);
+  ASSERT_EQ(s.adjustments[0].loosened.size(), 1u);
+  EXPECT_EQ(swung.FeatureName(s.adjustments[0].loosened[0]), "bolt_a/thread");
+  std::ostringstream report;
+  WriteAdjustmentSummary(swung, s, report);
+  EXPECT_NE(report.str().find("; locked, tightens bolt_a/thread"), std::string::npos)
+      << report.str();
+  const Assembly adjusted = ApplyAdjustments(swung, s);
+  EXPECT_EQ(adjusted.feature(s.adjustments[0].loosened[0]).fastening, Fastening::kTight);
+  const Analysis an = Analyze(adjusted);
+  const auto wheel = adjusted.FindFeature("worm_wheel/teeth");
+  EXPECT_EQ(an.motion.ForExpectations()->features[wheel->part][wheel->feature].rotation.ToString(),
+            "-1/40");
+  bool said = false;
+  for (const Diagnostic& d : an.diagnostics) {
+    EXPECT_NE(d.code, "coupling_without_carrier") << d.message;
+    if (d.code == "adjustment_locked") {
+      said = true;
+      EXPECT_EQ(d.severity, Severity::kInfo);
+      EXPECT_NE(d.message.find("motor_swing"), std::string::npos) << d.message;
+      EXPECT_NE(d.message.find("bolt_a/thread is taken as tightened"), std::string::npos)
+          << d.message;
+    }
+  }
+  EXPECT_TRUE(said);
+  // The written file has the bolt tight, and reads back as the locked assembly.
+  const std::filesystem::path out =
+      std::filesystem::temp_directory_path() / "mechanist_adjust_test" / "locked.json";
+  std::filesystem::create_directories(out.parent_path());
+  const Assembly again = ParseAssembly(AdjustedAssemblyText(swung, adjusted, out), out);
+  EXPECT_EQ(again.feature(*again.FindFeature("bolt_a/thread")).fastening, Fastening::kTight);
+  const Analysis an_again = Analyze(again);
+  EXPECT_EQ(
+      an_again.motion.ForExpectations()->features[wheel->part][wheel->feature].rotation.ToString(),
+      "-1/40");
+}
+
 TEST(Adjustment, GoalsMustNameFeaturesThatCanMesh) {
   const std::string text =
       Replace(ReadText(kSwung), R"("goals": [{"mesh": ["worm/worm", "worm_wheel/teeth"]}])",

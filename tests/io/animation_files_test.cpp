@@ -198,6 +198,33 @@ TEST(GltfAnimation, KeyframesAreTheComputedPosesAndTheStillPartsSitAtTheirs) {
   EXPECT_THROW(GlbAnimation(w.assembly, w.analysis, animation, 0.0), std::invalid_argument);
 }
 
+TEST(GltfAnimation, AFeaturesOnlyPartIsDrawnByItsFeatureLines) {
+  const Assembly a = ReadAssembly(std::string(MECHANIST_SOURCE_DIR) +
+                                  "/examples/planetary_differential_sketch/assembly.json");
+  const Analysis an = Analyze(a);
+  const Animation animation = SampleRun(a, PlanRun(a, an, std::nullopt, std::nullopt), 3);
+  const Glb glb(GlbAnimation(a, an, animation, 10.0));
+  const auto& doc = glb.doc;
+  for (std::size_t p = 0; p < a.parts().size(); ++p) {
+    const auto& node = doc["nodes"][p + 1];
+    ASSERT_TRUE(node.contains("mesh")) << a.part(p).id;
+    const auto& primitive = doc["meshes"][node["mesh"].get<int>()]["primitives"][0];
+    EXPECT_EQ(primitive["mode"], 1) << a.part(p).id;  // LINES
+    const auto& position = doc["accessors"][primitive["attributes"]["POSITION"].get<int>()];
+    const auto& indices = doc["accessors"][primitive["indices"].get<int>()];
+    // An axis is one segment; a gear adds its pitch circle of 72.
+    std::size_t segments = 0;
+    for (const Feature& f : a.part(p).features) {
+      segments += 1 + (f.kind == FeatureKind::kGear ? 72 : 0);
+    }
+    EXPECT_EQ(indices["count"].get<std::size_t>(), 2 * segments) << a.part(p).id;
+    // The carrier's pin bore lies 15 mm off its axis: the lines reach it.
+    if (a.part(p).id == "carrier") {
+      EXPECT_NEAR(position["max"][0].get<double>(), 15.0, 1e-6);
+    }
+  }
+}
+
 std::string ReadFile(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -298,7 +298,6 @@ TEST_F(AssemblyReaderTest, RejectsBadValues) {
   ExpectError(OnePart(R"("ground": "yes")"), "/parts/0/ground", "true or false");
   ExpectError(R"({"mechanist": 1, "parts": [{"id": "a b", "mesh": "meshes/cube.obj"}]})",
               "/parts/0/id", "letters, digits");
-  ExpectError(R"({"mechanist": 1, "parts": [{"id": "p"}]})", "/parts/0", "neither");
   ExpectError(R"({"mechanist": 1, "parts": [{"id": "p", "mesh": "meshes/cube.obj"},
                                               {"id": "p", "mesh": "meshes/cube.obj"}]})",
               "/parts/1/id", "duplicate part id");
@@ -365,8 +364,6 @@ TEST_F(AssemblyReaderTest, RejectsDanglingReferences) {
               "no part \"c\"");
   ExpectError(part_a + R"("drivers": [{"part": "a", "feature": "x"}]})", "/drivers/0/feature",
               "found \"x\"");
-  ExpectError(part_a + R"("drivers": [{"part": "a", "feature": "h", "rate": 0}]})",
-              "/drivers/0/rate", "non-zero");
   ExpectError(
       part_a +
           R"("adjustments": [{"id": "j", "moves": "b", "rotate_about": "a/h", "range": [5, 1]}]})",
@@ -401,6 +398,28 @@ TEST_F(AssemblyReaderTest, RejectsBadMeshesAndLibraryParameters) {
       R"({"mechanist": 1, "parts": [{"id": "p", "library": {"kind": "shaft", "diameter": 3, "length": 5},
      "features": [{"id": "shaft", "kind": "face", "origin": [0,0,0], "axis": [0,0,1]}]}]})",
       "/parts/0/features/0/id", "library part defines it");
+}
+
+TEST_F(AssemblyReaderTest, ReadsFeaturesOnlyPartsAndHeldDrivers) {
+  // Before: "expected \"mesh\" or \"library\", found neither" and "expected a non-zero rate".
+  const Assembly a = Parse(R"({"mechanist": 1, "parts": [
+      {"id": "frame", "ground": true, "features": [
+        {"id": "h", "kind": "hole", "origin": [0,0,0], "axis": [0,0,1], "diameter": 4,
+         "length": 5, "through": true}]},
+      {"id": "pin", "features": [
+        {"id": "s", "kind": "shaft", "origin": [0,0,0], "axis": [0,0,1], "diameter": 4,
+         "length": 5, "retained": true}]},
+      {"id": "p", "mesh": "meshes/cube.obj"}],
+    "drivers": [{"id": "brake", "part": "pin", "feature": "s", "rate": 0}]})");
+  ASSERT_EQ(a.parts().size(), 3u);
+  EXPECT_FALSE(a.part(0).HasGeometry());
+  EXPECT_FALSE(a.part(1).HasGeometry());
+  EXPECT_TRUE(a.part(2).HasGeometry());
+  EXPECT_TRUE(a.part(0).mesh_source.empty());
+  EXPECT_TRUE(a.part(0).mesh != nullptr && a.part(0).mesh->faces.empty());
+  EXPECT_TRUE(a.MeshBox(0).empty());
+  ASSERT_EQ(a.drivers().size(), 1u);
+  EXPECT_EQ(a.drivers()[0].rate, 0.0);
 }
 
 TEST_F(AssemblyReaderTest, NeverModifiesItsInput) {

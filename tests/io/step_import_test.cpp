@@ -159,6 +159,49 @@ TEST(StepImport, AnImportingFileAddsGroundAndNamesBadImports) {
   }
 }
 
+TEST(StepImport, OpenCascadesMessagesBecomeFindingsNeverOutput) {
+  // AS1 with a product category that refers to an entity the file does not have: Open
+  // CASCADE's reader complains ("Unresolved Reference") and reads the rest.
+  std::ifstream in(kAs1, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string step = text.str();
+  const std::string relationship = "#2878=PRODUCT_CATEGORY_RELATIONSHIP('','',#2876,#2877);";
+  const auto at = step.find(relationship);
+  ASSERT_NE(at, std::string::npos);
+  step.replace(at, relationship.size(),
+               "#2878=PRODUCT_CATEGORY_RELATIONSHIP('','',#999998,#2877);");
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "mechanist_step_messages";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "dangling.stp", std::ios::binary) << step;
+  ::testing::internal::CaptureStdout();
+  const Assembly a = ReadAssembly(dir / "dangling.stp");
+  const std::string printed = ::testing::internal::GetCapturedStdout();
+  EXPECT_EQ(printed, "");
+  EXPECT_EQ(a.parts().size(), 18u);
+  int unresolved = 0, entity = 0;
+  for (const Diagnostic& d : a.findings()) {
+    if (d.code != "step_reader") continue;
+    EXPECT_EQ(d.severity, Severity::kWarning);
+    EXPECT_NE(d.message.find("dangling.stp"), std::string::npos) << d.message;
+    if (d.message.find("Unresolved Reference") != std::string::npos) {
+      ++unresolved;
+    } else if (d.message.find("#2878 Type:PRODUCT_CATEGORY_RELATIONSHIP") != std::string::npos &&
+               d.message.find("#999998 Not found") != std::string::npos) {
+      ++entity;
+    } else {
+      ADD_FAILURE() << "unexpected: " << d.message;
+    }
+  }
+  EXPECT_EQ(unresolved, 1);
+  EXPECT_EQ(entity, 1);
+  // The file read as it is gives no such finding.
+  const Assembly intact = ReadAssembly(kAs1);
+  for (const Diagnostic& d : intact.findings()) EXPECT_NE(d.code, "step_reader");
+  std::filesystem::remove_all(dir);
+}
+
 TEST(StepImport, ConesSpheresAndToriAreNamedInNotes) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_cones";
   std::filesystem::create_directories(dir);

@@ -241,10 +241,15 @@ TEST(Assembly, RejectsDuplicateFeatureIds) {
   EXPECT_NE(message.find("'gear'"), std::string::npos) << message;
 }
 
-TEST(Assembly, RejectsAPartWithoutMesh) {
+TEST(Assembly, APartWithoutMeshIsFeaturesOnly) {
   AssemblySpec spec = ValidSpec();
   spec.parts[0].mesh.reset();
-  EXPECT_NE(ConstructionError(std::move(spec)).find("'base'"), std::string::npos);
+  const Assembly assembly(std::move(spec));
+  ASSERT_NE(assembly.part(0).mesh, nullptr);
+  EXPECT_TRUE(assembly.part(0).mesh->faces.empty());
+  EXPECT_FALSE(assembly.part(0).HasGeometry());
+  EXPECT_TRUE(assembly.part(1).HasGeometry());
+  EXPECT_TRUE(assembly.MeshBox(0).empty());
 }
 
 TEST(Assembly, RejectsADriverOnAMissingPart) {

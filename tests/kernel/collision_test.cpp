@@ -3,6 +3,7 @@
 // static test on either side of the contact it reports.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -176,6 +177,82 @@ TEST(MeshContact, FacetedPinInHoleOfItsDiameterIsTouching) {
   const ContactMeasure f = MeasureContact(*fat, {}, *plate, {}, 0.05);
   EXPECT_EQ(f.kind, ContactMeasure::Kind::kPenetrating);
   EXPECT_NEAR(f.depth, 0.2, 0.02);
+}
+
+// Boxes [x0, x1] x [y0, y1] x [z0, z1] in one mesh, as a multi-body part exported as one file:
+// closed shells that share faces. `soup`: every triangle with its own corners, as in an STL
+// file, so that the shells' coincident edges make the mesh not closed by its edges.
+std::shared_ptr<const CollisionMesh> Boxes(const std::vector<std::array<double, 6>>& boxes,
+                                           bool soup) {
+  TriangleMesh shells;
+  for (const auto& [x0, x1, y0, y1, z0, z1] : boxes) {
+    Region2d r;
+    r.outer = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+    shells.Append(ExtrudeRegion(r, z0, z1));
+  }
+  auto mesh = std::make_shared<TriangleMesh>();
+  if (!soup) {
+    *mesh = shells;
+  } else {
+    for (const TriangleMesh::Face& f : shells.faces) {
+      const auto n = static_cast<std::int32_t>(mesh->vertices.size());
+      for (int k = 0; k < 3; ++k) mesh->vertices.push_back(shells.vertices[f[k]]);
+      mesh->faces.push_back({n, n + 1, n + 2});
+    }
+  }
+  return std::make_shared<CollisionMesh>(mesh);
+}
+
+// A pocket: a floor 1 mm thick and four walls standing on it, each its own box.
+std::shared_ptr<const CollisionMesh> Pocket(bool soup) {
+  return Boxes({{-5, 5, -5, 5, 0, 1},
+                {-5, -4, -5, 5, 1, 4},
+                {4, 5, -5, 5, 1, 4},
+                {-4, 4, -5, -4, 1, 4},
+                {-4, 4, 4, 5, 1, 4}},
+               soup);
+}
+
+TEST(MeshContact, MultiShellMeshesHaveAnInsideByTheirWindingNumber) {
+  for (const bool soup : {false, true}) {
+    SCOPED_TRACE(soup ? "a triangle soup" : "shells with their own vertices");
+    const auto pocket = Pocket(soup);
+    EXPECT_EQ(pocket->closed(), !soup);
+    EXPECT_TRUE(pocket->solid());
+    EXPECT_TRUE(pocket->Contains({0, 0, 0.5}));   // in the floor
+    EXPECT_TRUE(pocket->Contains({-4.5, 0, 2}));  // in a wall, above the floor's top face
+    EXPECT_FALSE(pocket->Contains({0, 0, 2}));    // in the pocket
+    EXPECT_FALSE(pocket->Contains({0, 0, -1}));   // below it
+    // A pin resting on the pocket's floor touches it (before: a clash, of unknown depth for
+    // the soup).
+    const auto pin = Boxes({{-1, 1, -1, 1, 1, 6}}, soup);
+    const ContactMeasure rest = MeasureContact(*pin, {}, *pocket, {}, 0.05);
+    EXPECT_EQ(rest.kind, ContactMeasure::Kind::kTouching) << rest.depth;
+    EXPECT_LE(rest.depth, 1e-9);
+    // Pushed 0.3 mm into the floor it penetrates by 0.3 mm, measured.
+    const ContactMeasure pushed =
+        MeasureContact(*pin, RigidTransform::Translation({0, 0, -0.3}), *pocket, {}, 0.05);
+    EXPECT_EQ(pushed.kind, ContactMeasure::Kind::kPenetrating);
+    EXPECT_NEAR(pushed.depth, 0.3, 1e-9);
+    // Two plates side by side resting on a frame of two rails, each mesh two shells.
+    const auto plates = Boxes({{0, 5, 0, 10, 1, 2}, {5, 10, 0, 10, 1, 2}}, soup);
+    const auto rails = Boxes({{0, 10, 0, 1, 0, 1}, {0, 10, 9, 10, 0, 1}}, soup);
+    EXPECT_EQ(MeasureContact(*plates, {}, *rails, {}, 0.05).kind, ContactMeasure::Kind::kTouching);
+  }
+}
+
+TEST(MeshContact, AnOpenSheetHasNoInsideAndItsDepthIsUnknown) {
+  auto sheet = std::make_shared<TriangleMesh>();
+  sheet->vertices = {{-3, -3, 0}, {3, -3, 0}, {3, 3, 0}, {-3, 3, 0}};
+  sheet->faces = {{0, 1, 2}, {0, 2, 3}};
+  const CollisionMesh open(sheet);
+  EXPECT_FALSE(open.solid());
+  const auto box = Box(2, 2, 2);
+  const ContactMeasure m = MeasureContact(open, {}, *box, {}, 0.05);
+  EXPECT_EQ(m.kind, ContactMeasure::Kind::kPenetrating);
+  EXPECT_TRUE(std::isinf(m.depth));
+  EXPECT_TRUE(m.open[0]);
+  EXPECT_FALSE(m.open[1]);
 }
 
 TEST(TranslationalSweep, FirstContactOfBoxesIsTheGap) {

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "reasoning/analysis.h"
+#include "reasoning/motion_run.h"
 #include "reasoning/pair_graph.h"
 #include "reasoning/pair_recognition.h"
 #include "test_assembly.h"
@@ -353,6 +354,20 @@ TEST(Motion, DifferentialAddsItsInputsByWillis) {
     }
   }
   EXPECT_EQ(Exact(Rate(reversed, back, "carrier/shaft")), "-5/3");
+
+  // The ring held by a brake (rate 0, spec "Drivers"): the carrier turns at 20 / 60 of the sun,
+  // the ring stays still, and the brake alone runs nothing.
+  spec.drivers = {driver("sun", 2), driver("ring", 0)};
+  const Assembly held(spec);
+  const Analysis braked = Analyze(held);
+  ASSERT_EQ(braked.motion.driven.size(), 3u);
+  EXPECT_EQ(Exact(Rate(held, braked, "carrier/shaft")), "2/3");
+  EXPECT_EQ(Exact(Rate(held, braked, "ring/teeth")), "0");
+  EXPECT_EQ(Exact(Rate(held, braked, "carrier/shaft", true, &braked.motion.driven[0])), "1/3");
+  const MotionRun brake = PlanRun(held, braked, 1, std::nullopt);
+  EXPECT_FALSE(brake.possible);
+  EXPECT_NE(brake.reason.find("held"), std::string::npos) << brake.reason;
+  EXPECT_TRUE(PlanRun(held, braked, std::nullopt, std::nullopt).possible);
 }
 
 TEST(Motion, RackTravelsPiTimesPitchDiameterPerRevolution) {

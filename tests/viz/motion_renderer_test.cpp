@@ -159,6 +159,29 @@ TEST(MotionRenderer, FeatureAxesAndGapsShow) {
       500);
 }
 
+TEST(MotionRenderer, AFeaturesOnlyPartIsDrawnByItsAxesWhichTurnWithIt) {
+  // A kinematic sketch: no part has a mesh. Even without the axes option, each part shows as
+  // its feature axes, and the carrier's pin axis moves as the sun turns it.
+  Scene sketch("planetary_differential_sketch", 2, 0.25);
+  MotionRenderer renderer(sketch.assembly, sketch.analysis, sketch.animation, Small());
+  const Image first = renderer.Render(0);
+  const Image later = renderer.Render(1);
+  int drawn = 0, changed = 0;
+  for (int y = kTitleRows; y < first.height; ++y) {
+    for (int x = 0; x < first.width; ++x) {
+      const std::uint8_t* p = first.At(x, y);
+      // Background is a vertical gradient: compare with the pixel at the row's far right.
+      drawn += std::memcmp(p, first.At(first.width - 1, y), 3) != 0;
+      changed += !Same(first, later, x, y);
+    }
+  }
+  EXPECT_GT(drawn, 200);
+  EXPECT_GT(changed, 20);
+  if (const char* dir = std::getenv("MECHANIST_TEST_PICTURES")) {
+    std::ofstream(std::filesystem::path(dir) / "sketch.png", std::ios::binary) << EncodePng(first);
+  }
+}
+
 TEST(MotionRenderer, RefusesBadSizesAndExplainsAMissingDisplay) {
   Scene scene("robot_hand_worm", 1, 0.0);
   RenderOptions tiny = Small();

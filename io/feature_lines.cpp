@@ -1,0 +1,35 @@
+#include "io/feature_lines.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+namespace mechanist {
+
+std::vector<std::vector<Eigen::Vector3d>> FeatureLines(const Part& part, bool pitch_circles) {
+  std::vector<std::vector<Eigen::Vector3d>> lines;
+  for (const Feature& f : part.features) {
+    if (f.kind == FeatureKind::kFace) continue;
+    const double size =
+        std::max({f.length, f.diameter, f.pitch_diameter, f.module * std::max(f.teeth, 1), 2.0});
+    const double margin = 0.25 * size;
+    lines.push_back(
+        {f.origin - margin * f.axis, f.origin + (std::max(f.length, 0.0) + margin) * f.axis});
+    if (!pitch_circles || (f.kind != FeatureKind::kGear && f.kind != FeatureKind::kWormWheel)) {
+      continue;
+    }
+    const Eigen::Vector3d u = f.axis.unitOrthogonal(), v = f.axis.cross(u);
+    const Eigen::Vector3d center = f.origin + 0.5 * f.length * f.axis;
+    const double radius = 0.5 * f.module * f.teeth;
+    constexpr int kSegments = 72;
+    std::vector<Eigen::Vector3d> circle;
+    for (int k = 0; k <= kSegments; ++k) {
+      const double t = 2.0 * M_PI * k / kSegments;
+      circle.push_back(center + radius * (std::cos(t) * u + std::sin(t) * v));
+    }
+    lines.push_back(std::move(circle));
+  }
+  return lines;
+}
+
+}  // namespace mechanist
