@@ -400,6 +400,7 @@ class Reader {
     }
     AddStepMessages(relative, messages);
     for (StepSolid& s : solids) {
+      AddTessellationGears(&s);
       Part part;
       part.id = s.path;
       part.mesh_source = relative + "#" + s.product;
@@ -466,6 +467,24 @@ class Reader {
     ReadPlacements(added);
   }
 
+  // The gears and racks that the mesh recogniser finds on a STEP solid's tessellation, added
+  // to its features with a note each: CAD systems write involute flanks as free-form faces or
+  // as many small cylinder patches, which give no feature of their own. Once per shared mesh.
+  void AddTessellationGears(StepSolid* solid) {
+    auto [found, added] = tessellation_gears_.try_emplace(solid->mesh.get());
+    if (added) {
+      for (RecognizedFeature& r : RecognizeFeatures(*solid->mesh).features) {
+        if (r.feature.kind != FeatureKind::kGear && r.feature.kind != FeatureKind::kRack) continue;
+        found->second.notes.push_back(r.feature.id + ": " + r.detail +
+                                      " (found on the solid's tessellation)");
+        found->second.features.push_back(std::move(r.feature));
+      }
+    }
+    const TessellationGears& gears = found->second;
+    solid->features.insert(solid->features.end(), gears.features.begin(), gears.features.end());
+    solid->notes.insert(solid->notes.end(), gears.notes.begin(), gears.notes.end());
+  }
+
   // Open CASCADE's messages on reading `relative` as findings `step_reader` (an error as a
   // warning, since the file was still read; a warning as info), repeats counted once.
   void AddStepMessages(const std::string& relative, const std::vector<StepMessage>& messages) {
@@ -505,6 +524,7 @@ class Reader {
     AddStepMessages(relative, messages);
     auto mesh = std::make_shared<TriangleMesh>();
     for (std::size_t k = 0; k < solids.size(); ++k) {
+      AddTessellationGears(&solids[k]);
       TriangleMesh placed = *solids[k].mesh;
       for (Eigen::Vector3d& v : placed.vertices) v = solids[k].X_WP * v;
       mesh->Append(placed);
@@ -1270,6 +1290,11 @@ class Reader {
   std::filesystem::path dir_;
   std::vector<bool>
       recognised_;  // per part: its features were inferred (mesh or STEP), not written
+  struct TessellationGears {
+    std::vector<Feature> features;
+    std::vector<std::string> notes;
+  };
+  std::map<const TriangleMesh*, TessellationGears> tessellation_gears_;  // per STEP solid mesh
   AssemblySpec spec_;
   std::map<std::string, std::size_t> part_index_;
   std::map<std::size_t, std::string> entry_of_;  // part index -> its entry's JSON pointer

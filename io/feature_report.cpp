@@ -24,7 +24,10 @@ std::vector<FeatureReportEntry> RecogniseAssemblyFeatures(const Assembly& assemb
     if (part.mesh_source.find('#') != std::string::npos) {  // imported: from its exact faces
       FeatureReportEntry e{part.id, part.X_WP, MeshFeatures(), true};
       for (const Feature& f : part.features) {
-        e.found.features.push_back({f, 0.0, "from the STEP file's exact faces"});
+        const bool teeth = f.kind == FeatureKind::kGear || f.kind == FeatureKind::kRack;
+        e.found.features.push_back({f, 0.0,
+                                    teeth ? "from the solid's tessellation (see its note)"
+                                          : "from the STEP file's exact faces"});
       }
       e.found.notes = part.notes;
       entries.push_back(std::move(e));

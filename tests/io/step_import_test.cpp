@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -200,6 +201,107 @@ TEST(StepImport, OpenCascadesMessagesBecomeFindingsNeverOutput) {
   const Assembly intact = ReadAssembly(kAs1);
   for (const Diagnostic& d : intact.findings()) EXPECT_NE(d.code, "step_reader");
   std::filesystem::remove_all(dir);
+}
+
+// The gear features of an imported assembly's parts, by part id, and its gear pairs.
+struct Gears {
+  std::map<std::string, const Feature*> of_part;
+  std::vector<const Pair*> pairs;
+  Gears(const Assembly& a, const Analysis& an) {
+    for (const Part& p : a.parts()) {
+      for (const Feature& f : p.features) {
+        if (f.kind == FeatureKind::kGear) {
+          EXPECT_FALSE(of_part.count(p.id)) << "two gears on " << p.id;
+          of_part[p.id] = &f;
+        }
+      }
+    }
+    for (const Pair& pair : an.pairs) {
+      if (pair.type == PairType::kGear) pairs.push_back(&pair);
+    }
+  }
+};
+
+TEST(StepImport, GearTeethWithFreeFormFlanksAreFoundOnTheSolidsTessellation) {
+  // Our own fixture: a 10-tooth pinion (undercut) meshing a 27-tooth gear, module 1.5, their
+  // involute flanks drawn as B-spline curves, so that the exact faces give no feature.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_step_gears";
+  std::filesystem::create_directories(dir);
+  testing::WriteSpurGearPairStep(dir / "pair.step", 10, 27, 1.5);
+  const Assembly a = ReadAssembly(dir / "pair.step");
+  ASSERT_EQ(a.parts().size(), 2u);
+  const Analysis an = Analyze(a);
+  const Gears g(a, an);
+  ASSERT_EQ(g.of_part.size(), 2u);
+  std::vector<int> teeth;
+  for (const auto& [part, f] : g.of_part) {
+    teeth.push_back(f->teeth);
+    EXPECT_EQ(f->module, 1.5) << part;
+    EXPECT_NEAR(std::abs(f->axis.z()), 1.0, 1e-9) << part;
+    EXPECT_FALSE(f->internal) << part;
+  }
+  std::sort(teeth.begin(), teeth.end());
+  EXPECT_EQ(teeth, (std::vector<int>{10, 27}));
+  ASSERT_EQ(g.pairs.size(), 1u);
+  const Rational ratio = *g.pairs[0]->ratio;
+  const bool pinion_first = a.feature(g.pairs[0]->a).teeth == 10;
+  EXPECT_EQ(ratio, pinion_first ? Rational(-10, 27) : Rational(-27, 10));
+  // The flanks are free-form faces; the notes say so, and how the teeth were found.
+  for (const Part& p : a.parts()) {
+    bool free_form = false, found = false;
+    for (const std::string& n : p.notes) {
+      free_form = free_form || n.find("free-form face") != std::string::npos;
+      found = found || n.find("(found on the solid's tessellation)") != std::string::npos;
+    }
+    EXPECT_TRUE(free_form && found) << p.id;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(StepImport, TheSolidWorksSpurPairMeshesAtMinusOneHalf) {
+  // ../shared/data/real: SolidWorks Toolbox gears, flanks as many small cylinder patches; the
+  // truth: 40 and 20 teeth, module 2, centre distance 60, ratio -1/2 from the pinion.
+  const Assembly a = ReadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) / "real" /
+                                  "spur_pair_20T_40T_solidworks" /
+                                  "ISO standard Spur Gear Drive (2-1 ratio).STEP");
+  ASSERT_EQ(a.parts().size(), 2u);
+  const Analysis an = Analyze(a);
+  const Gears g(a, an);
+  ASSERT_EQ(g.of_part.size(), 2u);
+  for (const auto& [part, f] : g.of_part) EXPECT_EQ(f->module, 2.0) << part;
+  ASSERT_EQ(g.pairs.size(), 1u);
+  const Pair& pair = *g.pairs[0];
+  const int teeth_a = a.feature(pair.a).teeth, teeth_b = a.feature(pair.b).teeth;
+  EXPECT_EQ(std::min(teeth_a, teeth_b), 20);
+  EXPECT_EQ(std::max(teeth_a, teeth_b), 40);
+  EXPECT_EQ(*pair.ratio, Rational(-teeth_a, teeth_b));
+  // No tiny shafts or holes from the flank patches: each gear keeps its bore.
+  for (const Part& p : a.parts()) {
+    int cylinders = 0;
+    for (const Feature& f : p.features) {
+      cylinders += f.kind == FeatureKind::kShaft || f.kind == FeatureKind::kHole;
+    }
+    EXPECT_EQ(cylinders, 1) << p.id;
+  }
+}
+
+TEST(StepImport, NoGearIsFoundOnTheRealExportsThatHaveNone) {
+  // The other real exports: pins, bearings, a cycloidal disc with its lobes and a pin ring
+  // (not involute gears), a lead screw, hinges.
+  for (const char* file : {"cycloid_7pin_6lobe_onshape/Full Assembly.step",
+                           "rotary_pendulum_ball_bearing_fusion/Assembly.step",
+                           "revolute_pin_solidedge_chrono/assembly.stp",
+                           "hinge_clamshell_build123d/clamshell_full.step",
+                           "lead_screw_linear_actuator_onshape/Assembly.step",
+                           "robot_hand_finger_hinges_onshape/Assembly 1.step"}) {
+    const Assembly a = ReadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) / "real" / file);
+    for (const Part& p : a.parts()) {
+      for (const Feature& f : p.features) {
+        EXPECT_NE(f.kind, FeatureKind::kGear) << file << ": " << p.id;
+        EXPECT_NE(f.kind, FeatureKind::kRack) << file << ": " << p.id;
+      }
+    }
+  }
 }
 
 TEST(StepImport, ConesSpheresAndToriAreNamedInNotes) {

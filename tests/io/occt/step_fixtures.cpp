@@ -3,19 +3,113 @@
 
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRep_Builder.hxx>
+#include <GeomAPI_Interpolate.hxx>
+#include <Geom_BSplineCurve.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <STEPControl_Writer.hxx>
+#include <TColgp_HArray1OfPnt.hxx>
 #include <TopoDS_Compound.hxx>
+#include <algorithm>
+#include <cmath>
 #include <gp_Ax2.hxx>
+#include <gp_Trsf.hxx>
+#include <gp_Vec.hxx>
 #include <stdexcept>
+#include <vector>
+
+#include "kernel/involute_gear.h"
 
 namespace mechanist::testing {
+
+namespace {
+
+void WriteStep(const TopoDS_Shape& shape, const std::filesystem::path& file) {
+  Message::DefaultMessenger()->ChangePrinters().Clear();  // the writer's statistics
+  STEPControl_Writer writer;
+  if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone ||
+      writer.Write(file.string().c_str()) != IFSelect_RetDone) {
+    throw std::runtime_error("cannot write " + file.string());
+  }
+}
+
+// A B-spline edge through `points` (at least two), or a straight one through two.
+TopoDS_Edge Through(const std::vector<gp_Pnt>& points) {
+  if (points.size() == 2) return BRepBuilderAPI_MakeEdge(points[0], points[1]).Edge();
+  Handle(TColgp_HArray1OfPnt) array = new TColgp_HArray1OfPnt(1, static_cast<int>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i)
+    array->SetValue(static_cast<int>(i) + 1, points[i]);
+  GeomAPI_Interpolate interpolate(array, false, 1e-7);
+  interpolate.Perform();
+  return BRepBuilderAPI_MakeEdge(interpolate.Curve()).Edge();
+}
+
+// A spur gear about the z axis: the involute outline split at its corners (where it turns by
+// more than 20 degrees), each smooth run an interpolated B-spline, extruded from z = 0 to 10,
+// with a bore.
+TopoDS_Shape SpurGear(int teeth, double module) {
+  InvoluteOutlineSpec spec;
+  spec.teeth = teeth;
+  spec.module = module;
+  spec.pressure_angle = 20.0 * M_PI / 180.0;
+  spec.addendum = module;
+  spec.dedendum = 1.25 * module;
+  spec.max_arc_step = 2.0 * M_PI / teeth / 12.0;
+  spec.flank_points = 12;
+  const Ring2d ring = InvoluteOutline(spec);
+  const std::size_t n = ring.size();
+  const auto corner = [&](std::size_t i) {
+    const Eigen::Vector2d a = ring[i] - ring[(i + n - 1) % n], b = ring[(i + 1) % n] - ring[i];
+    return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) >
+           20.0 * M_PI / 180.0;
+  };
+  std::size_t start = 0;
+  while (!corner(start)) ++start;
+  BRepBuilderAPI_MakeWire wire;
+  std::vector<gp_Pnt> run = {gp_Pnt(ring[start].x(), ring[start].y(), 0)};
+  for (std::size_t k = 1; k <= n; ++k) {
+    const std::size_t i = (start + k) % n;
+    run.emplace_back(ring[i].x(), ring[i].y(), 0);
+    if (corner(i)) {
+      wire.Add(Through(run));
+      run = {run.back()};
+    }
+  }
+  const TopoDS_Face face = BRepBuilderAPI_MakeFace(wire.Wire()).Face();
+  const TopoDS_Shape body = BRepPrimAPI_MakePrism(face, gp_Vec(0, 0, 10)).Shape();
+  const double bore = 0.15 * module * teeth;
+  return BRepAlgoAPI_Cut(body,
+                         BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -1), gp::DZ()), bore, 12))
+      .Shape();
+}
+
+}  // namespace
+
+void WriteSpurGearPairStep(const std::filesystem::path& file, int teeth_a, int teeth_b,
+                           double module) {
+  gp_Trsf place;
+  place.SetRotation(gp::OZ(), M_PI / teeth_b);  // a tooth space of b faces a tooth of a
+  gp_Trsf shift;
+  shift.SetTranslation(gp_Vec(module * (teeth_a + teeth_b) / 2.0, 0, 0));
+  const TopoDS_Shape b =
+      BRepBuilderAPI_Transform(SpurGear(teeth_b, module), shift * place, true).Shape();
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  builder.Add(all, SpurGear(teeth_a, module));
+  builder.Add(all, b);
+  WriteStep(all, file);
+}
 
 void WriteConesAndBallStep(const std::filesystem::path& file) {
   const gp_Dir z(0, 0, 1);
@@ -34,12 +128,7 @@ void WriteConesAndBallStep(const std::filesystem::path& file) {
   BRep_Builder builder;
   builder.MakeCompound(all);
   for (const TopoDS_Shape& s : {block, pin, ball}) builder.Add(all, s);
-  Message::DefaultMessenger()->ChangePrinters().Clear();  // the writer's statistics
-  STEPControl_Writer writer;
-  if (writer.Transfer(all, STEPControl_AsIs) != IFSelect_RetDone ||
-      writer.Write(file.string().c_str()) != IFSelect_RetDone) {
-    throw std::runtime_error("cannot write " + file.string());
-  }
+  WriteStep(all, file);
 }
 
 }  // namespace mechanist::testing

@@ -14,4 +14,15 @@ namespace mechanist::testing {
 /// Throws std::runtime_error when it cannot write the file.
 void WriteConesAndBallStep(const std::filesystem::path& file);
 
+/// Writes a STEP file (AP214, no product names) of two external spur gears as a CAD system
+/// exports them, meshed along x: `teeth_a` teeth about the z axis and `teeth_b` about
+/// (m (z_a + z_b) / 2, 0), module `module`, 20 degrees pressure angle, addendum m, dedendum
+/// 1.25 m, 10 mm face width from z = 0, each with a bore of 0.3 times its pitch diameter. The
+/// tooth outline is drawn with B-spline curves (each involute flank interpolated through 12
+/// points; the tip and root arcs likewise), so that the flanks are free-form faces, and gear b
+/// is turned by half a tooth so that the teeth mesh. Throws std::runtime_error when it cannot
+/// write the file.
+void WriteSpurGearPairStep(const std::filesystem::path& file, int teeth_a, int teeth_b,
+                           double module);
+
 }  // namespace mechanist::testing
