@@ -7,6 +7,8 @@
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <Eigen/Eigenvalues>
+#include <GeomLib_IsPlanarSurface.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
@@ -82,6 +84,99 @@ struct Cone {
 
 std::string Mm(double x) { return FormatNumber(x) + " mm"; }
 
+// A free-form face (B-spline, Bezier, extrusion, revolution, offset) that is a plane or a
+// cylinder within `tolerance` mm: some exporters and healing steps write every surface so.
+struct AnalyticFit {
+  enum class Kind { kNone, kPlane, kCylinder };
+  Kind kind = Kind::kNone;
+  Eigen::Vector3d point, direction;  // plane: a point and its normal; cylinder: its axis
+  double radius = 0.0;
+  bool outward = true;    // cylinder: the surface's normal (face orientation aside) points away
+  double coverage = 0.0;  // cylinder: radians around the axis that the samples span
+  double error = 0.0;     // mm: the largest distance of a sample from the fitted surface
+};
+
+// Fits a plane, then a cylinder, to a 9 x 9 grid of the face's surface points and normals over
+// its parameter bounds. A plane: every point within `tolerance` of the least-squares plane of
+// the points (Open CASCADE's GeomLib_IsPlanarSurface for the surface itself). A cylinder: the
+// axis is the direction the normals are all perpendicular to (the eigenvector of the smallest
+// eigenvalue of sum n n^T), the circle a least-squares fit of the points projected across it
+// (Kasa's algebraic fit), every point within `tolerance` of it and every normal radial.
+AnalyticFit FitAnalytic(const TopoDS_Face& face, const BRepAdaptor_Surface& surface,
+                        double tolerance) {
+  AnalyticFit fit;
+  double u0, u1, v0, v1;
+  BRepTools::UVBounds(face, u0, u1, v0, v1);
+  constexpr int kGrid = 9;
+  std::vector<Eigen::Vector3d> points, normals;
+  for (int i = 0; i < kGrid; ++i) {
+    for (int j = 0; j < kGrid; ++j) {
+      gp_Pnt p;
+      gp_Vec du, dv;
+      surface.D1(u0 + (u1 - u0) * i / (kGrid - 1), v0 + (v1 - v0) * j / (kGrid - 1), p, du, dv);
+      const gp_Vec n = du.Crossed(dv);
+      if (n.Magnitude() < 1e-12) continue;  // a degenerate point (a pole)
+      points.push_back(ToEigen(p.XYZ()));
+      normals.push_back(ToEigen(n.Normalized().XYZ()));
+    }
+  }
+  if (points.size() < 9) return fit;
+  const Handle(Geom_Surface) geometry = BRep_Tool::Surface(face);
+  const GeomLib_IsPlanarSurface planar(geometry, tolerance);
+  if (planar.IsPlanar()) {
+    const gp_Pln plane = planar.Plan();
+    fit.kind = AnalyticFit::Kind::kPlane;
+    fit.point = ToEigen(plane.Location().XYZ());
+    fit.direction = ToEigen(plane.Axis().Direction().XYZ());
+    if (fit.direction.dot(normals[normals.size() / 2]) < 0) fit.direction = -fit.direction;
+    for (const Eigen::Vector3d& p : points) {
+      fit.error = std::max(fit.error, std::abs((p - fit.point).dot(fit.direction)));
+    }
+    return fit;
+  }
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3d& n : normals) scatter += n * n.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
+  const Eigen::Vector3d axis = eigen.eigenvectors().col(0);
+  // Normals all across the axis, within the angle the tolerance allows over the face.
+  for (const Eigen::Vector3d& n : normals) {
+    if (std::abs(n.dot(axis)) > 1e-3) return fit;
+  }
+  const Eigen::Vector3d x = axis.unitOrthogonal(), y = axis.cross(x);
+  Eigen::MatrixXd A(points.size(), 3);
+  Eigen::VectorXd b(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const double px = points[k].dot(x), py = points[k].dot(y);
+    A.row(k) << px, py, 1.0;
+    b(k) = -(px * px + py * py);
+  }
+  const Eigen::Vector3d c = A.colPivHouseholderQr().solve(b);
+  const double cx = -c(0) / 2, cy = -c(1) / 2, r2 = cx * cx + cy * cy - c(2);
+  if (!(r2 > 0)) return fit;
+  fit.radius = std::sqrt(r2);
+  fit.direction = axis;
+  fit.point = cx * x + cy * y;
+  std::vector<double> angles;
+  int outward = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Eigen::Vector3d radial = points[k] - fit.point - (points[k] - fit.point).dot(axis) * axis;
+    fit.error = std::max(fit.error, std::abs(radial.norm() - fit.radius));
+    if (std::abs(std::abs(radial.normalized().dot(normals[k])) - 1) > 1e-3) return AnalyticFit();
+    outward += radial.dot(normals[k]) > 0 ? 1 : -1;
+    angles.push_back(std::atan2(radial.dot(y), radial.dot(x)));
+  }
+  if (fit.error > tolerance || std::abs(outward) != static_cast<int>(points.size())) {
+    return AnalyticFit();
+  }
+  fit.kind = AnalyticFit::Kind::kCylinder;
+  fit.outward = outward > 0;
+  std::sort(angles.begin(), angles.end());
+  double gap = angles.front() + 2 * kPi - angles.back();
+  for (std::size_t k = 1; k < angles.size(); ++k) gap = std::max(gap, angles[k] - angles[k - 1]);
+  fit.coverage = 2 * kPi - gap;
+  return fit;
+}
+
 // What a cone is beside the solid's cylinders: a countersink at a hole's mouth, a conical end
 // (a chamfer or a point) of a shaft, a flare widening out of a shaft, or a cone of its own.
 std::string DescribeCone(const Cone& c, const std::vector<Feature>& features) {
@@ -115,6 +210,10 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
   std::vector<Cylinder> cylinders;
   std::vector<Cone> cones;
   int planes = 0, spheres = 0, tori = 0, free_form = 0, partial_cones = 0;
+  // Free-form faces that are planes or cylinders: within 1 um or 10 ppm of the solid's size.
+  const double fit_tolerance = std::max(1e-3, 1e-5 * size);
+  int fitted_planes = 0, fitted_cylinders = 0;
+  double fit_error = 0.0;
   std::map<std::tuple<double, double, double>, std::int32_t> positions;
   auto* welded = &positions;
   for (TopExp_Explorer e(solid, TopAbs_FACE); e.More(); e.Next()) {
@@ -141,18 +240,36 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
       mesh->faces.push_back({index[a - 1], index[b - 1], index[c - 1]});
     }
     const BRepAdaptor_Surface surface(face);
-    if (surface.GetType() == GeomAbs_Cylinder) {
-      const gp_Cylinder g = surface.Cylinder();
+    const GeomAbs_SurfaceType type = surface.GetType();
+    const bool analytic = type == GeomAbs_Plane || type == GeomAbs_Cylinder ||
+                          type == GeomAbs_Cone || type == GeomAbs_Sphere || type == GeomAbs_Torus;
+    const AnalyticFit fit = analytic ? AnalyticFit() : FitAnalytic(face, surface, fit_tolerance);
+    if (fit.kind != AnalyticFit::Kind::kNone) {
+      ++(fit.kind == AnalyticFit::Kind::kPlane ? fitted_planes : fitted_cylinders);
+      fit_error = std::max(fit_error, fit.error);
+    }
+    if (type == GeomAbs_Cylinder || fit.kind == AnalyticFit::Kind::kCylinder) {
       Cylinder c;
-      c.point = ToEigen(g.Location().XYZ());
-      c.direction = ToEigen(g.Axis().Direction().XYZ()).normalized();
-      c.radius = g.Radius();
-      // The surface's normal points away from the axis for a right-handed frame; the face's
-      // orientation says on which side the material is.
-      c.convex = g.Position().Direct() != reversed;
-      double u0, u1, v0, v1;
-      BRepTools::UVBounds(face, u0, u1, v0, v1);
-      c.coverage = std::min(u1 - u0, 2 * kPi);
+      double merge = 1e-6;  // exact surfaces of one cylinder agree to rounding
+      if (type == GeomAbs_Cylinder) {
+        const gp_Cylinder g = surface.Cylinder();
+        c.point = ToEigen(g.Location().XYZ());
+        c.direction = ToEigen(g.Axis().Direction().XYZ()).normalized();
+        c.radius = g.Radius();
+        // The surface's normal points away from the axis for a right-handed frame; the face's
+        // orientation says on which side the material is.
+        c.convex = g.Position().Direct() != reversed;
+        double u0, u1, v0, v1;
+        BRepTools::UVBounds(face, u0, u1, v0, v1);
+        c.coverage = std::min(u1 - u0, 2 * kPi);
+      } else {
+        c.point = fit.point;
+        c.direction = fit.direction;
+        c.radius = fit.radius;
+        c.convex = fit.outward != reversed;
+        c.coverage = fit.coverage;
+        merge = fit_tolerance;
+      }
       for (const Eigen::Vector3d& p : nodes) {
         c.lo = std::min(c.lo, (p - c.point).dot(c.direction));
         c.hi = std::max(c.hi, (p - c.point).dot(c.direction));
@@ -160,9 +277,9 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
       // One cylinder split into several faces: merged.
       auto same = std::find_if(cylinders.begin(), cylinders.end(), [&](const Cylinder& o) {
         const Eigen::Vector3d d = c.point - o.point;
-        return std::abs(o.radius - c.radius) < 1e-6 * std::max(1.0, c.radius) &&
-               std::abs(std::abs(o.direction.dot(c.direction)) - 1) < 1e-9 &&
-               (d - d.dot(o.direction) * o.direction).norm() < 1e-6 && o.convex == c.convex;
+        return std::abs(o.radius - c.radius) < merge * std::max(1.0, c.radius) &&
+               std::abs(std::abs(o.direction.dot(c.direction)) - 1) < 1e-9 + merge &&
+               (d - d.dot(o.direction) * o.direction).norm() < merge && o.convex == c.convex;
       });
       if (same == cylinders.end()) {
         cylinders.push_back(c);
@@ -202,17 +319,23 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
         same->r_min = std::min(same->r_min, c.r_min);
         same->r_max = std::max(same->r_max, c.r_max);
       }
-    } else if (surface.GetType() == GeomAbs_Sphere) {
+    } else if (type == GeomAbs_Sphere) {
       ++spheres;
-    } else if (surface.GetType() == GeomAbs_Torus) {
+    } else if (type == GeomAbs_Torus) {
       ++tori;
-    } else if (surface.GetType() != GeomAbs_Plane && surface.GetType() != GeomAbs_Cylinder) {
+    } else if (type != GeomAbs_Plane && fit.kind != AnalyticFit::Kind::kPlane) {
       ++free_form;
-    } else if (surface.GetType() == GeomAbs_Plane && !nodes.empty()) {
-      const gp_Pln plane = surface.Plane();
-      Eigen::Vector3d n = ToEigen(plane.Axis().Direction().XYZ());
+    } else if (!nodes.empty()) {
+      Eigen::Vector3d n, x;
+      if (type == GeomAbs_Plane) {
+        const gp_Pln plane = surface.Plane();
+        n = ToEigen(plane.Axis().Direction().XYZ());
+        x = ToEigen(plane.XAxis().Direction().XYZ());
+      } else {
+        n = fit.direction;
+        x = n.unitOrthogonal();
+      }
       if (reversed) n = -n;
-      const Eigen::Vector3d x = ToEigen(plane.XAxis().Direction().XYZ());
       const Eigen::Vector3d y = n.cross(x);
       Eigen::Vector3d centre = Eigen::Vector3d::Zero();
       for (const Eigen::Vector3d& p : nodes) centre += p / nodes.size();
@@ -258,6 +381,12 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
                        ": no feature (the format has no such kind)");
     }
   };
+  if (fitted_planes + fitted_cylinders > 0) {
+    notes->push_back(std::to_string(fitted_planes + fitted_cylinders) +
+                     " free-form faces taken as exact surfaces: " + std::to_string(fitted_planes) +
+                     " planes, " + std::to_string(fitted_cylinders) + " cylinders (within " +
+                     Mm(fit_error) + ")");
+  }
   count(partial_cones, "partial conical");
   count(spheres, "spherical");
   count(tori, "toroidal");

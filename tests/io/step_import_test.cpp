@@ -222,6 +222,41 @@ struct Gears {
   }
 };
 
+// The pairs of an analysis as "type a b" with the features' names, sorted.
+std::vector<std::string> PairNames(const Assembly& a, const Analysis& an) {
+  std::vector<std::string> names;
+  for (const Pair& p : an.pairs) {
+    names.push_back(std::string(ToString(p.type)) + " " + a.FeatureName(p.a) + " " +
+                    a.FeatureName(p.b));
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+TEST(StepImport, As1WithEverySurfaceABSplineGivesTheSamePairs) {
+  // Some exporters and healing steps write every surface as a B-spline: its planes and
+  // cylinders must still give faces, shafts and holes, and the same rigid, bolted assembly.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_nurbs";
+  std::filesystem::create_directories(dir);
+  testing::WriteNurbsCopy(kAs1, dir / "as1_nurbs.stp");
+  const Assembly original = ReadAssembly(kAs1);
+  const Assembly nurbs = ReadAssembly(dir / "as1_nurbs.stp");
+  ASSERT_EQ(nurbs.parts().size(), original.parts().size());
+  for (std::size_t p = 0; p < nurbs.parts().size(); ++p) {
+    EXPECT_EQ(nurbs.part(p).id, original.part(p).id);
+    EXPECT_EQ(nurbs.part(p).features.size(), original.part(p).features.size()) << nurbs.part(p).id;
+    bool converted = false;
+    for (const std::string& n : nurbs.part(p).notes) {
+      converted = converted || n.find("taken as exact surfaces") != std::string::npos;
+    }
+    EXPECT_TRUE(converted) << nurbs.part(p).id;
+  }
+  const Analysis an_original = Analyze(original), an_nurbs = Analyze(nurbs);
+  EXPECT_EQ(PairNames(nurbs, an_nurbs), PairNames(original, an_original));
+  EXPECT_EQ(an_nurbs.subassemblies.size(), 1u);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(StepImport, GearTeethWithFreeFormFlanksAreFoundOnTheSolidsTessellation) {
   // Our own fixture: a 10-tooth pinion (undercut) meshing a 27-tooth gear, module 1.5, their
   // involute flanks drawn as B-spline curves, so that the exact faces give no feature.

@@ -6,6 +6,7 @@
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
@@ -17,9 +18,16 @@
 #include <Geom_BSplineCurve.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
+#include <STEPCAFControl_Reader.hxx>
+#include <STEPCAFControl_Writer.hxx>
 #include <STEPControl_Writer.hxx>
 #include <TColgp_HArray1OfPnt.hxx>
+#include <TDF_LabelSequence.hxx>
+#include <TDocStd_Document.hxx>
 #include <TopoDS_Compound.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
 #include <algorithm>
 #include <cmath>
 #include <gp_Ax2.hxx>
@@ -109,6 +117,33 @@ void WriteSpurGearPairStep(const std::filesystem::path& file, int teeth_a, int t
   builder.Add(all, SpurGear(teeth_a, module));
   builder.Add(all, b);
   WriteStep(all, file);
+}
+
+void WriteNurbsCopy(const std::filesystem::path& in, const std::filesystem::path& out) {
+  Message::DefaultMessenger()->ChangePrinters().Clear();  // the reader's and writer's statistics
+  Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
+  Handle(TDocStd_Document) document;
+  app->NewDocument("MDTV-XCAF", document);
+  STEPCAFControl_Reader reader;
+  reader.SetNameMode(true);
+  if (reader.ReadFile(in.string().c_str()) != IFSelect_RetDone || !reader.Transfer(document)) {
+    throw std::runtime_error("cannot read " + in.string());
+  }
+  const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(document->Main());
+  TDF_LabelSequence shapes;
+  tool->GetShapes(shapes);
+  for (int i = 1; i <= shapes.Length(); ++i) {
+    if (tool->IsAssembly(shapes(i))) continue;
+    tool->SetShape(shapes(i), BRepBuilderAPI_NurbsConvert(tool->GetShape(shapes(i))).Shape());
+  }
+  tool->UpdateAssemblies();
+  STEPCAFControl_Writer writer;
+  writer.SetNameMode(true);
+  if (!writer.Transfer(document, STEPControl_AsIs) ||
+      writer.Write(out.string().c_str()) != IFSelect_RetDone) {
+    throw std::runtime_error("cannot write " + out.string());
+  }
+  app->Close(document);
 }
 
 void WriteConesAndBallStep(const std::filesystem::path& file) {

@@ -25,4 +25,10 @@ void WriteConesAndBallStep(const std::filesystem::path& file);
 void WriteSpurGearPairStep(const std::filesystem::path& file, int teeth_a, int teeth_b,
                            double module);
 
+/// Copies the STEP assembly `in` to `out` with every surface of every solid converted to a
+/// B-spline (Open CASCADE's BRepBuilderAPI_NurbsConvert), keeping the product structure and
+/// names (XCAF reader and writer): a file as some exporters and healing steps write it.
+/// Throws std::runtime_error when it cannot read or write.
+void WriteNurbsCopy(const std::filesystem::path& in, const std::filesystem::path& out);
+
 }  // namespace mechanist::testing
