@@ -9,11 +9,12 @@ static_assert(sizeof(Pair) <= 88, "Pair has grown: the analysis reads every pair
 
 namespace {
 
-constexpr EnumNames<PairSource, 5> kSources = {{
+constexpr EnumNames<PairSource, 6> kSources = {{
     {PairSource::kRecognised, "recognised"},
     {PairSource::kOverride, "override"},
     {PairSource::kClamp, "clamp"},
     {PairSource::kSetscrew, "setscrew"},
+    {PairSource::kImpliedPin, "implied_pin"},
     {PairSource::kInferred, "inferred_from_interference"},
 }};
 

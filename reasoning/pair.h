@@ -18,6 +18,7 @@ enum class PairSource : std::uint8_t {
   kClamp,       ///< a tight fastener through a clearance hole clamps the hole's part
   kSetscrew,    ///< a tight setscrew's tip bears on a shaft
   kInferred,    ///< the running mechanism's sweep found one part pushing the other along
+  kImpliedPin,  ///< two coaxial holes with nothing in them: a pin the CAD file left out
 };
 
 /// How a pair is held, where that matters to the user.

@@ -4,7 +4,10 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <map>
 #include <optional>
+#include <set>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -26,6 +29,11 @@ constexpr double kPi = 3.14159265358979323846;
 /// miss, M10 in M30 passes through).
 constexpr double kMaxShaftClearance = 0.05;
 constexpr double kMaxClearanceHoleRatio = 1.3;
+// Two coaxial empty holes of two parts are a pivot whose pin the file leaves out when their
+// diameters differ by at most this fraction of the larger (a press-fit bore and a running one)
+// and at most kMaxImpliedPinGap mm of axis lies between them (the parts' faces meet there).
+constexpr double kMaxImpliedPinDifference = 0.2;
+constexpr double kMaxImpliedPinGap = 0.5;
 constexpr double kMinThreadDiameterRatio = 0.6;
 
 /// The parameters of a feature that the fits compare, copied from the Feature (80 bytes, not
@@ -163,7 +171,9 @@ class Recognizer {
     // mesh with several): reserved, so that the pairs are not copied as the vector grows.
     pairs_.reserve(features_.size());
     ForEachCandidate([this](const WorldFeature& x, const WorldFeature& y) { Test(x, y); });
+    AddImpliedPins();
     ApplyOverrides();
+    ReportImpliedPins();
     const std::vector<Screwed> screwed = TightThreads();
     ApplySetscrews(screwed);
     if (2 * rank_bits_ + kSourceBits > 64) {
@@ -392,6 +402,7 @@ class Recognizer {
     if (is(K::kThread, K::kShaft)) setscrew_candidates_.emplace_back(&x, &y);
     if (is(K::kShaft, K::kThread)) setscrew_candidates_.emplace_back(&y, &x);
     if (is(K::kFace, K::kFace)) FaceFace(x, y);
+    if (is(K::kHole, K::kHole)) hole_candidates_.emplace_back(&x, &y);
   }
 
   // ---- output helpers ----
@@ -776,6 +787,66 @@ class Recognizer {
     }
   }
 
+  /// Implied pins (README, "Real CAD exports"): a revolute pair between two holes of two
+  /// parts that are collinear, of diameters within kMaxImpliedPinDifference, overlapping or at
+  /// most kMaxImpliedPinGap apart along the axis, when no shaft or thread sits in either: the
+  /// hinge of two parts whose pin or screw the CAD file leaves out. Before the overrides, so
+  /// that an override forbids or replaces one as any pair.
+  void AddImpliedPins() {
+    std::vector<bool> filled(features_.size(), false);
+    for (const Pair& p : pairs_) {
+      const FeatureKind k = assembly_.kind(p.a);
+      if (k == FeatureKind::kShaft || k == FeatureKind::kThread) filled[Index(p.b)] = true;
+    }
+    for (const auto& [x, y] : hole_candidates_) {
+      if (filled[Index(x->ref)] || filled[Index(y->ref)]) continue;
+      const double d_max = std::max(x->f.diameter, y->f.diameter);
+      if (std::abs(x->f.diameter - y->f.diameter) > kMaxImpliedPinDifference * d_max + L_) {
+        continue;
+      }
+      const double angle = AngleBetweenLines(x->axis.direction, y->axis.direction);
+      const double offset =
+          std::max(DistanceToLine(x->axis.origin, y->axis.origin, y->axis.direction),
+                   DistanceToLine(y->axis.origin, x->axis.origin, x->axis.direction));
+      if (angle > A_ || offset > L_) continue;
+      if (AxialOverlap(x->axis, y->axis) < -kMaxImpliedPinGap - L_) continue;
+      const bool x_first = NameLess(*x, *y);
+      AddPair(PairType::kRevolute, x_first ? *x : *y, x_first ? *y : *x);
+      pairs_.back().source = PairSource::kImpliedPin;
+    }
+  }
+
+  /// One info diagnostic `implied_pin` per two parts that implied pins join, naming the holes
+  /// and the pin's diameter (the smaller hole's).
+  void ReportImpliedPins() {
+    std::map<std::pair<std::string, std::string>, std::vector<const Pair*>> by_parts;
+    for (const Pair& p : pairs_) {
+      if (p.source != PairSource::kImpliedPin) continue;
+      std::string a(assembly_.PartId(p.a.part)), b(assembly_.PartId(p.b.part));
+      if (b < a) std::swap(a, b);
+      by_parts[{a, b}].push_back(&p);
+    }
+    for (const auto& [parts, pairs] : by_parts) {
+      std::set<std::string> holes;
+      double pin = std::numeric_limits<double>::infinity();
+      for (const Pair* p : pairs) {
+        for (const FeatureRef f : {p->a, p->b}) {
+          holes.insert(assembly_.FeatureName(f));
+          pin = std::min(pin, At(f).f.diameter);
+        }
+      }
+      std::string names;
+      for (const std::string& h : holes) names += (names.empty() ? "" : ", ") + h;
+      diagnostics_.push_back({Severity::kInfo,
+                              "implied_pin",
+                              parts.first + " and " + parts.second + " turn on a pin of about " +
+                                  Mm(pin) + " that the file does not model, in holes " + names +
+                                  " (a revolute pair; an override of type none forbids it)",
+                              {parts.first, parts.second},
+                              {holes.begin(), holes.end()}});
+    }
+  }
+
   /// The tapped hole or nut each tight thread is fixed in, the first by name when there are
   /// several (not the first found, which depends on the broad phase), by thread.
   std::vector<Screwed> TightThreads() {
@@ -855,6 +926,7 @@ class Recognizer {
   };
   static constexpr int kSourceBits = 3;
   static_assert(static_cast<int>(PairSource::kInferred) < (1 << kSourceBits));
+  static_assert(static_cast<int>(PairSource::kImpliedPin) < (1 << kSourceBits));
 
   /// Pairs order by feature names, then source, then as found, not by indices, so that
   /// reordering the file changes nothing: the name ranks and the source packed in one key.
@@ -900,6 +972,8 @@ class Recognizer {
   std::vector<Diagnostic> diagnostics_;
   /// (thread, shaft) feature pairs whose reach boxes overlap: possible setscrew contacts.
   std::vector<std::pair<const WorldFeature*, const WorldFeature*>> setscrew_candidates_;
+  /// Hole pairs whose reach boxes overlap: possible implied pins.
+  std::vector<std::pair<const WorldFeature*, const WorldFeature*>> hole_candidates_;
 };
 
 Recognition Recognize(const Assembly& assembly, std::span<const RigidTransform> X_WP) {

@@ -69,9 +69,31 @@ struct Cylinder {
   Eigen::Vector3d point, direction;
   double radius = 0.0;
   bool convex = true;
-  double coverage = 0.0;  // radians of the faces' angular spans, summed
-  double lo = 1e300, hi = -1e300;
+  // Each face's extent along the axis (from `point`) and angular span (radians).
+  struct Span {
+    double lo = 1e300, hi = -1e300;
+    double coverage = 0.0;
+  };
+  std::vector<Span> spans;
 };
+
+// The stretches of a cylinder along its axis where its faces overlap or touch (within
+// `gap` mm), each with the faces' angular spans summed: a bore through the two cheeks of a fork
+// is two holes, not one across the gap between them (where the other part's knuckle sits).
+std::vector<Cylinder::Span> Stretches(std::vector<Cylinder::Span> spans, double gap) {
+  std::sort(spans.begin(), spans.end(),
+            [](const Cylinder::Span& a, const Cylinder::Span& b) { return a.lo < b.lo; });
+  std::vector<Cylinder::Span> stretches;
+  for (const Cylinder::Span& s : spans) {
+    if (stretches.empty() || s.lo > stretches.back().hi + gap) {
+      stretches.push_back(s);
+    } else {
+      stretches.back().hi = std::max(stretches.back().hi, s.hi);
+      stretches.back().coverage += s.coverage;
+    }
+  }
+  return stretches;
+}
 
 // A cone being gathered from its faces.
 struct Cone {
@@ -250,6 +272,7 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
     }
     if (type == GeomAbs_Cylinder || fit.kind == AnalyticFit::Kind::kCylinder) {
       Cylinder c;
+      Cylinder::Span span;
       double merge = 1e-6;  // exact surfaces of one cylinder agree to rounding
       if (type == GeomAbs_Cylinder) {
         const gp_Cylinder g = surface.Cylinder();
@@ -261,18 +284,18 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
         c.convex = g.Position().Direct() != reversed;
         double u0, u1, v0, v1;
         BRepTools::UVBounds(face, u0, u1, v0, v1);
-        c.coverage = std::min(u1 - u0, 2 * kPi);
+        span.coverage = std::min(u1 - u0, 2 * kPi);
       } else {
         c.point = fit.point;
         c.direction = fit.direction;
         c.radius = fit.radius;
         c.convex = fit.outward != reversed;
-        c.coverage = fit.coverage;
+        span.coverage = fit.coverage;
         merge = fit_tolerance;
       }
       for (const Eigen::Vector3d& p : nodes) {
-        c.lo = std::min(c.lo, (p - c.point).dot(c.direction));
-        c.hi = std::max(c.hi, (p - c.point).dot(c.direction));
+        span.lo = std::min(span.lo, (p - c.point).dot(c.direction));
+        span.hi = std::max(span.hi, (p - c.point).dot(c.direction));
       }
       // One cylinder split into several faces: merged.
       auto same = std::find_if(cylinders.begin(), cylinders.end(), [&](const Cylinder& o) {
@@ -282,13 +305,13 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
                (d - d.dot(o.direction) * o.direction).norm() < merge && o.convex == c.convex;
       });
       if (same == cylinders.end()) {
+        c.spans.push_back(span);
         cylinders.push_back(c);
       } else {
         const double sign = same->direction.dot(c.direction) > 0 ? 1 : -1;
         const double shift = (c.point - same->point).dot(same->direction);
-        same->coverage += c.coverage;
-        same->lo = std::min(same->lo, shift + (sign > 0 ? c.lo : -c.hi));
-        same->hi = std::max(same->hi, shift + (sign > 0 ? c.hi : -c.lo));
+        same->spans.push_back({shift + (sign > 0 ? span.lo : -span.hi),
+                               shift + (sign > 0 ? span.hi : -span.lo), span.coverage});
       }
     } else if (surface.GetType() == GeomAbs_Cone) {
       const gp_Cone g = surface.Cone();
@@ -356,16 +379,18 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
   }
   int shafts = 0, holes = 0;
   for (const Cylinder& c : cylinders) {
-    if (c.coverage < 1.5 * kPi) continue;  // a fillet or a partial cylinder
-    Feature f;
-    f.kind = c.convex ? FeatureKind::kShaft : FeatureKind::kHole;
-    f.id = c.convex ? "shaft_" + std::to_string(++shafts) : "hole_" + std::to_string(++holes);
-    f.origin = c.point + c.lo * c.direction;
-    f.axis = c.direction;
-    f.length = c.hi - c.lo;
-    f.diameter = 2 * c.radius;
-    f.through = !c.convex;
-    features->push_back(f);
+    for (const Cylinder::Span& s : Stretches(c.spans, fit_tolerance)) {
+      if (s.coverage < 1.5 * kPi) continue;  // a fillet or a partial cylinder
+      Feature f;
+      f.kind = c.convex ? FeatureKind::kShaft : FeatureKind::kHole;
+      f.id = c.convex ? "shaft_" + std::to_string(++shafts) : "hole_" + std::to_string(++holes);
+      f.origin = c.point + s.lo * c.direction;
+      f.axis = c.direction;
+      f.length = s.hi - s.lo;
+      f.diameter = 2 * c.radius;
+      f.through = !c.convex;
+      features->push_back(f);
+    }
   }
   // The format has no cone, sphere or torus kind: these faces are named in notes.
   for (const Cone& c : cones) {

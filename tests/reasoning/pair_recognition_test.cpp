@@ -521,6 +521,60 @@ TEST(PairRecognition, OverridesForceOrForbidPairs) {
   EXPECT_EQ(glued.a, pin);  // the convex feature first, whatever the override's order
 }
 
+// A hinge whose pin the file leaves out: a fork's two cheeks (holes of `fork_d` through z in
+// [0, 3] and [8, 11]) and a knuckle between them (a hole of `knuckle_d` through z in
+// [3 + gap, 8 - gap]), all on the z axis; `pin` adds a shaft through all three.
+Assembly Hinge(double fork_d, double knuckle_d, double gap = 0.0, bool pin = false) {
+  const auto hole = [](const char* id, double d, double z0, double z1) {
+    return MakeFeature(id, K::kHole, V(0, 0, z0), V::UnitZ(),
+                       [&](Feature& f) { f.diameter = d, f.length = z1 - z0, f.through = true; });
+  };
+  std::vector<Part> parts = {
+      MakePart("fork", {hole("cheek_a", fork_d, 0, 3), hole("cheek_b", fork_d, 8, 11)},
+               RigidTransform(), true),
+      MakePart("lever", {hole("knuckle", knuckle_d, 3 + gap, 8 - gap)})};
+  if (pin) parts.push_back(MakePart("pin", {Shaft(knuckle_d, 11, V(0, 0, -0.5))}));
+  return MakeAssembly(parts);
+}
+
+TEST(PairRecognition, CoaxialEmptyHolesOfTwoPartsAreAnImpliedPin) {
+  // The knuckle's press-fit bore (3.2) between the fork's running holes (3.45): a revolute
+  // pair per cheek, sourced implied_pin, and one info diagnostic naming the holes and the pin.
+  const Recognition hinge = Recognize(Hinge(3.45, 3.2));
+  ASSERT_EQ(hinge.pairs.size(), 2u);
+  for (const Pair& p : hinge.pairs) {
+    EXPECT_EQ(p.type, PairType::kRevolute);
+    EXPECT_EQ(p.source, PairSource::kImpliedPin);
+    EXPECT_EQ(*p.dof, 1);
+  }
+  const Diagnostic* d = FindDiagnostic(hinge, "implied_pin");
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->severity, Severity::kInfo);
+  EXPECT_EQ(d->parts, (std::vector<std::string>{"fork", "lever"}));
+  EXPECT_NE(d->message.find("a pin of about 3.2 mm"), std::string::npos) << d->message;
+  EXPECT_NE(d->message.find("fork/cheek_a, fork/cheek_b, lever/knuckle"), std::string::npos)
+      << d->message;
+  // The lever turns about the pin's axis: one freedom.
+  EXPECT_EQ(Analyze(Hinge(3.45, 3.2)).motion.mobility.dof, 1);
+  // A small axial clearance between the faces is still a hinge; a gap is not.
+  EXPECT_EQ(Recognize(Hinge(3.45, 3.2, 0.4)).pairs.size(), 2u);
+  EXPECT_TRUE(Recognize(Hinge(3.45, 3.2, 1.5)).pairs.empty());
+  // Holes of unlike sizes are not one pivot (a 3 mm hole beside a 5 mm one).
+  EXPECT_TRUE(Recognize(Hinge(5.0, 3.0)).pairs.empty());
+  // With the pin modelled, the pin makes the pairs and no pin is implied.
+  const Recognition pinned = Recognize(Hinge(3.45, 3.2, 0.0, true));
+  EXPECT_FALSE(pinned.pairs.empty());
+  for (const Pair& p : pinned.pairs) EXPECT_NE(p.source, PairSource::kImpliedPin);
+  EXPECT_FALSE(HasDiagnostic(pinned, "implied_pin"));
+  // An override of type none forbids an implied pin like any pair.
+  std::vector<Part> parts = Hinge(3.45, 3.2).parts();
+  const Recognition forbidden = Recognize(
+      MakeAssembly(parts, {PairOverride{{FeatureRef{0, 0}, FeatureRef{1, 0}}, std::nullopt},
+                           PairOverride{{FeatureRef{0, 1}, FeatureRef{1, 0}}, std::nullopt}}));
+  EXPECT_TRUE(forbidden.pairs.empty());
+  EXPECT_FALSE(HasDiagnostic(forbidden, "implied_pin"));
+}
+
 TEST(PairRecognition, ForcedCouplingsGetTheSameParametersAsRecognisedOnes) {
   // Gears 2 mm too far apart to mesh, axes of opposite sense: forced into a gear pair, the
   // ratio is what recognition gives for opposite axes.
