@@ -1350,7 +1350,12 @@ Assembly ReadAssembly(const std::filesystem::path& file) {
     // A STEP assembly alone: as a file that imports it and adds nothing.
     const nlohmann::json text = {
         {"mechanist", 1}, {"name", file.stem().string()}, {"import", file.filename().string()}};
-    return ParseAssembly(text.dump(), file);
+    try {
+      return ParseAssembly(text.dump(), file);
+    } catch (const InputError& e) {
+      // The place is the STEP file itself, not the line of the file made up around it.
+      throw InputError(e.file(), "", 0, 0, e.detail());
+    }
   }
   return ParseAssembly(ReadText(file), file);
 }

@@ -1,4 +1,7 @@
 // The only translation unit that includes Open CASCADE.
+// Open CASCADE's signals become exceptions at OCC_CATCH_SIGNALS (its own mechanism on Linux:
+// the signal handler jumps to the nearest such point, which throws).
+#define OCC_CONVERT_SIGNALS
 #include "io/step_reader.h"
 
 #include <BRepAdaptor_Surface.hxx>
@@ -12,8 +15,11 @@
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
+#include <OSD.hxx>
 #include <Poly_Triangulation.hxx>
 #include <STEPCAFControl_Reader.hxx>
+#include <Standard_ErrorHandler.hxx>
+#include <Standard_Failure.hxx>
 #include <TDF_LabelSequence.hxx>
 #include <TDataStd_Name.hxx>
 #include <TDocStd_Document.hxx>
@@ -23,8 +29,10 @@
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
+#include <csignal>
 #include <gp_Cone.hxx>
 #include <map>
 #include <stdexcept>
@@ -529,13 +537,35 @@ class MessageCapture {
   Message_SequenceOfPrinters saved_;
 };
 
-}  // namespace
+// While alive, Open CASCADE's handlers catch the signals of a crash (segmentation and bus
+// faults, illegal instructions, floating-point traps) where no other handler is set (a
+// sanitizer's stays); the previous handlers come back on destruction.
+class SignalsAsExceptions {
+ public:
+  SignalsAsExceptions() {
+    for (std::size_t k = 0; k < kSignals.size(); ++k) sigaction(kSignals[k], nullptr, &saved_[k]);
+    OSD::SetSignal(OSD_SignalMode_SetUnhandled, Standard_False);
+  }
+  ~SignalsAsExceptions() {
+    for (std::size_t k = 0; k < kSignals.size(); ++k) sigaction(kSignals[k], &saved_[k], nullptr);
+  }
+  SignalsAsExceptions(const SignalsAsExceptions&) = delete;
+  SignalsAsExceptions& operator=(const SignalsAsExceptions&) = delete;
 
-std::vector<StepSolid> ReadStep(const std::filesystem::path& file,
-                                std::vector<StepMessage>* messages) {
-  if (!std::filesystem::exists(file)) throw std::runtime_error("no such file");
-  std::vector<StepMessage> ignored;
-  const MessageCapture capture(messages ? messages : &ignored);
+ private:
+  static constexpr std::array<int, 4> kSignals = {SIGSEGV, SIGBUS, SIGILL, SIGFPE};
+  std::array<struct sigaction, 4> saved_{};
+};
+
+// The first error report of Open CASCADE's reader, which usually names the entity at fault.
+std::string FirstError(const std::vector<StepMessage>& messages) {
+  for (const StepMessage& m : messages) {
+    if (m.error) return "; the reader reported: " + m.text;
+  }
+  return "";
+}
+
+std::vector<StepSolid> ReadSolids(const std::filesystem::path& file) {
   Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
   Handle(TDocStd_Document) document;
   app->NewDocument("MDTV-XCAF", document);
@@ -561,6 +591,28 @@ std::vector<StepSolid> ReadStep(const std::filesystem::path& file,
     if (++count[s.path] > 1) s.path += "_" + std::to_string(count[s.path]);
   }
   return solids;
+}
+
+}  // namespace
+
+std::vector<StepSolid> ReadStep(const std::filesystem::path& file,
+                                std::vector<StepMessage>* messages) {
+  if (!std::filesystem::exists(file)) throw std::runtime_error("no such file");
+  std::vector<StepMessage> ignored;
+  std::vector<StepMessage>& kept = messages ? *messages : ignored;
+  const MessageCapture capture(&kept);
+  const SignalsAsExceptions signals;
+  try {
+    OCC_CATCH_SIGNALS
+    return ReadSolids(file);
+  } catch (const Standard_Failure& failure) {
+    // A crash inside Open CASCADE (a null entity of a damaged file dereferenced) or one of its
+    // exceptions: the file cannot be read, and the process goes on.
+    const char* what = failure.GetMessageString();
+    throw std::runtime_error(
+        std::string("Open CASCADE failed reading it (") + failure.DynamicType()->Name() +
+        (what && *what ? std::string(": ") + what : std::string()) + ")" + FirstError(kept));
+  }
 }
 
 }  // namespace mechanist

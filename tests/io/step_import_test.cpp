@@ -382,6 +382,44 @@ TEST(StepImport, TheRobotHandsFingerHingesTurnOnImpliedPins) {
                                               "Assembly_1.Palm Assembly_1.Thumb1"}));
 }
 
+// The Solid Edge export of ../shared/data/real without the entity `#259 = SURFACE_SIDE_STYLE`,
+// which a surface style refers to: Open CASCADE 7.6 dereferences the missing entity and takes a
+// segmentation fault while it reads the colours.
+std::filesystem::path WriteDamagedStep(const std::filesystem::path& dir) {
+  std::ifstream in(std::filesystem::path(MECHANIST_SHARED_DATA) / "real" /
+                       "revolute_pin_solidedge_chrono" / "assembly.stp",
+                   std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string step = text.str();
+  const auto at = step.find("#259 = SURFACE_SIDE_STYLE");
+  EXPECT_NE(at, std::string::npos);
+  if (at != std::string::npos) step.erase(at, step.find('\n', at) - at);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "damaged.stp", std::ios::binary) << step;
+  return dir / "damaged.stp";
+}
+
+TEST(StepImport, AFileThatCrashesOpenCascadeIsAnErrorAndTheProcessGoesOn) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "mechanist_step_damaged";
+  const std::filesystem::path file = WriteDamagedStep(dir);
+  try {
+    ReadAssembly(file);
+    ADD_FAILURE() << "read a damaged file";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("damaged.stp"), std::string::npos) << what;
+    EXPECT_NE(what.find("Open CASCADE failed reading it (OSD_SIGSEGV"), std::string::npos) << what;
+    // The entity that refers to the missing one.
+    EXPECT_NE(what.find("Entite #169 Type:SURFACE_STYLE_USAGE"), std::string::npos) << what;
+    EXPECT_EQ(e.line(), 0) << what;  // no line of a made-up import file
+  }
+  // The process goes on, and reads a sound file as before.
+  EXPECT_EQ(ReadAssembly(kAs1).parts().size(), 18u);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(StepImport, ConesSpheresAndToriAreNamedInNotes) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_cones";
   std::filesystem::create_directories(dir);
