@@ -457,15 +457,30 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
     mobility.part_freedoms.push_back(body_freedoms[model.body_of_part(p)]);
   }
+  // Jams: per pair, the freedoms every undriven motion leaves at zero, in one warning. A face
+  // contact's slides and turns, and a cylindrical fit's slide, held by the other pairs are how
+  // thrust faces and shoulders work: no jam.
+  std::vector<std::string> locked(model.joints().size());
   for (std::size_t k = 0; k < model.freedoms().size(); ++k) {
-    const Joint& j = model.joints()[model.freedoms()[k].joint];
+    const Freedom& f = model.freedoms()[k];
+    const Joint& j = model.joints()[f.joint];
     if (moves[k] || !j.pair) continue;
+    const PairType type = pairs[*j.pair].type;
+    if (type == PairType::kPlanar ||
+        (type == PairType::kCylindrical && f.kind == Freedom::Kind::kTranslation)) {
+      continue;
+    }
+    locked[f.joint] +=
+        (locked[f.joint].empty() ? "" : "; ") + FreedomWords(assembly, pairs, model, k);
+  }
+  for (std::size_t i = 0; i < locked.size(); ++i) {
+    if (locked[i].empty()) continue;
+    const std::size_t pair = *model.joints()[i].pair;
     result.diagnostics.push_back({Severity::kWarning, "jam",
-                                  std::string(ToString(pairs[*j.pair].type)) + " pair " +
-                                      solver.PairName(*j.pair) + " cannot move as it allows (" +
-                                      FreedomWords(assembly, pairs, model, k) +
-                                      "): the other pairs lock it",
-                                  pair_parts(*j.pair), pair_features(*j.pair)});
+                                  std::string(ToString(pairs[pair].type)) + " pair " +
+                                      solver.PairName(pair) + " cannot move as it allows (" +
+                                      locked[i] + "): the other pairs lock it",
+                                  pair_parts(pair), pair_features(pair)});
   }
 
   // Drivers: each alone at unit rate, then all at their rates.

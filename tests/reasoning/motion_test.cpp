@@ -185,6 +185,33 @@ TEST(Motion, CompoundTrainMultipliesStageRatios) {
   EXPECT_EQ(Exact(Rate(a, an, "g23/teeth2")), "-1/2");
 }
 
+TEST(Motion, ThrustFacesDoingTheirJobAreNoJam) {
+  // A gear on a cylindrical fit, its hub's face resting on the frame's seat: the face contact
+  // holds the fit's slide, the fit holds the contact's slides. Both are how a thrust face
+  // works: no jam (a warning for each used to be given); the gear still turns.
+  const auto face = [](const std::string& id, double z, Eigen::Vector3d normal) {
+    return MakeFeature(id, K::kFace, {0, 0, z}, normal, [](Feature& f) {
+      f.width = 10;
+      f.height = 10;
+    });
+  };
+  Builder b;
+  b.Gear("g1", 0, 0, {{20, 0}}, 1, /*retained=*/false).Drive("g1", "teeth");
+  b.FrameFeature(face("seat", -10, kZ));
+  Assembly with_seat = b.Build();
+  AssemblySpec spec = with_seat.spec();
+  for (mechanist::Part& p : spec.parts) {
+    if (p.id == "g1") p.features.push_back(face("hub", -10, -kZ));
+  }
+  const Assembly a(spec);
+  const Analysis an = Analyze(a);
+  int planar = 0;
+  for (const Pair& p : an.pairs) planar += p.type == PairType::kPlanar;
+  ASSERT_EQ(planar, 1);
+  EXPECT_FALSE(HasCode(an, "jam"));
+  EXPECT_EQ(Exact(Rate(a, an, "g1/teeth")), "1");
+}
+
 TEST(Motion, GearTriangleJams) {
   const Assembly a = Builder()
                          .Gear("g1", 0, 0, {{20, 0}})
