@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <map>
 #include <span>
 
 #include "kernel/compressed_rows.h"
@@ -388,11 +389,27 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     if (solver.outcomes()[r] == LinearSystem::Outcome::kRedundant)
       ++redundant[model.rows()[r].pair];
   }
+  // Face contacts over-constrain whatever rests on several faces (a motor flange on a plate):
+  // their redundant constraints are said once per two parts, not once per face.
+  struct Faces {
+    int count = 0;
+    std::vector<std::string> parts, features;
+  };
+  std::map<std::pair<std::size_t, std::size_t>, Faces> faces_of_parts;  // by part ranks
   for (std::size_t pair = 0; pair < pairs.size(); ++pair) {
     const int count = redundant[pair];
     if (count == 0) continue;
     mobility.redundant += count;
     mobility.redundant_pairs.push_back({pair, count});
+    if (pairs[pair].type == PairType::kPlanar) {
+      const std::size_t a = assembly.PartRank(pairs[pair].a.part);
+      const std::size_t b = assembly.PartRank(pairs[pair].b.part);
+      Faces& faces = faces_of_parts[std::minmax(a, b)];
+      faces.count += count;
+      if (faces.parts.empty()) faces.parts = pair_parts(pair);
+      for (std::string& f : pair_features(pair)) faces.features.push_back(std::move(f));
+      continue;
+    }
     // The features' names once, for the message and the list, and the message appended into
     // one buffer (an over-constrained grid of 100,000 parts names 20,000 pairs).
     std::vector<std::string> features = pair_features(pair);
@@ -409,6 +426,16 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     message.append(kImplied);
     result.diagnostics.push_back({Severity::kInfo, "redundant_constraints", std::move(message),
                                   pair_parts(pair), std::move(features)});
+  }
+  for (auto& [ranks, faces] : faces_of_parts) {
+    const std::size_t contacts = faces.features.size() / 2;
+    std::string message =
+        "face contact" + std::string(contacts > 1 ? "s" : "") + " of " + faces.parts[0] + " and " +
+        faces.parts[1] + " (" + std::to_string(contacts) + "): " + std::to_string(faces.count) +
+        (faces.count == 1 ? " of their constraints is" : " of their constraints are") +
+        " implied by the other pairs (over-constrained: they must be made accurately)";
+    result.diagnostics.push_back({Severity::kInfo, "redundant_constraints", std::move(message),
+                                  std::move(faces.parts), std::move(faces.features)});
   }
 
   // Allowable motion per part and jams, from the undriven motions.

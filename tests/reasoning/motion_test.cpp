@@ -212,6 +212,34 @@ TEST(Motion, ThrustFacesDoingTheirJobAreNoJam) {
   EXPECT_EQ(Exact(Rate(a, an, "g1/teeth")), "1");
 }
 
+TEST(Motion, RedundantFaceContactsAreSaidOncePerTwoParts) {
+  // A block standing on the frame with three feet: the second and third contacts repeat what
+  // the first one constrains; one finding for the block and the frame, not one per foot.
+  const auto face = [](const std::string& id, double x, Eigen::Vector3d normal) {
+    return MakeFeature(id, K::kFace, {x, 0, 0}, normal, [](Feature& f) {
+      f.width = 4;
+      f.height = 4;
+    });
+  };
+  Builder b;
+  for (int k = 0; k < 3; ++k) b.FrameFeature(face("pad" + std::to_string(k), 10.0 * k, kZ));
+  b.Part(
+      MakePart("block", {face("foot0", 0, -kZ), face("foot1", 10, -kZ), face("foot2", 20, -kZ)}));
+  const Assembly a = b.Build();
+  const Analysis an = Analyze(a);
+  EXPECT_EQ(an.motion.mobility.redundant, 6);
+  int findings = 0;
+  for (const Diagnostic& d : an.diagnostics) {
+    if (d.code != "redundant_constraints") continue;
+    ++findings;
+    EXPECT_NE(d.message.find("face contacts of"), std::string::npos) << d.message;
+    EXPECT_NE(d.message.find("(2): 6 of their constraints are implied"), std::string::npos)
+        << d.message;
+    EXPECT_EQ(d.features.size(), 4u);
+  }
+  EXPECT_EQ(findings, 1);
+}
+
 TEST(Motion, GearTriangleJams) {
   const Assembly a = Builder()
                          .Gear("g1", 0, 0, {{20, 0}})
