@@ -539,22 +539,39 @@ class MessageCapture {
 
 // While alive, Open CASCADE's handlers catch the signals of a crash (segmentation and bus
 // faults, illegal instructions, floating-point traps) where no other handler is set (a
-// sanitizer's stays); the previous handlers come back on destruction.
+// sanitizer's stays), on a stack of their own, so that an endless recursion (an edge loop of a
+// damaged file that refers to itself) is caught too; the previous handlers and stack come back
+// on destruction.
 class SignalsAsExceptions {
  public:
-  SignalsAsExceptions() {
+  SignalsAsExceptions() : stack_(kStackSize) {
     for (std::size_t k = 0; k < kSignals.size(); ++k) sigaction(kSignals[k], nullptr, &saved_[k]);
     OSD::SetSignal(OSD_SignalMode_SetUnhandled, Standard_False);
+    stack_t alternate{};
+    alternate.ss_sp = stack_.data();
+    alternate.ss_size = stack_.size();
+    sigaltstack(&alternate, &saved_stack_);
+    for (std::size_t k = 0; k < kSignals.size(); ++k) {
+      if (saved_[k].sa_handler != SIG_DFL) continue;  // not Open CASCADE's: left as it is
+      struct sigaction action;
+      sigaction(kSignals[k], nullptr, &action);
+      action.sa_flags |= SA_ONSTACK;
+      sigaction(kSignals[k], &action, nullptr);
+    }
   }
   ~SignalsAsExceptions() {
     for (std::size_t k = 0; k < kSignals.size(); ++k) sigaction(kSignals[k], &saved_[k], nullptr);
+    sigaltstack(&saved_stack_, nullptr);
   }
   SignalsAsExceptions(const SignalsAsExceptions&) = delete;
   SignalsAsExceptions& operator=(const SignalsAsExceptions&) = delete;
 
  private:
   static constexpr std::array<int, 4> kSignals = {SIGSEGV, SIGBUS, SIGILL, SIGFPE};
+  static constexpr std::size_t kStackSize = 1 << 18;
   std::array<struct sigaction, 4> saved_{};
+  std::vector<char> stack_;
+  stack_t saved_stack_{};
 };
 
 // The first error report of Open CASCADE's reader, which usually names the entity at fault.

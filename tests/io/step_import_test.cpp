@@ -382,19 +382,19 @@ TEST(StepImport, TheRobotHandsFingerHingesTurnOnImpliedPins) {
                                               "Assembly_1.Palm Assembly_1.Thumb1"}));
 }
 
-// The Solid Edge export of ../shared/data/real without the entity `#259 = SURFACE_SIDE_STYLE`,
-// which a surface style refers to: Open CASCADE 7.6 dereferences the missing entity and takes a
-// segmentation fault while it reads the colours.
-std::filesystem::path WriteDamagedStep(const std::filesystem::path& dir) {
+// The Solid Edge export of ../shared/data/real with `from` replaced by `to`, written to
+// dir/damaged.stp.
+std::filesystem::path WriteDamagedStep(const std::filesystem::path& dir, const std::string& from,
+                                       const std::string& to) {
   std::ifstream in(std::filesystem::path(MECHANIST_SHARED_DATA) / "real" /
                        "revolute_pin_solidedge_chrono" / "assembly.stp",
                    std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
   std::string step = text.str();
-  const auto at = step.find("#259 = SURFACE_SIDE_STYLE");
-  EXPECT_NE(at, std::string::npos);
-  if (at != std::string::npos) step.erase(at, step.find('\n', at) - at);
+  const auto at = step.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) step.replace(at, from.size(), to);
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "damaged.stp", std::ios::binary) << step;
   return dir / "damaged.stp";
@@ -403,7 +403,11 @@ std::filesystem::path WriteDamagedStep(const std::filesystem::path& dir) {
 TEST(StepImport, AFileThatCrashesOpenCascadeIsAnErrorAndTheProcessGoesOn) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "mechanist_step_damaged";
-  const std::filesystem::path file = WriteDamagedStep(dir);
+  // Without the entity `#259 = SURFACE_SIDE_STYLE`, which a surface style refers to: Open
+  // CASCADE 7.6 dereferences the missing entity and takes a segmentation fault while it reads
+  // the colours.
+  const std::filesystem::path file =
+      WriteDamagedStep(dir, "#259 = SURFACE_SIDE_STYLE( '', ( #425 ) );", "");
   try {
     ReadAssembly(file);
     ADD_FAILURE() << "read a damaged file";
@@ -414,6 +418,16 @@ TEST(StepImport, AFileThatCrashesOpenCascadeIsAnErrorAndTheProcessGoesOn) {
     // The entity that refers to the missing one.
     EXPECT_NE(what.find("Entite #169 Type:SURFACE_STYLE_USAGE"), std::string::npos) << what;
     EXPECT_EQ(e.line(), 0) << what;  // no line of a made-up import file
+  }
+  // An oriented edge that is its own edge: the reader recurses until the stack overflows, and
+  // the signal is caught on a stack of its own.
+  try {
+    ReadAssembly(WriteDamagedStep(dir, "#330 = ORIENTED_EDGE( '', *, *, #587",
+                                  "#330 = ORIENTED_EDGE( '', *, *, #330"));
+    ADD_FAILURE() << "read an edge that is its own";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Open CASCADE failed reading it"), std::string::npos)
+        << e.what();
   }
   // The process goes on, and reads a sound file as before.
   EXPECT_EQ(ReadAssembly(kAs1).parts().size(), 18u);
