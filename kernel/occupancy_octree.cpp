@@ -9,7 +9,6 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <tuple>
 
 #include "kernel/mesh_check.h"
 #include "kernel/triangle_box_overlap.h"
@@ -70,8 +69,8 @@ struct ProjectedTriangle {
       const Eigen::Vector3d& p = swap ? b : a;
       const Eigen::Vector3d& q = swap ? a : b;
       const double du = s * (b[u] - a[u]), dv = s * (b[v] - a[v]);
-      edges[k] = {p[u],        p[v],          q[u] - p[u],
-                  q[v] - p[v], swap ? -s : s, dv > 0 || (dv == 0 && du < 0)};
+      const bool takes_ties = dv > 0 || (dv == 0 && du < 0);
+      edges[k] = {p[u], p[v], q[u] - p[u], q[v] - p[v], swap ? -s : s, takes_ties};
     }
   }
 
@@ -145,8 +144,9 @@ bool MakesPartial(const Triangle& t, const Eigen::Vector3d& lo, double h, double
   return true;
 }
 
-// The state along one line between its sorted crossings: the material below a crossing that
-// faces up or above one that faces down (several parts may meet at one height).
+// The empty length of [lo, hi] along a line, from its crossings (sorted here): material lies
+// below a crossing that faces up and above one that faces down (several parts may meet at one
+// height).
 double EmptyLength(std::vector<Crossing>& crossings, double lo, double hi, double eps) {
   std::sort(crossings.begin(), crossings.end(),
             [](const Crossing& x, const Crossing& y) { return x.at < y.at; });
@@ -167,9 +167,9 @@ double EmptyLength(std::vector<Crossing>& crossings, double lo, double hi, doubl
 }
 
 // The state (-1 unknown, 0 empty, 1 material) at the voxel's n^3 points at the centres of its
-// sub-cubes (index x + n (y + n z)), for the lines that cross no surface: a
-// point takes it from the nearest crossing on a line along some axis through it, and shares it
-// with the neighbouring points along each axis that no crossing separates from it.
+// sub-cubes (index x + n (y + n z)), for the lines that cross no surface: a point takes it from
+// the nearest crossing on a line along some axis through it, and shares it with the
+// neighbouring points along each axis that no crossing separates from it.
 std::array<std::int8_t, kMaxSamples> SampleStates(const std::vector<Triangle>& tris,
                                                   const Eigen::Vector3d& lo, double h, int n,
                                                   double eps, LineCrossings& crossings) {

@@ -40,11 +40,11 @@ enum class CellState : std::uint8_t {
 /// few ulps (TriangleOverlapsBox), so that a surface can never slip between cells. A triangle
 /// that lies in the plane of a voxel's face (to within those ulps: CAD faces on round
 /// coordinates) meets neither voxel beside it inside; it makes partial only the voxel behind it
-/// (against its normal, in the material), and only when it covers that face's centre, so that a
-/// face it covers is never crossed by two untouched cells while the voxel in front stays
-/// untouched: two cells are joined through a face unless a surface covers all of it. Untouched
-/// cells that share a face form connected components; no surface passes between two cells of one
-/// component, so a component is all full or all empty, and one point of it decides: full when the
+/// (against its normal, in the material), and only when it covers that face's centre: the voxel
+/// in front stays untouched, and no two untouched cells meet at a face that surfaces cover whole
+/// (a face covered in part still joins one region). Untouched cells that share a face form
+/// connected components; no surface passes between two cells of one component, so a component is
+/// all full or all empty, and one point of it decides: full when the
 /// generalized winding number of some mesh there is at least 1/2 in magnitude. For a closed mesh
 /// this is the exact inside test. A mesh with cracks, T-junctions or missing faces (common in CAD
 /// exports; CheckMesh finds boundary or misoriented edges) may let its inside and outside join
@@ -107,7 +107,7 @@ class OccupancyOctree {
   /// for other cells.
   std::vector<std::int32_t> touching_meshes(const Cell& cell) const;
 
-  /// The empty part of a partial cell (see Fill); {0, 0} for other cells.
+  /// The empty part of a partial cell (see Fill); {0, 0} for other cells. Reads cell.node only.
   Fill fill(const Cell& cell) const;
 
   /// The cell's box in the world, mm.
