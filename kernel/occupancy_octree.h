@@ -44,13 +44,13 @@ enum class CellState : std::uint8_t {
 /// in front stays untouched, and no two untouched cells meet at a face that surfaces cover whole
 /// (a face covered in part still joins one region). Untouched cells that share a face form
 /// connected components; no surface passes between two cells of one component, so a component is
-/// all full or all empty, and one point of it decides: full when the
-/// generalized winding number of some mesh there is at least 1/2 in magnitude. For a closed mesh
-/// this is the exact inside test. A mesh with cracks, T-junctions or missing faces (common in CAD
-/// exports; CheckMesh finds boundary or misoriented edges) may let its inside and outside join
-/// through an opening wider than a voxel, so inside its bounding box every untouched cell is
-/// decided by the winding number at its own centre (near 1 inside a part with a hole) and only
-/// cells of equal state are joined; components of equal state that touch are merged afterwards.
+/// all full or all empty, and one point of it decides: full when the generalized winding number
+/// of some mesh there is at least 1/2 in magnitude. For a closed mesh this is the exact inside
+/// test. A mesh with cracks, T-junctions or missing faces (common in CAD exports; CheckMesh finds
+/// boundary or misoriented edges) may let its inside and outside join through an opening wider
+/// than a voxel, so inside its bounding box every untouched cell is decided by the winding number
+/// at its own centre (near 1 inside a part with a hole) and only cells of equal state are joined;
+/// components of equal state that touch are merged afterwards.
 class OccupancyOctree {
  public:
   /// A leaf cell: the voxel box [min, min + size) (size a power of two) and its node.
