@@ -37,15 +37,20 @@ enum class CellState : std::uint8_t {
 /// space around the meshes, so every cell that touches the root's boundary is empty.
 ///
 /// Classification. Cells touched by a triangle are found by a separating-axis test grown by a
-/// few ulps (TriangleOverlapsBox), so that a surface can never slip between cells. Untouched cells
-/// that share a face form connected components; no surface passes between two cells of one
-/// component, so a component is all full or all empty, and one point of it decides: full when the
-/// generalized winding number of some mesh there is at least 1/2 in magnitude. For a closed mesh
-/// this is the exact inside test. A mesh with cracks, T-junctions or missing faces (common in CAD
-/// exports; CheckMesh finds boundary or misoriented edges) may let its inside and outside join
-/// through an opening wider than a voxel, so inside its bounding box every untouched cell is
-/// decided by the winding number at its own centre (near 1 inside a part with a hole) and only
-/// cells of equal state are joined; components of equal state that touch are merged afterwards.
+/// few ulps (TriangleOverlapsBox), so that a surface can never slip between cells. A triangle
+/// that lies in the plane of a voxel's face (to within those ulps: CAD faces on round
+/// coordinates) meets neither voxel beside it inside; it makes partial only the voxel behind it
+/// (against its normal, in the material), and only when it covers that face's centre: the voxel
+/// in front stays untouched, and no two untouched cells meet at a face that surfaces cover whole
+/// (a face covered in part still joins one region). Untouched cells that share a face form
+/// connected components; no surface passes between two cells of one component, so a component is
+/// all full or all empty, and one point of it decides: full when the generalized winding number
+/// of some mesh there is at least 1/2 in magnitude. For a closed mesh this is the exact inside
+/// test. A mesh with cracks, T-junctions or missing faces (common in CAD exports; CheckMesh finds
+/// boundary or misoriented edges) may let its inside and outside join through an opening wider
+/// than a voxel, so inside its bounding box every untouched cell is decided by the winding number
+/// at its own centre (near 1 inside a part with a hole) and only cells of equal state are joined;
+/// components of equal state that touch are merged afterwards.
 class OccupancyOctree {
  public:
   /// A leaf cell: the voxel box [min, min + size) (size a power of two) and its node.
@@ -62,6 +67,21 @@ class OccupancyOctree {
     /// True when it touches the root's boundary (it is then the outside, or part of it).
     bool exterior = false;
     std::int64_t voxels = 0;  ///< its volume in voxels
+  };
+  /// The empty part of a partial voxel: the fraction `empty` in [0, 1] of its volume that lies
+  /// outside every mesh, within `error` of the true fraction. Along the axis where the voxel's
+  /// triangles face most, 4 x 4 lines through it (2 x 2 when a triangle slopes across the
+  /// axes) are cut exactly where they cross the triangles, each crossing's normal telling the
+  /// material below it from the air above; a line that crosses none takes the state of a
+  /// neighbouring line at a height no triangle reaches between them. The fraction is the mean
+  /// empty length. Each line stands for its square prism, which can differ from it only
+  /// between the lowest and the highest that the triangles reaching into the prism span there:
+  /// a face square to the axis or lying in a prism's side adds no error, a sloping face about
+  /// its slope times the lines' spacing per prism. Stored in 240ths of a voxel, the error
+  /// rounded up to cover the rounding of both.
+  struct Fill {
+    double empty = 0.0;
+    double error = 0.0;
   };
   /// Reports build progress as a fraction in [0, 1].
   using Progress = std::function<void(double)>;
@@ -87,6 +107,9 @@ class OccupancyOctree {
   /// for other cells.
   std::vector<std::int32_t> touching_meshes(const Cell& cell) const;
 
+  /// The empty part of a partial cell (see Fill); {0, 0} for other cells. Reads cell.node only.
+  Fill fill(const Cell& cell) const;
+
   /// The cell's box in the world, mm.
   Aabb Box_W(const Cell& cell) const;
   /// Calls f on every leaf, depth first in child order (x, then y, then z bit).
@@ -104,7 +127,7 @@ class OccupancyOctree {
 
   std::size_t node_count() const { return nodes_.size(); }
   std::size_t leaf_count() const { return leaves_; }
-  /// Bytes held by the structure (nodes, components, mesh lists).
+  /// Bytes held by the structure (nodes, their fills, components, mesh lists).
   std::size_t MemoryBytes() const;
 
  private:
@@ -129,6 +152,9 @@ class OccupancyOctree {
   int depth_ = 0;
   std::array<std::int32_t, 3> extent_ = {1, 1, 1};
   std::vector<std::uint32_t> nodes_;
+  // Per node: a partial leaf's Fill, empty in the low byte and error in the high byte, in
+  // 240ths.
+  std::vector<std::uint16_t> fills_;
   std::size_t leaves_ = 0;
   std::vector<Component> components_;
   std::vector<std::vector<std::int32_t>> multi_meshes_;

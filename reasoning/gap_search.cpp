@@ -189,7 +189,15 @@ GapSearch FindGaps(const Assembly& assembly, const GapSearchOptions& options) {
   }
   std::sort(walls.begin(), walls.end());
   walls.erase(std::unique(walls.begin(), walls.end()), walls.end());
-  for (const auto& w : walls) ++result.gaps[w.first].boundary_voxels;
+  std::vector<OccupancyOctree::Fill> wall_fill(result.gaps.size());  // summed, in voxels
+  for (const auto& [g, node] : walls) {
+    ++result.gaps[g].boundary_voxels;
+    OccupancyOctree::Cell wall;  // the node is all a partial voxel's fill needs
+    wall.node = node;
+    const OccupancyOctree::Fill fill = tree.fill(wall);
+    wall_fill[g].empty += fill.empty;
+    wall_fill[g].error += fill.error;
+  }
 
   // Closest approach: the nearest pair of a gap face and an outside face.
   const PointTree outside_tree(std::move(outside_faces));
@@ -211,8 +219,8 @@ GapSearch FindGaps(const Assembly& assembly, const GapSearchOptions& options) {
     std::sort(parts[g].begin(), parts[g].end());
     parts[g].erase(std::unique(parts[g].begin(), parts[g].end()), parts[g].end());
     gap.parts = std::move(parts[g]);
-    gap.volume = (static_cast<double>(gap.voxels) + 0.5 * gap.boundary_voxels) * h3;
-    gap.volume_error = 0.5 * gap.boundary_voxels * h3;
+    gap.volume = (static_cast<double>(gap.voxels) + wall_fill[g].empty) * h3;
+    gap.volume_error = wall_fill[g].error * h3;
   }
 
   // Number the gaps largest first; the mapping from components follows.

@@ -28,9 +28,11 @@ struct Gap {
   std::int32_t component = -1;
   std::int64_t voxels = 0;           ///< its empty voxels
   std::int64_t boundary_voxels = 0;  ///< partial voxels within one voxel of it (26-neighbours)
-  /// Volume, mm^3: (voxels + boundary_voxels / 2) voxel^3, within volume_error =
-  /// (boundary_voxels / 2) voxel^3 of the true volume as long as the gap has no part thinner
-  /// than a voxel that reaches further than one voxel from its empty cells.
+  /// Volume, mm^3: (voxels + the empty fractions of the boundary voxels) voxel^3
+  /// (OccupancyOctree::Fill), within volume_error = (the sum of their fractions' errors)
+  /// voxel^3 of the true volume as long as the boundary voxels' empty space is the gap's (no
+  /// wall thinner than a voxel beside it) and the gap has no part thinner than a voxel that
+  /// reaches further than one voxel from its empty cells. Faces square to the axes add no error.
   double volume = 0.0;
   double volume_error = 0.0;
   Aabb box_W;                      ///< bounds of its empty cells, world, mm
