@@ -1,12 +1,14 @@
 // The mechanist command line. Exit codes: 0 success, 1 the check or analysis found failures,
 // 2 bad input or usage, 3 internal error.
 
+#include <sys/time.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -58,10 +60,59 @@ constexpr int kExitFailures = 1;
 constexpr int kExitUsage = 2;
 constexpr int kExitInternal = 3;
 
+// How long reading one input may take, seconds (--read-timeout); 0: no bound.
+double g_read_timeout = 300;
+// The message the alarm writes, prepared beforehand: a signal handler may only write and exit.
+std::string g_timeout_message;
+
+void OnReadTimeout(int) {
+  // No exception can leave Open CASCADE at an arbitrary point safely (it may hold the heap's
+  // lock): the process ends here, before any output file is written.
+  [[maybe_unused]] const auto written =
+      ::write(STDERR_FILENO, g_timeout_message.data(), g_timeout_message.size());
+  ::_exit(kExitUsage);
+}
+
+// While alive, an alarm ends the process with exit code 2 and a message naming `file` when
+// reading takes longer than g_read_timeout: a damaged file can send Open CASCADE's reader
+// into an endless loop.
+class ReadTimeout {
+ public:
+  explicit ReadTimeout(const std::string& file) {
+    if (!(g_read_timeout > 0)) return;
+    g_timeout_message = "mechanist: error: " + file + ": reading it took longer than " +
+                        mechanist::FormatNumber(g_read_timeout) +
+                        " s (--read-timeout); the file may be damaged\n";
+    std::signal(SIGALRM, OnReadTimeout);
+    itimerval timer{};
+    timer.it_value.tv_sec = static_cast<time_t>(g_read_timeout);
+    timer.it_value.tv_usec =
+        static_cast<suseconds_t>(1e6 * (g_read_timeout - std::floor(g_read_timeout)));
+    ::setitimer(ITIMER_REAL, &timer, nullptr);
+    armed_ = true;
+  }
+  ~ReadTimeout() {
+    if (!armed_) return;
+    const itimerval off{};
+    ::setitimer(ITIMER_REAL, &off, nullptr);
+    std::signal(SIGALRM, SIG_DFL);
+  }
+  ReadTimeout(const ReadTimeout&) = delete;
+  ReadTimeout& operator=(const ReadTimeout&) = delete;
+
+ private:
+  bool armed_ = false;
+};
+
+mechanist::Assembly ReadInput(const std::string& file) {
+  const ReadTimeout timeout(file);
+  return mechanist::ReadAssembly(file);
+}
+
 // The file's assembly; when it declares adjustments and goals, with the adjustments solved and
 // locked (the designer tightens the bolts), a line per adjustment on `out`.
 mechanist::Assembly Load(const std::string& file, std::ostream& out) {
-  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const mechanist::Assembly assembly = ReadInput(file);
   mechanist::AdjustmentSummary summary;
   mechanist::Assembly adjusted = mechanist::Adjusted(assembly, &summary);
   for (std::size_t k = 0; k < summary.adjustments.size(); ++k) {
@@ -89,12 +140,15 @@ int Features(const std::string& file, const std::string& json) {
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   std::vector<mechanist::FeatureReportEntry> entries;
   if (extension == ".json" || extension == ".step" || extension == ".stp") {
-    const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+    const mechanist::Assembly assembly = ReadInput(file);
     entries = mechanist::RecogniseAssemblyFeatures(assembly);
     mechanist::WriteFeatureReport(entries, std::cout);
     mechanist::WriteDiagnostics(assembly.findings(), std::cout);
   } else {
-    const mechanist::TriangleMesh mesh = mechanist::ReadMesh(file);
+    const mechanist::TriangleMesh mesh = [&] {
+      const ReadTimeout timeout(file);
+      return mechanist::ReadMesh(file);
+    }();
     entries.push_back({std::filesystem::path(file).filename().string(), mechanist::RigidTransform(),
                        mechanist::RecognizeFeatures(mesh), true});
     mechanist::WriteFeatureReport(entries, std::cout);
@@ -104,7 +158,7 @@ int Features(const std::string& file, const std::string& json) {
 }
 
 int Adjust(const std::string& file, const std::string& json, const std::string& write) {
-  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const mechanist::Assembly assembly = ReadInput(file);
   if (assembly.adjustments().empty()) {
     throw mechanist::InputError(file, "/adjustments", 0, 0,
                                 "expected adjustments to solve, found none");
@@ -146,7 +200,7 @@ std::function<void(double)> Progress(const char* what) {
 }
 
 int Validate(const std::string& file) {
-  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const mechanist::Assembly assembly = ReadInput(file);
   const auto diagnostics = mechanist::CheckAssembly(assembly);
   mechanist::WriteDiagnostics(diagnostics, std::cout);
   std::size_t features = 0;
@@ -157,7 +211,7 @@ int Validate(const std::string& file) {
 }
 
 int Info(const std::string& file) {
-  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const mechanist::Assembly assembly = ReadInput(file);
   mechanist::WriteInfo(assembly, std::cout);
   const auto diagnostics = mechanist::CheckAssembly(assembly);
   if (!diagnostics.empty()) std::cout << "diagnostics: " << diagnostics.size() << "\n";
@@ -236,7 +290,7 @@ int Assemble(const std::string& file, const std::string& json) {
 }
 
 int Gaps(const std::string& file, double voxel, const std::string& json, const std::string& vtk) {
-  const mechanist::Assembly assembly = mechanist::ReadAssembly(file);
+  const mechanist::Assembly assembly = ReadInput(file);
   if (!(voxel > 0) || !std::isfinite(voxel)) {
     throw mechanist::InputError(file, "", 0, 0, "--voxel: expected a length > 0");
   }
@@ -454,6 +508,10 @@ int main(int argc, char** argv) {
       "and how it moves"};
   app.set_version_flag("--version", std::string("mechanist ") + MECHANIST_VERSION);
   app.require_subcommand(1);
+  app.add_option("--read-timeout", g_read_timeout,
+                 "seconds reading one input file may take before mechanist gives up with exit "
+                 "code 2 (default 300; 0: no bound); before the command")
+      ->check(CLI::NonNegativeNumber);
 
   std::string file;
   CLI::App* validate =

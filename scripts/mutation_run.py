@@ -6,7 +6,8 @@ Usage: scripts/mutation_run.py [--step N] [--json N] [--seed S] [--mechanist PAT
 Mutates STEP files of ../shared/data (AS1 and the smaller real exports) and the examples'
 assembly files and meshes the way damaged files look: bytes flipped, ranges deleted or
 duplicated, truncation, numbers replaced by nan, 1e308 or -1, STEP entity lines deleted. Each
-mutant goes through `mechanist validate` and `mechanist analyze` (60 s bound each). Prints the
+mutant goes through `mechanist validate` and `mechanist analyze` (with `--read-timeout 20`, and
+a 60 s bound on the whole run). Prints the
 exit codes counted and every run that ended otherwise (a signal, a time-out, exit 3); with
 --keep, those inputs are kept in DIR. Exit status 1 when any run ended otherwise.
 """
@@ -63,7 +64,8 @@ def run(mechanist, path):
     results = []
     for command in (["validate"], ["analyze"]):
         try:
-            r = subprocess.run([mechanist] + command + [path], stdout=subprocess.DEVNULL,
+            r = subprocess.run([mechanist, "--read-timeout", "20"] + command + [path],
+                               stdout=subprocess.DEVNULL,
                                stderr=subprocess.PIPE, timeout=60)
             results.append((command[0], r.returncode, r.stderr[-300:].decode(errors="replace")))
         except subprocess.TimeoutExpired:

@@ -90,6 +90,19 @@ TEST(Cli, FeaturesOnlyPartsAreAnalysedAndSkippedByTheGeometricCommands) {
       << brake.out;
 }
 
+TEST(Cli, ReadingThatTakesTooLongEndsWithTwo) {
+  // The robot hand export takes seconds to read: a bound of 50 ms stops it, as it stops a
+  // damaged file that sends Open CASCADE's reader into an endless loop.
+  const std::string hand = std::string(MECHANIST_SHARED_DATA) +
+                           "/real/robot_hand_finger_hinges_onshape/Assembly\\ 1.step";
+  const CommandResult run = Mechanist("--read-timeout 0.05 analyze " + hand);
+  EXPECT_EQ(run.exit_code, 2) << run.out;
+  EXPECT_NE(run.out.find("Assembly 1.step: reading it took longer than 0.05 s (--read-timeout)"),
+            std::string::npos)
+      << run.out;
+  EXPECT_EQ(Mechanist("--read-timeout -1 validate " + hand).exit_code, 2);
+}
+
 TEST(Cli, BadInputExitsWithTwoAndNamesThePlace) {
   const std::filesystem::path file =
       std::filesystem::temp_directory_path() / "mechanist_cli_bad.json";
