@@ -335,7 +335,9 @@ class Reader {
     static const std::regex kId("[A-Za-z0-9_.-]+");
     {
       ExpectObject(v, p);
-      CheckKeys(v, p, {"id", "mesh", "library", "pose", "place", "ground", "group", "features"});
+      CheckKeys(
+          v, p,
+          {"id", "mesh", "library", "pose", "place", "ground", "group", "compliant", "features"});
       Part part;
       part.id = String(Require(v, p, "id", "the part's id"), p + "/id");
       if (!std::regex_match(part.id, kId)) {
@@ -371,6 +373,9 @@ class Reader {
       if (pose) part.X_WP = ReadPose(*pose, p + "/pose");
       if (const Json* ground = Find(v, "ground")) part.ground = Bool(*ground, p + "/ground");
       if (const Json* group = Find(v, "group")) part.group = String(*group, p + "/group");
+      if (const Json* compliant = Find(v, "compliant")) {
+        part.compliant = Bool(*compliant, p + "/compliant");
+      }
       if (const Json* features = Find(v, "features")) {
         ReadFeatures(*features, p + "/features", part);
       } else if (!step_features.empty()) {
@@ -434,9 +439,12 @@ class Reader {
         added.emplace_back(spec_.parts.size() - 1, &v);
         continue;
       }
-      CheckKeys(v, p, {"id", "ground", "features"});
+      CheckKeys(v, p, {"id", "ground", "compliant", "features"});
       Part& part = spec_.parts[it->second];
       if (const Json* ground = Find(v, "ground")) part.ground = Bool(*ground, p + "/ground");
+      if (const Json* compliant = Find(v, "compliant")) {
+        part.compliant = Bool(*compliant, p + "/compliant");
+      }
       const Json* features = Find(v, "features");
       if (!features) continue;
       if (!features->is_array()) {

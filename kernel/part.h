@@ -40,6 +40,9 @@ struct Part {
   /// the part has a pose.
   std::vector<PlacementCondition> placement;
   bool ground = false;
+  /// A spring, belt or hose (spec: `compliant`): not a rigid link. It joins no pair, moves with
+  /// nothing and counts in no mobility; the parts it touches are reported.
+  bool compliant = false;
   std::string group;  ///< CAD product-structure path, informational
   std::vector<Feature> features;
   /// What reading the part's source saw but made no feature of, in words (a STEP solid's

@@ -263,6 +263,11 @@ void KinematicModel::BuildTree() {
   for (std::size_t part = body_of_part_.size(); part-- > 0;) first_part[body_of_part_[part]] = part;
   for (std::size_t body = 0; body < bodies; ++body) {
     if (seen[body]) continue;
+    // A compliant part alone (a spring: its pairs are dropped) moves with nothing and adds no
+    // freedom: it has no joint, as the ground has none.
+    if (first_part[body] < body_of_part_.size() && assembly_.part(first_part[body]).compliant) {
+      continue;
+    }
     // Nothing holds this body to the ground: it floats, six freedoms about its first part.
     Joint j;
     j.body_a = body;

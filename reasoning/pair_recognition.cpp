@@ -172,6 +172,7 @@ class Recognizer {
     pairs_.reserve(features_.size());
     ForEachCandidate([this](const WorldFeature& x, const WorldFeature& y) { Test(x, y); });
     AddImpliedPins();
+    SetCompliantPartsApart();
     ApplyOverrides();
     ReportImpliedPins();
     const std::vector<Screwed> screwed = TightThreads();
@@ -816,6 +817,39 @@ class Recognizer {
     }
   }
 
+  /// Compliant parts (springs, belts, hoses) join no pair: the pairs their features would make
+  /// are dropped, and one info diagnostic `compliant_part` per such part names the parts it
+  /// touches (those pairs' other parts). Before the overrides, which may still force a pair.
+  void SetCompliantPartsApart() {
+    std::map<std::size_t, std::set<std::string>> touched;  // compliant part -> the others
+    std::erase_if(pairs_, [&](const Pair& p) {
+      const bool a = assembly_.part(p.a.part).compliant, b = assembly_.part(p.b.part).compliant;
+      if (a) touched[p.a.part].insert(std::string(assembly_.PartId(p.b.part)));
+      if (b) touched[p.b.part].insert(std::string(assembly_.PartId(p.a.part)));
+      return a || b;
+    });
+    std::erase_if(tight_, [&](const Screwed& t) {
+      return assembly_.part(t.hole.part).compliant ||
+             assembly_.part(features_[t.thread].ref.part).compliant;
+    });
+    for (std::size_t part = 0; part < assembly_.parts().size(); ++part) {
+      if (!assembly_.part(part).compliant) continue;
+      const std::set<std::string>& others = touched[part];
+      std::string names;
+      for (const std::string& o : others) names += (names.empty() ? "" : ", ") + o;
+      std::vector<std::string> parts = {std::string(assembly_.PartId(part))};
+      parts.insert(parts.end(), others.begin(), others.end());
+      diagnostics_.push_back(
+          {Severity::kInfo,
+           "compliant_part",
+           "part '" + parts.front() +
+               "' is compliant (a spring, belt or hose): not a rigid link; " +
+               (names.empty() ? "it touches no part by its features" : "it connects " + names),
+           parts,
+           {}});
+    }
+  }
+
   /// One info diagnostic `implied_pin` per two parts that implied pins join, naming the holes
   /// and the pin's diameter (the smaller hole's).
   void ReportImpliedPins() {
@@ -909,7 +943,7 @@ class Recognizer {
 
   void ReportUnconnected(const std::vector<bool>& connected) {
     for (std::size_t i = 0; i < connected.size(); ++i) {
-      if (connected[i] || assembly_.IsGround(i)) continue;
+      if (connected[i] || assembly_.IsGround(i) || assembly_.part(i).compliant) continue;
       const Part& part = assembly_.part(i);
       diagnostics_.push_back({Severity::kWarning,
                               "part_unconnected",

@@ -420,6 +420,10 @@ TEST_F(AssemblyReaderTest, ReadsFeaturesOnlyPartsAndHeldDrivers) {
   EXPECT_TRUE(a.MeshBox(0).empty());
   ASSERT_EQ(a.drivers().size(), 1u);
   EXPECT_EQ(a.drivers()[0].rate, 0.0);
+  // `compliant` (a spring, belt or hose) is read, and must be true or false.
+  EXPECT_TRUE(Parse(OnePart(R"("compliant": true)")).part(0).compliant);
+  EXPECT_FALSE(Parse(OnePart("")).part(0).compliant);
+  ExpectError(OnePart(R"("compliant": "yes")"), "/parts/0/compliant", "true or false");
 }
 
 TEST_F(AssemblyReaderTest, NeverModifiesItsInput) {

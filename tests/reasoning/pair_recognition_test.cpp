@@ -575,6 +575,50 @@ TEST(PairRecognition, CoaxialEmptyHolesOfTwoPartsAreAnImpliedPin) {
   EXPECT_FALSE(HasDiagnostic(forbidden, "implied_pin"));
 }
 
+TEST(PairRecognition, ACompliantPartJoinsNoPairAndSaysWhatItConnects) {
+  // A spring whose end coils sit on the spigots of a frame and of a plunger whose rod runs in
+  // the frame's bore: compliant, it joins nothing and moves with nothing, and the plunger keeps
+  // the two freedoms of its rod in the bore.
+  const auto cylinder = [](const char* id, K kind, double d, double z0, double length) {
+    return MakeFeature(id, kind, V(0, 0, z0), V::UnitZ(), [&](Feature& f) {
+      f.diameter = d, f.length = length, f.through = kind == K::kHole;
+    });
+  };
+  const auto assembly = [&](bool compliant) {
+    Part spring = MakePart("spring", {cylinder("coil_low", K::kHole, 6, 0, 3),
+                                      cylinder("coil_high", K::kHole, 6, 17, 3)});
+    spring.compliant = compliant;
+    return MakeAssembly(
+        {MakePart("frame",
+                  {cylinder("spigot", K::kShaft, 6, -5, 8), cylinder("bore", K::kHole, 4, -30, 20)},
+                  RigidTransform(), true),
+         MakePart("plunger", {cylinder("spigot", K::kShaft, 6, 16, 8),
+                              cylinder("rod", K::kShaft, 4, -30, 20)}),
+         spring});
+  };
+  EXPECT_EQ(Recognize(assembly(false)).pairs.size(), 3u);  // both coils on spigots, the rod
+  const Assembly soft = assembly(true);
+  const Recognition r = Recognize(soft);
+  ASSERT_EQ(r.pairs.size(), 1u);
+  EXPECT_EQ(r.pairs[0].type, PairType::kCylindrical);
+  const Diagnostic* d = FindDiagnostic(r, "compliant_part");
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->severity, Severity::kInfo);
+  EXPECT_NE(d->message.find("part 'spring' is compliant"), std::string::npos) << d->message;
+  EXPECT_NE(d->message.find("it connects frame, plunger"), std::string::npos) << d->message;
+  EXPECT_EQ(d->parts, (std::vector<std::string>{"spring", "frame", "plunger"}));
+  EXPECT_FALSE(HasDiagnostic(r, "part_unconnected"));
+  // The spring adds no freedom and no free motion: the rod's two are the mechanism's.
+  const Analysis an = Analyze(soft);
+  EXPECT_EQ(an.motion.mobility.dof, 2);
+  for (const Diagnostic& diag : an.diagnostics) {
+    if (diag.code != "free_motion" && diag.code != "part_unconnected" && diag.code != "jam") {
+      continue;
+    }
+    for (const std::string& part : diag.parts) EXPECT_NE(part, "spring") << diag.message;
+  }
+}
+
 TEST(PairRecognition, ForcedCouplingsGetTheSameParametersAsRecognisedOnes) {
   // Gears 2 mm too far apart to mesh, axes of opposite sense: forced into a gear pair, the
   // ratio is what recognition gives for opposite axes.
