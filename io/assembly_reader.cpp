@@ -33,6 +33,7 @@ using internal::JoinPointer;
 using internal::JsonSource;
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kMaxMagnitude = 1e12;  // of every number a file gives
 
 std::string Describe(const Json& v) {
   switch (v.type()) {
@@ -167,6 +168,10 @@ class Reader {
     if (!v.is_number()) Fail(pointer, "expected a number, found " + Describe(v));
     const double x = v.get<double>();
     if (!std::isfinite(x)) Fail(pointer, "expected a finite number, found " + Describe(v));
+    // Beyond any assembly (a million km in mm), and far from where squares and sums overflow.
+    if (std::abs(x) > kMaxMagnitude) {
+      Fail(pointer, "expected a number of magnitude at most 1e12, found " + Describe(v));
+    }
     return x;
   }
 

@@ -296,6 +296,15 @@ TEST_F(AssemblyReaderTest, RejectsBadValues) {
   ExpectError(OnePart("", R"("import": "x.step",)"), "/import",
               "cannot import \"x.step\": no such file");
   ExpectError(OnePart(R"("ground": "yes")"), "/parts/0/ground", "true or false");
+  // Numbers far beyond any assembly (found by scripts/mutation_run.py: a quaternion or an axis
+  // of 1e308 overflowed its normalisation, a plate 1e308 thick the broad phase).
+  ExpectError(OnePart(R"("pose": {"quaternion": [1, 0, 1e308, 0]})"), "/parts/0/pose/quaternion/2",
+              "magnitude at most 1e12");
+  ExpectError(OnePart(R"("pose": {"rotation": {"axis": [-1e308, 0, 0], "angle": 90}})"),
+              "/parts/0/pose/rotation/axis/0", "magnitude at most 1e12");
+  ExpectError(R"({"mechanist": 1, "parts": [{"id": "p", "library": {"kind": "plate", "length": 80,
+      "width": 70, "thickness": 1e308}}]})",
+              "/parts/0/library/thickness", "magnitude at most 1e12");
   ExpectError(R"({"mechanist": 1, "parts": [{"id": "a b", "mesh": "meshes/cube.obj"}]})",
               "/parts/0/id", "letters, digits");
   ExpectError(R"({"mechanist": 1, "parts": [{"id": "p", "mesh": "meshes/cube.obj"},
