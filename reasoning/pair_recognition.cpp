@@ -941,16 +941,25 @@ class Recognizer {
     }
   }
 
+  /// One warning `part_unconnected` naming every non-ground, rigid part in no pair (the nine
+  /// balls of a bearing are one finding, not nine).
   void ReportUnconnected(const std::vector<bool>& connected) {
+    std::vector<std::string> parts;
     for (std::size_t i = 0; i < connected.size(); ++i) {
       if (connected[i] || assembly_.IsGround(i) || assembly_.part(i).compliant) continue;
-      const Part& part = assembly_.part(i);
-      diagnostics_.push_back({Severity::kWarning,
-                              "part_unconnected",
-                              "part '" + part.id + "' is in no pair: nothing holds or guides it",
-                              {part.id},
-                              {}});
+      parts.emplace_back(assembly_.PartId(i));
     }
+    if (parts.empty()) return;
+    std::sort(parts.begin(), parts.end());
+    std::string names;
+    for (const std::string& p : parts) names += (names.empty() ? "'" : ", '") + p + "'";
+    diagnostics_.push_back(
+        {Severity::kWarning,
+         "part_unconnected",
+         (parts.size() == 1 ? "part " + names + " is" : "parts " + names + " are") +
+             " in no pair: nothing holds or guides " + (parts.size() == 1 ? "it" : "them"),
+         std::move(parts),
+         {}});
   }
 
   /// A pair's place in the order of the pairs, and its index as found.
