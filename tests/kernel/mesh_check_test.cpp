@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
+
+#include "kernel/assembly_check.h"
 
 namespace mechanist {
 namespace {
@@ -36,6 +39,27 @@ bool AnyProblemContains(const MeshCheck& check, const std::string& text) {
   const std::vector<std::string> problems = check.Problems();
   return std::any_of(problems.begin(), problems.end(),
                      [&](const std::string& p) { return p.find(text) != std::string::npos; });
+}
+
+TEST(CheckAssembly, LikeProblemsOfSeveralPartsAreOneFinding) {
+  // Three parts with their own copies of a cube missing a face, and a sound one: one
+  // mesh_not_closed naming the three (the balls of a bearing, each its own solid).
+  TriangleMesh open = UnitCube();
+  open.faces.pop_back();
+  AssemblySpec spec;
+  for (const char* id : {"ball_c", "ball_a", "sound", "ball_b"}) {
+    Part part;
+    part.id = id;
+    part.mesh = std::make_shared<TriangleMesh>(std::string(id) == "sound" ? UnitCube() : open);
+    spec.parts.push_back(part);
+  }
+  const std::vector<Diagnostic> found = CheckAssembly(Assembly(std::move(spec)));
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].code, "mesh_not_closed");
+  EXPECT_EQ(found[0].parts, (std::vector<std::string>{"ball_a", "ball_b", "ball_c"}));
+  EXPECT_EQ(found[0].message.rfind("parts 'ball_a', 'ball_b' and 'ball_c': mesh is not closed", 0),
+            0u)
+      << found[0].message;
 }
 
 TEST(MeshCheck, CubeIsOk) {
