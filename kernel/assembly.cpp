@@ -23,6 +23,8 @@ Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
   for (std::size_t i = 0; i < spec_.parts.size(); ++i) {
     Part& part = spec_.parts[i];
     ground_.push_back(part.ground);
+    compliant_.push_back(part.compliant);
+    has_compliant_ = has_compliant_ || part.compliant;
     if (part.features.size() > UINT32_MAX) {
       throw std::length_error("part '" + part.id + "' has too many features");
     }

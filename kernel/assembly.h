@@ -176,6 +176,10 @@ class Assembly {
   /// flat per-feature arrays of size feature_count().
   /// Whether part `part` is fixed to the world, from a compact per-part table.
   bool IsGround(std::size_t part) const { return ground_.at(part); }
+  /// Whether part `part` is compliant (Part::compliant), from a compact per-part table.
+  bool IsCompliant(std::size_t part) const { return compliant_.at(part); }
+  /// Whether any part is compliant: checks that concern them need not read every part.
+  bool HasCompliantParts() const { return has_compliant_; }
   /// The kind of feature `ref`, from a compact per-feature table: loops over pairs read it
   /// without touching the Feature itself.
   FeatureKind kind(FeatureRef ref) const { return feature_kind_[FeatureIndex(ref)]; }
@@ -215,8 +219,10 @@ class Assembly {
   std::vector<FeatureKind> feature_kind_;       ///< per feature: its kind
   std::vector<Eigen::Vector3d> feature_origin_;  ///< per feature: Feature::origin
   std::vector<bool> ground_;                     ///< per part: Part::ground
-  std::vector<RigidTransform> file_poses_;       ///< per part: Part::X_WP
-  std::vector<Aabb> mesh_box_;                   ///< per part: its mesh's Bounds()
+  std::vector<bool> compliant_;                  ///< per part: Part::compliant
+  bool has_compliant_ = false;
+  std::vector<RigidTransform> file_poses_;  ///< per part: Part::X_WP
+  std::vector<Aabb> mesh_box_;              ///< per part: its mesh's Bounds()
   std::map<FeatureKind, std::vector<FeatureRef>> features_of_kind_;
   /// Where a name lies in names_.
   struct NameSpan {

@@ -265,7 +265,7 @@ void KinematicModel::BuildTree() {
     if (seen[body]) continue;
     // A compliant part alone (a spring: its pairs are dropped) moves with nothing and adds no
     // freedom: it has no joint, as the ground has none.
-    if (first_part[body] < body_of_part_.size() && assembly_.part(first_part[body]).compliant) {
+    if (first_part[body] < body_of_part_.size() && assembly_.IsCompliant(first_part[body])) {
       continue;
     }
     // Nothing holds this body to the ground: it floats, six freedoms about its first part.

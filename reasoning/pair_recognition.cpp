@@ -821,19 +821,20 @@ class Recognizer {
   /// are dropped, and one info diagnostic `compliant_part` per such part names the parts it
   /// touches (those pairs' other parts). Before the overrides, which may still force a pair.
   void SetCompliantPartsApart() {
+    if (!assembly_.HasCompliantParts()) return;
     std::map<std::size_t, std::set<std::string>> touched;  // compliant part -> the others
     std::erase_if(pairs_, [&](const Pair& p) {
-      const bool a = assembly_.part(p.a.part).compliant, b = assembly_.part(p.b.part).compliant;
+      const bool a = assembly_.IsCompliant(p.a.part), b = assembly_.IsCompliant(p.b.part);
       if (a) touched[p.a.part].insert(std::string(assembly_.PartId(p.b.part)));
       if (b) touched[p.b.part].insert(std::string(assembly_.PartId(p.a.part)));
       return a || b;
     });
     std::erase_if(tight_, [&](const Screwed& t) {
-      return assembly_.part(t.hole.part).compliant ||
-             assembly_.part(features_[t.thread].ref.part).compliant;
+      return assembly_.IsCompliant(t.hole.part) ||
+             assembly_.IsCompliant(features_[t.thread].ref.part);
     });
     for (std::size_t part = 0; part < assembly_.parts().size(); ++part) {
-      if (!assembly_.part(part).compliant) continue;
+      if (!assembly_.IsCompliant(part)) continue;
       const std::set<std::string>& others = touched[part];
       std::string names;
       for (const std::string& o : others) names += (names.empty() ? "" : ", ") + o;
@@ -946,7 +947,7 @@ class Recognizer {
   void ReportUnconnected(const std::vector<bool>& connected) {
     std::vector<std::string> parts;
     for (std::size_t i = 0; i < connected.size(); ++i) {
-      if (connected[i] || assembly_.IsGround(i) || assembly_.part(i).compliant) continue;
+      if (connected[i] || assembly_.IsGround(i) || assembly_.IsCompliant(i)) continue;
       parts.emplace_back(assembly_.PartId(i));
     }
     if (parts.empty()) return;
