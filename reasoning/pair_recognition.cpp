@@ -24,9 +24,11 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 /// Beyond these the features do not touch, so they make no pair and no near miss (the spec is
 /// silent; the values are documented in the README): a shaft more than 5% of the hole's
-/// diameter smaller than its hole, a clearance hole more than 1.3 times the thread (ISO 273's
-/// coarse series is at most 1.25), a thread under 0.6 times a tapped hole (M3 in M4 is a near
-/// miss, M10 in M30 passes through).
+/// diameter smaller than its hole (it passes through) or larger (beyond any interference fit,
+/// a few tenths of a percent, or a CAD model's exaggerated one: it surrounds the hole, as a
+/// bearing's outer ring does its inner ring's bore), a clearance hole more than 1.3 times the
+/// thread (ISO 273's coarse series is at most 1.25), a thread under 0.6 times a tapped hole
+/// (M3 in M4 is a near miss, M10 in M30 passes through).
 constexpr double kMaxShaftClearance = 0.05;
 constexpr double kMaxClearanceHoleRatio = 1.3;
 // Two coaxial empty holes of two parts are a pivot whose pin the file leaves out when their
@@ -504,8 +506,8 @@ class Recognizer {
   }
 
   void ShaftHole(const WorldFeature& s, const WorldFeature& h) {
-    // A shaft much thinner than the hole passes through it without touching it.
-    if (h.f.diameter - s.f.diameter > kMaxShaftClearance * h.f.diameter + L_) return;
+    // Far thinner or thicker than the hole, the shaft does not touch it (kMaxShaftClearance).
+    if (std::abs(h.f.diameter - s.f.diameter) > kMaxShaftClearance * h.f.diameter + L_) return;
     if (!Seated(s, h)) return;
     if (s.f.diameter <= h.f.diameter + L_) {
       AddPair(s.f.retained || h.f.retained ? PairType::kRevolute : PairType::kCylindrical, s, h);

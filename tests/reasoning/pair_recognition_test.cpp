@@ -88,6 +88,12 @@ TEST(PairRecognition, ShaftInHoleNegatives) {
   EXPECT_TRUE(Recognize(ShaftInHole(5.0, 5.0, false, V::Zero(), 0.05)).pairs.empty());  // angle
   EXPECT_TRUE(Recognize(ShaftInHole(5.0, 5.0, false, V(0, 0, 20))).pairs.empty());  // not engaged
   EXPECT_TRUE(Recognize(ShaftInHole(3.0, 5.0)).pairs.empty());  // passes through, no contact
+  // Far thicker than the hole, the convex surface surrounds it (a bearing's outer ring about its
+  // inner ring's bore): no press fit (it used to be one), no near miss.
+  const Recognition around = Recognize(ShaftInHole(8.0, 5.0));
+  EXPECT_TRUE(around.pairs.empty());
+  EXPECT_EQ(NearMisses(around), 0u);
+  EXPECT_EQ(Only(Recognize(ShaftInHole(5.2, 5.0))).fastening, PairFastening::kPressFit);
   // Blind hole entered the wrong way round.
   Feature s = Shaft(5, 20, V(0, 0, -5), V::UnitZ());
   const Assembly reversed = MakeAssembly(
