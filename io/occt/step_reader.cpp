@@ -6,11 +6,13 @@
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
+#include <BRepGProp.hxx>
 #include <BRepMesh_IncrementalMesh.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <Eigen/Eigenvalues>
+#include <GProp_GProps.hxx>
 #include <GeomLib_IsPlanarSurface.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
@@ -34,6 +36,7 @@
 #include <cmath>
 #include <csignal>
 #include <gp_Cone.hxx>
+#include <gp_Sphere.hxx>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -102,6 +105,14 @@ std::vector<Cylinder::Span> Stretches(std::vector<Cylinder::Span> spans, double 
   }
   return stretches;
 }
+
+// A sphere being gathered from its faces.
+struct Sphere {
+  Eigen::Vector3d center;
+  double radius = 0.0;
+  bool convex = true;
+  double area = 0.0;  // mm^2, of its faces
+};
 
 // A cone being gathered from its faces.
 struct Cone {
@@ -239,7 +250,8 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
   BRepMesh_IncrementalMesh(solid, std::max(0.01, 1e-3 * size), false, 0.3, false);
   std::vector<Cylinder> cylinders;
   std::vector<Cone> cones;
-  int planes = 0, spheres = 0, tori = 0, free_form = 0, partial_cones = 0;
+  std::vector<Sphere> spheres;
+  int planes = 0, tori = 0, free_form = 0, partial_cones = 0, partial_spheres = 0;
   // Free-form faces that are planes or cylinders: within 1 um or 10 ppm of the solid's size.
   const double fit_tolerance = std::max(1e-3, 1e-5 * size);
   int fitted_planes = 0, fitted_cylinders = 0;
@@ -351,7 +363,25 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
         same->r_max = std::max(same->r_max, c.r_max);
       }
     } else if (type == GeomAbs_Sphere) {
-      ++spheres;
+      const gp_Sphere g = surface.Sphere();
+      Sphere sphere;
+      sphere.center = ToEigen(g.Location().XYZ());
+      sphere.radius = g.Radius();
+      // As for a cylinder: the surface's normal points outward in a direct frame.
+      sphere.convex = g.Position().Direct() != reversed;
+      GProp_GProps properties;
+      BRepGProp::SurfaceProperties(face, properties);
+      sphere.area = properties.Mass();
+      auto same = std::find_if(spheres.begin(), spheres.end(), [&](const Sphere& o) {
+        return (o.center - sphere.center).norm() < 1e-6 * std::max(1.0, sphere.radius) &&
+               std::abs(o.radius - sphere.radius) < 1e-6 * std::max(1.0, sphere.radius) &&
+               o.convex == sphere.convex;
+      });
+      if (same == spheres.end()) {
+        spheres.push_back(sphere);
+      } else {
+        same->area += sphere.area;
+      }
     } else if (type == GeomAbs_Torus) {
       ++tori;
     } else if (type != GeomAbs_Plane && fit.kind != AnalyticFit::Kind::kPlane) {
@@ -400,7 +430,24 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
       features->push_back(f);
     }
   }
-  // The format has no cone, sphere or torus kind: these faces are named in notes.
+  // A sphere whose faces cover at least half of it is a ball (convex) or a socket (concave);
+  // smaller caps (a rounded end, a dome) are counted in the notes.
+  int balls = 0, sockets = 0;
+  for (const Sphere& sphere : spheres) {
+    if (sphere.area < 2 * kPi * sphere.radius * sphere.radius * (1 - 1e-6)) {
+      ++partial_spheres;
+      continue;
+    }
+    Feature f;
+    f.kind = sphere.convex ? FeatureKind::kBall : FeatureKind::kSocket;
+    f.id =
+        sphere.convex ? "ball_" + std::to_string(++balls) : "socket_" + std::to_string(++sockets);
+    f.origin = sphere.center;
+    f.axis = Eigen::Vector3d::UnitZ();  // a sphere has none; the format's default direction
+    f.diameter = 2 * sphere.radius;
+    features->push_back(f);
+  }
+  // The format has no cone or torus kind: these faces are named in notes.
   for (const Cone& c : cones) {
     if (c.coverage < 1.5 * kPi) {
       ++partial_cones;
@@ -421,7 +468,7 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
                      Mm(fit_error) + ")");
   }
   count(partial_cones, "partial conical");
-  count(spheres, "spherical");
+  count(partial_spheres, "partial spherical");
   count(tori, "toroidal");
   count(free_form, "free-form");
 }

@@ -434,7 +434,7 @@ TEST(StepImport, AFileThatCrashesOpenCascadeIsAnErrorAndTheProcessGoesOn) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(StepImport, ConesSpheresAndToriAreNamedInNotes) {
+TEST(StepImport, ConesAreNamedInNotesAndSpheresAreBalls) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_cones";
   std::filesystem::create_directories(dir);
   testing::WriteConesAndBallStep(dir / "cones.step");
@@ -461,10 +461,14 @@ TEST(StepImport, ConesSpheresAndToriAreNamedInNotes) {
   ASSERT_NE(feature(solids[1], "shaft_1"), nullptr);
   EXPECT_TRUE(has(solids[1], "conical end of shaft_1: 53.1301 deg, diameter 0 to 5 mm"))
       << ::testing::PrintToString(solids[1].notes);
-  // The ball: no feature, one spherical face.
-  EXPECT_TRUE(solids[2].features.empty());
-  EXPECT_TRUE(has(solids[2], "1 spherical face: no feature (the format has no such kind)"))
-      << ::testing::PrintToString(solids[2].notes);
+  // The ball: a `ball` feature (the format's sphere) at its centre, no note.
+  ASSERT_EQ(solids[2].features.size(), 1u);
+  const Feature& ball = solids[2].features[0];
+  EXPECT_EQ(ball.kind, FeatureKind::kBall);
+  EXPECT_EQ(ball.id, "ball_1");
+  EXPECT_NEAR(ball.diameter, 10, 1e-9);
+  EXPECT_NEAR((ball.origin - Eigen::Vector3d(0, 60, 5)).norm(), 0, 1e-9);
+  EXPECT_TRUE(solids[2].notes.empty()) << ::testing::PrintToString(solids[2].notes);
   // `mechanist features` lists the notes of imported parts.
   const Assembly a = ReadAssembly(dir / "cones.step");
   std::ostringstream listing;
