@@ -671,7 +671,7 @@ class Reader {
     if (!parsed) {
       Fail(p + "/kind",
            "expected one of shaft, hole, thread, tapped_hole, slot, key, gear, worm, worm_wheel, "
-           "rack, ball, socket, face, found " +
+           "rack, ball, socket, face, cycloid_disc, pin_ring, found " +
                Describe(kind));
     }
     f.kind = *parsed;
@@ -783,6 +783,20 @@ class Reader {
       case FeatureKind::kSocket:
         CheckKeys(v, p, {"id", "kind", "origin", "axis", "diameter"});
         f.diameter = length("diameter");
+        break;
+      case FeatureKind::kCycloidDisc:
+        CheckKeys(v, p, {"id", "kind", "origin", "axis", "lobes", "eccentricity", "length"});
+        f.teeth = count("lobes");
+        f.eccentricity = length("eccentricity");
+        f.length = length("length");
+        break;
+      case FeatureKind::kPinRing:
+        CheckKeys(v, p,
+                  {"id", "kind", "origin", "axis", "pins", "diameter", "pin_diameter", "length"});
+        f.teeth = count("pins");
+        f.diameter = length("diameter");
+        f.pin_diameter = length("pin_diameter");
+        f.length = length("length");
         break;
       case FeatureKind::kFace:
         CheckKeys(v, p, {"id", "kind", "origin", "axis", "width", "height"});

@@ -15,12 +15,11 @@ std::vector<std::vector<Eigen::Vector3d>> FeatureLines(const Part& part, bool pi
     const double margin = 0.25 * size;
     lines.push_back(
         {f.origin - margin * f.axis, f.origin + (std::max(f.length, 0.0) + margin) * f.axis});
-    if (!pitch_circles || (f.kind != FeatureKind::kGear && f.kind != FeatureKind::kWormWheel)) {
-      continue;
-    }
+    const bool toothed = f.kind == FeatureKind::kGear || f.kind == FeatureKind::kWormWheel;
+    if (!pitch_circles || (!toothed && f.kind != FeatureKind::kPinRing)) continue;
     const Eigen::Vector3d u = f.axis.unitOrthogonal(), v = f.axis.cross(u);
     const Eigen::Vector3d center = f.origin + 0.5 * f.length * f.axis;
-    const double radius = 0.5 * f.module * f.teeth;
+    const double radius = toothed ? 0.5 * f.module * f.teeth : 0.5 * f.diameter;
     constexpr int kSegments = 72;
     std::vector<Eigen::Vector3d> circle;
     for (int k = 0; k <= kSegments; ++k) {

@@ -69,6 +69,17 @@ std::string Parameters(const Feature& f) {
       if (f.width > 0) add("width " + mm(f.width));
       if (f.height > 0) add("height " + mm(f.height));
       break;
+    case FeatureKind::kCycloidDisc:
+      add(std::to_string(f.teeth) + " lobes");
+      add("eccentricity " + mm(f.eccentricity));
+      add("length " + mm(f.length));
+      break;
+    case FeatureKind::kPinRing:
+      add(std::to_string(f.teeth) + " pins");
+      add("pin circle " + mm(f.diameter));
+      add("pin diameter " + mm(f.pin_diameter));
+      add("length " + mm(f.length));
+      break;
   }
   return s;
 }

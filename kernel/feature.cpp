@@ -5,7 +5,7 @@
 namespace mechanist {
 namespace {
 
-constexpr EnumNames<FeatureKind, 13> kNames = {{
+constexpr EnumNames<FeatureKind, 15> kNames = {{
     {FeatureKind::kShaft, "shaft"},
     {FeatureKind::kHole, "hole"},
     {FeatureKind::kThread, "thread"},
@@ -19,6 +19,8 @@ constexpr EnumNames<FeatureKind, 13> kNames = {{
     {FeatureKind::kBall, "ball"},
     {FeatureKind::kSocket, "socket"},
     {FeatureKind::kFace, "face"},
+    {FeatureKind::kCycloidDisc, "cycloid_disc"},
+    {FeatureKind::kPinRing, "pin_ring"},
 }};
 
 }  // namespace

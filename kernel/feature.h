@@ -25,6 +25,8 @@ enum class FeatureKind : std::uint8_t {
   kBall,
   kSocket,
   kFace,
+  kCycloidDisc,  ///< lobed disc of a cycloidal reducer
+  kPinRing,      ///< pins on a circle that a cycloid disc rolls inside
 };
 
 /// The format's spelling of a kind ("tapped_hole").
@@ -68,10 +70,12 @@ struct Feature {
   double height = 0.0;    ///< mm: face extent
   double depth = 0.0;     ///< mm: slot depth
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  ///< unit or zero: slot, key, rack
-  int teeth = 0;                                     ///< gear or worm wheel teeth
-  double module = 0.0;                               ///< mm: gear module (axial module for a worm)
-  double pitch_diameter = 0.0;                       ///< mm: worm pitch diameter
-  bool internal = false;                             ///< ring gear
+  int teeth = 0;        ///< gear or worm wheel teeth, a cycloid disc's lobes, a pin ring's pins
+  double module = 0.0;  ///< mm: gear module (axial module for a worm)
+  double pitch_diameter = 0.0;  ///< mm: worm pitch diameter
+  bool internal = false;        ///< ring gear
+  double eccentricity = 0.0;    ///< mm: a cycloid disc's offset from the axis it orbits
+  double pin_diameter = 0.0;    ///< mm: a pin ring's pins (`diameter` is its pin circle's)
 
   /// The axis segment in world coordinates for the part pose X_WP.
   AxisSegment WorldAxis(const RigidTransform& X_WP) const {

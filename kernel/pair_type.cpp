@@ -5,7 +5,7 @@
 namespace mechanist {
 namespace {
 
-constexpr EnumNames<PairType, 11> kNames = {{
+constexpr EnumNames<PairType, 12> kNames = {{
     {PairType::kFixed, "fixed"},
     {PairType::kRevolute, "revolute"},
     {PairType::kCylindrical, "cylindrical"},
@@ -17,6 +17,7 @@ constexpr EnumNames<PairType, 11> kNames = {{
     {PairType::kGear, "gear"},
     {PairType::kWormGear, "worm_gear"},
     {PairType::kRackPinion, "rack_pinion"},
+    {PairType::kCycloidal, "cycloidal"},
 }};
 
 }  // namespace

@@ -20,6 +20,7 @@ enum class PairType : std::uint8_t {
   kGear,
   kWormGear,
   kRackPinion,
+  kCycloidal,  ///< a cycloid disc rolling in its pin ring: couples like an internal gear pair
 };
 
 /// The format's spelling ("worm_gear").

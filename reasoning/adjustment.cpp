@@ -13,7 +13,8 @@ namespace mechanist {
 namespace {
 
 bool Meshes(PairType type) {
-  return type == PairType::kGear || type == PairType::kWormGear || type == PairType::kRackPinion;
+  return type == PairType::kGear || type == PairType::kWormGear || type == PairType::kRackPinion ||
+         type == PairType::kCycloidal;
 }
 
 // The goal's features as the pair type wants them: the worm or the pinion first.

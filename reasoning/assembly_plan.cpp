@@ -99,7 +99,7 @@ class Planner {
       if (!between) continue;
       const FeatureRef theirs = p.a.part == obstacle ? p.a : p.b;
       const bool teeth = p.type == PairType::kGear || p.type == PairType::kWormGear ||
-                         p.type == PairType::kRackPinion;
+                         p.type == PairType::kRackPinion || p.type == PairType::kCycloidal;
       if (!teeth && std::abs(WorldAxis(theirs).dot(d)) < std::cos(assembly_.tolerance().angle)) {
         continue;
       }

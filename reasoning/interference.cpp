@@ -62,6 +62,12 @@ bool InRegion(const Feature& f, const RigidTransform& X_WP, const Eigen::Vector3
              radial <= std::max(f.width, f.depth) + tolerance;
     case FeatureKind::kFace:
       return false;
+    case FeatureKind::kPinRing:
+      // The pins and the lobes between them: out to the pins' outer edge.
+      return in_cylinder(0.5 * f.diameter + f.pin_diameter, 0.0, f.length);
+    case FeatureKind::kCycloidDisc:
+      // The lobes' size is not in the feature: the disc's whole side (as far as its ring).
+      return along >= -tolerance && along <= f.length + tolerance;
   }
   return false;
 }
@@ -83,6 +89,7 @@ bool OverlapIsDesigned(const Pair& pair) {
     case PairType::kGear:
     case PairType::kWormGear:
     case PairType::kRackPinion:
+    case PairType::kCycloidal:
       return true;
     case PairType::kScrew:
       return true;

@@ -480,7 +480,9 @@ void KinematicModel::BuildRows(const std::vector<Pair>& pairs) {
     if (j.pair && !j.in_tree) off_tree[*j.pair] = &j;
   }
   auto coupling = [](const Pair& p) {
-    return ((p.type == PairType::kGear || p.type == PairType::kWormGear) && p.ratio) ||
+    return ((p.type == PairType::kGear || p.type == PairType::kWormGear ||
+             p.type == PairType::kCycloidal) &&
+            p.ratio) ||
            (p.type == PairType::kRackPinion && p.travel_per_revolution);
   };
   for (std::size_t i = 0; i < pairs.size(); ++i) {

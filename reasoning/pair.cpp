@@ -50,6 +50,7 @@ std::optional<int> DegreesOfFreedom(PairType type) {
     case PairType::kGear:
     case PairType::kWormGear:
     case PairType::kRackPinion:
+    case PairType::kCycloidal:
       return std::nullopt;
   }
   return std::nullopt;

@@ -226,6 +226,12 @@ class Recognizer {
       case FeatureKind::kWorm:
         radius = f.pitch_diameter / 2 + 2 * f.module;
         break;
+      case FeatureKind::kPinRing:
+        radius = f.diameter / 2 + assembly_.feature(w.ref).pin_diameter;
+        break;
+      case FeatureKind::kCycloidDisc:
+        radius = assembly_.feature(w.ref).eccentricity;  // reaches its ring's axis
+        break;
       case FeatureKind::kRack:
         radius = 2 * f.module;
         break;
@@ -401,6 +407,7 @@ class Recognizer {
     either(K::kWorm, K::kWormWheel, [this](auto& w, auto& g) { WormWheel(w, g); });
     either(K::kGear, K::kRack, [this](auto& g, auto& r) { GearRack(g, r); });
     either(K::kBall, K::kSocket, [this](auto& b, auto& s) { BallSocket(b, s); });
+    either(K::kCycloidDisc, K::kPinRing, [this](auto& d, auto& r) { CycloidPins(d, r); });
     if (is(K::kGear, K::kGear)) GearGear(x, y);
     if (is(K::kThread, K::kShaft)) setscrew_candidates_.emplace_back(&x, &y);
     if (is(K::kShaft, K::kThread)) setscrew_candidates_.emplace_back(&y, &x);
@@ -444,6 +451,12 @@ class Recognizer {
       Rational ratio(fa.teeth, fb.teeth);
       if (!fa.internal && !fb.internal) ratio = -ratio;
       // Rates are about each feature's own axis: opposite axes flip the sign.
+      if (a.axis.direction.dot(b.axis.direction) < 0) ratio = -ratio;
+      p.ratio = ratio;
+    } else if (p.type == PairType::kCycloidal && fa.kind == K::kCycloidDisc &&
+               fb.kind == K::kPinRing) {
+      // As an internal pair, the disc the pinion (lobes) and the ring the ring (pins).
+      Rational ratio(fa.teeth, fb.teeth);
       if (a.axis.direction.dot(b.axis.direction) < 0) ratio = -ratio;
       p.ratio = ratio;
     } else if (p.type == PairType::kWormGear && fa.kind == K::kWorm && fb.kind == K::kWormWheel) {
@@ -660,6 +673,34 @@ class Recognizer {
       Near("gear_center_distance", g1, g2,
            "centre distance " + Mm(d) + ", required " + Mm(a) + " = " + formula + " (off by " +
                Mm(d - a) + ", tolerance " + Mm(L_) + ")");
+    }
+  }
+
+  /// A cycloid disc in its pin ring (spec): parallel axes offset by the disc's eccentricity,
+  /// one pin more than lobes, overlapping along the axis. Off by less than the near-miss
+  /// windows: `cycloid_eccentricity`, `cycloid_pin_count`.
+  void CycloidPins(const WorldFeature& disc, const WorldFeature& ring) {
+    if (AxialOverlap(disc.axis, ring.axis) <= L_) return;
+    const double angle = AngleBetweenLines(disc.axis.direction, ring.axis.direction);
+    if (angle > near_A_) return;
+    const double e = assembly_.feature(disc.ref).eccentricity;
+    const double offset = DistanceToLine(disc.axis.origin, ring.axis.origin, ring.axis.direction);
+    if (std::abs(offset - e) > near_L_) return;
+    if (ring.f.teeth != disc.f.teeth + 1) {
+      Near("cycloid_pin_count", disc, ring,
+           std::to_string(ring.f.teeth) + " pins for " + std::to_string(disc.f.teeth) +
+               " lobes (required one pin more than lobes)");
+      return;
+    }
+    if (angle > A_) {
+      Near("cycloid_axes_not_parallel", disc, ring,
+           "axes are " + Deg(angle) + " apart (required parallel within " + Deg(A_) + ")");
+    } else if (std::abs(offset - e) > L_) {
+      Near("cycloid_eccentricity", disc, ring,
+           "the disc's axis is " + Mm(offset) + " from the ring's, required its eccentricity " +
+               Mm(e) + " (off by " + Mm(offset - e) + ", tolerance " + Mm(L_) + ")");
+    } else {
+      AddPair(PairType::kCycloidal, disc, ring);
     }
   }
 

@@ -625,6 +625,38 @@ TEST(PairRecognition, ACompliantPartJoinsNoPairAndSaysWhatItConnects) {
   }
 }
 
+TEST(PairRecognition, CycloidDiscInItsPinRingCouplesLikeAnInternalGear) {
+  // A 10-lobe disc 1.5 mm off the axis of an 11-pin ring: a cycloidal coupling at +10/11 (the
+  // ring's rate per unit disc rate relative to the eccentric, as an internal gear pair).
+  const auto assembly = [](int lobes, int pins, double offset) {
+    return MakeAssembly({MakePart("housing",
+                                  {MakeFeature("pins", K::kPinRing, V::Zero(), V::UnitZ(),
+                                               [&](Feature& f) {
+                                                 f.teeth = pins, f.diameter = 60,
+                                                 f.pin_diameter = 6;
+                                                 f.length = 10;
+                                               })},
+                                  RigidTransform(), true),
+                         MakePart("disc", {MakeFeature("lobes", K::kCycloidDisc, V(0, offset, 0),
+                                                       V::UnitZ(), [&](Feature& f) {
+                                                         f.teeth = lobes, f.eccentricity = 1.5,
+                                                         f.length = 10;
+                                                       })})});
+  };
+  const Pair c = Only(Recognize(assembly(10, 11, 1.5)));
+  EXPECT_EQ(c.type, PairType::kCycloidal);
+  EXPECT_EQ(*c.ratio, Rational(10, 11));
+  EXPECT_FALSE(c.dof.has_value());
+  // Near misses name the quantity that is off.
+  const Recognition pins = Recognize(assembly(10, 12, 1.5));
+  EXPECT_TRUE(pins.pairs.empty());
+  EXPECT_TRUE(HasDiagnostic(pins, "cycloid_pin_count", "12 pins for 10 lobes"));
+  const Recognition off = Recognize(assembly(10, 11, 1.7));
+  EXPECT_TRUE(off.pairs.empty());
+  EXPECT_TRUE(HasDiagnostic(off, "cycloid_eccentricity", "required its eccentricity 1.5 mm"));
+  EXPECT_TRUE(Recognize(assembly(10, 11, 5.0)).pairs.empty());  // far off: no pair, no note
+}
+
 TEST(PairRecognition, ForcedCouplingsGetTheSameParametersAsRecognisedOnes) {
   // Gears 2 mm too far apart to mesh, axes of opposite sense: forced into a gear pair, the
   // ratio is what recognition gives for opposite axes.
