@@ -1201,7 +1201,7 @@ class Reader {
     if (!parsed) {
       Fail(p,
            "expected one of fixed, revolute, cylindrical, screw, prismatic, pin_slot, "
-           "spherical, planar, gear, worm_gear, rack_pinion, none, found " +
+           "spherical, planar, gear, worm_gear, rack_pinion, cycloidal, none, found " +
                Describe(type));
     }
     return parsed;

@@ -39,11 +39,12 @@ struct Pair {
   PairFastening fastening = PairFastening::kNone;
   /// worm_gear: true when the wheel cannot drive the worm (lead angle below friction angle).
   bool self_locking = false;
-  /// Relative degrees of freedom; empty for couplings (gear, worm_gear, rack_pinion).
+  /// Relative degrees of freedom; empty for couplings (gear, worm_gear, rack_pinion,
+  /// cycloidal).
   std::optional<int> dof;
   FeatureRef a, b;
-  /// gear and worm_gear: b's angular rate about b's feature axis per unit rate of a about
-  /// a's feature axis, relative to the body that carries both axes (exact).
+  /// gear, worm_gear and cycloidal: b's angular rate about b's feature axis per unit rate of a
+  /// about a's feature axis, relative to the body that carries both axes (exact).
   std::optional<Rational> ratio;
   /// screw: mm a advances along its axis per revolution of a about its axis, relative to b
   /// (positive for right-hand threads). rack_pinion: mm the rack (b) travels along its axis
