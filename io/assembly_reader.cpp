@@ -751,11 +751,20 @@ class Reader {
         f.normal = normal();
         break;
       case FeatureKind::kGear:
-        CheckKeys(v, p, {"id", "kind", "origin", "axis", "teeth", "module", "length", "internal"});
+        CheckKeys(v, p,
+                  {"id", "kind", "origin", "axis", "teeth", "module", "length", "internal",
+                   "helix_angle"});
         f.teeth = count("teeth");
         f.module = length("module");
         f.length = length("length");
         if (const Json* i = opt("internal")) f.internal = Bool(*i, p + "/internal");
+        if (const Json* h = opt("helix_angle")) {
+          f.helix_angle = Angle(*h, p + "/helix_angle");
+          if (!(std::abs(f.helix_angle) < kPi / 2)) {
+            Fail(p + "/helix_angle",
+                 "expected an angle between -90 and 90 degrees, found " + Describe(*h));
+          }
+        }
         break;
       case FeatureKind::kWorm:
         CheckKeys(v, p,

@@ -48,6 +48,7 @@ std::string Parameters(const Feature& f) {
       add("module " + mm(f.module));
       add("face width " + mm(f.length));
       if (f.internal) add("internal");
+      if (f.helix_angle != 0.0) add("helix " + FormatNumber(f.helix_angle * 180.0 / M_PI) + " deg");
       break;
     case FeatureKind::kWorm:
       add(std::to_string(f.starts) + (f.starts == 1 ? " start" : " starts"));

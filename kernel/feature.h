@@ -74,8 +74,10 @@ struct Feature {
   double module = 0.0;  ///< mm: gear module (axial module for a worm)
   double pitch_diameter = 0.0;  ///< mm: worm pitch diameter
   bool internal = false;        ///< ring gear
-  double eccentricity = 0.0;    ///< mm: a cycloid disc's offset from the axis it orbits
-  double pin_diameter = 0.0;    ///< mm: a pin ring's pins (`diameter` is its pin circle's)
+  /// Radians: a gear's helix angle, positive for a right-hand helix; 0 for a spur gear.
+  double helix_angle = 0.0;
+  double eccentricity = 0.0;  ///< mm: a cycloid disc's offset from the axis it orbits
+  double pin_diameter = 0.0;  ///< mm: a pin ring's pins (`diameter` is its pin circle's)
 
   /// The axis segment in world coordinates for the part pose X_WP.
   AxisSegment WorldAxis(const RigidTransform& X_WP) const {

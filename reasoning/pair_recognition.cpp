@@ -642,8 +642,15 @@ class Recognizer {
     const int z_internal = f1.internal ? f1.teeth : f2.teeth;
     const int z_external = f1.internal ? f2.teeth : f1.teeth;
     if (internal && z_internal <= z_external) return;  // a ring must be larger than its pinion
+    // Helical gears mesh with equal helix angles, of opposite hands when external and the same
+    // hand when internal; their centre distance takes the transverse module m / cos(helix).
+    const double helix1 = assembly_.feature(g1.ref).helix_angle;
+    const double helix2 = assembly_.feature(g2.ref).helix_angle;
+    const double cos_helix = std::cos(helix1);
     auto required = [&](double m) {
-      return internal ? m * (z_internal - z_external) / 2 : m * (f1.teeth + f2.teeth) / 2;
+      const double transverse = m / cos_helix;
+      return internal ? transverse * (z_internal - z_external) / 2
+                      : transverse * (f1.teeth + f2.teeth) / 2;
     };
     const double m = f1.module;
     if (!SameModule(f1.module, f2.module)) {
@@ -657,6 +664,13 @@ class Recognizer {
     }
     const double a = required(m);
     const double error = std::abs(d - a);
+    const double helix_error = std::abs(helix2 - (internal ? helix1 : -helix1));
+    if (angle <= A_ && error <= L_ && helix_error > A_) {
+      Near("gear_helix_mismatch", g1, g2,
+           "helix angles " + Deg(helix1) + " and " + Deg(helix2) + " (required equal, " +
+               (internal ? "of the same hand for an internal pair)" : "of opposite hands)"));
+      return;
+    }
     if (angle <= A_ && error <= L_) {
       AddPair(PairType::kGear, g1, g2);
       return;

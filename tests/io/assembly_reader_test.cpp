@@ -433,6 +433,13 @@ TEST_F(AssemblyReaderTest, ReadsFeaturesOnlyPartsAndHeldDrivers) {
   EXPECT_TRUE(Parse(OnePart(R"("compliant": true)")).part(0).compliant);
   EXPECT_FALSE(Parse(OnePart("")).part(0).compliant);
   ExpectError(OnePart(R"("compliant": "yes")"), "/parts/0/compliant", "true or false");
+  // A gear's helix angle (spec: `helix_angle`, in the file's angle unit), below 90 degrees.
+  const std::string gear =
+      R"("features": [{"id": "g", "kind": "gear", "origin": [0,0,0], "axis": [0,0,1], )"
+      R"("teeth": 20, "module": 2, "length": 10, "helix_angle": )";
+  EXPECT_NEAR(Parse(OnePart(gear + "-15}]")).part(0).features[0].helix_angle, -15 * kPi / 180,
+              1e-12);
+  ExpectError(OnePart(gear + "95}]"), "/parts/0/features/0/helix_angle", "between -90 and 90");
 }
 
 TEST_F(AssemblyReaderTest, NeverModifiesItsInput) {

@@ -297,6 +297,25 @@ TEST(PairRecognition, ExternalAndInternalGearsWithExactRatios) {
       Rational(17, 31));
 }
 
+TEST(PairRecognition, HelicalGearsMeshAtTheTransverseModulesDistance) {
+  // 20 and 40 teeth, normal module 2, helix 15 degrees: centre distance 2 / cos(15 deg) x 60 / 2.
+  const auto helical = [](int teeth, V origin, double helix_deg) {
+    Feature f = Gear("t", teeth, 2, origin);
+    f.helix_angle = helix_deg * kPi / 180;
+    return f;
+  };
+  const double a = 2 / std::cos(15 * kPi / 180) * 60 / 2;
+  const Pair pair = Only(GearPair(helical(20, V::Zero(), 15), helical(40, V(a, 0, 0), -15)));
+  EXPECT_EQ(pair.type, PairType::kGear);
+  EXPECT_EQ(*pair.ratio, Rational(-1, 2));
+  // Two right-hand helices do not mesh externally: a near miss naming the helix angles.
+  const Recognition same = GearPair(helical(20, V::Zero(), 15), helical(40, V(a, 0, 0), 15));
+  EXPECT_TRUE(same.pairs.empty());
+  EXPECT_TRUE(HasDiagnostic(same, "gear_helix_mismatch", "of opposite hands"));
+  // At the spur distance (the normal module's), they are off by 2.12 mm: no pair.
+  EXPECT_TRUE(GearPair(helical(20, V::Zero(), 15), helical(40, V(60, 0, 0), -15)).pairs.empty());
+}
+
 TEST(PairRecognition, GearNearMisses) {
   const Recognition off = GearPair(Gear("t", 20, 1, V::Zero()), Gear("t", 10, 1, V(15.4, 0, 0)));
   EXPECT_TRUE(off.pairs.empty());
