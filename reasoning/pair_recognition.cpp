@@ -676,10 +676,13 @@ class Recognizer {
       return;
     }
     if (error >= m) return;
-    const std::string formula = internal ? FormatNumber(m) + " x |" + std::to_string(f2.teeth) +
-                                               " - " + std::to_string(f1.teeth) + "| / 2"
-                                         : FormatNumber(m) + " x (" + std::to_string(f1.teeth) +
-                                               " + " + std::to_string(f2.teeth) + ") / 2";
+    // The module across the teeth: m, or m / cos(helix) for helical gears.
+    const std::string module =
+        helix1 == 0.0 ? FormatNumber(m) : FormatNumber(m) + " / cos(" + Deg(helix1) + ")";
+    const std::string formula = internal ? module + " x |" + std::to_string(f2.teeth) + " - " +
+                                               std::to_string(f1.teeth) + "| / 2"
+                                         : module + " x (" + std::to_string(f1.teeth) + " + " +
+                                               std::to_string(f2.teeth) + ") / 2";
     if (angle > A_ && angle <= near_A_) {
       Near("gear_axes_not_parallel", g1, g2,
            "axes are " + Deg(angle) + " apart (required parallel within " + Deg(A_) + ")");

@@ -312,8 +312,10 @@ TEST(PairRecognition, HelicalGearsMeshAtTheTransverseModulesDistance) {
   const Recognition same = GearPair(helical(20, V::Zero(), 15), helical(40, V(a, 0, 0), 15));
   EXPECT_TRUE(same.pairs.empty());
   EXPECT_TRUE(HasDiagnostic(same, "gear_helix_mismatch", "of opposite hands"));
-  // At the spur distance (the normal module's), they are off by 2.12 mm: no pair.
-  EXPECT_TRUE(GearPair(helical(20, V::Zero(), 15), helical(40, V(60, 0, 0), -15)).pairs.empty());
+  // 1.12 mm short of that distance (near the normal module's 60): a near miss with the formula.
+  const Recognition spur = GearPair(helical(20, V::Zero(), 15), helical(40, V(61, 0, 0), -15));
+  EXPECT_TRUE(spur.pairs.empty());
+  EXPECT_TRUE(HasDiagnostic(spur, "gear_center_distance", "= 2 / cos(15 deg) x (20 + 40) / 2"));
 }
 
 TEST(PairRecognition, GearNearMisses) {
