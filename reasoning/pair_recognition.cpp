@@ -854,6 +854,7 @@ class Recognizer {
   /// hinge of two parts whose pin or screw the CAD file leaves out. Before the overrides, so
   /// that an override forbids or replaces one as any pair.
   void AddImpliedPins() {
+    if (hole_candidates_.empty()) return;
     std::vector<bool> filled(features_.size(), false);
     for (const Pair& p : pairs_) {
       const FeatureKind k = assembly_.kind(p.a);

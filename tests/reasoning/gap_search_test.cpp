@@ -91,16 +91,24 @@ TEST(GapSearch, SealedBoxHasOneGapOfTheCavitysVolume) {
   }
 }
 
-TEST(GapSearch, AOnePieceShellComesClosestToTheOutsideAtItsThinnestWall) {
-  // One closed mesh of two shells: the outer box and, wound inside out, the cavity.
-  auto shell = std::make_shared<TriangleMesh>(*BoxMesh({-4, -4, -4}, {22, 14, 9}));
-  TriangleMesh cavity = *BoxMesh({0, 0, 0}, {20, 10, 5});
+// A part `id` of one closed mesh of two shells: the box [outer_min, outer_max] and, wound inside
+// out, the cavity [cavity_min, cavity_max].
+Part HollowBlock(const std::string& id, const Eigen::Vector3d& outer_min,
+                 const Eigen::Vector3d& outer_max, const Eigen::Vector3d& cavity_min,
+                 const Eigen::Vector3d& cavity_max) {
+  auto mesh = std::make_shared<TriangleMesh>(*BoxMesh(outer_min, outer_max));
+  TriangleMesh cavity = *BoxMesh(cavity_min, cavity_max);
   for (auto& f : cavity.faces) std::swap(f[1], f[2]);
-  shell->Append(cavity);
+  mesh->Append(cavity);
   Part part;
-  part.id = "shell";
-  part.mesh = shell;
-  part.mesh_source = "test:shell";
+  part.id = id;
+  part.mesh = mesh;
+  part.mesh_source = "test:" + id;
+  return part;
+}
+
+TEST(GapSearch, AOnePieceShellComesClosestToTheOutsideAtItsThinnestWall) {
+  const Part part = HollowBlock("shell", {-4, -4, -4}, {22, 14, 9}, {0, 0, 0}, {20, 10, 5});
   for (const double voxel : {1.0, 0.5}) {
     const GapSearch search = Search(MakeAssembly({part}), voxel);
     ASSERT_EQ(search.gaps.size(), 1u);
@@ -268,15 +276,9 @@ TEST(GapSearch, ACavityInOneBlockOnRoundCoordinatesIsFoundAndMeasured) {
   // One closed mesh: a block and, wound inside out, a 16 x 10 x 3 mm cavity.
   for (const AlignedCase& c : AlignedCases()) {
     const Eigen::Vector3d d = Eigen::Vector3d::Constant(c.shift * c.voxel);
-    auto block = std::make_shared<TriangleMesh>(
-        *BoxMesh(d - Eigen::Vector3d(3, 2, 2), d + Eigen::Vector3d(19, 12, 5)));
-    TriangleMesh cavity = *BoxMesh(d, d + Eigen::Vector3d(16, 10, 3));
-    for (auto& f : cavity.faces) std::swap(f[1], f[2]);
-    block->Append(cavity);
-    Part part;
-    part.id = "block";
-    part.mesh = block;
-    part.mesh_source = "test:block";
+    const Part part =
+        HollowBlock("block", d - Eigen::Vector3d(3, 2, 2), d + Eigen::Vector3d(19, 12, 5), d,
+                    d + Eigen::Vector3d(16, 10, 3));
     ExpectWithinTwoPercent(Search(MakeAssembly({part, Anchor()}), c.voxel), 16 * 10 * 3,
                            Describe(c));
   }
