@@ -34,6 +34,9 @@
 #include "io/info_report.h"
 #include "io/input_error.h"
 #include "io/mesh_reader.h"
+#include "io/mjcf_writer.h"
+#include "io/stl_writer.h"
+#include "io/urdf_writer.h"
 #include "io/vtp_series_writer.h"
 #include "kernel/assembly_check.h"
 #include "kernel/assembly_state.h"
@@ -48,6 +51,7 @@
 #include "reasoning/gap_search.h"
 #include "reasoning/motion_run.h"
 #include "reasoning/operation_check.h"
+#include "reasoning/simulation_model.h"
 #include "viz/display.h"
 #include "viz/motion_renderer.h"
 #include "viz/png_encoder.h"
@@ -500,6 +504,73 @@ int Animate(const std::string& file, const AnimateRequest& request) {
   return kExitOk;
 }
 
+// Writes the simulator model as URDF and/or MJCF, each with its meshes in a folder beside it
+// (FILE_meshes/, one binary STL in metres per mesh source).
+int Export(const std::string& file, const std::string& urdf, const std::string& mjcf,
+           double density, bool drive, bool limits) {
+  if (urdf.empty() && mjcf.empty()) {
+    throw mechanist::InputError(file, "", 0, 0, "export: expected --urdf or --mjcf, found neither");
+  }
+  if (!(density > 0) || !std::isfinite(density)) {
+    throw mechanist::InputError(file, "", 0, 0, "--density: expected kg/m^3 > 0");
+  }
+  const mechanist::Assembly assembly = Load(file, std::cout);
+  const mechanist::Analysis analysis = mechanist::Analyze(assembly);
+  mechanist::SimulationOptions options;
+  options.density = density;
+  std::optional<mechanist::CollisionModel> collision;
+  if (limits) options.collision = &collision.emplace(assembly);
+  options.progress = Progress("movable ranges");
+  const mechanist::SimulationModel model =
+      mechanist::BuildSimulationModel(assembly, analysis, options);
+  std::vector<std::string> written;
+  std::set<std::filesystem::path> mesh_folders;  // written already (URDF and MJCF side by side)
+  auto write_meshes = [&](const std::filesystem::path& out) {
+    const std::string folder = out.stem().string() + "_meshes";
+    if (!mesh_folders.insert(out.parent_path() / folder).second) return folder;
+    std::filesystem::create_directories(out.parent_path() / folder);
+    for (const mechanist::SimMesh& m : model.meshes) {
+      mechanist::WriteFileAtomically(out.parent_path() / folder / (m.name + ".stl"),
+                                     mechanist::BinaryStl(*m.mesh, 1e-3), file);
+    }
+    written.push_back((out.parent_path() / folder).string() + "/ (" +
+                      std::to_string(model.meshes.size()) + " meshes)");
+    return folder;
+  };
+  if (!urdf.empty()) {
+    const std::string folder = write_meshes(urdf);
+    mechanist::WriteFileAtomically(urdf, mechanist::UrdfText(assembly, analysis, model, folder),
+                                   file);
+    written.push_back(urdf);
+  }
+  if (!mjcf.empty()) {
+    mechanist::MjcfOptions mjcf_options;
+    mjcf_options.mesh_dir = write_meshes(mjcf);
+    mjcf_options.drive = drive;
+    mechanist::WriteFileAtomically(
+        mjcf, mechanist::MjcfText(assembly, analysis, model, mjcf_options), file);
+    written.push_back(mjcf);
+  }
+  std::size_t limited = 0;
+  for (const auto& j : model.joints) limited += j.lower && j.upper;
+  std::size_t actuated = 0;
+  for (const auto& a : model.actuators) actuated += a.joint.has_value();
+  std::size_t closed = 0;
+  for (const auto& l : model.loops) closed += !l.anchors_W.empty();
+  std::cout << "links: " << model.links.size() << " (root " << model.links.front().name << ")\n"
+            << "joints: " << model.joints.size() << " ("
+            << (limits ? std::to_string(limited) + " with a movable range from the swept check"
+                       : std::string("movable ranges not searched: --no-limits"))
+            << ")\n"
+            << "couplings: " << model.couplings.size() << "\n"
+            << "loops cut: " << model.loops.size() << " (" << closed
+            << " closed by MJCF equalities)\n"
+            << "actuators: " << actuated << " of " << model.actuators.size() << " drivers\n";
+  for (const std::string& note : model.notes) std::cout << "note: " << note << "\n";
+  for (const std::string& w : written) std::cout << "wrote " << w << "\n";
+  return kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -614,6 +685,21 @@ int main(int argc, char** argv) {
   animate->add_flag("--no-clashes", no_clashes, "skip the clash checks (no red parts)");
   animate->add_flag("--no-axes", no_axes, "do not draw feature axes");
 
+  std::string urdf, mjcf;
+  double density = 7850;
+  bool drive = false;
+  CLI::App* export_command = app.add_subcommand(
+      "export", "Write the mechanism for simulators: URDF and MJCF with joints and couplings");
+  export_command->add_option("FILE", file, "assembly file (.json)")->required();
+  export_command->add_option("--urdf", urdf, "write URDF to this file (meshes beside it)");
+  export_command->add_option("--mjcf", mjcf, "write MuJoCo MJCF to this file (meshes beside it)");
+  export_command->add_option("--density", density, "kg/m^3 of every part (default 7850, steel)");
+  export_command->add_flag("--drive", drive,
+                           "MJCF: a keyframe at the file pose with the drivers running");
+  bool no_limits = false;
+  export_command->add_flag("--no-limits", no_limits,
+                           "skip the swept check for joint ranges (faster on large files)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -635,6 +721,7 @@ int main(int argc, char** argv) {
     if (*drag) return Drag(file, part, feature, translate);
     if (*adjust) return Adjust(file, json, write);
     if (*features) return Features(file, json);
+    if (*export_command) return Export(file, urdf, mjcf, density, drive, !no_limits);
     if (*animate) {
       animate_request.clashes = !no_clashes;
       animate_request.axes = !no_axes;

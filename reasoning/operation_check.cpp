@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 #include <stdexcept>
+#include <tuple>
 
 #include "kernel/assembly_state.h"
 #include "kernel/broad_phase.h"
@@ -13,6 +14,14 @@
 
 namespace mechanist {
 namespace {
+
+// Orders contacts by driver parameter, ties by the parts' ids.
+void SortByTime(const Assembly& assembly, std::vector<OperationClash>& clashes) {
+  std::sort(clashes.begin(), clashes.end(), [&](const OperationClash& x, const OperationClash& y) {
+    return std::tie(x.at, assembly.part(x.part_a).id, assembly.part(x.part_b).id) <
+           std::tie(y.at, assembly.part(y.part_a).id, assembly.part(y.part_b).id);
+  });
+}
 
 // Turns the earliest contact of each free subassembly (one that nothing drives or holds) into
 // an inferred coupling, carried or jammed, and re-analyses with the carried ones.
@@ -84,30 +93,21 @@ void SettleFreeMotions(const Assembly& assembly, const Analysis& analysis,
 
 }  // namespace
 
-OperationCheck CheckOperation(const Assembly& assembly, const Analysis& analysis,
-                              const CollisionModel& model, std::optional<std::size_t> driver,
-                              std::optional<double> amount) {
-  const MotionRun run = PlanRun(assembly, analysis, driver, amount);
+OperationCheck SweepPaths(const Assembly& assembly, const Analysis& analysis,
+                          const CollisionModel& model, const std::vector<ScrewPath>& path,
+                          double amount) {
   OperationCheck check;
-  check.driver = run.driver;
-  check.amount = run.amount;
-  if (!run.possible) {
-    check.possible = false;
-    check.reason = run.reason;
-    return check;
-  }
-
+  check.amount = amount;
   const AssemblyState state = InitialState(assembly);
   const std::size_t n = assembly.parts().size();
   const double tolerance = assembly.tolerance().length;
-  const std::vector<ScrewPath>& path = run.paths;
   std::vector<Aabb> reach(n);
   for (std::size_t p = 0; p < n; ++p) {
     if (model.part_mesh(p).mesh().faces.empty()) continue;  // nothing to meet: an empty box
     // Everywhere the part can be over the run: its box grown by the farthest any point goes.
     Aabb box = TransformBox(state.X_WP[p], model.part_mesh(p).bounds());
     const double travel =
-        path[p].SpeedBound(box.center(), 0.5 * box.size().norm(), check.amount) * check.amount;
+        path[p].SpeedBound(box.center(), 0.5 * box.size().norm(), amount) * amount;
     box.min.array() -= travel;
     box.max.array() += travel;
     reach[p] = box;
@@ -130,26 +130,39 @@ OperationCheck CheckOperation(const Assembly& assembly, const Analysis& analysis
     }
     ++check.pairs_swept;
     const MotionSweepResult r =
-        SweepMotion(a, state.X_WP[i], path[i], b, state.X_WP[j], path[j], check.amount, tolerance);
+        SweepMotion(a, state.X_WP[i], path[i], b, state.X_WP[j], path[j], amount, tolerance);
     if (r.status == MotionSweepResult::Status::kClear) continue;
     const bool ordered = assembly.part(i).id < assembly.part(j).id;
     const OperationClash clash{ordered ? i : j, ordered ? j : i, r.s, r.distance, r.p_W};
     (r.status == MotionSweepResult::Status::kContact ? check.clashes : check.undecided)
         .push_back(clash);
   }
-  auto by_time = [&](const OperationClash& x, const OperationClash& y) {
-    return std::tie(x.at, assembly.part(x.part_a).id, assembly.part(x.part_b).id) <
-           std::tie(y.at, assembly.part(y.part_a).id, assembly.part(y.part_b).id);
-  };
-  std::sort(check.clashes.begin(), check.clashes.end(), by_time);
-  SettleFreeMotions(assembly, analysis, state, path, &check);
+  SortByTime(assembly, check.clashes);
+  SortByTime(assembly, check.undecided);
   std::sort(check.touching_at_rest.begin(), check.touching_at_rest.end(),
             [&](const auto& x, const auto& y) {
               return std::tie(assembly.part(x.first).id, assembly.part(x.second).id) <
                      std::tie(assembly.part(y.first).id, assembly.part(y.second).id);
             });
-  std::sort(check.clashes.begin(), check.clashes.end(), by_time);
-  std::sort(check.undecided.begin(), check.undecided.end(), by_time);
+  return check;
+}
+
+OperationCheck CheckOperation(const Assembly& assembly, const Analysis& analysis,
+                              const CollisionModel& model, std::optional<std::size_t> driver,
+                              std::optional<double> amount) {
+  const MotionRun run = PlanRun(assembly, analysis, driver, amount);
+  if (!run.possible) {
+    OperationCheck check;
+    check.driver = run.driver;
+    check.amount = run.amount;
+    check.possible = false;
+    check.reason = run.reason;
+    return check;
+  }
+  OperationCheck check = SweepPaths(assembly, analysis, model, run.paths, run.amount);
+  check.driver = run.driver;
+  SettleFreeMotions(assembly, analysis, InitialState(assembly), run.paths, &check);
+  SortByTime(assembly, check.clashes);
   return check;
 }
 

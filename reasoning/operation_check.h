@@ -8,6 +8,7 @@
 
 #include "kernel/assembly.h"
 #include "kernel/collision_model.h"
+#include "kernel/screw_path.h"
 #include "reasoning/analysis.h"
 
 namespace mechanist {
@@ -53,6 +54,14 @@ struct OperationCheck {
   /// when nothing was carried.
   std::optional<Analysis> after;
 };
+
+/// The sweep of CheckOperation along given paths (per part: the pose after s is
+/// paths[p].At(s) * X_WP) over s in [0, amount], without settling free motions: the first
+/// contact of each pair of parts that move relative to each other (clashes and undecided by
+/// `at`), and the pairs touching at rest. `driver` is empty and `possible` true.
+OperationCheck SweepPaths(const Assembly& assembly, const Analysis& analysis,
+                          const CollisionModel& model, const std::vector<ScrewPath>& paths,
+                          double amount);
 
 /// Runs the mechanism from its file poses as PlanRun says (one driver in the sense of its rate,
 /// or all drivers at their rates, over `amount` or the drivers' amounts) and sweeps every pair

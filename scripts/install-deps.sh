@@ -12,6 +12,7 @@ packages=(
   libvtk9-dev libx11-dev xvfb xauth ffmpeg
   libocct-data-exchange-dev libocct-ocaf-dev libocct-modeling-algorithms-dev
   libocct-modeling-data-dev libocct-foundation-dev
+  libmujoco-dev liburdfdom-tools
 )
 
 missing=()
