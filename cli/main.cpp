@@ -528,7 +528,12 @@ int Export(const std::string& file, const std::string& urdf, const std::string& 
   auto write_meshes = [&](const std::filesystem::path& out) {
     const std::string folder = out.stem().string() + "_meshes";
     if (!mesh_folders.insert(out.parent_path() / folder).second) return folder;
-    std::filesystem::create_directories(out.parent_path() / folder);
+    std::error_code error;
+    std::filesystem::create_directories(out.parent_path() / folder, error);
+    if (error) {
+      throw mechanist::InputError((out.parent_path() / folder).string(), "", 0, 0,
+                                  "cannot create the mesh folder: " + error.message());
+    }
     for (const mechanist::SimMesh& m : model.meshes) {
       mechanist::WriteFileAtomically(out.parent_path() / folder / (m.name + ".stl"),
                                      mechanist::BinaryStl(*m.mesh, 1e-3), file);
@@ -552,20 +557,28 @@ int Export(const std::string& file, const std::string& urdf, const std::string& 
     written.push_back(mjcf);
   }
   std::size_t limited = 0;
-  for (const auto& j : model.joints) limited += j.lower && j.upper;
+  for (const auto& j : model.joints) limited += j.lower || j.upper;
   std::size_t actuated = 0;
   for (const auto& a : model.actuators) actuated += a.joint.has_value();
   std::size_t closed = 0;
   for (const auto& l : model.loops) closed += !l.anchors_W.empty();
   std::cout << "links: " << model.links.size() << " (root " << model.links.front().name << ")\n"
             << "joints: " << model.joints.size() << " ("
-            << (limits ? std::to_string(limited) + " with a movable range from the swept check"
+            << (limits ? std::to_string(limited) + " stopped by a contact in the swept check"
                        : std::string("movable ranges not searched: --no-limits"))
             << ")\n"
             << "couplings: " << model.couplings.size() << "\n"
-            << "loops cut: " << model.loops.size() << " (" << closed
+            << "loops cut (URDF cannot close them): " << model.loops.size() << " (" << closed
             << " closed by MJCF equalities)\n"
             << "actuators: " << actuated << " of " << model.actuators.size() << " drivers\n";
+  for (const mechanist::SimLoop& loop : model.loops) {
+    const mechanist::Pair& p = analysis.pairs[loop.pair];
+    std::cout << "  loop cut at the " << mechanist::ToString(p.type) << " pair "
+              << assembly.FeatureName(p.a) << " + " << assembly.FeatureName(p.b)
+              << (loop.anchors_W.empty() ? ": open in MJCF too (no equality for it)"
+                                         : ": closed in MJCF by <connect>")
+              << "\n";
+  }
   for (const std::string& note : model.notes) std::cout << "note: " << note << "\n";
   for (const std::string& w : written) std::cout << "wrote " << w << "\n";
   return kExitOk;

@@ -321,7 +321,6 @@ class Builder {
   }
 
   void AddLoops() {
-    std::map<PairType, std::vector<std::size_t>> open;  // loops MJCF cannot close, by type
     for (const Joint& j : km_.joints()) {
       if (!j.pair || j.in_tree) continue;
       const std::size_t pair = order_[*j.pair];
@@ -335,28 +334,9 @@ class Builder {
         loop.anchors_W = {kMetresPerMm * j.point_W, kMetresPerMm * (j.point_W + length * j.axis_W)};
       } else if (j.type == PairType::kSpherical) {
         loop.anchors_W = {kMetresPerMm * j.point_W};
-      } else {
-        open[analysis_.pairs[pair].type].push_back(pair);
       }
       model_.loops.push_back(std::move(loop));
     }
-    // One note per pair type, naming the first few: the file's comments list every loop.
-    for (auto& [type, pairs] : open) {
-      std::sort(pairs.begin(), pairs.end());
-      std::string text = "the loop" + std::string(pairs.size() > 1 ? "s" : "") + " through " +
-                         std::to_string(pairs.size()) + " " + std::string(ToString(type)) +
-                         " pair" + (pairs.size() > 1 ? "s" : "") + " (";
-      for (std::size_t k = 0; k < std::min<std::size_t>(pairs.size(), 3); ++k) {
-        const Pair& p = analysis_.pairs[pairs[k]];
-        text += (k ? "; " : "") + assembly_.FeatureName(p.a) + " + " + assembly_.FeatureName(p.b);
-      }
-      if (pairs.size() > 3) text += "; " + std::to_string(pairs.size() - 3) + " more";
-      model_.notes.push_back(text + ") stay" + (pairs.size() > 1 ? "" : "s") +
-                             " open: MJCF has no equality constraint for " +
-                             (pairs.size() > 1 ? "them" : "it"));
-    }
-    std::sort(model_.loops.begin(), model_.loops.end(),
-              [](const SimLoop& x, const SimLoop& y) { return x.pair < y.pair; });
   }
 
   void AddActuators() {

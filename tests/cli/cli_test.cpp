@@ -540,4 +540,24 @@ TEST(Cli, StepAssembliesAreAnalysedWithoutWrittenFeatures) {
   std::filesystem::remove(bad);
 }
 
+
+TEST(Cli, ExportNeedsAnOutputAndAPositiveDensity) {
+  const std::string file = Example("robot_hand_worm");
+  const CommandResult none = Mechanist("export " + file);
+  EXPECT_EQ(none.exit_code, 2) << none.out;
+  EXPECT_NE(none.out.find("expected --urdf or --mjcf"), std::string::npos) << none.out;
+  const auto out = std::filesystem::temp_directory_path() / "mechanist_cli_export";
+  std::filesystem::remove_all(out);
+  const CommandResult density =
+      Mechanist("export " + file + " --density -1 --urdf " + (out / "m.urdf").string());
+  EXPECT_EQ(density.exit_code, 2) << density.out;
+  EXPECT_NE(density.out.find("--density"), std::string::npos) << density.out;
+  EXPECT_FALSE(std::filesystem::exists(out / "m.urdf"));
+  const CommandResult ok = Mechanist("export " + file + " --no-limits --urdf " +
+                                     (out / "m.urdf").string());
+  EXPECT_EQ(ok.exit_code, 0) << ok.out;
+  EXPECT_TRUE(std::filesystem::exists(out / "m_meshes" / "worm_wheel.stl"));
+  EXPECT_NE(ok.out.find("movable ranges not searched"), std::string::npos) << ok.out;
+}
+
 }  // namespace
