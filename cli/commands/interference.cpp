@@ -1,0 +1,36 @@
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <memory>
+
+#include "cli/commands.h"
+#include "io/assembly_report.h"
+#include "kernel/assembly_state.h"
+#include "reasoning/interference.h"
+
+namespace mechanist::cli {
+
+Command InterferenceCommand() {
+  auto json = std::make_shared<std::string>();
+  Command c;
+  c.name = "interference";
+  c.help = "Parts that penetrate in the assembled state; exit 1 if any clash";
+  c.input = Input::kAdjusted;
+  c.analysis = true;
+  c.collision = true;
+  c.options = [json](CLI::App& app) {
+    app.add_option("--json", *json, "write the JSON report to this file");
+  };
+  c.run = [json](Session& s) {
+    const auto contacts =
+        FindContacts(*s.assembly, InitialState(*s.assembly), *s.collision, s.analysis->pairs);
+    WriteInterferenceSummary(*s.assembly, *s.analysis, contacts, std::cout);
+    if (!json->empty()) s.Report(*json, InterferenceJson(*s.assembly, *s.analysis, contacts));
+    for (const auto& contact : contacts) {
+      if (contact.verdict == ContactVerdict::kClash) return kExitFailures;
+    }
+    return kExitOk;
+  };
+  return c;
+}
+
+}  // namespace mechanist::cli
