@@ -11,8 +11,8 @@
 #include <string>
 
 #include "io/assembly_reader.h"
-#include "io/gltf_writer.h"
-#include "io/vtp_series_writer.h"
+#include "viz/gltf_writer.h"
+#include "viz/vtp_series_writer.h"
 #include "kernel/assembly_state.h"
 #include "kernel/collision_model.h"
 #include "reasoning/analysis.h"

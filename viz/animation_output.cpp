@@ -5,9 +5,9 @@
 #include <memory>
 
 #include "io/atomic_file.h"
-#include "io/gltf_writer.h"
+#include "viz/gltf_writer.h"
 #include "io/input_error.h"
-#include "io/vtp_series_writer.h"
+#include "viz/vtp_series_writer.h"
 #include "kernel/assembly_state.h"
 #include "kernel/collision_model.h"
 #include "reasoning/animation.h"

@@ -26,8 +26,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "io/display_colors.h"
-#include "io/feature_lines.h"
+#include "viz/display_colors.h"
+#include "viz/feature_lines.h"
 #include "kernel/aabb.h"
 #include "kernel/assembly_state.h"
 #include "viz/display.h"

@@ -6,7 +6,7 @@
 
 #include "cli/commands.h"
 #include "io/gap_report.h"
-#include "io/gap_volume_writer.h"
+#include "viz/gap_volume_writer.h"
 #include "io/input_error.h"
 #include "reasoning/gap_search.h"
 

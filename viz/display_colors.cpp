@@ -1,4 +1,4 @@
-#include "io/display_colors.h"
+#include "viz/display_colors.h"
 
 #include <array>
 

@@ -1,4 +1,4 @@
-#include "io/vtp_series_writer.h"
+#include "viz/vtp_series_writer.h"
 
 #include <bit>
 #include <cstdint>

@@ -16,13 +16,13 @@
 #include <string>
 
 #include "io/assembly_reader.h"
-#include "io/gltf_writer.h"
-#include "io/vtp_series_writer.h"
+#include "io/text_edit.h"
 #include "reasoning/analysis.h"
 #include "reasoning/animation.h"
 #include "reasoning/gap_search.h"
 #include "reasoning/motion_run.h"
-#include "text_edit.h"
+#include "viz/gltf_writer.h"
+#include "viz/vtp_series_writer.h"
 
 namespace mechanist {
 namespace {

@@ -1,4 +1,4 @@
-#include "io/gltf_writer.h"
+#include "viz/gltf_writer.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -13,8 +13,8 @@
 #include <utility>
 #include <vector>
 
-#include "io/display_colors.h"
-#include "io/feature_lines.h"
+#include "viz/display_colors.h"
+#include "viz/feature_lines.h"
 
 namespace mechanist {
 namespace {

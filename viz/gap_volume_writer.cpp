@@ -1,4 +1,4 @@
-#include "io/gap_volume_writer.h"
+#include "viz/gap_volume_writer.h"
 
 #include <algorithm>
 #include <bit>

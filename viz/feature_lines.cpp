@@ -1,4 +1,4 @@
-#include "io/feature_lines.h"
+#include "viz/feature_lines.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
