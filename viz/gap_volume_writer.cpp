@@ -1,20 +1,22 @@
 #include "viz/gap_volume_writer.h"
 
+#include <vtkCellData.h>
+#include <vtkImageData.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkXMLImageDataWriter.h>
+
 #include <algorithm>
-#include <bit>
+#include <cstdint>
 #include <string>
-#include <vector>
 
 #include "io/atomic_file.h"
 #include "io/input_error.h"
-#include "kernel/number_format.h"
 
 namespace mechanist {
 
 namespace {
-
-// The file says LittleEndian and the arrays are written as they lie in memory.
-static_assert(std::endian::native == std::endian::little);
 
 std::uint8_t StateCode(const GapSearch& search, const OccupancyOctree::Cell& cell) {
   const OccupancyOctree& tree = *search.octree;
@@ -34,29 +36,22 @@ std::int32_t GapNumber(const GapSearch& search, const OccupancyOctree::Cell& cel
   return c < 0 ? 0 : search.gap_of_component[c] + 1;
 }
 
-// Writes one value per voxel, x fastest, as little-endian bytes of T: each row is filled run
-// by run from the leaves it crosses.
+// Fills one value per voxel, x fastest (VTK's cell order), each row run by run from the leaves
+// it crosses.
 template <typename T, typename Value>
-void WriteVoxels(std::ostream& out, const GapSearch& search, Value value) {
+void FillVoxels(T* values, const GapSearch& search, Value value) {
   const OccupancyOctree& tree = *search.octree;
   const auto& n = tree.extent();
-  std::vector<T> row(n[0]);
   for (std::int32_t k = 0; k < n[2]; ++k) {
     for (std::int32_t j = 0; j < n[1]; ++j) {
       for (std::int32_t i = 0; i < n[0];) {
         const OccupancyOctree::Cell cell = tree.Locate({i, j, k});
         const T v = value(search, cell);
         const std::int32_t end = std::min(n[0], cell.min[0] + cell.size);
-        for (; i < end; ++i) row[i] = v;
+        for (; i < end; ++i) *values++ = v;
       }
-      out.write(reinterpret_cast<const char*>(row.data()),
-                static_cast<std::streamsize>(row.size() * sizeof(T)));
     }
   }
-}
-
-void WriteLength(std::ostream& out, std::uint64_t bytes) {
-  out.write(reinterpret_cast<const char*>(&bytes), sizeof bytes);
 }
 
 }  // namespace
@@ -71,42 +66,35 @@ void WriteGapVolume(const std::filesystem::path& path, const GapSearch& search,
                      "the volume would have " + std::to_string(voxels) + " voxels, more than " +
                          std::to_string(kMaxVolumeVoxels) + "; choose a coarser --voxel");
   }
-  const auto count = static_cast<std::uint64_t>(voxels);
-  const std::string extent =
-      "0 " + std::to_string(n[0]) + " 0 " + std::to_string(n[1]) + " 0 " + std::to_string(n[2]);
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(n[0] + 1, n[1] + 1, n[2] + 1);  // points: one more than cells
   const Eigen::Vector3d& o = tree.origin_W();
-  const std::string spacing = FormatNumber(tree.voxel(), 17);
-  std::string header =
-      "<?xml version=\"1.0\"?>\n"
-      "<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\" "
-      "header_type=\"UInt64\">\n"
-      "  <ImageData WholeExtent=\"" +
-      extent + "\" Origin=\"" + FormatNumber(o.x(), 17) + " " + FormatNumber(o.y(), 17) + " " +
-      FormatNumber(o.z(), 17) + "\" Spacing=\"" + spacing + " " + spacing + " " + spacing +
-      "\">\n"
-      "    <Piece Extent=\"" +
-      extent +
-      "\">\n"
-      "      <CellData Scalars=\"state\">\n"
-      "        <DataArray type=\"UInt8\" Name=\"state\" format=\"appended\" offset=\"0\"/>\n"
-      "        <DataArray type=\"Int32\" Name=\"gap\" format=\"appended\" offset=\"" +
-      std::to_string(8 + count) +
-      "\"/>\n"
-      "      </CellData>\n"
-      "    </Piece>\n"
-      "  </ImageData>\n"
-      "  <AppendedData encoding=\"raw\">\n_";
-  WriteFileAtomically(
-      path,
-      [&](std::ostream& out) {
-        out << header;
-        WriteLength(out, count);
-        WriteVoxels<std::uint8_t>(out, search, StateCode);
-        WriteLength(out, count * sizeof(std::int32_t));
-        WriteVoxels<std::int32_t>(out, search, GapNumber);
-        out << "\n  </AppendedData>\n</VTKFile>\n";
-      },
-      protect);
+  image->SetOrigin(o.x(), o.y(), o.z());
+  image->SetSpacing(tree.voxel(), tree.voxel(), tree.voxel());
+  vtkNew<vtkUnsignedCharArray> state;
+  state->SetName("state");
+  state->SetNumberOfTuples(voxels);
+  FillVoxels<std::uint8_t>(state->GetPointer(0), search, StateCode);
+  vtkNew<vtkIntArray> gap;
+  gap->SetName("gap");
+  gap->SetNumberOfTuples(voxels);
+  FillVoxels<std::int32_t>(gap->GetPointer(0), search, GapNumber);
+  image->GetCellData()->SetScalars(state);
+  image->GetCellData()->AddArray(gap);
+
+  // VTK's writer, raw appended arrays with UInt64 sizes and no compression, into a temporary
+  // file that is renamed into place.
+  AtomicOutput output(path, protect);
+  vtkNew<vtkXMLImageDataWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(output.temporary().c_str());
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  writer->SetHeaderTypeToUInt64();
+  writer->SetCompressorTypeToNone();
+  writer->SetByteOrderToLittleEndian();
+  if (!writer->Write()) throw InputError(path.string(), "", 0, 0, "cannot write the volume file");
+  output.Commit();
 }
 
 }  // namespace mechanist

@@ -1,8 +1,20 @@
 #include "viz/vtp_series_writer.h"
 
-#include <bit>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkFloatArray.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -13,68 +25,49 @@
 namespace mechanist {
 namespace {
 
-// The files say LittleEndian and the arrays are written as they lie in memory.
-static_assert(std::endian::native == std::endian::little);
+// A PolyData file written by VTK's own XML writer: raw appended arrays (UInt64 sizes), no
+// compression, so that the file is read as fast as it can be and by any VTK reader.
+std::string PolyDataText(vtkPolyData* data) {
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(data);
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  writer->SetHeaderTypeToUInt64();
+  writer->SetCompressorTypeToNone();
+  writer->SetByteOrderToLittleEndian();
+  writer->WriteToOutputStringOn();
+  if (!writer->Write()) throw std::runtime_error("VTK could not write a PolyData file");
+  return writer->GetOutputString();
+}
 
-// A PolyData file in VTK's XML format with raw appended arrays (UInt64 sizes).
-class PolyDataFile {
- public:
-  void AddPoints(const std::vector<float>& xyz) {
-    points_ = Array("Float32", "Points", 3, Bytes(xyz));
+// Triangles of `xyz` (3 floats per point) with `connectivity` (3 per triangle).
+vtkSmartPointer<vtkPolyData> Triangles(const std::vector<float>& xyz,
+                              const std::vector<std::int32_t>& connectivity) {
+  vtkNew<vtkFloatArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetNumberOfTuples(static_cast<vtkIdType>(xyz.size() / 3));
+  std::copy(xyz.begin(), xyz.end(), coordinates->GetPointer(0));
+  vtkNew<vtkPoints> points;
+  points->SetData(coordinates);
+  vtkNew<vtkCellArray> polys;
+  for (std::size_t i = 0; i < connectivity.size(); i += 3) {
+    const vtkIdType triangle[3] = {connectivity[i], connectivity[i + 1], connectivity[i + 2]};
+    polys->InsertNextCell(3, triangle);
   }
-  void AddTriangles(std::size_t count, const std::vector<std::int32_t>& connectivity) {
-    std::vector<std::int32_t> offsets(count);
-    for (std::size_t i = 0; i < count; ++i) offsets[i] = static_cast<std::int32_t>(3 * (i + 1));
-    polys_ = Array("Int32", "connectivity", 1, Bytes(connectivity)) +
-             Array("Int32", "offsets", 1, Bytes(offsets));
-    triangles_ = count;
-  }
-  template <typename T>
-  void AddCellArray(const char* type, const char* name, const std::vector<T>& values) {
-    cells_ += Array(type, name, 1, Bytes(values));
-  }
-  std::string Text(std::size_t point_count) const {
-    return "<?xml version=\"1.0\"?>\n"
-           "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
-           "header_type=\"UInt64\">\n"
-           "  <PolyData>\n"
-           "    <Piece NumberOfPoints=\"" +
-           std::to_string(point_count) + "\" NumberOfPolys=\"" + std::to_string(triangles_) +
-           "\">\n"
-           "      <Points>\n" +
-           points_ +
-           "      </Points>\n"
-           "      <Polys>\n" +
-           polys_ +
-           "      </Polys>\n"
-           "      <CellData>\n" +
-           cells_ +
-           "      </CellData>\n"
-           "    </Piece>\n"
-           "  </PolyData>\n"
-           "  <AppendedData encoding=\"raw\">\n_" +
-           data_ + "\n  </AppendedData>\n</VTKFile>\n";
-  }
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(points);
+  data->SetPolys(polys);
+  return data;
+}
 
- private:
-  template <typename T>
-  static std::string Bytes(const std::vector<T>& values) {
-    return std::string(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
-  }
-  std::string Array(const char* type, const char* name, int components, const std::string& bytes) {
-    const std::string line = "        <DataArray type=\"" + std::string(type) + "\" Name=\"" +
-                             name + "\" NumberOfComponents=\"" + std::to_string(components) +
-                             "\" format=\"appended\" offset=\"" + std::to_string(data_.size()) +
-                             "\"/>\n";
-    const auto size = static_cast<std::uint64_t>(bytes.size());
-    data_.append(reinterpret_cast<const char*>(&size), sizeof size);
-    data_ += bytes;
-    return line;
-  }
-
-  std::string points_, polys_, cells_, data_;
-  std::size_t triangles_ = 0;
-};
+template <typename Array, typename T>
+void AddCellArray(vtkPolyData* data, const char* name, const std::vector<T>& values) {
+  vtkNew<Array> array;
+  array->SetName(name);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  std::copy(values.begin(), values.end(), array->GetPointer(0));
+  data->GetCellData()->AddArray(array);
+}
 
 std::string FrameFile(const Assembly& assembly, const Analysis& analysis,
                       const Animation& animation, std::size_t frame) {
@@ -99,14 +92,11 @@ std::string FrameFile(const Assembly& assembly, const Analysis& analysis,
       clash.push_back(animation.InClash(p, frame) ? 1 : 0);
     }
   }
-  PolyDataFile file;
-  const std::size_t points = xyz.size() / 3;
-  file.AddPoints(xyz);
-  file.AddTriangles(part_of.size(), connectivity);
-  file.AddCellArray("Int32", "part", part_of);
-  file.AddCellArray("Int32", "subassembly", subassembly_of);
-  file.AddCellArray("UInt8", "clash", clash);
-  return file.Text(points);
+  const vtkSmartPointer<vtkPolyData> data = Triangles(xyz, connectivity);
+  AddCellArray<vtkIntArray>(data, "part", part_of);
+  AddCellArray<vtkIntArray>(data, "subassembly", subassembly_of);
+  AddCellArray<vtkUnsignedCharArray>(data, "clash", clash);
+  return PolyDataText(data);
 }
 
 std::string GapFile(const TriangleMesh& surface, const std::vector<std::int32_t>* gap_of_face) {
@@ -122,11 +112,9 @@ std::string GapFile(const TriangleMesh& surface, const std::vector<std::int32_t>
   if (gap_of_face && gap_of_face->size() == gap.size()) {
     for (std::size_t i = 0; i < gap.size(); ++i) gap[i] = (*gap_of_face)[i] + 1;
   }
-  PolyDataFile file;
-  file.AddPoints(xyz);
-  file.AddTriangles(surface.faces.size(), connectivity);
-  file.AddCellArray("Int32", "gap", gap);
-  return file.Text(surface.vertices.size());
+  const vtkSmartPointer<vtkPolyData> data = Triangles(xyz, connectivity);
+  AddCellArray<vtkIntArray>(data, "gap", gap);
+  return PolyDataText(data);
 }
 
 }  // namespace

@@ -312,16 +312,16 @@ TEST(Cli, GapsReportsTheEnclosedCavityAndWritesItsVolume) {
   std::ifstream vti_in(vti, std::ios::binary);
   const std::string volume((std::istreambuf_iterator<char>(vti_in)),
                            std::istreambuf_iterator<char>());
-  const std::string marker = "<AppendedData encoding=\"raw\">\n_";
-  const auto data = volume.find(marker);
-  ASSERT_NE(data, std::string::npos);
+  // The raw data start after the underscore that follows the AppendedData tag; "state" is the
+  // first array (offset 0).
+  const auto tag = volume.find("<AppendedData encoding=\"raw\">");
+  ASSERT_NE(tag, std::string::npos);
+  const auto data = volume.find('_', tag) + 1;
   unsigned long long count = 0;
-  std::memcpy(&count, volume.data() + data + marker.size(), sizeof count);
-  ASSERT_GT(volume.size(), data + marker.size() + 8 + count);
+  std::memcpy(&count, volume.data() + data, sizeof count);
+  ASSERT_GT(volume.size(), data + 8 + count);
   long long gap_cells = 0;
-  for (unsigned long long i = 0; i < count; ++i) {
-    gap_cells += volume[data + marker.size() + 8 + i] == 1;
-  }
+  for (unsigned long long i = 0; i < count; ++i) gap_cells += volume[data + 8 + i] == 1;
   EXPECT_EQ(gap_cells, voxels);
   EXPECT_NE(volume.find("Name=\"gap\""), std::string::npos);
 

@@ -236,8 +236,8 @@ std::string AppendedArray(const std::string& file, const std::string& name) {
   std::smatch m;
   EXPECT_TRUE(std::regex_search(file, m, array)) << name;
   if (m.empty()) return {};
-  const std::string marker = "<AppendedData encoding=\"raw\">\n_";
-  const std::size_t data = file.find(marker) + marker.size();
+  // The raw data start after the underscore that follows the AppendedData tag.
+  const std::size_t data = file.find('_', file.find("<AppendedData encoding=\"raw\">")) + 1;
   const std::size_t at = data + std::stoull(m[1]);
   std::uint64_t size = 0;
   std::memcpy(&size, file.data() + at, 8);
