@@ -5,17 +5,17 @@
 #include <memory>
 
 #include "io/atomic_file.h"
-#include "viz/gltf_writer.h"
 #include "io/input_error.h"
-#include "viz/vtp_series_writer.h"
 #include "kernel/assembly_state.h"
 #include "kernel/collision_model.h"
 #include "reasoning/animation.h"
 #include "reasoning/gap_search.h"
 #include "reasoning/interference.h"
 #include "reasoning/operation_check.h"
+#include "viz/gltf_writer.h"
 #include "viz/png_encoder.h"
 #include "viz/video_writer.h"
+#include "viz/vtp_series_writer.h"
 
 namespace mechanist {
 

@@ -25,8 +25,8 @@ struct AnimationRequest {
   std::optional<double> amount;       ///< default: the driver's amount
   RenderOptions render;               ///< size, view, feature axes, title
   double fps = 30;
-  double gap_voxel = 0;  ///< mm; 0: no gaps drawn
-  bool clashes = true;   ///< mark the parts in a clash (static and swept checks)
+  double gap_voxel = 0;           ///< mm; 0: no gaps drawn
+  bool clashes = true;            ///< mark the parts in a clash (static and swept checks)
   std::filesystem::path protect;  ///< never written over (the input)
   /// Called as stages progress ("decomposing", "rendering"), with the fraction done.
   std::function<void(const char* stage, double fraction)> progress;
@@ -36,10 +36,10 @@ struct AnimationRequest {
 struct AnimationOutcome {
   MotionRun run;
   std::size_t frames = 0;
-  std::size_t clashing_parts = 0;       ///< parts drawn red from their first contact
-  std::optional<std::size_t> gaps;      ///< gaps found, when asked for
+  std::size_t clashing_parts = 0;        ///< parts drawn red from their first contact
+  std::optional<std::size_t> gaps;       ///< gaps found, when asked for
   std::optional<double> render_seconds;  ///< when frames or videos were rendered
-  std::vector<std::string> written;     ///< the files (frames as "frame_*.png")
+  std::vector<std::string> written;      ///< the files (frames as "frame_*.png")
 };
 
 /// Runs the mechanism as PlanRun says, samples `frames` poses (StateAt), marks clashes, finds

@@ -26,11 +26,11 @@
 #include <stdexcept>
 #include <vector>
 
-#include "viz/display_colors.h"
-#include "viz/feature_lines.h"
 #include "kernel/aabb.h"
 #include "kernel/assembly_state.h"
 #include "viz/display.h"
+#include "viz/display_colors.h"
+#include "viz/feature_lines.h"
 
 namespace mechanist {
 namespace {

@@ -52,7 +52,8 @@ Command AnimateCommand() {
     app.add_option("--view", o->view, "iso, front, top or side (default iso)");
     app.add_option("--driver", o->driver, "run only this driver (default: all at their rates)");
     app.add_option("--fps", o->fps, "video and glTF frames per second (default 30)");
-    app.add_option("--gaps", o->gaps, "show the enclosed gaps found at this voxel size (file units)");
+    app.add_option("--gaps", o->gaps,
+                   "show the enclosed gaps found at this voxel size (file units)");
     app.add_flag("--no-clashes", o->no_clashes, "skip the clash checks (no red parts)");
     app.add_flag("--no-axes", o->no_axes, "do not draw feature axes");
   };
@@ -104,7 +105,8 @@ Command AnimateCommand() {
     request.render.height = o->height;
     request.render.view = o->parsed_view;
     request.render.feature_axes = !o->no_axes;
-    if (assembly.name().empty()) request.render.title = std::filesystem::path(s.file).stem().string();
+    if (assembly.name().empty())
+      request.render.title = std::filesystem::path(s.file).stem().string();
     request.fps = o->fps;
     request.gap_voxel = o->gaps * assembly.units().mm_per_length;
     request.clashes = !o->no_clashes;
@@ -128,8 +130,7 @@ Command AnimateCommand() {
     }
     if (outcome.render_seconds) {
       std::cout << "rendered " << outcome.frames << " frames at " << o->width << "x" << o->height
-                << " in " << std::fixed << std::setprecision(1) << *outcome.render_seconds
-                << " s\n"
+                << " in " << std::fixed << std::setprecision(1) << *outcome.render_seconds << " s\n"
                 << std::defaultfloat;
     }
     std::cout << "animation: " << outcome.frames << " frames, "

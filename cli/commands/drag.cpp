@@ -1,3 +1,5 @@
+#include "reasoning/drag.h"
+
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <memory>
@@ -5,7 +7,6 @@
 #include "cli/commands.h"
 #include "io/analysis_report.h"
 #include "io/input_error.h"
-#include "reasoning/drag.h"
 
 namespace mechanist::cli {
 
@@ -39,9 +40,9 @@ Command DragCommand() {
     if (!o->feature.empty()) {
       const auto f = assembly.FindFeature(o->part + "/" + o->feature);
       if (!f) {
-        throw InputError(s.file, "", 0, 0,
-                         "--feature: expected a feature of part " + o->part + ", found \"" +
-                             o->feature + "\"");
+        throw InputError(
+            s.file, "", 0, 0,
+            "--feature: expected a feature of part " + o->part + ", found \"" + o->feature + "\"");
       }
       request.feature = f->feature;
     }

@@ -102,8 +102,8 @@ Command ExportCommand() {
               << "actuators: " << actuated << " of " << model.actuators.size() << " drivers\n";
     for (const SimLoop& loop : model.loops) {
       const Pair& p = analysis.pairs[loop.pair];
-      std::cout << "  loop cut at the " << ToString(p.type) << " pair "
-                << assembly.FeatureName(p.a) << " + " << assembly.FeatureName(p.b)
+      std::cout << "  loop cut at the " << ToString(p.type) << " pair " << assembly.FeatureName(p.a)
+                << " + " << assembly.FeatureName(p.b)
                 << (loop.anchors_W.empty() ? ": open in MJCF too (no equality for it)"
                                            : ": closed in MJCF by <connect>")
                 << "\n";

@@ -6,9 +6,9 @@
 
 #include "cli/commands.h"
 #include "io/gap_report.h"
-#include "viz/gap_volume_writer.h"
 #include "io/input_error.h"
 #include "reasoning/gap_search.h"
+#include "viz/gap_volume_writer.h"
 
 namespace mechanist::cli {
 

@@ -1,3 +1,5 @@
+#include "reasoning/interference.h"
+
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <memory>
@@ -5,7 +7,6 @@
 #include "cli/commands.h"
 #include "io/assembly_report.h"
 #include "kernel/assembly_state.h"
-#include "reasoning/interference.h"
 
 namespace mechanist::cli {
 
