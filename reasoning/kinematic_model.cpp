@@ -17,10 +17,6 @@ constexpr double kTwoPi = 6.283185307179586;
 // Carriers are looked for among a body's joints only up to this many: a frame that holds
 // thousands of shafts is found through the shafts' own joints instead.
 constexpr std::size_t kCarrierScanLimit = 64;
-// Passes over the pairs (in name order, which scatters their features over the axes) fetch
-// the axes of the pair this many ahead while they work on the current one.
-constexpr std::size_t kAxesAhead = 12;
-
 bool IsLowerPair(PairType t) {
   switch (t) {
     case PairType::kRevolute:
@@ -101,20 +97,9 @@ ExactReal KinematicModel::Dot(const Eigen::Vector3d& a, const Eigen::Vector3d& b
   return ExactReal::Approximate(d);
 }
 
-void KinematicModel::PrefetchAxes(const Pair& p) const {
-  for (FeatureRef f : {p.a, p.b}) {
-    const char* axis = reinterpret_cast<const char*>(&axes_[assembly_.FeatureIndex(f)]);
-    __builtin_prefetch(axis);
-    __builtin_prefetch(axis + sizeof(AxisSegment) - 1);
-  }
-}
-
 void KinematicModel::BuildJoints(const std::vector<Pair>& pairs) {
   std::vector<Joint> candidates;
   for (std::size_t i = 0; i < pairs.size(); ++i) {
-    if (i + kAxesAhead < pairs.size() && IsLowerPair(pairs[i + kAxesAhead].type)) {
-      PrefetchAxes(pairs[i + kAxesAhead]);
-    }
     const Pair& p = pairs[i];
     if (!IsLowerPair(p.type)) continue;
     Joint j;
@@ -486,9 +471,6 @@ void KinematicModel::BuildRows(const std::vector<Pair>& pairs) {
            (p.type == PairType::kRackPinion && p.travel_per_revolution);
   };
   for (std::size_t i = 0; i < pairs.size(); ++i) {
-    if (i + kAxesAhead < pairs.size() && coupling(pairs[i + kAxesAhead])) {
-      PrefetchAxes(pairs[i + kAxesAhead]);
-    }
     const Pair& p = pairs[i];
     if (off_tree[i]) {
       for (auto& row : JointConstraints(*off_tree[i], off_tree[i]->body_a, off_tree[i]->body_b)) {

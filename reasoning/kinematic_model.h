@@ -141,8 +141,6 @@ class KinematicModel {
   void AppendAngular(LinearSystem::Row& row, std::size_t a, std::size_t b, const Eigen::Vector3d& d,
                      const ExactReal& scale) const;
   ExactReal LinearOf(const Freedom& f, const Eigen::Vector3d& p, const Eigen::Vector3d& d) const;
-  /// Asks the memory for the world axes of both features of `p` (a hint; no effect on results).
-  void PrefetchAxes(const Pair& p) const;
   void BuildJoints(const std::vector<Pair>& pairs);
   void BuildTree();
   void AddFreedoms(std::size_t joint);

@@ -14,6 +14,7 @@
 #include <tuple>
 #include <utility>
 
+#include "kernel/grid_broad_phase.h"
 #include "kernel/line_geometry.h"
 #include "kernel/number_format.h"
 #include "kernel/radix_sort.h"
@@ -38,89 +39,12 @@ constexpr double kMaxImpliedPinDifference = 0.2;
 constexpr double kMaxImpliedPinGap = 0.5;
 constexpr double kMinThreadDiameterRatio = 0.6;
 
-/// The parameters of a feature that the fits compare, copied from the Feature (80 bytes, not
-/// its 210 with its id): the candidates are tested reading one array in order, not each part's
-/// own list of features.
-struct FeatureParams {
-  explicit FeatureParams(const Feature& f)
-      : diameter(f.diameter),
-        pitch(f.pitch),
-        width(f.width),
-        height(f.height),
-        depth(f.depth),
-        module(f.module),
-        pitch_diameter(f.pitch_diameter),
-        teeth(f.teeth),
-        starts(f.starts),
-        hand(f.hand),
-        fastening(f.fastening),
-        kind(f.kind),
-        through(f.through),
-        retained(f.retained),
-        internal(f.internal) {}
-  double diameter, pitch, width, height, depth, module, pitch_diameter;
-  int teeth, starts;
-  Hand hand;
-  Fastening fastening;
-  FeatureKind kind;
-  bool through, retained, internal;
-};
-static_assert(sizeof(FeatureParams) <= 80, "FeatureParams has grown: the narrow phase reads it");
-
 /// A feature at its world pose (its reach box is kept apart, for the broad phase).
 struct WorldFeature {
-  FeatureParams f;
+  const Feature& f;  ///< as the assembly holds it
   FeatureRef ref;
   const AxisSegment& axis;  ///< world; held in the recogniser's array of axes, handed out
   Eigen::Vector3d normal_W = Eigen::Vector3d::Zero();
-};
-
-/// Keys of grid cells along a Morton (Z-order) curve: the bits of the three cell coordinates
-/// interleaved, so that cells near in key order are near in space along every axis. The broad
-/// phase visits cells in key order; neighbouring cells share features, which then stay in the
-/// cache whichever axis the file lists its parts along (with one axis most significant, the
-/// visit runs down long columns and reloads each feature from memory in every column).
-class MortonKeys {
- public:
-  /// For cell coordinates of `bits` bits along x, y, z, 32 bits in all at most.
-  explicit MortonKeys(const std::array<int, 3>& bits) {
-    std::array<std::array<int, 32>, 3> position{};  // key bit of each coordinate bit
-    int next = 0;
-    for (int b = 0; b < 32; ++b) {
-      for (int k = 2; k >= 0; --k) {
-        if (b < bits[k]) position[k][b] = next++;
-      }
-    }
-    for (int k = 0; k < 3; ++k) {
-      for (int b = 0; b < bits[k]; ++b) {
-        const int q = position[k][b];  // key bit q is bit b of coordinate k
-        for (std::uint32_t v = 0; v < 256; ++v) {
-          if (v >> (b % 8) & 1) spread_[k][b / 8][v] |= std::uint32_t{1} << q;
-          if (v >> (q % 8) & 1) gather_[k][q / 8][v] |= std::uint32_t{1} << b;
-        }
-      }
-    }
-  }
-
-  std::uint32_t Key(const std::array<std::uint32_t, 3>& cell) const {
-    std::uint32_t key = 0;
-    for (int k = 0; k < 3; ++k) {
-      for (int i = 0; i < 4; ++i) key |= spread_[k][i][cell[k] >> (8 * i) & 0xff];
-    }
-    return key;
-  }
-
-  std::array<std::uint32_t, 3> Cell(std::uint32_t key) const {
-    std::array<std::uint32_t, 3> cell{};
-    for (int k = 0; k < 3; ++k) {
-      for (int i = 0; i < 4; ++i) cell[k] |= gather_[k][i][key >> (8 * i) & 0xff];
-    }
-    return cell;
-  }
-
- private:
-  // Per axis and byte: the key bits of a coordinate byte, the coordinate bits of a key byte.
-  std::array<std::array<std::array<std::uint32_t, 256>, 4>, 3> spread_{}, gather_{};
 };
 
 std::string Mm(double x) { return FormatNumber(x) + " mm"; }
@@ -152,7 +76,7 @@ class Recognizer {
       for (std::size_t i = 0; i < part.features.size(); ++i) {
         const Feature& f = part.features[i];
         axes_.push_back(f.WorldAxis(X_WP[p]));
-        WorldFeature w{.f = FeatureParams(f),
+        WorldFeature w{.f = f,
                        .ref = {p, i},
                        .axis = axes_.back(),
                        .normal_W = X_WP[p].RotateDirection(f.normal)};
@@ -172,7 +96,11 @@ class Recognizer {
     // About as many pairs as features in a mechanism (each joins two features; a gear may
     // mesh with several): reserved, so that the pairs are not copied as the vector grows.
     pairs_.reserve(features_.size());
-    ForEachCandidate([this](const WorldFeature& x, const WorldFeature& y) { Test(x, y); });
+    std::vector<std::uint32_t> parts(features_.size());
+    for (std::size_t i = 0; i < features_.size(); ++i) {
+      parts[i] = static_cast<std::uint32_t>(features_[i].ref.part);
+    }
+    for (const auto& [i, j] : OverlappingBoxPairs(reach_, parts)) Test(features_[i], features_[j]);
     AddImpliedPins();
     SetCompliantPartsApart();
     ApplyOverrides();
@@ -182,19 +110,9 @@ class Recognizer {
     if (2 * rank_bits_ + kSourceBits > 64) {
       throw std::length_error("pair recognition: too many features to sort pairs");
     }
-    // One pass over the pairs for the clamps, the parts in pairs and the sort keys: at 100,000
-    // parts the pairs no longer fit in the cache, and every pass reads them from memory.
-    std::vector<bool> connected(assembly_.parts().size(), false);
-    std::vector<SortKey> keys;
-    keys.reserve(pairs_.size());
-    for (std::size_t i = 0; i < pairs_.size(); ++i) {
-      Pair& p = pairs_[i];
-      ApplyClamp(p, screwed);
-      connected[p.a.part] = connected[p.b.part] = true;
-      keys.push_back({Key(p), i});
-    }
-    ReportUnconnected(connected);
-    Recognition out{Sorted(std::move(keys)), std::move(diagnostics_), {}};
+    for (Pair& p : pairs_) ApplyClamp(p, screwed);
+    ReportUnconnected();
+    Recognition out{Sorted(), std::move(diagnostics_), {}};
     std::sort(out.diagnostics.begin(), out.diagnostics.end(), DiagnosticLess);
     return out;
   }
@@ -203,7 +121,7 @@ class Recognizer {
   // ---- broad phase ----
 
   Aabb ReachBox(const WorldFeature& w, const Aabb& part_box_W) const {
-    const FeatureParams& f = w.f;
+    const Feature& f = w.f;
     const double margin = near_L_ + L_;
     double radius = 0.0;
     switch (f.kind) {
@@ -227,10 +145,10 @@ class Recognizer {
         radius = f.pitch_diameter / 2 + 2 * f.module;
         break;
       case FeatureKind::kPinRing:
-        radius = f.diameter / 2 + assembly_.feature(w.ref).pin_diameter;
+        radius = f.diameter / 2 + f.pin_diameter;
         break;
       case FeatureKind::kCycloidDisc:
-        radius = assembly_.feature(w.ref).eccentricity;  // reaches its ring's axis
+        radius = f.eccentricity;  // reaches its ring's axis
         break;
       case FeatureKind::kRack:
         radius = 2 * f.module;
@@ -252,139 +170,6 @@ class Recognizer {
     box.min.array() -= radius + margin;
     box.max.array() += radius + margin;
     return box;
-  }
-
-  /// Calls `test` once for every pair of features of different parts whose reach boxes
-  /// overlap: a uniform grid, each box entered in the cells it covers, a pair reported only
-  /// in the cell of the maximum of their lower corners so that it is reported once.
-  template <typename Test>
-  void ForEachCandidate(Test test) const {
-    if (features_.empty()) return;
-    // The reach boxes in floats rounded outward, with their parts: a compact first test before
-    // the exact one, so that rejected candidates touch 28 bytes each, not a whole feature.
-    // Made in the same read of the boxes as their extents.
-    struct CompactBox {
-      std::array<float, 3> lo, hi;
-      std::uint32_t part;
-    };
-    std::vector<CompactBox> boxes(features_.size());
-    std::vector<double> extents;
-    extents.reserve(features_.size());
-    Aabb all;
-    for (std::size_t i = 0; i < features_.size(); ++i) {
-      const Aabb& b = reach_[i];
-      extents.push_back(b.size().maxCoeff());
-      all.Extend(b);
-      for (int k = 0; k < 3; ++k) {
-        boxes[i].lo[k] = std::nextafter(static_cast<float>(b.min[k]), -HUGE_VALF);
-        boxes[i].hi[k] = std::nextafter(static_cast<float>(b.max[k]), HUGE_VALF);
-      }
-      boxes[i].part = features_[i].ref.part;
-    }
-    std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
-    constexpr std::int64_t kMaxCellsPerBox = 512;
-    constexpr int kKeyBits = 32;       // an entry is its cell's key over its feature's index
-    std::vector<std::uint32_t> large;  // boxes spanning too many cells: tested against all
-    // Cell coordinates fit 32 bits once the key does: 12 bytes a corner, for the cache.
-    std::vector<std::array<std::uint32_t, 3>> low(features_.size()), high(features_.size());
-    std::array<int, 3> bits{};
-    std::size_t entry_count = 0;
-    // Cells of twice the median reach (most boxes then cover one or two cells along each axis:
-    // fewer entries to sort, a few more candidates per cell), doubled while the grid needs more
-    // than kKeyBits bits of key (a huge assembly of small features: more candidates per cell,
-    // still every pair once).
-    for (double cell = std::max(2 * extents[extents.size() / 2], 1e-3);; cell *= 2) {
-      large.clear();
-      entry_count = 0;
-      std::array<std::int64_t, 3> extent{1, 1, 1};  // cells per axis over the small boxes
-      for (std::uint32_t i = 0; i < features_.size(); ++i) {
-        const Aabb& b = reach_[i];
-        std::int64_t count = 1;
-        std::array<std::int64_t, 3> hi{};
-        for (int k = 0; k < 3; ++k) {
-          const auto lo = static_cast<std::int64_t>(std::floor((b.min[k] - all.min[k]) / cell));
-          hi[k] = static_cast<std::int64_t>(std::floor((b.max[k] - all.min[k]) / cell));
-          count *= std::min(hi[k] - lo + 1, kMaxCellsPerBox + 1);
-          // Exact, once the loop ends, for the boxes that are entered in cells.
-          low[i][k] = static_cast<std::uint32_t>(lo);
-          high[i][k] = static_cast<std::uint32_t>(hi[k]);
-        }
-        if (count > kMaxCellsPerBox) {
-          large.push_back(i);
-          continue;
-        }
-        entry_count += static_cast<std::size_t>(count);
-        for (int k = 0; k < 3; ++k) extent[k] = std::max(extent[k], hi[k] + 1);
-      }
-      bits = {};
-      for (int k = 0; k < 3; ++k) {
-        while (bits[k] <= kKeyBits && (std::int64_t{1} << bits[k]) < extent[k]) ++bits[k];
-      }
-      if (bits[0] + bits[1] + bits[2] <= kKeyBits) break;
-    }
-    const MortonKeys morton(bits);
-    const int key_bits = bits[0] + bits[1] + bits[2];
-    std::vector<std::uint64_t> entries;
-    entries.reserve(entry_count);
-    std::size_t next_large = 0;
-    for (std::uint32_t i = 0; i < features_.size(); ++i) {
-      if (next_large < large.size() && large[next_large] == i) {
-        ++next_large;
-        continue;
-      }
-      for (std::uint32_t x = low[i][0]; x <= high[i][0]; ++x) {
-        for (std::uint32_t y = low[i][1]; y <= high[i][1]; ++y) {
-          for (std::uint32_t z = low[i][2]; z <= high[i][2]; ++z) {
-            entries.push_back(std::uint64_t{morton.Key({x, y, z})} << 32 | i);
-          }
-        }
-      }
-    }
-    // Stable, so entries of one cell stay in feature order: the same order as sorting the
-    // pairs, in linear time.
-    RadixSort(entries, key_bits, [](std::uint64_t e) { return e >> 32; });
-    // The candidates that pass the compact test are tested afterwards in the order of their
-    // first feature: the features are then read in the file's order, which the memory
-    // prefetches, rather than cell by cell, which it cannot foresee.
-    std::vector<std::uint64_t> found;  // first feature's index over the second's
-    found.reserve(entries.size());
-    auto candidate = [&](std::uint32_t i, std::uint32_t j) {
-      const CompactBox &p = boxes[i], &q = boxes[j];
-      if (p.part == q.part) return;
-      for (int k = 0; k < 3; ++k) {
-        if (p.hi[k] < q.lo[k] || q.hi[k] < p.lo[k]) return;
-      }
-      found.push_back(std::uint64_t{i} << 32 | j);
-    };
-    for (std::size_t begin = 0; begin < entries.size();) {
-      const std::uint64_t key = entries[begin] >> 32;
-      std::size_t end = begin;
-      while (end < entries.size() && entries[end] >> 32 == key) ++end;
-      const std::array<std::uint32_t, 3> here = morton.Cell(static_cast<std::uint32_t>(key));
-      for (std::size_t a = begin; a < end; ++a) {
-        for (std::size_t b = a + 1; b < end; ++b) {
-          const auto i = static_cast<std::uint32_t>(entries[a]);
-          const auto j = static_cast<std::uint32_t>(entries[b]);
-          bool owner = true;
-          for (int k = 0; k < 3; ++k) owner &= std::max(low[i][k], low[j][k]) == here[k];
-          if (owner) candidate(std::min(i, j), std::max(i, j));
-        }
-      }
-      begin = end;
-    }
-    std::vector<bool> is_large(features_.size(), false);
-    for (std::uint32_t i : large) is_large[i] = true;
-    for (std::uint32_t i : large) {
-      for (std::uint32_t j = 0; j < features_.size(); ++j) {
-        if (j == i || (is_large[j] && j < i)) continue;
-        candidate(std::min(i, j), std::max(i, j));
-      }
-    }
-    RadixSort(found, BitWidth(features_.size()), [](std::uint64_t e) { return e >> 32; });
-    for (const std::uint64_t e : found) {
-      const std::size_t i = e >> 32, j = e & 0xffffffffu;
-      if (reach_[i].Intersects(reach_[j])) test(features_[i], features_[j]);
-    }
   }
 
   // ---- dispatch ----
@@ -443,8 +228,8 @@ class Recognizer {
   /// Features of other kinds (a forced "gear" between two shafts) leave them unset.
   void SetCoupling(Pair& p, const WorldFeature& a, const WorldFeature& b) const {
     using K = FeatureKind;
-    const FeatureParams& fa = a.f;
-    const FeatureParams& fb = b.f;
+    const Feature& fa = a.f;
+    const Feature& fb = b.f;
     if (p.type == PairType::kScrew && fa.kind == K::kThread) {
       p.travel_per_revolution = fa.starts * fa.pitch * (fa.hand == Hand::kRight ? 1.0 : -1.0);
     } else if (p.type == PairType::kGear && fa.kind == K::kGear && fb.kind == K::kGear) {
@@ -633,8 +418,8 @@ class Recognizer {
     const WorldFeature& g1 = swap ? y : x;
     const WorldFeature& g2 = swap ? x : y;
     if (AxialOverlap(g1.axis, g2.axis) <= L_) return;
-    const FeatureParams& f1 = g1.f;
-    const FeatureParams& f2 = g2.f;
+    const Feature& f1 = g1.f;
+    const Feature& f2 = g2.f;
     const double angle = AngleBetweenLines(g1.axis.direction, g2.axis.direction);
     const Eigen::Vector3d mid2 = g2.axis.origin + 0.5 * g2.axis.length * g2.axis.direction;
     const double d = DistanceToLine(mid2, g1.axis.origin, g1.axis.direction);
@@ -726,8 +511,8 @@ class Recognizer {
     const LineLineClosest c =
         ClosestPointsOfLines(w.axis.origin, w.axis.direction, g.axis.origin, g.axis.direction);
     if (c.s < -L_ || c.s > w.axis.length + L_ || c.t < -L_ || c.t > g.axis.length + L_) return;
-    const FeatureParams& fw = w.f;
-    const FeatureParams& fg = g.f;
+    const Feature& fw = w.f;
+    const Feature& fg = g.f;
     if (!SameModule(fw.module, fg.module)) {
       const double a_worm = (fw.pitch_diameter + fw.module * fg.teeth) / 2;
       const double a_wheel = (fw.pitch_diameter + fg.module * fg.teeth) / 2;
@@ -808,7 +593,7 @@ class Recognizer {
     if (n1.dot(n2) >= 0 || AngleBetweenLines(n1, n2) > A_) return;
     const Eigen::Vector3d d = y.axis.origin - x.axis.origin;
     if (std::abs(d.dot(n1)) > L_) return;
-    auto extent = [](const FeatureParams& f) { return std::hypot(f.width, f.height) / 2; };
+    auto extent = [](const Feature& f) { return std::hypot(f.width, f.height) / 2; };
     if (x.f.width > 0 && x.f.height > 0 && y.f.width > 0 && y.f.height > 0) {
       const double in_plane = (d - d.dot(n1) * n1).norm();
       if (in_plane >= extent(x.f) + extent(y.f) - L_) return;
@@ -1005,7 +790,9 @@ class Recognizer {
 
   /// One warning `part_unconnected` naming every non-ground, rigid part in no pair (the nine
   /// balls of a bearing are one finding, not nine).
-  void ReportUnconnected(const std::vector<bool>& connected) {
+  void ReportUnconnected() {
+    std::vector<bool> connected(assembly_.parts().size(), false);
+    for (const Pair& p : pairs_) connected[p.a.part] = connected[p.b.part] = true;
     std::vector<std::string> parts;
     for (std::size_t i = 0; i < connected.size(); ++i) {
       if (connected[i] || assembly_.IsGround(i) || assembly_.IsCompliant(i)) continue;
@@ -1043,23 +830,15 @@ class Recognizer {
   }
 
   /// The pairs in the order of their keys: a radix sort, linear at 100,000 parts.
-  std::vector<Pair> Sorted(std::vector<SortKey> keys) {
+  std::vector<Pair> Sorted() {
+    std::vector<SortKey> keys;
+    keys.reserve(pairs_.size());
+    for (std::size_t i = 0; i < pairs_.size(); ++i) keys.push_back({Key(pairs_[i]), i});
     RadixSort(keys, 2 * rank_bits_ + kSourceBits,
               [](const SortKey& k) { return k.names_and_source; });
     std::vector<Pair> sorted;
     sorted.reserve(pairs_.size());
-    // A gather in name order: the pairs asked for a few steps ahead are fetched meanwhile.
-    constexpr std::size_t kAhead = 16;
-    for (std::size_t k = 0; k < keys.size(); ++k) {
-      if (k + kAhead < keys.size()) {
-        // Every cache line of the pair: 112 bytes straddle two or three.
-        const char* ahead = reinterpret_cast<const char*>(&pairs_[keys[k + kAhead].pair]);
-        __builtin_prefetch(ahead);
-        __builtin_prefetch(ahead + 64);
-        __builtin_prefetch(ahead + sizeof(Pair) - 1);
-      }
-      sorted.push_back(std::move(pairs_[keys[k].pair]));
-    }
+    for (const SortKey& k : keys) sorted.push_back(std::move(pairs_[k.pair]));
     return sorted;
   }
 
