@@ -1,0 +1,97 @@
+// Axial fits: a shaft, thread or pin seated in a hole, a clearance hole or a tapped hole.
+
+#include "reasoning/internal/recognizer.h"
+
+namespace mechanist::internal {
+
+bool Recognizer::Seated(const WorldFeature& c, const WorldFeature& h) {
+  const double overlap = AxialOverlap(c.axis, h.axis);
+  if (overlap <= L_) return false;
+  const double angle = AngleBetweenLines(c.axis.direction, h.axis.direction);
+  const double offset = std::max(DistanceToLine(c.axis.origin, h.axis.origin, h.axis.direction),
+                                 DistanceToLine(h.axis.origin, c.axis.origin, c.axis.direction));
+  if (angle > A_ || offset > L_) {
+    if (angle <= near_A_ && offset <= near_L_) {
+      Near("axes_not_collinear", c, h,
+           "axes are almost but not quite collinear: angle " + Deg(angle) + ", offset " +
+               Mm(offset) + " (required within " + Deg(A_) + " and " + Mm(L_) + ")");
+    }
+    return false;
+  }
+  if (c.axis.direction.dot(h.axis.direction) < 0 && !h.f.through) {
+    Near("feature_sense_reversed", c, h,
+         "collinear and overlapping, but the convex feature points out of the blind " +
+             std::string(ToString(h.f.kind)) +
+             " (a convex axis points toward its free end, a concave one into the material)");
+    return false;
+  }
+  return true;
+}
+
+void Recognizer::ShaftHole(const WorldFeature& s, const WorldFeature& h) {
+  // Far thinner or thicker than the hole, the shaft does not touch it (kMaxShaftClearance).
+  if (std::abs(h.f.diameter - s.f.diameter) > kMaxShaftClearance * h.f.diameter + L_) return;
+  if (!Seated(s, h)) return;
+  if (s.f.diameter <= h.f.diameter + L_) {
+    AddPair(s.f.retained || h.f.retained ? PairType::kRevolute : PairType::kCylindrical, s, h);
+  } else if (h.f.retained) {
+    Near("shaft_larger_than_hole", s, h,
+         "shaft diameter " + Mm(s.f.diameter) + " is larger than the retained hole's " +
+             Mm(h.f.diameter) + " (required at most hole + " + Mm(L_) +
+             " for a part meant to turn)");
+  } else {
+    AddPair(PairType::kFixed, s, h, PairFastening::kPressFit);
+  }
+}
+
+void Recognizer::ThreadHole(const WorldFeature& t, const WorldFeature& h) {
+  if (h.f.diameter > kMaxClearanceHoleRatio * t.f.diameter + L_) return;
+  if (!Seated(t, h)) return;
+  if (h.f.diameter + L_ >= t.f.diameter) {
+    AddPair(PairType::kCylindrical, t, h);
+  } else {
+    Near("hole_smaller_than_thread", t, h,
+         "hole diameter " + Mm(h.f.diameter) + " is smaller than the thread's " + Mm(t.f.diameter) +
+             " (required at least the thread's major diameter)");
+  }
+}
+
+void Recognizer::ThreadTapped(const WorldFeature& t, const WorldFeature& h) {
+  // A thread far smaller than the tapped hole passes through it (a spindle through the
+  // bonnet's seat): neither a pair nor a near miss.
+  if (std::min(t.f.diameter, h.f.diameter) <
+      kMinThreadDiameterRatio * std::max(t.f.diameter, h.f.diameter)) {
+    return;
+  }
+  if (!Seated(t, h)) return;
+  std::vector<std::string> mismatches;
+  if (std::abs(t.f.diameter - h.f.diameter) > L_) {
+    mismatches.push_back("diameter: thread M" + FormatNumber(t.f.diameter) + ", tapped hole M" +
+                         FormatNumber(h.f.diameter));
+  }
+  if (std::abs(t.f.pitch - h.f.pitch) > 1e-6 * std::max(t.f.pitch, h.f.pitch)) {
+    mismatches.push_back("pitch: thread " + Mm(t.f.pitch) + ", tapped hole " + Mm(h.f.pitch));
+  }
+  if (t.f.starts != h.f.starts) {
+    mismatches.push_back("starts: thread " + std::to_string(t.f.starts) + ", tapped hole " +
+                         std::to_string(h.f.starts));
+  }
+  if (t.f.hand != h.f.hand) {
+    mismatches.push_back(std::string("hand: thread ") +
+                         (t.f.hand == Hand::kRight ? "right" : "left") + ", tapped hole " +
+                         (h.f.hand == Hand::kRight ? "right" : "left"));
+  }
+  if (!mismatches.empty()) {
+    std::string message = "threads do not match (required equal)";
+    for (const std::string& m : mismatches) message += "; " + m;
+    Near("thread_mismatch", t, h, message);
+    return;
+  }
+  if (t.f.fastening == Fastening::kTight) {
+    AddPair(PairType::kFixed, t, h, PairFastening::kTight);
+  } else {
+    AddPair(PairType::kScrew, t, h, PairFastening::kLoose);
+  }
+}
+
+}  // namespace mechanist::internal

@@ -1,0 +1,167 @@
+// Gearing: spur, internal and helical gear pairs, cycloid discs in pin rings, worms and worm
+// wheels, racks.
+
+#include "reasoning/internal/recognizer.h"
+
+namespace mechanist::internal {
+
+void Recognizer::GearGear(const WorldFeature& x, const WorldFeature& y) {
+  if (x.f.internal && y.f.internal) return;
+  // Order by name so that the pair and its ratio do not depend on the file's order.
+  const bool swap = NameLess(y, x);
+  const WorldFeature& g1 = swap ? y : x;
+  const WorldFeature& g2 = swap ? x : y;
+  if (AxialOverlap(g1.axis, g2.axis) <= L_) return;
+  const Feature& f1 = g1.f;
+  const Feature& f2 = g2.f;
+  const double angle = AngleBetweenLines(g1.axis.direction, g2.axis.direction);
+  const Eigen::Vector3d mid2 = g2.axis.origin + 0.5 * g2.axis.length * g2.axis.direction;
+  const double d = DistanceToLine(mid2, g1.axis.origin, g1.axis.direction);
+  const bool internal = f1.internal || f2.internal;
+  const int z_internal = f1.internal ? f1.teeth : f2.teeth;
+  const int z_external = f1.internal ? f2.teeth : f1.teeth;
+  if (internal && z_internal <= z_external) return;  // a ring must be larger than its pinion
+  // Helical gears mesh with equal helix angles, of opposite hands when external and the same
+  // hand when internal; their centre distance takes the transverse module m / cos(helix).
+  const double helix1 = assembly_.feature(g1.ref).helix_angle;
+  const double helix2 = assembly_.feature(g2.ref).helix_angle;
+  const double cos_helix = std::cos(helix1);
+  auto required = [&](double m) {
+    const double transverse = m / cos_helix;
+    return internal ? transverse * (z_internal - z_external) / 2
+                    : transverse * (f1.teeth + f2.teeth) / 2;
+  };
+  const double m = f1.module;
+  if (!SameModule(f1.module, f2.module)) {
+    // Meant to mesh if the distance fits either gear's module.
+    if (angle <= near_A_ && (std::abs(d - required(f1.module)) < f1.module ||
+                             std::abs(d - required(f2.module)) < f2.module)) {
+      Near("gear_module_mismatch", g1, g2,
+           "modules differ: " + Mm(f1.module) + " and " + Mm(f2.module) + " (required equal)");
+    }
+    return;
+  }
+  const double a = required(m);
+  const double error = std::abs(d - a);
+  const double helix_error = std::abs(helix2 - (internal ? helix1 : -helix1));
+  if (angle <= A_ && error <= L_ && helix_error > A_) {
+    Near("gear_helix_mismatch", g1, g2,
+         "helix angles " + Deg(helix1) + " and " + Deg(helix2) + " (required equal, " +
+             (internal ? "of the same hand for an internal pair)" : "of opposite hands)"));
+    return;
+  }
+  if (angle <= A_ && error <= L_) {
+    AddPair(PairType::kGear, g1, g2);
+    return;
+  }
+  if (error >= m) return;
+  // The module across the teeth: m, or m / cos(helix) for helical gears.
+  const std::string module =
+      helix1 == 0.0 ? FormatNumber(m) : FormatNumber(m) + " / cos(" + Deg(helix1) + ")";
+  const std::string formula =
+      internal
+          ? module + " x |" + std::to_string(f2.teeth) + " - " + std::to_string(f1.teeth) + "| / 2"
+          : module + " x (" + std::to_string(f1.teeth) + " + " + std::to_string(f2.teeth) + ") / 2";
+  if (angle > A_ && angle <= near_A_) {
+    Near("gear_axes_not_parallel", g1, g2,
+         "axes are " + Deg(angle) + " apart (required parallel within " + Deg(A_) + ")");
+  } else if (angle <= A_) {
+    Near("gear_center_distance", g1, g2,
+         "centre distance " + Mm(d) + ", required " + Mm(a) + " = " + formula + " (off by " +
+             Mm(d - a) + ", tolerance " + Mm(L_) + ")");
+  }
+}
+
+void Recognizer::CycloidPins(const WorldFeature& disc, const WorldFeature& ring) {
+  if (AxialOverlap(disc.axis, ring.axis) <= L_) return;
+  const double angle = AngleBetweenLines(disc.axis.direction, ring.axis.direction);
+  if (angle > near_A_) return;
+  const double e = assembly_.feature(disc.ref).eccentricity;
+  const double offset = DistanceToLine(disc.axis.origin, ring.axis.origin, ring.axis.direction);
+  if (std::abs(offset - e) > near_L_) return;
+  if (ring.f.teeth != disc.f.teeth + 1) {
+    Near("cycloid_pin_count", disc, ring,
+         std::to_string(ring.f.teeth) + " pins for " + std::to_string(disc.f.teeth) +
+             " lobes (required one pin more than lobes)");
+    return;
+  }
+  if (angle > A_) {
+    Near("cycloid_axes_not_parallel", disc, ring,
+         "axes are " + Deg(angle) + " apart (required parallel within " + Deg(A_) + ")");
+  } else if (std::abs(offset - e) > L_) {
+    Near("cycloid_eccentricity", disc, ring,
+         "the disc's axis is " + Mm(offset) + " from the ring's, required its eccentricity " +
+             Mm(e) + " (off by " + Mm(offset - e) + ", tolerance " + Mm(L_) + ")");
+  } else {
+    AddPair(PairType::kCycloidal, disc, ring);
+  }
+}
+
+void Recognizer::WormWheel(const WorldFeature& w, const WorldFeature& g) {
+  const double angle = AngleBetweenLines(w.axis.direction, g.axis.direction);
+  const LineLineClosest c =
+      ClosestPointsOfLines(w.axis.origin, w.axis.direction, g.axis.origin, g.axis.direction);
+  if (c.s < -L_ || c.s > w.axis.length + L_ || c.t < -L_ || c.t > g.axis.length + L_) return;
+  const Feature& fw = w.f;
+  const Feature& fg = g.f;
+  if (!SameModule(fw.module, fg.module)) {
+    const double a_worm = (fw.pitch_diameter + fw.module * fg.teeth) / 2;
+    const double a_wheel = (fw.pitch_diameter + fg.module * fg.teeth) / 2;
+    if (angle >= kPi / 2 - near_A_ &&
+        (std::abs(c.distance - a_worm) < fw.module || std::abs(c.distance - a_wheel) < fg.module)) {
+      Near("worm_module_mismatch", w, g,
+           "modules differ: " + Mm(fw.module) + " and " + Mm(fg.module) + " (required equal)");
+    }
+    return;
+  }
+  const double a = (fw.pitch_diameter + fw.module * fg.teeth) / 2;
+  const double error = std::abs(c.distance - a);
+  if (angle >= kPi / 2 - A_ && error <= L_) {
+    AddPair(PairType::kWormGear, w, g);
+    return;
+  }
+  if (error >= fg.module) return;
+  if (angle < kPi / 2 - A_ && angle >= kPi / 2 - near_A_) {
+    Near("worm_axes_not_perpendicular", w, g,
+         "axes are " + Deg(angle) + " apart (required 90 deg within " + Deg(A_) + ")");
+  } else if (angle >= kPi / 2 - A_) {
+    Near("worm_center_distance", w, g,
+         "centre distance " + Mm(c.distance) + ", required " + Mm(a) + " = (" +
+             FormatNumber(fw.pitch_diameter) + " + " + FormatNumber(fw.module) + " x " +
+             std::to_string(fg.teeth) + ") / 2 (off by " + Mm(c.distance - a) + ", tolerance " +
+             Mm(L_) + ")");
+  }
+}
+
+void Recognizer::GearRack(const WorldFeature& g, const WorldFeature& r) {
+  if (g.f.internal) return;
+  const double to_axis = AngleBetweenLines(g.axis.direction, r.axis.direction);
+  const double to_normal = AngleBetweenLines(g.axis.direction, r.normal_W);
+  const LineLineClosest c =
+      ClosestPointsOfLines(g.axis.origin, g.axis.direction, r.axis.origin, r.axis.direction);
+  if (c.s < -L_ || c.s > g.axis.length + L_ || c.t < -L_ || c.t > r.axis.length + L_) return;
+  const Eigen::Vector3d p_gear = g.axis.origin + c.s * g.axis.direction;
+  const Eigen::Vector3d p_rack = r.axis.origin + c.t * r.axis.direction;
+  if ((p_gear - p_rack).dot(r.normal_W) <= 0) return;  // the pinion is on the other side
+  if (!SameModule(g.f.module, r.f.module)) {
+    if (std::abs(c.distance - g.f.module * g.f.teeth / 2) < g.f.module ||
+        std::abs(c.distance - r.f.module * g.f.teeth / 2) < r.f.module) {
+      Near("rack_module_mismatch", g, r,
+           "modules differ: " + Mm(g.f.module) + " and " + Mm(r.f.module) + " (required equal)");
+    }
+    return;
+  }
+  const double a = g.f.module * g.f.teeth / 2;
+  const double error = std::abs(c.distance - a);
+  const bool square = to_axis >= kPi / 2 - A_ && to_normal >= kPi / 2 - A_;
+  if (square && error <= L_) {
+    AddPair(PairType::kRackPinion, g, r);
+  } else if (square && error < g.f.module) {
+    Near("rack_pitch_line_distance", g, r,
+         "pitch line at " + Mm(c.distance) + " from the pinion's axis, required " + Mm(a) + " = " +
+             FormatNumber(g.f.module) + " x " + std::to_string(g.f.teeth) + " / 2 (off by " +
+             Mm(c.distance - a) + ", tolerance " + Mm(L_) + ")");
+  }
+}
+
+}  // namespace mechanist::internal

@@ -1,0 +1,189 @@
+// What recognition does after the fits: the file's overrides, implied pins, compliant parts, tight
+// threads, clamps, setscrews and unconnected parts.
+
+#include "reasoning/internal/recognizer.h"
+
+namespace mechanist::internal {
+
+void Recognizer::ApplyOverrides() {
+  for (const PairOverride& o : assembly_.overrides()) {
+    std::erase_if(pairs_,
+                  [&](const Pair& p) { return SameFeatures(p, o.features[0], o.features[1]); });
+    std::erase_if(tight_, [&](const Screwed& t) {
+      return (t.thread == Index(o.features[0]) && t.hole == o.features[1]) ||
+             (t.thread == Index(o.features[1]) && t.hole == o.features[0]);
+    });
+    if (!o.type) continue;
+    const WorldFeature* a = &At(o.features[0]);
+    const WorldFeature* b = &At(o.features[1]);
+    // The convex feature, the worm or the pinion first, as for recognised pairs.
+    const auto kind_a = a->f.kind, kind_b = b->f.kind;
+    if ((IsConcave(kind_a) && IsConvex(kind_b)) || kind_b == FeatureKind::kWorm ||
+        kind_a == FeatureKind::kRack) {
+      std::swap(a, b);
+    }
+    AddPair(*o.type, *a, *b);
+    pairs_.back().source = PairSource::kOverride;
+  }
+}
+
+void Recognizer::AddImpliedPins() {
+  if (hole_candidates_.empty()) return;
+  std::vector<bool> filled(features_.size(), false);
+  for (const Pair& p : pairs_) {
+    const FeatureKind k = assembly_.kind(p.a);
+    if (k == FeatureKind::kShaft || k == FeatureKind::kThread) filled[Index(p.b)] = true;
+  }
+  for (const auto& [x, y] : hole_candidates_) {
+    if (filled[Index(x->ref)] || filled[Index(y->ref)]) continue;
+    const double d_max = std::max(x->f.diameter, y->f.diameter);
+    if (std::abs(x->f.diameter - y->f.diameter) > kMaxImpliedPinDifference * d_max + L_) {
+      continue;
+    }
+    const double angle = AngleBetweenLines(x->axis.direction, y->axis.direction);
+    const double offset =
+        std::max(DistanceToLine(x->axis.origin, y->axis.origin, y->axis.direction),
+                 DistanceToLine(y->axis.origin, x->axis.origin, x->axis.direction));
+    if (angle > A_ || offset > L_) continue;
+    if (AxialOverlap(x->axis, y->axis) < -kMaxImpliedPinGap - L_) continue;
+    const bool x_first = NameLess(*x, *y);
+    AddPair(PairType::kRevolute, x_first ? *x : *y, x_first ? *y : *x);
+    pairs_.back().source = PairSource::kImpliedPin;
+  }
+}
+
+void Recognizer::SetCompliantPartsApart() {
+  if (!assembly_.HasCompliantParts()) return;
+  std::map<std::size_t, std::set<std::string>> touched;  // compliant part -> the others
+  std::erase_if(pairs_, [&](const Pair& p) {
+    const bool a = assembly_.IsCompliant(p.a.part), b = assembly_.IsCompliant(p.b.part);
+    if (a) touched[p.a.part].insert(std::string(assembly_.PartId(p.b.part)));
+    if (b) touched[p.b.part].insert(std::string(assembly_.PartId(p.a.part)));
+    return a || b;
+  });
+  std::erase_if(tight_, [&](const Screwed& t) {
+    return assembly_.IsCompliant(t.hole.part) ||
+           assembly_.IsCompliant(features_[t.thread].ref.part);
+  });
+  for (std::size_t part = 0; part < assembly_.parts().size(); ++part) {
+    if (!assembly_.IsCompliant(part)) continue;
+    const std::set<std::string>& others = touched[part];
+    std::string names;
+    for (const std::string& o : others) names += (names.empty() ? "" : ", ") + o;
+    std::vector<std::string> parts = {std::string(assembly_.PartId(part))};
+    parts.insert(parts.end(), others.begin(), others.end());
+    diagnostics_.push_back(
+        {Severity::kInfo,
+         "compliant_part",
+         "part '" + parts.front() + "' is compliant (a spring, belt or hose): not a rigid link; " +
+             (names.empty() ? "it touches no part by its features" : "it connects " + names),
+         parts,
+         {}});
+  }
+}
+
+void Recognizer::ReportImpliedPins() {
+  std::map<std::pair<std::string, std::string>, std::vector<const Pair*>> by_parts;
+  for (const Pair& p : pairs_) {
+    if (p.source != PairSource::kImpliedPin) continue;
+    std::string a(assembly_.PartId(p.a.part)), b(assembly_.PartId(p.b.part));
+    if (b < a) std::swap(a, b);
+    by_parts[{a, b}].push_back(&p);
+  }
+  for (const auto& [parts, pairs] : by_parts) {
+    std::set<std::string> holes;
+    double pin = std::numeric_limits<double>::infinity();
+    for (const Pair* p : pairs) {
+      for (const FeatureRef f : {p->a, p->b}) {
+        holes.insert(assembly_.FeatureName(f));
+        pin = std::min(pin, At(f).f.diameter);
+      }
+    }
+    std::string names;
+    for (const std::string& h : holes) names += (names.empty() ? "" : ", ") + h;
+    diagnostics_.push_back({Severity::kInfo,
+                            "implied_pin",
+                            parts.first + " and " + parts.second + " turn on a pin of about " +
+                                Mm(pin) + " that the file does not model, in holes " + names +
+                                " (a revolute pair; an override of type none forbids it)",
+                            {parts.first, parts.second},
+                            {holes.begin(), holes.end()}});
+  }
+}
+
+std::vector<Recognizer::Screwed> Recognizer::TightThreads() {
+  RadixSort(tight_, BitWidth(features_.size()), [](const Screwed& t) { return t.thread; });
+  std::vector<Screwed> screwed;
+  for (const Screwed& t : tight_) {
+    if (screwed.empty() || screwed.back().thread != t.thread) {
+      screwed.push_back(t);
+    } else if (assembly_.FeatureNameRank(t.hole) < assembly_.FeatureNameRank(screwed.back().hole)) {
+      screwed.back().hole = t.hole;
+    }
+  }
+  return screwed;
+}
+
+const FeatureRef* Recognizer::ScrewedInto(const std::vector<Screwed>& screwed, std::size_t thread) {
+  const auto it =
+      std::lower_bound(screwed.begin(), screwed.end(), thread,
+                       [](const Screwed& s, std::size_t index) { return s.thread < index; });
+  return it != screwed.end() && it->thread == thread ? &it->hole : nullptr;
+}
+
+void Recognizer::ApplyClamp(Pair& p, const std::vector<Screwed>& screwed) const {
+  if (p.type == PairType::kCylindrical && assembly_.kind(p.a) == FeatureKind::kThread &&
+      assembly_.kind(p.b) == FeatureKind::kHole && ScrewedInto(screwed, Index(p.a))) {
+    p.type = PairType::kFixed;
+    p.dof = 0;
+    p.source = PairSource::kClamp;
+    p.fastening = PairFastening::kClamp;
+    p.via = p.a;
+  }
+}
+
+void Recognizer::ApplySetscrews(const std::vector<Screwed>& screwed) {
+  for (const auto& [thread, s] : setscrew_candidates_) {
+    const FeatureRef* hole = ScrewedInto(screwed, Index(thread->ref));
+    if (!hole || s->ref.part == hole->part) continue;
+    const Eigen::Vector3d tip = thread->axis.end();
+    if (AngleBetweenLines(thread->axis.direction, s->axis.direction) < kPi / 2 - A_) continue;
+    const double along = (tip - s->axis.origin).dot(s->axis.direction);
+    if (along < -L_ || along > s->axis.length + L_) continue;
+    const Eigen::Vector3d foot = s->axis.origin + along * s->axis.direction;
+    if ((foot - tip).dot(thread->axis.direction) <= 0) continue;  // pointing away
+    if (std::abs((foot - tip).norm() - s->f.diameter / 2) > L_) continue;
+    Pair fixed;
+    fixed.type = PairType::kFixed;
+    fixed.a = s->ref;
+    fixed.b = *hole;
+    fixed.source = PairSource::kSetscrew;
+    fixed.fastening = PairFastening::kSetscrew;
+    fixed.dof = 0;
+    fixed.via = thread->ref;
+    pairs_.push_back(fixed);
+  }
+}
+
+void Recognizer::ReportUnconnected() {
+  std::vector<bool> connected(assembly_.parts().size(), false);
+  for (const Pair& p : pairs_) connected[p.a.part] = connected[p.b.part] = true;
+  std::vector<std::string> parts;
+  for (std::size_t i = 0; i < connected.size(); ++i) {
+    if (connected[i] || assembly_.IsGround(i) || assembly_.IsCompliant(i)) continue;
+    parts.emplace_back(assembly_.PartId(i));
+  }
+  if (parts.empty()) return;
+  std::sort(parts.begin(), parts.end());
+  std::string names;
+  for (const std::string& p : parts) names += (names.empty() ? "'" : ", '") + p + "'";
+  diagnostics_.push_back(
+      {Severity::kWarning,
+       "part_unconnected",
+       (parts.size() == 1 ? "part " + names + " is" : "parts " + names + " are") +
+           " in no pair: nothing holds or guides " + (parts.size() == 1 ? "it" : "them"),
+       std::move(parts),
+       {}});
+}
+
+}  // namespace mechanist::internal

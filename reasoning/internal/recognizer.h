@@ -1,0 +1,224 @@
+#pragma once
+
+// The pair recogniser shared by the files of pair recognition (not installed): the features at
+// their world poses, the fit rules' thresholds, and the Recognizer, whose rules live one file
+// per kind of fit (axial_fits.cpp, slot_fits.cpp, gear_fits.cpp, surface_fits.cpp), its side
+// effects (overrides, implied pins, clamps, setscrews) in recognition_side_effects.cpp and its
+// core (broad phase, dispatch, output) in reasoning/pair_recognition.cpp.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <optional>
+#include <set>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include "kernel/line_geometry.h"
+#include "kernel/number_format.h"
+#include "kernel/radix_sort.h"
+#include "reasoning/pair_recognition.h"
+
+namespace mechanist::internal {
+
+inline constexpr double kPi = 3.14159265358979323846;
+/// Beyond these the features do not touch, so they make no pair and no near miss (the spec is
+/// silent; the values are documented in the README): a shaft more than 5% of the hole's
+/// diameter smaller than its hole (it passes through) or larger (beyond any interference fit,
+/// a few tenths of a percent, or a CAD model's exaggerated one: it surrounds the hole, as a
+/// bearing's outer ring does its inner ring's bore), a clearance hole more than 1.3 times the
+/// thread (ISO 273's coarse series is at most 1.25), a thread under 0.6 times a tapped hole
+/// (M3 in M4 is a near miss, M10 in M30 passes through).
+inline constexpr double kMaxShaftClearance = 0.05;
+inline constexpr double kMaxClearanceHoleRatio = 1.3;
+// Two coaxial empty holes of two parts are a pivot whose pin the file leaves out when their
+// diameters differ by at most this fraction of the larger (a press-fit bore and a running one)
+// and at most kMaxImpliedPinGap mm of axis lies between them (the parts' faces meet there).
+inline constexpr double kMaxImpliedPinDifference = 0.2;
+inline constexpr double kMaxImpliedPinGap = 0.5;
+inline constexpr double kMinThreadDiameterRatio = 0.6;
+
+/// A feature at its world pose (its reach box is kept apart, for the broad phase).
+struct WorldFeature {
+  const Feature& f;  ///< as the assembly holds it
+  FeatureRef ref;
+  const AxisSegment& axis;  ///< world; held in the recogniser's array of axes, handed out
+  Eigen::Vector3d normal_W = Eigen::Vector3d::Zero();
+};
+
+inline std::string Mm(double x) { return FormatNumber(x) + " mm"; }
+inline std::string Deg(double radians) { return FormatNumber(radians * 180.0 / kPi) + " deg"; }
+
+/// Recognises the pairs of an assembly at given poses (see RecognizePairs).
+class Recognizer {
+  /// A tight thread, by FeatureIndex, and the tapped hole or nut it is fixed in.
+  struct Screwed {
+    std::size_t thread;
+    FeatureRef hole;
+  };
+
+ public:
+  /// At poses `X_WP`, one per part.
+  Recognizer(const Assembly& assembly, std::span<const RigidTransform> X_WP);
+
+  /// The world axes, once Run has finished with them.
+  std::vector<AxisSegment> TakeAxes();
+
+  Recognition Run();
+
+ private:
+  // ---- broad phase (pair_recognition.cpp; the grid is kernel/grid_broad_phase) ----
+
+  Aabb ReachBox(const WorldFeature& w, const Aabb& part_box_W) const;
+
+  // ---- dispatch (pair_recognition.cpp) ----
+
+  void Test(const WorldFeature& x, const WorldFeature& y);
+
+  // ---- output helpers (pair_recognition.cpp) ----
+
+  std::string Name(const WorldFeature& w) const { return assembly_.FeatureName(w.ref); }
+  /// Whether x's name comes before y's, without building names.
+  bool NameLess(const WorldFeature& x, const WorldFeature& y) const {
+    return assembly_.FeatureNameRank(x.ref) < assembly_.FeatureNameRank(y.ref);
+  }
+
+  void AddPair(PairType type, const WorldFeature& a, const WorldFeature& b,
+               PairFastening fastening = PairFastening::kNone);
+
+  /// The coupling parameters of a screw, gear, worm_gear or rack_pinion pair from its
+  /// features' kinds, parameters and world axes; the same for recognised and forced pairs.
+  /// Features of other kinds (a forced "gear" between two shafts) leave them unset.
+  void SetCoupling(Pair& p, const WorldFeature& a, const WorldFeature& b) const;
+
+  void Near(const char* code, const WorldFeature& a, const WorldFeature& b,
+            const std::string& message);
+
+  // ---- axial fits (axial_fits.cpp) ----
+
+  /// Common gate of the axial fits: true when the convex feature `c` sits in the concave
+  /// feature `h` (collinear, engaged, inserted with the right sense); reports the near
+  /// misses otherwise.
+  bool Seated(const WorldFeature& c, const WorldFeature& h);
+
+  void ShaftHole(const WorldFeature& s, const WorldFeature& h);
+
+  void ThreadHole(const WorldFeature& t, const WorldFeature& h);
+
+  void ThreadTapped(const WorldFeature& t, const WorldFeature& h);
+
+  // ---- slots (slot_fits.cpp) ----
+
+  void PinSlot(const WorldFeature& s, const WorldFeature& sl);
+
+  void KeySlot(const WorldFeature& k, const WorldFeature& sl);
+
+  // ---- gearing (gear_fits.cpp) ----
+
+  bool SameModule(double m1, double m2) const {
+    return std::abs(m1 - m2) <= 1e-6 * std::max(m1, m2);
+  }
+
+  void GearGear(const WorldFeature& x, const WorldFeature& y);
+
+  /// A cycloid disc in its pin ring (spec): parallel axes offset by the disc's eccentricity,
+  /// one pin more than lobes, overlapping along the axis. Off by less than the near-miss
+  /// windows: `cycloid_eccentricity`, `cycloid_pin_count`.
+  void CycloidPins(const WorldFeature& disc, const WorldFeature& ring);
+
+  void WormWheel(const WorldFeature& w, const WorldFeature& g);
+
+  void GearRack(const WorldFeature& g, const WorldFeature& r);
+
+  // ---- spheres and faces (surface_fits.cpp) ----
+
+  void BallSocket(const WorldFeature& b, const WorldFeature& s);
+
+  void FaceFace(const WorldFeature& x, const WorldFeature& y);
+
+  // ---- overrides and side effects (recognition_side_effects.cpp; the order of the
+  // pairs in pair_recognition.cpp) ----
+
+  std::size_t Index(FeatureRef ref) const { return assembly_.FeatureIndex(ref); }
+  const WorldFeature& At(FeatureRef ref) const { return features_[Index(ref)]; }
+
+  static bool SameFeatures(const Pair& p, FeatureRef f, FeatureRef g) {
+    return (p.a == f && p.b == g) || (p.a == g && p.b == f);
+  }
+
+  void ApplyOverrides();
+
+  /// Implied pins (README, "Real CAD exports"): a revolute pair between two holes of two
+  /// parts that are collinear, of diameters within kMaxImpliedPinDifference, overlapping or at
+  /// most kMaxImpliedPinGap apart along the axis, when no shaft or thread sits in either: the
+  /// hinge of two parts whose pin or screw the CAD file leaves out. Before the overrides, so
+  /// that an override forbids or replaces one as any pair.
+  void AddImpliedPins();
+
+  /// Compliant parts (springs, belts, hoses) join no pair: the pairs their features would make
+  /// are dropped, and one info diagnostic `compliant_part` per such part names the parts it
+  /// touches (those pairs' other parts). Before the overrides, which may still force a pair.
+  void SetCompliantPartsApart();
+
+  /// One info diagnostic `implied_pin` per two parts that implied pins join, naming the holes
+  /// and the pin's diameter (the smaller hole's).
+  void ReportImpliedPins();
+
+  /// The tapped hole or nut each tight thread is fixed in, the first by name when there are
+  /// several (not the first found, which depends on the broad phase), by thread.
+  std::vector<Screwed> TightThreads();
+
+  /// The tapped hole or nut the thread of FeatureIndex `thread` is fixed in, if it is tight.
+  static const FeatureRef* ScrewedInto(const std::vector<Screwed>& screwed, std::size_t thread);
+
+  /// A tight thread fixed in a nut or tapped hole clamps the parts of its clearance holes.
+  void ApplyClamp(Pair& p, const std::vector<Screwed>& screwed) const;
+
+  /// A tight thread in a tapped hole whose tip bears on a third part's shaft fixes the shaft.
+  void ApplySetscrews(const std::vector<Screwed>& screwed);
+
+  /// One warning `part_unconnected` naming every non-ground, rigid part in no pair (the nine
+  /// balls of a bearing are one finding, not nine).
+  void ReportUnconnected();
+
+  /// A pair's place in the order of the pairs, and its index as found.
+  struct SortKey {
+    std::uint64_t names_and_source;
+    std::size_t pair;
+  };
+  static constexpr int kSourceBits = 3;
+  static_assert(static_cast<int>(PairSource::kInferred) < (1 << kSourceBits));
+  static_assert(static_cast<int>(PairSource::kImpliedPin) < (1 << kSourceBits));
+
+  /// Pairs order by feature names, then source, then as found, not by indices, so that
+  /// reordering the file changes nothing: the name ranks and the source packed in one key.
+  std::uint64_t Key(const Pair& p) const;
+
+  /// The pairs in the order of their keys: a radix sort, linear at 100,000 parts.
+  std::vector<Pair> Sorted();
+
+  const Assembly& assembly_;
+  const double L_, A_, near_L_, near_A_;
+  const int rank_bits_;                 ///< bits of a feature's name rank
+  std::vector<AxisSegment> axes_;       ///< per Assembly::FeatureIndex: world axes
+  std::vector<WorldFeature> features_;  ///< per Assembly::FeatureIndex
+  /// Per Assembly::FeatureIndex: the box a feature can reach a partner from (apart from the
+  /// features: the broad phase reads only these, several times).
+  std::vector<Aabb> reach_;
+  std::vector<Pair> pairs_;
+  /// Tight fixed pairs as recognised: (thread's FeatureIndex, tapped hole or nut).
+  std::vector<Screwed> tight_;
+  std::vector<Diagnostic> diagnostics_;
+  /// (thread, shaft) feature pairs whose reach boxes overlap: possible setscrew contacts.
+  std::vector<std::pair<const WorldFeature*, const WorldFeature*>> setscrew_candidates_;
+  /// Hole pairs whose reach boxes overlap: possible implied pins.
+  std::vector<std::pair<const WorldFeature*, const WorldFeature*>> hole_candidates_;
+};
+
+}  // namespace mechanist::internal
