@@ -11,18 +11,18 @@
 #include <string>
 
 #include "io/assembly_reader.h"
-#include "viz/gltf_writer.h"
-#include "viz/vtp_series_writer.h"
-#include "kernel/assembly_state.h"
-#include "kernel/collision_model.h"
+#include "kernel/assembly/assembly_state.h"
+#include "kernel/collision/collision_model.h"
 #include "reasoning/analysis.h"
 #include "reasoning/animation.h"
 #include "reasoning/interference.h"
 #include "reasoning/motion_run.h"
 #include "reasoning/operation_check.h"
+#include "viz/gltf_writer.h"
 #include "viz/motion_renderer.h"
 #include "viz/png_encoder.h"
 #include "viz/video_writer.h"
+#include "viz/vtp_series_writer.h"
 
 namespace {
 

@@ -1,5 +1,5 @@
-// Evaluates the continuous collision queries (kernel/continuous_collision.h) on files in the
-// format of ../shared/data/ccd (Continuous-Collision-Detection/Sample-Queries; see
+// Evaluates the continuous collision queries (kernel/collision/continuous_collision.h) on files in
+// the format of ../shared/data/ccd (Continuous-Collision-Detection/Sample-Queries; see
 // io/ccd_query_reader.h).
 //
 // Usage: ccd_eval FILE.csv...   (for example ../shared/data/ccd/*/*/*.csv)
@@ -11,7 +11,7 @@
 
 #include "io/ccd_query_reader.h"
 #include "io/input_error.h"
-#include "kernel/continuous_collision.h"
+#include "kernel/collision/continuous_collision.h"
 
 int main(int argc, char** argv) {
   using namespace mechanist;

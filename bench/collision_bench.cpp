@@ -16,14 +16,14 @@
 #include <string>
 
 #include "io/mesh_reader.h"
-#include "kernel/assembly.h"
-#include "kernel/assembly_state.h"
-#include "kernel/collision_mesh.h"
-#include "kernel/collision_model.h"
-#include "kernel/exact_predicates.h"
-#include "kernel/mesh_builder.h"
-#include "kernel/mesh_contact.h"
-#include "kernel/translational_sweep.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/assembly/assembly_state.h"
+#include "kernel/collision/collision_mesh.h"
+#include "kernel/collision/collision_model.h"
+#include "kernel/collision/mesh_contact.h"
+#include "kernel/collision/translational_sweep.h"
+#include "kernel/geometry/exact_predicates.h"
+#include "kernel/mesh/mesh_builder.h"
 #include "reasoning/interference.h"
 
 namespace mechanist {

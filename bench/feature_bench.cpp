@@ -8,8 +8,8 @@
 #include <cstdio>
 
 #include "io/assembly_reader.h"
-#include "kernel/feature_recognition.h"
-#include "kernel/part_library.h"
+#include "kernel/features/feature_recognition.h"
+#include "kernel/features/part_library.h"
 #include "reasoning/analysis.h"
 
 namespace {

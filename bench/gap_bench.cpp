@@ -20,8 +20,8 @@
 #include <utility>
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/mesh_builder.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/mesh/mesh_builder.h"
 #include "reasoning/gap_search.h"
 
 #ifdef MECHANIST_HAVE_OPENVDB

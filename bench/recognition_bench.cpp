@@ -32,7 +32,7 @@
 #include <utility>
 #include <vector>
 
-#include "kernel/assembly.h"
+#include "kernel/assembly/assembly.h"
 #include "reasoning/analysis.h"
 #include "reasoning/pair_graph.h"
 #include "reasoning/pair_recognition.h"

@@ -15,8 +15,8 @@
 #include <utility>
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/collision_model.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/collision/collision_model.h"
 #include "reasoning/analysis.h"
 
 namespace CLI {

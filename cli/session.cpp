@@ -9,7 +9,7 @@
 #include "cli/command.h"
 #include "io/assembly_reader.h"
 #include "io/input_error.h"
-#include "kernel/number_format.h"
+#include "kernel/support/number_format.h"
 #include "reasoning/adjustment.h"
 
 namespace mechanist::cli {

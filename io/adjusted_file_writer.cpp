@@ -7,7 +7,7 @@
 
 #include "io/input_error.h"
 #include "io/internal/json_source.h"
-#include "kernel/number_format.h"
+#include "kernel/support/number_format.h"
 
 namespace mechanist {
 namespace {

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-#include "kernel/assembly.h"
+#include "kernel/assembly/assembly.h"
 
 namespace mechanist {
 

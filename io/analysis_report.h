@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "kernel/assembly.h"
+#include "kernel/assembly/assembly.h"
 #include "reasoning/analysis.h"
 #include "reasoning/drag.h"
 #include "reasoning/expectation_check.h"

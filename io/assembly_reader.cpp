@@ -21,8 +21,8 @@
 #include "io/internal/json_source.h"
 #include "io/mesh_reader.h"
 #include "io/step_reader.h"
-#include "kernel/feature_recognition.h"
-#include "kernel/part_library.h"
+#include "kernel/features/feature_recognition.h"
+#include "kernel/features/part_library.h"
 #include "reasoning/placement.h"
 
 namespace mechanist {

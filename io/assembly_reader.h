@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "kernel/assembly.h"
+#include "kernel/assembly/assembly.h"
 
 namespace mechanist {
 

@@ -5,8 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "kernel/assembly_check.h"
-#include "kernel/number_format.h"
+#include "kernel/assembly/assembly_check.h"
+#include "kernel/support/number_format.h"
 
 namespace mechanist {
 namespace {

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "kernel/assembly.h"
+#include "kernel/assembly/assembly.h"
 #include "reasoning/analysis.h"
 #include "reasoning/assembly_plan.h"
 #include "reasoning/interference.h"

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "io/input_error.h"
-#include "kernel/continuous_collision.h"
+#include "kernel/collision/continuous_collision.h"
 
 namespace mechanist {
 

@@ -5,9 +5,9 @@
 #include <map>
 #include <utility>
 
-#include "kernel/feature_recognition.h"
-#include "kernel/line_geometry.h"
-#include "kernel/number_format.h"
+#include "kernel/features/feature_recognition.h"
+#include "kernel/geometry/line_geometry.h"
+#include "kernel/support/number_format.h"
 
 namespace mechanist {
 

@@ -2,8 +2,8 @@
 
 #include <vector>
 
-#include "kernel/diagnostic.h"
-#include "kernel/part.h"
+#include "kernel/assembly/diagnostic.h"
+#include "kernel/assembly/part.h"
 
 namespace mechanist {
 

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/info_report.h"
-#include "kernel/number_format.h"
+#include "kernel/support/number_format.h"
 
 namespace mechanist {
 namespace {

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/feature_recognition.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/features/feature_recognition.h"
 
 namespace mechanist {
 

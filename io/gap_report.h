@@ -3,7 +3,7 @@
 #include <ostream>
 #include <string>
 
-#include "kernel/assembly.h"
+#include "kernel/assembly/assembly.h"
 #include "reasoning/gap_search.h"
 
 namespace mechanist {

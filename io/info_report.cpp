@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "kernel/assembly_state.h"
-#include "kernel/number_format.h"
+#include "kernel/assembly/assembly_state.h"
+#include "kernel/support/number_format.h"
 
 namespace mechanist {
 namespace {

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/diagnostic.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/assembly/diagnostic.h"
 
 namespace mechanist {
 

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "kernel/triangle_mesh.h"
+#include "kernel/mesh/triangle_mesh.h"
 
 namespace mechanist {
 

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "kernel/assembly.h"
+#include "kernel/assembly/assembly.h"
 #include "reasoning/analysis.h"
 #include "reasoning/simulation_model.h"
 

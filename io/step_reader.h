@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "kernel/feature.h"
-#include "kernel/rigid_transform.h"
-#include "kernel/triangle_mesh.h"
+#include "kernel/features/feature.h"
+#include "kernel/geometry/rigid_transform.h"
+#include "kernel/mesh/triangle_mesh.h"
 
 namespace mechanist {
 

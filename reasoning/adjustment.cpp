@@ -6,7 +6,7 @@
 #include <queue>
 #include <set>
 
-#include "kernel/line_geometry.h"
+#include "kernel/geometry/line_geometry.h"
 #include "reasoning/analysis.h"
 
 namespace mechanist {

@@ -4,10 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/assembly_state.h"
-#include "kernel/diagnostic.h"
-#include "kernel/least_squares.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/assembly/assembly_state.h"
+#include "kernel/assembly/diagnostic.h"
+#include "kernel/solvers/least_squares.h"
 #include "reasoning/pair.h"
 
 namespace mechanist {

@@ -2,7 +2,7 @@
 
 #include <iterator>
 
-#include "kernel/assembly_check.h"
+#include "kernel/assembly/assembly_check.h"
 #include "reasoning/adjustment.h"
 #include "reasoning/fastener_check.h"
 #include "reasoning/pair_recognition.h"

@@ -3,8 +3,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/diagnostic.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/assembly/diagnostic.h"
 #include "reasoning/motion.h"
 #include "reasoning/pair.h"
 #include "reasoning/pair_graph.h"

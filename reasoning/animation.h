@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/assembly_state.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/assembly/assembly_state.h"
 #include "reasoning/interference.h"
 #include "reasoning/motion_run.h"
 #include "reasoning/operation_check.h"

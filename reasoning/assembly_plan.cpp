@@ -5,8 +5,8 @@
 #include <limits>
 #include <numeric>
 
-#include "kernel/assembly_state.h"
-#include "kernel/translational_sweep.h"
+#include "kernel/assembly/assembly_state.h"
+#include "kernel/collision/translational_sweep.h"
 
 namespace mechanist {
 namespace {

@@ -5,10 +5,10 @@
 #include <optional>
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/collision_model.h"
-#include "kernel/diagnostic.h"
-#include "kernel/feature_ref.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/assembly/diagnostic.h"
+#include "kernel/collision/collision_model.h"
+#include "kernel/features/feature_ref.h"
 #include "reasoning/analysis.h"
 #include "reasoning/interference.h"
 

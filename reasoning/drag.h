@@ -4,7 +4,7 @@
 #include <optional>
 #include <vector>
 
-#include "kernel/assembly.h"
+#include "kernel/assembly/assembly.h"
 #include "reasoning/analysis.h"
 #include "reasoning/motion.h"
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "kernel/number_format.h"
+#include "kernel/support/number_format.h"
 
 namespace mechanist {
 namespace {

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "kernel/assembly.h"
+#include "kernel/assembly/assembly.h"
 #include "reasoning/analysis.h"
 #include "reasoning/assembly_plan.h"
 

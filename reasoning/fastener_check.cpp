@@ -4,9 +4,9 @@
 #include <cmath>
 #include <map>
 
-#include "kernel/compressed_rows.h"
-#include "kernel/line_geometry.h"
-#include "kernel/number_format.h"
+#include "kernel/geometry/line_geometry.h"
+#include "kernel/support/compressed_rows.h"
+#include "kernel/support/number_format.h"
 
 namespace mechanist {
 namespace {

@@ -2,8 +2,8 @@
 
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/diagnostic.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/assembly/diagnostic.h"
 #include "reasoning/pair.h"
 
 namespace mechanist {

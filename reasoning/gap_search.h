@@ -6,10 +6,10 @@
 #include <memory>
 #include <vector>
 
-#include "kernel/aabb.h"
-#include "kernel/assembly.h"
-#include "kernel/occupancy_octree.h"
-#include "kernel/triangle_mesh.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/geometry/aabb.h"
+#include "kernel/mesh/triangle_mesh.h"
+#include "kernel/voxels/occupancy_octree.h"
 
 namespace mechanist {
 

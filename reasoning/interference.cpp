@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "kernel/broad_phase.h"
+#include "kernel/collision/broad_phase.h"
 
 namespace mechanist {
 

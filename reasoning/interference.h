@@ -5,10 +5,10 @@
 #include <optional>
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/assembly_state.h"
-#include "kernel/collision_model.h"
-#include "kernel/mesh_contact.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/assembly/assembly_state.h"
+#include "kernel/collision/collision_model.h"
+#include "kernel/collision/mesh_contact.h"
 #include "reasoning/pair.h"
 
 namespace mechanist {

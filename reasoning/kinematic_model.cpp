@@ -7,8 +7,8 @@
 #include <deque>
 #include <stdexcept>
 
-#include "kernel/line_geometry.h"
-#include "kernel/radix_sort.h"
+#include "kernel/geometry/line_geometry.h"
+#include "kernel/support/radix_sort.h"
 
 namespace mechanist {
 namespace {

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/compressed_rows.h"
-#include "kernel/diagnostic.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/assembly/diagnostic.h"
+#include "kernel/support/compressed_rows.h"
 #include "reasoning/exact_real.h"
 #include "reasoning/linear_system.h"
 #include "reasoning/pair.h"

@@ -7,8 +7,8 @@
 #include <map>
 #include <span>
 
-#include "kernel/compressed_rows.h"
-#include "kernel/enum_names.h"
+#include "kernel/support/compressed_rows.h"
+#include "kernel/support/enum_names.h"
 #include "reasoning/kinematic_model.h"
 #include "reasoning/linear_system.h"
 

@@ -7,10 +7,10 @@
 #include <string_view>
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/compressed_rows.h"
-#include "kernel/diagnostic.h"
-#include "kernel/screw_path.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/assembly/diagnostic.h"
+#include "kernel/geometry/screw_path.h"
+#include "kernel/support/compressed_rows.h"
 #include "reasoning/exact_real.h"
 #include "reasoning/pair.h"
 #include "reasoning/pair_graph.h"

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/assembly_state.h"
-#include "kernel/screw_path.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/assembly/assembly_state.h"
+#include "kernel/geometry/screw_path.h"
 #include "reasoning/analysis.h"
 
 namespace mechanist {

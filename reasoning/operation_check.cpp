@@ -6,10 +6,10 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "kernel/assembly_state.h"
-#include "kernel/broad_phase.h"
-#include "kernel/mesh_distance.h"
-#include "kernel/motion_sweep.h"
+#include "kernel/assembly/assembly_state.h"
+#include "kernel/collision/broad_phase.h"
+#include "kernel/collision/mesh_distance.h"
+#include "kernel/collision/motion_sweep.h"
 #include "reasoning/motion_run.h"
 
 namespace mechanist {

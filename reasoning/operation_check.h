@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/collision_model.h"
-#include "kernel/screw_path.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/collision/collision_model.h"
+#include "kernel/geometry/screw_path.h"
 #include "reasoning/analysis.h"
 
 namespace mechanist {

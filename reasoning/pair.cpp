@@ -1,6 +1,6 @@
 #include "reasoning/pair.h"
 
-#include "kernel/enum_names.h"
+#include "kernel/support/enum_names.h"
 
 namespace mechanist {
 

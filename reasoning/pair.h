@@ -5,8 +5,8 @@
 #include <string_view>
 #include <vector>
 
-#include "kernel/feature_ref.h"
-#include "kernel/pair_type.h"
+#include "kernel/assembly/pair_type.h"
+#include "kernel/features/feature_ref.h"
 #include "reasoning/rational.h"
 
 namespace mechanist {

@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-#include "kernel/assembly.h"
+#include "kernel/assembly/assembly.h"
 #include "reasoning/pair.h"
 
 namespace mechanist {

@@ -1,6 +1,6 @@
 #include "reasoning/pair_recognition.h"
 
-#include "kernel/grid_broad_phase.h"
+#include "kernel/collision/grid_broad_phase.h"
 #include "reasoning/internal/recognizer.h"
 
 namespace mechanist::internal {

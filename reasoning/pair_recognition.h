@@ -2,9 +2,9 @@
 
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/assembly_state.h"
-#include "kernel/diagnostic.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/assembly/assembly_state.h"
+#include "kernel/assembly/diagnostic.h"
 #include "reasoning/pair.h"
 
 namespace mechanist {

@@ -6,8 +6,8 @@
 #include <functional>
 #include <vector>
 
-#include "kernel/least_squares.h"
-#include "kernel/number_format.h"
+#include "kernel/solvers/least_squares.h"
+#include "kernel/support/number_format.h"
 
 namespace mechanist {
 namespace {

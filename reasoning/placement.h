@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "kernel/assembly.h"
+#include "kernel/assembly/assembly.h"
 
 namespace mechanist {
 

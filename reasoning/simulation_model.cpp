@@ -8,9 +8,9 @@
 #include <set>
 #include <stdexcept>
 
-#include "kernel/aabb.h"
-#include "kernel/mass_properties.h"
-#include "kernel/mesh_check.h"
+#include "kernel/geometry/aabb.h"
+#include "kernel/mesh/mass_properties.h"
+#include "kernel/mesh/mesh_check.h"
 #include "reasoning/drag.h"
 #include "reasoning/kinematic_model.h"
 #include "reasoning/operation_check.h"

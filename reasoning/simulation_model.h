@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/collision_model.h"
-#include "kernel/triangle_mesh.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/collision/collision_model.h"
+#include "kernel/mesh/triangle_mesh.h"
 #include "reasoning/analysis.h"
 
 namespace mechanist {

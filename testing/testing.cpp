@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "io/assembly_reader.h"
-#include "kernel/collision_model.h"
+#include "kernel/collision/collision_model.h"
 #include "reasoning/adjustment.h"
 #include "reasoning/assembly_plan.h"
 #include "reasoning/expectation_check.h"

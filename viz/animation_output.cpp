@@ -6,8 +6,8 @@
 
 #include "io/atomic_file.h"
 #include "io/input_error.h"
-#include "kernel/assembly_state.h"
-#include "kernel/collision_model.h"
+#include "kernel/assembly/assembly_state.h"
+#include "kernel/collision/collision_model.h"
 #include "reasoning/animation.h"
 #include "reasoning/gap_search.h"
 #include "reasoning/interference.h"

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "kernel/assembly.h"
+#include "kernel/assembly/assembly.h"
 #include "reasoning/analysis.h"
 #include "reasoning/motion_run.h"
 #include "viz/motion_renderer.h"

@@ -3,7 +3,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "kernel/part.h"
+#include "kernel/assembly/part.h"
 
 namespace mechanist {
 

@@ -26,8 +26,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "kernel/aabb.h"
-#include "kernel/assembly_state.h"
+#include "kernel/assembly/assembly_state.h"
+#include "kernel/geometry/aabb.h"
 #include "viz/display.h"
 #include "viz/display_colors.h"
 #include "viz/feature_lines.h"

@@ -7,8 +7,8 @@
 #include <string>
 #include <string_view>
 
-#include "kernel/assembly.h"
-#include "kernel/triangle_mesh.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/mesh/triangle_mesh.h"
 #include "reasoning/analysis.h"
 #include "reasoning/animation.h"
 #include "viz/image.h"

@@ -21,7 +21,7 @@
 
 #include "io/atomic_file.h"
 #include "io/input_error.h"
-#include "kernel/number_format.h"
+#include "kernel/support/number_format.h"
 
 namespace mechanist {
 namespace {

@@ -8,7 +8,7 @@
 #include "io/feature_report.h"
 #include "io/info_report.h"
 #include "io/mesh_reader.h"
-#include "kernel/feature_recognition.h"
+#include "kernel/features/feature_recognition.h"
 
 namespace mechanist::cli {
 

@@ -6,7 +6,7 @@
 
 #include "cli/commands.h"
 #include "io/assembly_report.h"
-#include "kernel/assembly_state.h"
+#include "kernel/assembly/assembly_state.h"
 
 namespace mechanist::cli {
 

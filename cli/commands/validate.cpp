@@ -2,7 +2,7 @@
 
 #include "cli/commands.h"
 #include "io/info_report.h"
-#include "kernel/assembly_check.h"
+#include "kernel/assembly/assembly_check.h"
 
 namespace mechanist::cli {
 

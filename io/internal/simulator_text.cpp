@@ -1,6 +1,6 @@
 #include "io/internal/simulator_text.h"
 
-#include "kernel/number_format.h"
+#include "kernel/support/number_format.h"
 
 namespace mechanist::internal {
 

@@ -42,7 +42,7 @@
 #include <string>
 #include <tuple>
 
-#include "kernel/number_format.h"
+#include "kernel/support/number_format.h"
 
 namespace mechanist {
 namespace {

@@ -20,9 +20,9 @@
 #include <tuple>
 #include <utility>
 
-#include "kernel/line_geometry.h"
-#include "kernel/number_format.h"
-#include "kernel/radix_sort.h"
+#include "kernel/geometry/line_geometry.h"
+#include "kernel/support/number_format.h"
+#include "kernel/support/radix_sort.h"
 #include "reasoning/pair_recognition.h"
 
 namespace mechanist::internal {

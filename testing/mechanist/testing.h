@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "kernel/assembly.h"
-#include "kernel/pair_type.h"
+#include "kernel/assembly/assembly.h"
+#include "kernel/assembly/pair_type.h"
 #include "reasoning/analysis.h"
 
 namespace mechanist::testing {

@@ -5,9 +5,9 @@
 #include <filesystem>
 
 #include "io/assembly_reader.h"
-#include "kernel/assembly_check.h"
-#include "kernel/assembly_state.h"
-#include "kernel/collision_model.h"
+#include "kernel/assembly/assembly_check.h"
+#include "kernel/assembly/assembly_state.h"
+#include "kernel/collision/collision_model.h"
 #include "reasoning/adjustment.h"
 #include "reasoning/analysis.h"
 #include "reasoning/assembly_plan.h"

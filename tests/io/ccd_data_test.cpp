@@ -7,7 +7,7 @@
 
 #include "io/ccd_query_reader.h"
 #include "io/input_error.h"
-#include "kernel/continuous_collision.h"
+#include "kernel/collision/continuous_collision.h"
 
 namespace mechanist {
 namespace {

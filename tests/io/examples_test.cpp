@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "io/assembly_reader.h"
-#include "kernel/assembly_check.h"
+#include "kernel/assembly/assembly_check.h"
 
 namespace mechanist {
 namespace {

@@ -8,10 +8,10 @@
 #include <random>
 
 #include "io/mesh_reader.h"
-#include "kernel/collision_mesh.h"
-#include "kernel/exact_predicates.h"
-#include "kernel/mesh_contact.h"
-#include "kernel/translational_sweep.h"
+#include "kernel/collision/collision_mesh.h"
+#include "kernel/collision/mesh_contact.h"
+#include "kernel/collision/translational_sweep.h"
+#include "kernel/geometry/exact_predicates.h"
 
 namespace mechanist {
 namespace {

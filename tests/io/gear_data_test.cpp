@@ -11,7 +11,7 @@
 
 #include "io/assembly_reader.h"
 #include "io/mesh_reader.h"
-#include "kernel/feature_recognition.h"
+#include "kernel/features/feature_recognition.h"
 #include "reasoning/analysis.h"
 
 namespace mechanist {

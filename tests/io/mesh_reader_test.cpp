@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "io/input_error.h"
-#include "kernel/mesh_check.h"
+#include "kernel/mesh/mesh_check.h"
 
 namespace mechanist {
 namespace {

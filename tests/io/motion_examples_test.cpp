@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "io/assembly_reader.h"
-#include "kernel/collision_model.h"
+#include "kernel/collision/collision_model.h"
 #include "reasoning/analysis.h"
 #include "reasoning/motion_run.h"
 #include "reasoning/operation_check.h"

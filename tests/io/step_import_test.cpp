@@ -18,8 +18,8 @@
 #include "io/input_error.h"
 #include "io/occt/step_fixtures.h"
 #include "io/step_reader.h"
-#include "kernel/mesh_check.h"
-#include "kernel/part_library.h"
+#include "kernel/features/part_library.h"
+#include "kernel/mesh/mesh_check.h"
 #include "reasoning/analysis.h"
 
 namespace mechanist {

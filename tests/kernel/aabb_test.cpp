@@ -1,4 +1,4 @@
-#include "kernel/aabb.h"
+#include "kernel/geometry/aabb.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "kernel/assembly.h"
+#include "kernel/assembly/assembly.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "kernel/assembly_state.h"
+#include "kernel/assembly/assembly_state.h"
 
 namespace mechanist {
 namespace {

@@ -8,12 +8,12 @@
 #include <memory>
 #include <random>
 
-#include "kernel/broad_phase.h"
-#include "kernel/collision_mesh.h"
-#include "kernel/exact_predicates.h"
-#include "kernel/mesh_builder.h"
-#include "kernel/mesh_contact.h"
-#include "kernel/translational_sweep.h"
+#include "kernel/collision/broad_phase.h"
+#include "kernel/collision/collision_mesh.h"
+#include "kernel/collision/mesh_contact.h"
+#include "kernel/collision/translational_sweep.h"
+#include "kernel/geometry/exact_predicates.h"
+#include "kernel/mesh/mesh_builder.h"
 
 namespace mechanist {
 namespace {

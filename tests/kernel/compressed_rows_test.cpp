@@ -1,4 +1,4 @@
-#include "kernel/compressed_rows.h"
+#include "kernel/support/compressed_rows.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Continuous collision queries: textbook cases with known answers (the public data set is
 // checked in tests/io/ccd_data_test.cpp).
-#include "kernel/continuous_collision.h"
+#include "kernel/collision/continuous_collision.h"
 
 #include <gtest/gtest.h>
 

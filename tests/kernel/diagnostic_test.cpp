@@ -1,4 +1,4 @@
-#include "kernel/diagnostic.h"
+#include "kernel/assembly/diagnostic.h"
 
 #include <gtest/gtest.h>
 

@@ -1,14 +1,14 @@
 // Feature recognition on meshes whose truth is known by construction: the part library's
 // gears, rings, racks and shafts, turned to arbitrary poses.
 
-#include "kernel/feature_recognition.h"
+#include "kernel/features/feature_recognition.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "kernel/mesh_builder.h"
-#include "kernel/part_library.h"
+#include "kernel/features/part_library.h"
+#include "kernel/mesh/mesh_builder.h"
 
 namespace mechanist {
 namespace {

@@ -1,4 +1,4 @@
-#include "kernel/grid_broad_phase.h"
+#include "kernel/collision/grid_broad_phase.h"
 
 #include <gtest/gtest.h>
 

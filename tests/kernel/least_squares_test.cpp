@@ -1,6 +1,6 @@
 // The least-squares facade against closed-form optima.
 
-#include "kernel/least_squares.h"
+#include "kernel/solvers/least_squares.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
-#include "kernel/mass_properties.h"
+#include "kernel/mesh/mass_properties.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "kernel/mesh_builder.h"
+#include "kernel/mesh/mesh_builder.h"
 
 namespace mechanist {
 namespace {

@@ -1,4 +1,4 @@
-#include "kernel/mesh_check.h"
+#include "kernel/mesh/mesh_check.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "kernel/assembly_check.h"
+#include "kernel/assembly/assembly_check.h"
 
 namespace mechanist {
 namespace {

@@ -1,6 +1,6 @@
 // Surface distance against all triangle pairs, and the conservative-advancement sweep of
 // turning parts against the analytic first-contact angle and against dense sampling.
-#include "kernel/motion_sweep.h"
+#include "kernel/collision/motion_sweep.h"
 
 #include <gtest/gtest.h>
 
@@ -8,10 +8,10 @@
 #include <memory>
 #include <random>
 
-#include "kernel/collision_mesh.h"
-#include "kernel/mesh_builder.h"
-#include "kernel/mesh_distance.h"
-#include "kernel/triangle_geometry.h"
+#include "kernel/collision/collision_mesh.h"
+#include "kernel/collision/mesh_distance.h"
+#include "kernel/geometry/triangle_geometry.h"
+#include "kernel/mesh/mesh_builder.h"
 
 namespace mechanist {
 namespace {

@@ -1,7 +1,7 @@
 // Voxel decomposition: the triangle-box test against polygon clipping, winding numbers of
 // closed, inverted and open meshes, the octree's cells against brute force over every voxel
 // and against exact inside tests, and the partial voxels' empty fractions against exact ones.
-#include "kernel/occupancy_octree.h"
+#include "kernel/voxels/occupancy_octree.h"
 
 #include <gtest/gtest.h>
 
@@ -11,10 +11,10 @@
 #include <set>
 #include <tuple>
 
-#include "kernel/mesh_builder.h"
-#include "kernel/mesh_check.h"
-#include "kernel/triangle_box_overlap.h"
-#include "kernel/winding_number.h"
+#include "kernel/mesh/mesh_builder.h"
+#include "kernel/mesh/mesh_check.h"
+#include "kernel/mesh/winding_number.h"
+#include "kernel/voxels/triangle_box_overlap.h"
 
 namespace mechanist {
 namespace {

@@ -1,4 +1,4 @@
-#include "kernel/part_library.h"
+#include "kernel/features/part_library.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "kernel/mesh_check.h"
+#include "kernel/mesh/mesh_check.h"
 
 namespace mechanist {
 namespace {

@@ -1,4 +1,4 @@
-#include "kernel/polygon_triangulation.h"
+#include "kernel/geometry/polygon_triangulation.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "kernel/radix_sort.h"
+#include "kernel/support/radix_sort.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "kernel/rigid_transform.h"
+#include "kernel/geometry/rigid_transform.h"
 
 #include <gtest/gtest.h>
 

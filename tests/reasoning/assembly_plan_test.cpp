@@ -7,8 +7,8 @@
 
 #include <cmath>
 
-#include "kernel/collision_model.h"
-#include "kernel/translational_sweep.h"
+#include "kernel/collision/collision_model.h"
+#include "kernel/collision/translational_sweep.h"
 #include "reasoning/analysis.h"
 #include "test_assembly.h"
 

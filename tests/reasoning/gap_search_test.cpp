@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "kernel/mesh_builder.h"
+#include "kernel/mesh/mesh_builder.h"
 
 namespace mechanist {
 namespace {

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "kernel/assembly_state.h"
+#include "kernel/assembly/assembly_state.h"
 #include "reasoning/pair_recognition.h"
 #include "test_assembly.h"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "kernel/assembly.h"
+#include "kernel/assembly/assembly.h"
 
 namespace mechanist::testing {
 

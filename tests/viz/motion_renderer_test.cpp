@@ -14,7 +14,7 @@
 #include <string>
 
 #include "io/assembly_reader.h"
-#include "kernel/assembly_state.h"
+#include "kernel/assembly/assembly_state.h"
 #include "reasoning/analysis.h"
 #include "reasoning/animation.h"
 #include "reasoning/gap_search.h"

@@ -2,7 +2,7 @@
 #include <iostream>
 
 #include "io/assembly_reader.h"
-#include "kernel/assembly.h"
+#include "kernel/assembly/assembly.h"
 
 int main(int argc, char** argv) {
   if (argc != 2) return 2;

@@ -36,7 +36,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "kernel/involute_gear.h"
+#include "kernel/features/involute_gear.h"
 
 namespace mechanist::testing {
 

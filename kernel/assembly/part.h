@@ -1,0 +1,60 @@
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kernel/features/feature.h"
+#include "kernel/features/feature_ref.h"
+#include "kernel/geometry/rigid_transform.h"
+#include "kernel/mesh/triangle_mesh.h"
+
+namespace mechanist {
+
+/// One condition of a placement by features (spec, "place"). Features are resolved: `feature`
+/// is this part's, `target` a part placed before it.
+struct PlacementCondition {
+  enum class Kind { kInsert, kMesh, kAgainst };
+  Kind kind = Kind::kInsert;
+  std::size_t feature = 0;      ///< index into this part's features
+  FeatureRef target;            ///< "into", "with" or "on"
+  std::optional<double> depth;  ///< insert: mm past the target's origin; default: shorter length
+  double angle = 0.0;           ///< insert: turn about the axis; mesh: polar angle. Radians.
+};
+
+/// A part of the assembly description: its mesh and features in its own frame, and its pose
+/// as the file gives it. Immutable once the Assembly holds it.
+struct Part {
+  std::string id;
+  /// The mesh in part coordinates (mm); shared between parts with the same source. Empty (no
+  /// faces) for a features-only part, a kinematic sketch without geometry.
+  std::shared_ptr<const TriangleMesh> mesh;
+  /// Where the mesh came from: a file path as written in the file, or "library:<kind>"; empty
+  /// for a features-only part.
+  std::string mesh_source;
+  /// X_WP, the pose in the file (identity when the file gives none or places the part).
+  RigidTransform X_WP;
+  /// Placement by features instead of a pose (resolved by the placement solver); empty when
+  /// the part has a pose.
+  std::vector<PlacementCondition> placement;
+  bool ground = false;
+  /// A spring, belt or hose (spec: `compliant`): not a rigid link. It joins no pair, moves with
+  /// nothing and counts in no mobility; the parts it touches are reported.
+  bool compliant = false;
+  std::string group;  ///< CAD product-structure path, informational
+  std::vector<Feature> features;
+  /// What reading the part's source saw but made no feature of, in words (a STEP solid's
+  /// cones, spheres, tori and free-form faces); informational.
+  std::vector<std::string> notes;
+
+  /// False for a features-only part (no mesh, or one without faces): the commands that need
+  /// geometry (interference, assembly paths, swept checks, gaps) skip it.
+  bool HasGeometry() const { return mesh && !mesh->faces.empty(); }
+
+  /// Index of the feature `feature_id`, or nothing.
+  std::optional<std::size_t> FindFeature(const std::string& feature_id) const;
+};
+
+}  // namespace mechanist

@@ -1,0 +1,59 @@
+#include "kernel/features/feature.h"
+
+#include "kernel/support/enum_names.h"
+
+namespace mechanist {
+namespace {
+
+constexpr EnumNames<FeatureKind, 15> kNames = {{
+    {FeatureKind::kShaft, "shaft"},
+    {FeatureKind::kHole, "hole"},
+    {FeatureKind::kThread, "thread"},
+    {FeatureKind::kTappedHole, "tapped_hole"},
+    {FeatureKind::kSlot, "slot"},
+    {FeatureKind::kKey, "key"},
+    {FeatureKind::kGear, "gear"},
+    {FeatureKind::kWorm, "worm"},
+    {FeatureKind::kWormWheel, "worm_wheel"},
+    {FeatureKind::kRack, "rack"},
+    {FeatureKind::kBall, "ball"},
+    {FeatureKind::kSocket, "socket"},
+    {FeatureKind::kFace, "face"},
+    {FeatureKind::kCycloidDisc, "cycloid_disc"},
+    {FeatureKind::kPinRing, "pin_ring"},
+}};
+
+}  // namespace
+
+std::string_view ToString(FeatureKind kind) { return NameOf(kNames, kind); }
+
+std::optional<FeatureKind> ParseFeatureKind(std::string_view name) { return ValueOf(kNames, name); }
+
+bool IsConvex(FeatureKind kind) {
+  switch (kind) {
+    case FeatureKind::kShaft:
+    case FeatureKind::kThread:
+    case FeatureKind::kGear:
+    case FeatureKind::kWorm:
+    case FeatureKind::kWormWheel:
+    case FeatureKind::kKey:
+    case FeatureKind::kBall:
+      return true;
+    default:
+      return false;
+  }
+}
+
+bool IsConcave(FeatureKind kind) {
+  switch (kind) {
+    case FeatureKind::kHole:
+    case FeatureKind::kTappedHole:
+    case FeatureKind::kSlot:
+    case FeatureKind::kSocket:
+      return true;
+    default:
+      return false;
+  }
+}
+
+}  // namespace mechanist

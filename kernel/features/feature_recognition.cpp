@@ -1,0 +1,571 @@
+#include "kernel/features/feature_recognition.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <cstdint>
+#include <numeric>
+
+#include "kernel/support/number_format.h"
+
+namespace mechanist {
+namespace {
+
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The sign that makes a direction's largest component positive: axes come out the same
+// whatever the eigen solver's sign.
+Vector3d Canonical(Vector3d a) {
+  Eigen::Index i = 0;
+  a.cwiseAbs().maxCoeff(&i);
+  return a[i] < 0 ? Vector3d(-a) : a;
+}
+
+struct Union {
+  std::vector<int> parent;
+  explicit Union(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int Find(int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void Join(int a, int b) {
+    a = Find(a), b = Find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+// One closed outline of the walls, projected across the axis.
+struct Outline {
+  double lo = 1e300, hi = -1e300;                      // its extent along the axis
+  std::vector<Vector2d> vertices;                      // distinct projected vertices
+  std::vector<std::pair<Vector2d, Vector2d>> edges;    // projected wall edges
+  std::vector<std::pair<Vector2d, Vector2d>> normals;  // (face centroid, normal), projected
+};
+
+struct Circle {
+  Vector2d center = Vector2d::Zero();
+  double radius = 0.0;
+  double rms = 0.0;
+};
+
+// Kasa's algebraic circle fit: x^2 + y^2 + D x + E y + F = 0 by least squares.
+Circle FitCircle(const std::vector<Vector2d>& p) {
+  Eigen::MatrixXd A(p.size(), 3);
+  Eigen::VectorXd b(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    A.row(i) << p[i].x(), p[i].y(), 1.0;
+    b[i] = -(p[i].squaredNorm());
+  }
+  const Eigen::Vector3d s = A.colPivHouseholderQr().solve(b);
+  Circle c;
+  c.center = Vector2d(-s[0] / 2, -s[1] / 2);
+  c.radius = std::sqrt(std::max(0.0, c.center.squaredNorm() - s[2]));
+  double sum = 0.0;
+  for (const Vector2d& q : p) sum += std::pow((q - c.center).norm() - c.radius, 2);
+  c.rms = std::sqrt(sum / p.size());
+  return c;
+}
+
+// Largest angular gap between the vertices seen from `center`, radians.
+double LargestGap(const std::vector<Vector2d>& p, const Vector2d& center) {
+  std::vector<double> angles;
+  for (const Vector2d& q : p) angles.push_back(std::atan2(q.y() - center.y(), q.x() - center.x()));
+  std::sort(angles.begin(), angles.end());
+  double gap = angles.front() + 2 * kPi - angles.back();
+  for (std::size_t i = 1; i < angles.size(); ++i) gap = std::max(gap, angles[i] - angles[i - 1]);
+  return gap;
+}
+
+// Samples of a profile over `bins` bins of a parameter: the largest and smallest value of
+// `value` over points spread along every edge, empty bins filled from their neighbours.
+struct Profile {
+  std::vector<double> high, low;
+};
+
+template <typename Param, typename Value>
+Profile Sample(const Outline& outline, int bins, double lo, double hi, Param param, Value value,
+               bool periodic) {
+  Profile p{std::vector<double>(bins, -1e300), std::vector<double>(bins, 1e300)};
+  const double span = hi - lo;
+  for (const auto& [a, b] : outline.edges) {
+    const double da = param(a), db = param(b);
+    double d = db - da;
+    if (periodic) d = std::remainder(d, span);
+    const int steps = 2 + static_cast<int>(std::abs(d) / span * bins * 4);
+    for (int s = 0; s <= steps; ++s) {
+      const Vector2d q = a + (b - a) * (static_cast<double>(s) / steps);
+      double t = (param(q) - lo) / span;
+      if (periodic) t -= std::floor(t);
+      const int bin = std::clamp(static_cast<int>(t * bins), 0, bins - 1);
+      const double v = value(q);
+      p.high[bin] = std::max(p.high[bin], v);
+      p.low[bin] = std::min(p.low[bin], v);
+    }
+  }
+  for (std::vector<double>* series : {&p.high, &p.low}) {
+    std::vector<double>& s = *series;
+    const bool high = series == &p.high;
+    for (int pass = 0; pass < 2; ++pass) {
+      for (int i = 0; i < bins; ++i) {
+        if (std::abs(s[i]) < 1e299) continue;
+        const double left = s[(i + bins - 1) % bins], right = s[(i + 1) % bins];
+        const bool l = std::abs(left) < 1e299, r = std::abs(right) < 1e299;
+        if (l || r)
+          s[i] = l && r ? (high ? std::max(left, right) : std::min(left, right)) : l ? left : right;
+      }
+    }
+    for (double& v : s) {
+      if (std::abs(v) >= 1e299) v = 0.0;
+    }
+  }
+  return p;
+}
+
+// |F_k| of a series of power-of-two length (mean removed), k = 0 .. n/2, by an iterative
+// radix-2 FFT (Cooley-Tukey).
+std::vector<double> Spectrum(const std::vector<double>& s) {
+  const std::size_t n = s.size();
+  const double mean = std::accumulate(s.begin(), s.end(), 0.0) / n;
+  std::vector<std::complex<double>> a(n);
+  for (std::size_t i = 0, j = 0; i < n; ++i) {
+    a[j] = s[i] - mean;  // bit-reversed order
+    std::size_t bit = n >> 1;
+    for (; j & bit; bit >>= 1) j ^= bit;
+    j ^= bit;
+  }
+  for (std::size_t len = 2; len <= n; len <<= 1) {
+    const std::complex<double> w = std::polar(1.0, -2 * kPi / static_cast<double>(len));
+    for (std::size_t i = 0; i < n; i += len) {
+      std::complex<double> wk = 1.0;
+      for (std::size_t k = 0; k < len / 2; ++k, wk *= w) {
+        const std::complex<double> even = a[i + k], odd = wk * a[i + k + len / 2];
+        a[i + k] = even + odd;
+        a[i + k + len / 2] = even - odd;
+      }
+    }
+  }
+  std::vector<double> magnitude(n / 2 + 1);
+  for (std::size_t k = 0; k <= n / 2; ++k) magnitude[k] = std::abs(a[k]);
+  return magnitude;
+}
+
+// The integer frequency in [from, to] with the largest magnitude.
+int Dominant(const std::vector<double>& spectrum, int from, int to) {
+  int best = from;
+  for (int k = from; k <= to; ++k) {
+    if (spectrum[k] > spectrum[best] * (1 + 1e-9)) best = k;
+  }
+  return best;
+}
+
+// The standard module nearest `m` within 3%, or nothing.
+std::optional<double> Standard(double m) {
+  double best = 0.0;
+  for (const double s : StandardModules()) {
+    if (std::abs(s - m) < std::abs(best - m)) best = s;
+  }
+  if (std::abs(best - m) > 0.03 * best) return std::nullopt;
+  return best;
+}
+
+// How far a periodic series differs from itself shifted by `shift` bins, over its range.
+double SelfMismatch(const std::vector<double>& s, int shift) {
+  const auto [lo, hi] = std::minmax_element(s.begin(), s.end());
+  double sum = 0.0;
+  const int n = static_cast<int>(s.size());
+  for (int i = 0; i < n; ++i) sum += std::abs(s[i] - s[(i + shift) % n]);
+  return sum / n / std::max(*hi - *lo, 1e-12);
+}
+
+// Axes of the mesh's cylindrical patches, whatever their direction: faces joined across
+// shared edges whose normals turn by less than 30 degrees make smooth patches; a patch whose
+// area-weighted normal matrix sum(a n n^T) has one eigenvalue near zero (every normal across
+// one direction) and another well above it (the normals turn: no flat face) is a cylinder, or
+// part of one, along that direction. Cones and spheres have no such direction.
+std::vector<Vector3d> CylinderPatchAxes(const TriangleMesh& mesh,
+                                        const std::vector<Vector3d>& normal,
+                                        const std::vector<double>& area) {
+  const std::size_t nf = mesh.faces.size();
+  std::vector<std::array<std::int32_t, 3>> edges;  // (lower vertex, higher vertex, face)
+  edges.reserve(3 * nf);
+  for (std::size_t f = 0; f < nf; ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t a = mesh.faces[f][k], b = mesh.faces[f][(k + 1) % 3];
+      edges.push_back({std::min(a, b), std::max(a, b), static_cast<std::int32_t>(f)});
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  const double kSmooth = std::cos(30 * kPi / 180);
+  Union patches(nf);
+  for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
+    for (std::size_t j = i + 1;
+         j < edges.size() && edges[j][0] == edges[i][0] && edges[j][1] == edges[i][1]; ++j) {
+      if (normal[edges[i][2]].dot(normal[edges[j][2]]) > kSmooth) {
+        patches.Join(edges[i][2], edges[j][2]);
+      }
+    }
+  }
+  std::vector<int> patch_of(nf, -1);
+  std::vector<Eigen::Matrix3d> sums;
+  std::vector<int> sizes;
+  for (std::size_t f = 0; f < nf; ++f) {
+    const int root = patches.Find(static_cast<int>(f));
+    if (patch_of[root] < 0) {
+      patch_of[root] = static_cast<int>(sums.size());
+      sums.push_back(Eigen::Matrix3d::Zero());
+      sizes.push_back(0);
+    }
+    sums[patch_of[root]] += area[f] * normal[f] * normal[f].transpose();
+    ++sizes[patch_of[root]];
+  }
+  std::vector<Vector3d> axes;
+  for (std::size_t p = 0; p < sums.size(); ++p) {
+    if (sizes[p] < 8) continue;
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(sums[p]);
+    const Vector3d lambda = eigen.eigenvalues();  // ascending
+    const double trace = lambda.sum();
+    if (trace <= 0 || lambda[0] > 4e-6 * trace || lambda[1] < 0.05 * trace) continue;
+    axes.push_back(Canonical(eigen.eigenvectors().col(0).normalized()));
+  }
+  return axes;
+}
+
+std::string Mm(double x) { return FormatNumber(x, 6) + " mm"; }
+
+}  // namespace
+
+const std::vector<double>& StandardModules() {
+  static const std::vector<double> modules = {
+      0.05, 0.06, 0.08, 0.1,  0.12, 0.15, 0.2,  0.25,  0.3,  0.35,  0.4,  0.45, 0.5,  0.55,
+      0.6,  0.65, 0.7,  0.75, 0.8,  0.9,  1.0,  1.125, 1.25, 1.375, 1.5,  1.75, 2.0,  2.25,
+      2.5,  2.75, 3.0,  3.5,  4.0,  4.5,  5.0,  5.5,   6.0,  7.0,   8.0,  9.0,  10.0, 11.0,
+      12.0, 14.0, 16.0, 18.0, 20.0, 22.0, 25.0, 28.0,  32.0, 36.0,  40.0, 45.0, 50.0};
+  return modules;
+}
+
+MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
+  MeshFeatures out;
+  if (mesh.faces.empty()) {
+    out.notes.push_back("no faces");
+    return out;
+  }
+  // Face normals and areas.
+  const std::size_t nf = mesh.faces.size();
+  std::vector<Vector3d> normal(nf);
+  std::vector<double> area(nf);
+  Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+  double total = 0.0;
+  for (std::size_t f = 0; f < nf; ++f) {
+    const auto& t = mesh.faces[f];
+    const Vector3d c = (mesh.vertices[t[1]] - mesh.vertices[t[0]])
+                           .cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+    area[f] = 0.5 * c.norm();
+    normal[f] = c.norm() > 0 ? Vector3d(c.normalized()) : Vector3d::Zero();
+    M += area[f] * normal[f] * normal[f].transpose();
+    total += area[f];
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(M);
+  // The extrusion axis: the candidate along or across which the most area faces (ties: the
+  // most area along it, the caps).
+  Vector3d axis = Vector3d::UnitZ();
+  double best_score = -1.0, best_caps = -1.0;
+  for (int i = 0; i < 3; ++i) {
+    const Vector3d a = Canonical(eigen.eigenvectors().col(i).normalized());
+    double caps = 0.0, walls = 0.0;
+    for (std::size_t f = 0; f < nf; ++f) {
+      const double d = std::abs(normal[f].dot(a));
+      if (d > 1 - 1e-4) caps += area[f];
+      if (d < 2e-3) walls += area[f];
+    }
+    const double score = (caps + walls) / total;
+    if (score > best_score + 1e-9 || (std::abs(score - best_score) <= 1e-9 && caps > best_caps)) {
+      best_score = score, best_caps = caps, axis = a;
+    }
+  }
+  // Cylinders may also lie across other directions (an L-bracket's holes in its two legs, a
+  // prism's cross holes): the walls across each principal direction and coordinate axis are
+  // searched for circles too. The extrusion axis, when there is one, comes first and alone gets
+  // the full analysis (gears, racks, polygons).
+  const bool prismatic = best_score >= 0.95;
+  if (prismatic) {
+    out.axis = axis;
+  } else {
+    out.notes.push_back(
+        "not prismatic: no axis along or across which 95% of the area faces (best " +
+        FormatNumber(100 * best_score, 3) + "%); only cylinders are looked for");
+  }
+  std::vector<Vector3d> candidates;
+  if (prismatic) candidates.push_back(axis);
+  std::vector<Vector3d> directions = {
+      Vector3d(eigen.eigenvectors().col(0)), Vector3d(eigen.eigenvectors().col(1)),
+      Vector3d(eigen.eigenvectors().col(2)), Vector3d(Vector3d::UnitX()),
+      Vector3d(Vector3d::UnitY()),           Vector3d(Vector3d::UnitZ())};
+  for (const Vector3d& a : CylinderPatchAxes(mesh, normal, area)) directions.push_back(a);
+  for (const Vector3d& c : directions) {
+    const Vector3d a = Canonical(c.normalized());
+    const bool known = std::any_of(candidates.begin(), candidates.end(), [&](const Vector3d& b) {
+      return std::abs(a.dot(b)) > 1 - 1e-6;
+    });
+    if (!known) candidates.push_back(a);
+  }
+  int holes = 0, shafts = 0;
+  bool has_teeth = false;
+  for (std::size_t candidate = 0; candidate < candidates.size(); ++candidate) {
+    const Vector3d& axis = candidates[candidate];
+    const bool full = prismatic && candidate == 0;
+    const Vector3d e = std::abs(axis.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
+    const Vector3d u = axis.cross(e).normalized();
+    const Vector3d v = axis.cross(u);
+    auto project = [&](const Vector3d& p) { return Vector2d(p.dot(u), p.dot(v)); };
+    double t_min = 1e300, t_max = -1e300;
+    for (const Vector3d& p : mesh.vertices) {
+      t_min = std::min(t_min, p.dot(axis));
+      t_max = std::max(t_max, p.dot(axis));
+    }
+    const double width = t_max - t_min;
+    auto lift = [&](const Vector2d& q, double t) {
+      return Vector3d(q.x() * u + q.y() * v + t * axis);
+    };
+
+    // Walls grouped into outlines by shared vertices.
+    Union groups(mesh.vertices.size());
+    std::vector<std::size_t> walls;
+    for (std::size_t f = 0; f < nf; ++f) {
+      if (std::abs(normal[f].dot(axis)) >= 2e-3 || area[f] == 0.0) continue;
+      walls.push_back(f);
+      groups.Join(mesh.faces[f][0], mesh.faces[f][1]);
+      groups.Join(mesh.faces[f][0], mesh.faces[f][2]);
+    }
+    std::vector<int> outline_of(mesh.vertices.size(), -1);
+    std::vector<Outline> outlines;
+    for (const std::size_t f : walls) {
+      const int root = groups.Find(mesh.faces[f][0]);
+      if (outline_of[root] < 0) {
+        outline_of[root] = static_cast<int>(outlines.size());
+        outlines.emplace_back();
+      }
+      Outline& o = outlines[outline_of[root]];
+      const auto& t = mesh.faces[f];
+      for (int k = 0; k < 3; ++k) {
+        o.lo = std::min(o.lo, mesh.vertices[t[k]].dot(axis));
+        o.hi = std::max(o.hi, mesh.vertices[t[k]].dot(axis));
+      }
+      Vector2d centroid = Vector2d::Zero();
+      for (int k = 0; k < 3; ++k) {
+        const Vector2d a = project(mesh.vertices[t[k]]), b = project(mesh.vertices[t[(k + 1) % 3]]);
+        centroid += a / 3;
+        if ((a - b).norm() > 1e-9) o.edges.emplace_back(a, b);
+      }
+      o.normals.emplace_back(centroid, project(normal[f]));
+    }
+    // Each outline's distinct projected vertices (a wall's top and bottom edges project onto
+    // each other): merged on a 1e-7 mm grid.
+    for (Outline& o : outlines) {
+      std::vector<std::pair<std::pair<std::int64_t, std::int64_t>, Vector2d>> points;
+      for (const auto& [a, b] : o.edges) {
+        for (const Vector2d& p : {a, b}) {
+          points.push_back({{std::llround(p.x() * 1e7), std::llround(p.y() * 1e7)}, p});
+        }
+      }
+      std::sort(points.begin(), points.end(),
+                [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        if (i == 0 || points[i].first != points[i - 1].first)
+          o.vertices.push_back(points[i].second);
+      }
+    }
+    // Largest outline first (by extent), so that a gear's teeth come before its bore.
+    auto extent = [](const Outline& o) {
+      Eigen::AlignedBox2d box;
+      for (const Vector2d& p : o.vertices) box.extend(p);
+      return box.diagonal().norm();
+    };
+    std::stable_sort(outlines.begin(), outlines.end(),
+                     [&](const Outline& a, const Outline& b) { return extent(a) > extent(b); });
+
+    auto id = [&](const std::string& base, int n) {
+      return n == 0 ? base : base + "_" + std::to_string(n + 1);
+    };
+    for (const Outline& o : outlines) {
+      if (o.vertices.size() < 3) continue;
+      const Circle circle = FitCircle(o.vertices);
+      // Convex when the walls face away from the centre.
+      double facing = 0.0;
+      for (const auto& [c, n] : o.normals) facing += n.dot((c - circle.center).normalized());
+      const bool convex = facing > 0;
+      if (o.vertices.size() >= 12 && circle.rms <= 0.01 * circle.radius &&
+          LargestGap(o.vertices, circle.center) <= 40 * kPi / 180) {
+        RecognizedFeature r;
+        Feature& f = r.feature;
+        f.kind = convex ? FeatureKind::kShaft : FeatureKind::kHole;
+        if (convex) {
+          f.id = id("shaft", shafts++);
+        } else {
+          f.id = has_teeth && holes == 0 ? "bore" : id("hole", holes);
+          ++holes;
+        }
+        f.origin = lift(circle.center, o.lo);
+        f.axis = axis;
+        f.length = o.hi - o.lo;
+        f.diameter = 2 * circle.radius;
+        f.through = !convex;
+        r.fit_error = circle.rms;
+        r.detail = std::string(convex ? "convex" : "concave") + " cylinder, diameter " +
+                   Mm(f.diameter) + " from " + std::to_string(o.vertices.size()) +
+                   " outline vertices (rms " + Mm(circle.rms) + ")";
+        out.features.push_back(r);
+        continue;
+      }
+      if (!full) continue;
+      // Teeth around a centre: the radius about the outline's centre, over 4096 angles.
+      constexpr int kBins = 4096;
+      const Vector2d c = circle.center;
+      const Profile radial = Sample(
+          o, kBins, -kPi, kPi,
+          [&](const Vector2d& q) { return std::atan2(q.y() - c.y(), q.x() - c.x()); },
+          [&](const Vector2d& q) { return (q - c).norm(); }, true);
+      const std::vector<double>& r = convex ? radial.high : radial.low;
+      const auto [r_lo, r_hi] = std::minmax_element(r.begin(), r.end());
+      const double depth = *r_hi - *r_lo;
+      bool gear = false;
+      if (depth > 1e-3 * *r_hi) {
+        const int z = Dominant(Spectrum(r), 3, 512);
+        const double m_raw = depth / 2.25;
+        const std::optional<double> m = Standard(m_raw);
+        const double tip = convex ? *r_hi : *r_lo;
+        const double shift = convex ? tip / m_raw - z / 2.0 - 1.0 : z / 2.0 - 1.0 - tip / m_raw;
+        const double mismatch = SelfMismatch(r, static_cast<int>(std::lround(kBins / double(z))));
+        if (m && o.vertices.size() >= static_cast<std::size_t>(4 * z) && shift > -1.0 &&
+            shift < 1.2 && mismatch < 0.05) {
+          gear = true;
+          has_teeth = true;
+          RecognizedFeature g;
+          Feature& f = g.feature;
+          f.kind = FeatureKind::kGear;
+          f.id = "teeth";
+          f.origin = lift(c, t_min);
+          f.axis = axis;
+          f.length = width;
+          f.teeth = z;
+          f.module = *m;
+          f.internal = !convex;
+          g.fit_error = std::abs(m_raw - *m) * z / 2;
+          g.detail = std::string(convex ? "spur gear" : "internal gear") + ", " +
+                     std::to_string(z) + " teeth (the radius repeats " + std::to_string(z) +
+                     " times around), tooth depth " + Mm(depth) + " = 2.25 x " +
+                     FormatNumber(m_raw, 5) + ", module " + FormatNumber(*m) +
+                     " (ISO 54), profile shift about " + FormatNumber(shift, 2);
+          out.features.push_back(g);
+        }
+      }
+      if (gear || !convex) continue;
+      // A polygon (a nut's outside): 3 to 8 corners, every one turning the same way.
+      if (o.vertices.size() >= 3 && o.vertices.size() <= 8) {
+        std::vector<Vector2d> corners = o.vertices;
+        std::sort(corners.begin(), corners.end(), [&](const Vector2d& a, const Vector2d& b) {
+          return std::atan2(a.y() - circle.center.y(), a.x() - circle.center.x()) <
+                 std::atan2(b.y() - circle.center.y(), b.x() - circle.center.x());
+        });
+        bool turning = true;
+        for (std::size_t i = 0; i < corners.size(); ++i) {
+          const Vector2d a = corners[(i + 1) % corners.size()] - corners[i];
+          const Vector2d b = corners[(i + 2) % corners.size()] - corners[(i + 1) % corners.size()];
+          turning = turning && a.x() * b.y() - a.y() * b.x() > 0;
+        }
+        if (turning) {
+          out.polygon_sides = static_cast<int>(corners.size());
+          continue;
+        }
+      }
+      // A rack: long, repeating along its length on one side.
+      Eigen::Matrix2d C = Eigen::Matrix2d::Zero();
+      Vector2d mean = Vector2d::Zero();
+      for (const Vector2d& p : o.vertices) mean += p / o.vertices.size();
+      for (const Vector2d& p : o.vertices) C += (p - mean) * (p - mean).transpose();
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> pca(C);
+      // The rack's axis: its long direction, with its largest world component positive.
+      Vector2d e1 = pca.eigenvectors().col(1).normalized();
+      if (Canonical(lift(e1, 0.0)).dot(lift(e1, 0.0)) < 0) e1 = -e1;
+      const Vector2d e2(-e1.y(), e1.x());
+      double s_lo = 1e300, s_hi = -1e300;
+      for (const Vector2d& p : o.vertices) {
+        s_lo = std::min(s_lo, p.dot(e1));
+        s_hi = std::max(s_hi, p.dot(e1));
+      }
+      constexpr int kRackBins = 4096;
+      const Profile side = Sample(
+          o, kRackBins, s_lo, s_hi, [&](const Vector2d& q) { return q.dot(e1); },
+          [&](const Vector2d& q) { return q.dot(e2); }, false);
+      // The toothed side varies; the back is straight. Ends excluded.
+      auto variation = [&](const std::vector<double>& s) {
+        const auto [lo, hi] =
+            std::minmax_element(s.begin() + kRackBins / 20, s.end() - kRackBins / 20);
+        return *hi - *lo;
+      };
+      const bool top = variation(side.high) >= variation(side.low);
+      std::vector<double> h = top ? side.high : side.low;
+      if (!top) {
+        for (double& x : h) x = -x;
+      }
+      const double h_depth = variation(h);
+      const double length = s_hi - s_lo;
+      if (h_depth < 1e-3 * length || length < 3 * h_depth) {
+        out.notes.push_back("an outline of " + std::to_string(o.vertices.size()) +
+                            " vertices is neither a circle, nor gear teeth, nor a rack");
+        continue;
+      }
+      const std::vector<double> spectrum = Spectrum(h);
+      const int k = Dominant(spectrum, 2, kRackBins / 8);
+      // Refine the frequency between integers by a parabola through the magnitudes.
+      const double a0 = spectrum[k - 1], a1 = spectrum[k], a2 = spectrum[k + 1];
+      const double denominator = a0 - 2 * a1 + a2;
+      const double k_fine = k + (denominator != 0.0 ? 0.5 * (a0 - a2) / denominator : 0.0);
+      const double pitch = length / k_fine;
+      const double m_pitch = pitch / kPi, m_depth = h_depth / 2.25;
+      const std::optional<double> m = Standard(m_pitch);
+      if (!m || std::abs(m_depth - *m) > 0.05 * *m) {
+        out.notes.push_back("an outline repeats along its length every " + Mm(pitch) +
+                            " but its pitch and depth give no one standard module");
+        continue;
+      }
+      const double tip = *std::max_element(h.begin() + kRackBins / 20, h.end() - kRackBins / 20);
+      RecognizedFeature rack;
+      Feature& f = rack.feature;
+      f.kind = FeatureKind::kRack;
+      f.id = "teeth";
+      const Vector2d n2 = top ? e2 : Vector2d(-e2);
+      f.origin = lift(s_lo * e1 + (tip - *m) * n2, t_min + width / 2);
+      f.axis = lift(e1, 0.0);
+      f.normal = lift(n2, 0.0);
+      f.length = length;
+      f.width = width;
+      f.module = *m;
+      rack.fit_error = std::abs(m_pitch - *m) * kPi;
+      rack.detail = "rack, pitch " + Mm(pitch) + " = pi x " + FormatNumber(m_pitch, 5) +
+                    ", tooth depth " + Mm(h_depth) + ", module " + FormatNumber(*m) +
+                    " (ISO 54), about " + std::to_string(std::lround(length / pitch)) + " teeth";
+      out.features.push_back(rack);
+      has_teeth = true;
+    }
+  }
+  // Below what a mesh's float coordinates resolve: rounded, so that reports read cleanly.
+  auto snap = [](double x, double grid) { return std::round(x / grid) * grid + 0.0; };
+  for (RecognizedFeature& r : out.features) {
+    Feature& f = r.feature;
+    for (int i = 0; i < 3; ++i) {
+      f.origin[i] = snap(f.origin[i], 1e-6);
+      f.axis[i] = snap(f.axis[i], 1e-12);
+      f.normal[i] = snap(f.normal[i], 1e-12);
+    }
+    f.diameter = snap(f.diameter, 1e-6);
+    f.length = snap(f.length, 1e-6);
+  }
+  return out;
+}
+
+}  // namespace mechanist

@@ -1,0 +1,858 @@
+#include "kernel/voxels/occupancy_octree.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "kernel/mesh/mesh_check.h"
+#include "kernel/mesh/winding_number.h"
+#include "kernel/voxels/triangle_box_overlap.h"
+
+namespace mechanist {
+
+namespace {
+
+constexpr int kMaxDepth = 20;
+
+// Union-find over node indices with path halving.
+std::int32_t FindRoot(std::vector<std::int32_t>& parent, std::int32_t x) {
+  while (parent[x] != x) {
+    parent[x] = parent[parent[x]];
+    x = parent[x];
+  }
+  return x;
+}
+
+// A triangle in the world, with its normal (b - a) x (c - a) and its bounds.
+struct Triangle {
+  std::array<Eigen::Vector3d, 3> p;
+  Eigen::Vector3d n, min, max;
+};
+
+constexpr int kMaxLines = 4;  // lines per side of a voxel for its Fill, at most
+constexpr int kMaxSamples = kMaxLines * kMaxLines * kMaxLines;
+// A Fill's unit, 1/240 of a voxel: 8 bits, and halves to sixteenths are exact.
+constexpr int kFillUnit = 240;
+
+// Where a line along an axis crosses a triangle: its coordinate along the axis, and whether
+// the triangle faces along the axis (material below the crossing) or against it.
+struct Crossing {
+  double at = 0.0;
+  bool up = false;
+};
+
+// A triangle seen along an axis, for crossing lines along it: each edge's side of a point
+// (pu, pv) (u and v the next axes, cyclically) is sign * ((q_u - p_u) (pv - p_v) - (q_v - p_v)
+// (pu - p_u)), with the edge's end points p, q in a fixed order so that the two triangles
+// sharing an edge compute it alike; a line through an edge is given to one of them (the
+// top-left rule of rasterizers), so that a line crosses a closed mesh an even number of times.
+struct ProjectedTriangle {
+  struct Edge {
+    double pu, pv, du, dv, sign;
+    bool takes_ties;
+  };
+  std::array<Edge, 3> edges;
+
+  ProjectedTriangle(const Triangle& t, int axis) {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const double s = t.n[axis] > 0 ? 1.0 : -1.0;  // counter-clockwise seen from +axis when 1
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d& a = t.p[k];
+      const Eigen::Vector3d& b = t.p[(k + 1) % 3];
+      const bool swap = a[u] > b[u] || (a[u] == b[u] && a[v] > b[v]);
+      const Eigen::Vector3d& p = swap ? b : a;
+      const Eigen::Vector3d& q = swap ? a : b;
+      const double du = s * (b[u] - a[u]), dv = s * (b[v] - a[v]);
+      const bool takes_ties = dv > 0 || (dv == 0 && du < 0);
+      edges[k] = {p[u], p[v], q[u] - p[u], q[v] - p[v], swap ? -s : s, takes_ties};
+    }
+  }
+
+  bool Crosses(double pu, double pv) const {
+    for (const Edge& e : edges) {
+      const double side = e.sign * (e.du * (pv - e.pv) - e.dv * (pu - e.pu));
+      if (side < 0 || (side == 0 && !e.takes_ties)) return false;
+    }
+    return true;
+  }
+};
+
+// A voxel's lines along an axis: n x n lines, line (i, j) at lo[u] + (i + 1/2) d,
+// lo[v] + (j + 1/2) d (u and v the next axes, cyclically, d = h / n), numbered i + n j.
+// The lines in [from, to] along u, as a range of i (empty when first > last).
+std::pair<int, int> LinesIn(double from, double to, double lo, double d, int n) {
+  const double per_d = 1.0 / d;
+  const double first = std::ceil(std::clamp((from - lo) * per_d - 0.5, -1.0, double(n)));
+  const double last = std::floor(std::clamp((to - lo) * per_d - 0.5, -1.0, double(n)));
+  return {std::max(0, static_cast<int>(first)), std::min(n - 1, static_cast<int>(last))};
+}
+
+using LineCrossings = std::array<std::vector<Crossing>, kMaxLines * kMaxLines>;
+
+// The crossings of the voxel [lo, lo + h]^3's lines along `axis` with the triangles, within
+// the voxel along it (widened by eps, then clamped to it).
+void VoxelLineCrossings(const std::vector<Triangle>& tris, int axis, const Eigen::Vector3d& lo,
+                        double h, int n, double eps, LineCrossings& crossings) {
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const double d = h / n;
+  for (auto& c : crossings) c.clear();
+  for (const Triangle& t : tris) {
+    if (t.n[axis] == 0) continue;  // parallel to the lines
+    const auto [i0, i1] = LinesIn(t.min[u], t.max[u], lo[u], d, n);
+    const auto [j0, j1] = LinesIn(t.min[v], t.max[v], lo[v], d, n);
+    if (i0 > i1 || j0 > j1) continue;
+    const ProjectedTriangle projected(t, axis);
+    for (int j = j0; j <= j1; ++j) {
+      for (int i = i0; i <= i1; ++i) {
+        const double pu = lo[u] + (i + 0.5) * d, pv = lo[v] + (j + 0.5) * d;
+        if (!projected.Crosses(pu, pv)) continue;
+        const double at = std::clamp(
+            t.p[0][axis] - (t.n[u] * (pu - t.p[0][u]) + t.n[v] * (pv - t.p[0][v])) / t.n[axis],
+            t.min[axis], t.max[axis]);
+        if (at < lo[axis] - eps || at > lo[axis] + h + eps) continue;
+        crossings[i + n * j].push_back({std::clamp(at, lo[axis], lo[axis] + h), t.n[axis] > 0});
+      }
+    }
+  }
+}
+
+// Whether a triangle that touches the closed voxel [lo, lo + h]^3 makes it partial: always,
+// unless it lies in the plane of one of the voxel's faces (all three corners within eps), where
+// only the voxel behind it counts, and only when it covers that face's centre.
+bool MakesPartial(const Triangle& t, const Eigen::Vector3d& lo, double h, double eps) {
+  for (int a = 0; a < 3; ++a) {
+    for (int side = 0; side < 2; ++side) {
+      const double plane = lo[a] + side * h;
+      if (std::abs(t.p[0][a] - plane) > eps || std::abs(t.p[1][a] - plane) > eps ||
+          std::abs(t.p[2][a] - plane) > eps) {
+        continue;
+      }
+      // Behind: the normal points out of the voxel through this face.
+      const bool behind = side == 0 ? t.n[a] < 0 : t.n[a] > 0;
+      if (!behind) return false;
+      Eigen::Vector3d center = lo + Eigen::Vector3d::Constant(h / 2);
+      center[a] = plane;
+      return TriangleOverlapsBox(t.p[0], t.p[1], t.p[2], center, Eigen::Vector3d::Zero());
+    }
+  }
+  return true;
+}
+
+// The empty length of [lo, hi] along a line, from its crossings (sorted here): material lies
+// below a crossing that faces up and above one that faces down (several parts may meet at one
+// height).
+double EmptyLength(std::vector<Crossing>& crossings, double lo, double hi, double eps) {
+  std::sort(crossings.begin(), crossings.end(),
+            [](const Crossing& x, const Crossing& y) { return x.at < y.at; });
+  double empty = 0.0, from = lo;
+  bool material_above = false;  // of the previous group of crossings
+  for (std::size_t i = 0; i < crossings.size();) {
+    bool up = false, down = false;
+    const double at = crossings[i].at;
+    for (; i < crossings.size() && crossings[i].at <= at + eps; ++i) {
+      (crossings[i].up ? up : down) = true;
+    }
+    if (!material_above && !up) empty += at - from;
+    material_above = down;
+    from = at;
+  }
+  if (!material_above) empty += hi - from;
+  return empty;
+}
+
+// The state (-1 unknown, 0 empty, 1 material) at the voxel's n^3 points at the centres of its
+// sub-cubes (index x + n (y + n z)), for the lines that cross no surface: a point takes it from
+// the nearest crossing on a line along some axis through it, and shares it with the
+// neighbouring points along each axis that no crossing separates from it.
+std::array<std::int8_t, kMaxSamples> SampleStates(const std::vector<Triangle>& tris,
+                                                  const Eigen::Vector3d& lo, double h, int n,
+                                                  double eps, LineCrossings& crossings) {
+  const double d = h / n;
+  std::array<std::int8_t, kMaxSamples> state;
+  state.fill(-1);
+  std::array<std::int32_t, kMaxSamples> parent;
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto find = [&](std::int32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const std::int32_t step = axis == 0 ? 1 : axis == 1 ? n : n * n;
+    VoxelLineCrossings(tris, axis, lo, h, n, eps, crossings);
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i) {
+        const std::vector<Crossing>& line = crossings[i + n * j];
+        std::array<int, 3> c;
+        c[u] = i;
+        c[v] = j;
+        for (int k = 0; k < n; ++k) {
+          c[axis] = k;
+          const std::int32_t at_index = c[0] + n * (c[1] + n * c[2]);
+          const double at = lo[axis] + (k + 0.5) * d;
+          double nearest = std::numeric_limits<double>::infinity();
+          int material = -1;
+          bool separated = false;  // from the next point along the line
+          for (const Crossing& x : line) {
+            const double gap = std::abs(x.at - at);
+            if (gap > 0 && gap <= nearest) {
+              const int m = (x.at > at) == x.up ? 1 : 0;  // several at one height: material
+              material = gap < nearest ? m : std::max(material, m);
+              nearest = gap;
+            }
+            separated = separated || (x.at >= at && x.at <= at + d);
+          }
+          state[at_index] = static_cast<std::int8_t>(std::max<int>(state[at_index], material));
+          if (k + 1 < n && !separated) {
+            const std::int32_t a = find(at_index), b = find(at_index + step);
+            parent[std::max(a, b)] = std::min(a, b);
+          }
+        }
+      }
+    }
+  }
+  std::array<std::int8_t, kMaxSamples> shared;
+  shared.fill(-1);
+  const std::int32_t samples = n * n * n;
+  for (std::int32_t x = 0; x < samples; ++x) {
+    shared[find(x)] = std::max(shared[find(x)], state[x]);
+  }
+  for (std::int32_t x = 0; x < samples; ++x) state[x] = shared[find(x)];
+  return state;
+}
+
+// The state (0 empty, 1 material) at `at` on a line with sorted crossings, off them: as in
+// EmptyLength.
+int StateAt(const std::vector<Crossing>& crossings, double at, double eps) {
+  bool below_down = false, above_up = false;
+  double below = -std::numeric_limits<double>::infinity();
+  double above = std::numeric_limits<double>::infinity();
+  for (const Crossing& c : crossings) {
+    if (c.at < at && c.at >= below - eps) {
+      below_down = (c.at > below + eps ? false : below_down) || !c.up;
+      below = std::max(below, c.at);
+    } else if (c.at > at && c.at <= above + eps) {
+      above_up = (c.at < above - eps ? false : above_up) || c.up;
+      above = std::min(above, c.at);
+    }
+  }
+  return below_down || above_up ? 1 : 0;
+}
+
+// A height along `axis` inside the voxel at which no triangle reaches the segment between the
+// voxel's lines a and b (neighbours, (i, j) as in LinesIn): below or above all that the
+// triangles' heights over the segment, widened by eps, reach; NaN when there is none.
+double FreeHeight(const std::vector<Triangle>& tris, int axis, const Eigen::Vector3d& lo, double h,
+                  double d, std::pair<int, int> a, std::pair<int, int> b, double eps) {
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const Eigen::Vector2d pa(lo[u] + (a.first + 0.5) * d, lo[v] + (a.second + 0.5) * d);
+  const Eigen::Vector2d pb(lo[u] + (b.first + 0.5) * d, lo[v] + (b.second + 0.5) * d);
+  const Eigen::Vector2d min = pa.cwiseMin(pb).array() - eps, max = pa.cwiseMax(pb).array() + eps;
+  const double bottom = lo[axis], top = lo[axis] + h;
+  double low = top, high = bottom;
+  for (const Triangle& t : tris) {
+    if (t.max[u] < min[0] || t.min[u] > max[0] || t.max[v] < min[1] || t.min[v] > max[1]) {
+      continue;
+    }
+    double from = t.min[axis], to = t.max[axis];
+    if (t.n[axis] != 0) {
+      const auto height = [&](const Eigen::Vector2d& q) {
+        return t.p[0][axis] -
+               (t.n[u] * (q[0] - t.p[0][u]) + t.n[v] * (q[1] - t.p[0][v])) / t.n[axis];
+      };
+      const auto [lo_h, hi_h] = std::minmax(height(pa), height(pb));
+      from = std::max(from, lo_h);
+      to = std::min(to, hi_h);
+    }
+    low = std::min(low, from - 2 * eps);
+    high = std::max(high, to + 2 * eps);
+  }
+  if (low > bottom) return (bottom + std::min(low, top)) / 2;
+  if (high < top) return (std::max(high, bottom) + top) / 2;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+// Buffers reused from voxel to voxel.
+struct FillScratch {
+  LineCrossings crossings, sample_crossings;
+};
+
+// The Fill of the voxel [lo, lo + h]^3 crossed by `tris` (see OccupancyOctree::Fill).
+OccupancyOctree::Fill VoxelFill(const std::vector<Triangle>& tris, const Eigen::Vector3d& lo,
+                                double h, double eps, FillScratch& scratch) {
+  Eigen::Vector3d facing = Eigen::Vector3d::Zero();
+  for (const Triangle& t : tris) facing += t.n.cwiseAbs();
+  int axis = 0;
+  facing.maxCoeff(&axis);
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  // Lines resolve faces square to the axes exactly but for where they cross; a sloping face
+  // costs error in proportion to the lines' spacing anyway, so it gets a quarter of them.
+  const bool square = std::all_of(
+      tris.begin(), tris.end(), [](const Triangle& t) { return (t.n.array() != 0).count() <= 1; });
+  const int n = square ? kMaxLines : kMaxLines / 2;
+  const double d = h / n, bottom = lo[axis], top = lo[axis] + h;
+
+  // The heights over which a line's square prism may differ from the line lie between the
+  // lowest and the highest that the triangles reaching into the prism span there (a triangle
+  // in the prism's side does not reach into it; one square to the axis spans no height).
+  std::array<std::pair<double, double>, kMaxLines * kMaxLines> span;
+  span.fill({top, bottom});
+  const double per_d = 1.0 / d;
+  const auto prisms = [&](double from, double to, double start) {
+    const double first = std::floor(std::clamp((from - start + eps) * per_d, 0.0, double(n)));
+    const double last = std::ceil(std::clamp((to - start - eps) * per_d, 0.0, double(n))) - 1;
+    return std::make_pair(static_cast<int>(first), std::min(n - 1, static_cast<int>(last)));
+  };
+  for (const Triangle& t : tris) {
+    const auto [i0, i1] = prisms(t.min[u], t.max[u], lo[u]);
+    const auto [j0, j1] = prisms(t.min[v], t.max[v], lo[v]);
+    // The triangle's plane: height = base + gu (u - lo[u]) + gv (v - lo[v]).
+    const bool flat = t.n[axis] == 0;
+    const double gu = flat ? 0 : -t.n[u] / t.n[axis], gv = flat ? 0 : -t.n[v] / t.n[axis];
+    const double base = t.p[0][axis] + gu * (lo[u] - t.p[0][u]) + gv * (lo[v] - t.p[0][v]);
+    for (int j = j0; j <= j1; ++j) {
+      for (int i = i0; i <= i1; ++i) {
+        double from = t.min[axis], to = t.max[axis];
+        if (!flat) {
+          // The plane over the part of the prism the triangle's box covers.
+          const double umin = std::max(i * d, t.min[u] - lo[u]);
+          const double umax = std::min((i + 1) * d, t.max[u] - lo[u]);
+          const double vmin = std::max(j * d, t.min[v] - lo[v]);
+          const double vmax = std::min((j + 1) * d, t.max[v] - lo[v]);
+          const double low = base + std::min(gu * umin, gu * umax) + std::min(gv * vmin, gv * vmax);
+          const double high =
+              base + std::max(gu * umin, gu * umax) + std::max(gv * vmin, gv * vmax);
+          from = std::max(from, low - eps);
+          to = std::min(to, high + eps);
+        }
+        from = std::max(from, bottom);
+        to = std::min(to, top);
+        if (to - from > 2 * eps) {
+          auto& [low, high] = span[i + n * j];
+          low = std::min(low, from);
+          high = std::max(high, to);
+        }
+      }
+    }
+  }
+
+  VoxelLineCrossings(tris, axis, lo, h, n, eps, scratch.crossings);
+  // Per line: kCrossed, or the state of a line that crosses no surface (-1 while unknown).
+  constexpr int kCrossed = 2;
+  std::array<int, kMaxLines * kMaxLines> state;
+  double empty = 0.0, error = 0.0;  // in line lengths
+  for (int line = 0; line < n * n; ++line) {
+    std::vector<Crossing>& crossings = scratch.crossings[line];
+    state[line] = crossings.empty() ? -1 : kCrossed;
+    if (!crossings.empty()) empty += EmptyLength(crossings, bottom, top, eps);
+  }
+  // A line that crosses no surface has one state, that of its neighbour at a height where no
+  // triangle reaches between them; repeated while it decides lines.
+  for (bool progress = true; progress;) {
+    progress = false;
+    for (int line = 0; line < n * n; ++line) {
+      if (state[line] >= 0) continue;
+      const int i = line % n, j = line / n;
+      for (const auto& [di, dj] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}}) {
+        const int ni = i + di, nj = j + dj, next = ni + n * nj;
+        if (ni < 0 || ni >= n || nj < 0 || nj >= n || state[next] < 0) continue;
+        const double at = FreeHeight(tris, axis, lo, h, d, {i, j}, {ni, nj}, eps);
+        if (std::isnan(at)) continue;
+        state[line] =
+            state[next] == kCrossed ? StateAt(scratch.crossings[next], at, eps) : state[next];
+        progress = true;
+        break;
+      }
+    }
+  }
+  std::optional<std::array<std::int8_t, kMaxSamples>> samples;
+  for (int line = 0; line < n * n; ++line) {
+    if (state[line] == kCrossed) continue;
+    if (state[line] < 0) {
+      // Rare: the points' states shared through the voxel.
+      if (!samples) samples = SampleStates(tris, lo, h, n, eps, scratch.sample_crossings);
+      std::array<int, 3> c;
+      c[u] = line % n;
+      c[v] = line / n;
+      c[axis] = 0;
+      state[line] = (*samples)[c[0] + n * (c[1] + n * c[2])];
+    }
+    if (state[line] < 0) {
+      empty += h / 2;
+      error += h / 2;
+      span[line] = {top, bottom};
+    } else if (state[line] == 0) {
+      empty += h;
+    }
+  }
+  for (const auto& [low, high] : span) error += std::max(0.0, high - low);
+  const double lines = n * n * h;
+  return {std::clamp(empty / lines, 0.0, 1.0), std::min(error / lines, 1.0)};
+}
+
+}  // namespace
+
+// Builds the tree top-down: each inner node passes its children the triangles that touch them.
+class OctreeBuilder {
+ public:
+  OctreeBuilder(OccupancyOctree& tree, const std::vector<PosedMesh>& meshes,
+                const OccupancyOctree::Progress& progress)
+      : tree_(tree), meshes_(meshes), progress_(progress) {}
+
+  void Run(double voxel) {
+    if (!(voxel > 0.0) || !std::isfinite(voxel)) {
+      throw std::invalid_argument("voxel size must be positive and finite, got " +
+                                  std::to_string(voxel));
+    }
+    tree_.voxel_ = voxel;
+    GatherTriangles();
+    Aabb bounds;
+    for (const auto& v : vertices_) bounds.Extend(v);
+    if (bounds.empty()) bounds.Extend(Eigen::Vector3d::Zero());
+    // Two voxels of padding on the low side and at least two on the high side: a triangle
+    // exactly on a voxel's face touches the voxel on either side, so one voxel is not enough
+    // to keep the root's boundary cells untouched.
+    tree_.origin_W_ = bounds.min - Eigen::Vector3d::Constant(2 * voxel);
+    std::int32_t longest = 1;
+    for (int i = 0; i < 3; ++i) {
+      const double span = std::floor(bounds.size()[i] / voxel) + 5;
+      if (!(span <= double{1 << kMaxDepth})) {
+        throw std::invalid_argument("voxel size " + std::to_string(voxel) + " mm needs " +
+                                    std::to_string(span) + " voxels along an axis; at most " +
+                                    std::to_string(1 << kMaxDepth) + " are supported");
+      }
+      tree_.extent_[i] = static_cast<std::int32_t>(span);
+      longest = std::max(longest, tree_.extent_[i]);
+    }
+    while ((std::int32_t{1} << tree_.depth_) < longest) ++tree_.depth_;
+
+    tree_.nodes_.assign(1, 0);
+    tree_.fills_.assign(1, 0);
+    std::vector<std::int32_t> all(triangle_mesh_.size());
+    std::iota(all.begin(), all.end(), 0);
+    OccupancyOctree::Cell root;
+    root.size = tree_.resolution();
+    Split(root, all, 0);
+    tree_.nodes_.shrink_to_fit();
+    tree_.fills_.shrink_to_fit();
+    vertices_ = {};
+    triangles_ = {};
+    triangle_mesh_ = {};
+    Classify();
+    if (progress_) progress_(1.0);
+  }
+
+ private:
+  void GatherTriangles() {
+    for (std::size_t m = 0; m < meshes_.size(); ++m) {
+      const TriangleMesh* mesh = meshes_[m].mesh;
+      const auto offset = static_cast<std::int32_t>(vertices_.size());
+      if (mesh == nullptr || mesh->faces.empty()) continue;
+      for (const auto& v : mesh->vertices) vertices_.push_back(meshes_[m].X_WM * v);
+      for (const auto& f : mesh->faces) {
+        triangles_.push_back({f[0] + offset, f[1] + offset, f[2] + offset});
+        triangle_mesh_.push_back(static_cast<std::int32_t>(m));
+      }
+    }
+  }
+
+  // Fills the subtree of `cell`, whose box the triangles `tris` touch.
+  void Split(const OccupancyOctree::Cell& cell, const std::vector<std::int32_t>& tris, int level) {
+    auto& word = tree_.nodes_[cell.node];
+    if (tris.empty()) {
+      word = OccupancyOctree::kLeaf;
+      ++tree_.leaves_;
+      return;
+    }
+    if (cell.size == 1) {
+      const Eigen::Vector3d lo =
+          tree_.origin_W_ + tree_.voxel_ * Eigen::Vector3d(cell.min[0], cell.min[1], cell.min[2]);
+      // The same margin as TriangleOverlapsBox's for coordinates of this magnitude.
+      const double eps =
+          64 * std::numeric_limits<double>::epsilon() * (lo.cwiseAbs().maxCoeff() + tree_.voxel_);
+      bool partial = false;
+      voxel_tris_.clear();
+      for (const std::int32_t t : tris) {
+        const auto& f = triangles_[t];
+        Triangle tri{{vertices_[f[0]], vertices_[f[1]], vertices_[f[2]]}, {}, {}, {}};
+        tri.n = (tri.p[1] - tri.p[0]).cross(tri.p[2] - tri.p[0]);
+        tri.min = tri.p[0].cwiseMin(tri.p[1]).cwiseMin(tri.p[2]);
+        tri.max = tri.p[0].cwiseMax(tri.p[1]).cwiseMax(tri.p[2]);
+        partial = partial || MakesPartial(tri, lo, tree_.voxel_, eps);
+        voxel_tris_.push_back(tri);
+      }
+      if (!partial) {
+        word = OccupancyOctree::kLeaf;
+        ++tree_.leaves_;
+        return;
+      }
+      const OccupancyOctree::Fill fill = VoxelFill(voxel_tris_, lo, tree_.voxel_, eps, scratch_);
+      // Rounded to kFillUnit-ths; the error also covers the rounding of the fraction.
+      const auto empty = static_cast<std::uint16_t>(std::lround(fill.empty * kFillUnit));
+      const auto error = static_cast<std::uint16_t>(
+          std::min<double>(kFillUnit, std::ceil(fill.error * kFillUnit + 0.5)));
+      tree_.fills_[cell.node] = static_cast<std::uint16_t>(empty | (error << 8));
+      std::vector<std::int32_t> touching;
+      for (const std::int32_t t : tris) touching.push_back(triangle_mesh_[t]);
+      std::sort(touching.begin(), touching.end());
+      touching.erase(std::unique(touching.begin(), touching.end()), touching.end());
+      word = OccupancyOctree::kLeaf | OccupancyOctree::kPartialBit;
+      if (touching.size() == 1) {
+        word |= static_cast<std::uint32_t>(touching.front());
+      } else {
+        word |= OccupancyOctree::kListBit | static_cast<std::uint32_t>(tree_.multi_meshes_.size());
+        tree_.multi_meshes_.push_back(std::move(touching));
+      }
+      ++tree_.leaves_;
+      return;
+    }
+    const auto first = static_cast<std::uint32_t>(tree_.nodes_.size());
+    if (first + 8 > OccupancyOctree::kLeaf) throw std::length_error("octree too large");
+    word = first;
+    tree_.nodes_.resize(first + 8, 0);
+    tree_.fills_.resize(first + 8, 0);
+
+    const std::int32_t half = cell.size / 2;
+    const double h = tree_.voxel_;
+    const Eigen::Vector3d lo =
+        tree_.origin_W_ + h * Eigen::Vector3d(cell.min[0], cell.min[1], cell.min[2]);
+    const Eigen::Vector3d mid = lo + Eigen::Vector3d::Constant(half * h);
+    const Eigen::Vector3d child_half = Eigen::Vector3d::Constant(0.5 * half * h);
+    const double margin = 1e-12 * (mid.cwiseAbs().maxCoeff() + cell.size * h);
+    std::array<std::vector<std::int32_t>, 8> child_tris;
+    for (const std::int32_t t : tris) {
+      const auto& f = triangles_[t];
+      const Eigen::Vector3d& a = vertices_[f[0]];
+      const Eigen::Vector3d& b = vertices_[f[1]];
+      const Eigen::Vector3d& c = vertices_[f[2]];
+      const Eigen::Vector3d tmin = a.cwiseMin(b).cwiseMin(c);
+      const Eigen::Vector3d tmax = a.cwiseMax(b).cwiseMax(c);
+      // Which halves the triangle's box reaches along each axis, counting a margin at the
+      // mid-plane as both (TriangleOverlapsBox then decides, with its own margin); a triangle
+      // that reaches one child only touches it for sure.
+      int lo_side[3], hi_side[3];
+      for (int i = 0; i < 3; ++i) {
+        lo_side[i] = tmin[i] <= mid[i] + margin ? 0 : 1;
+        hi_side[i] = tmax[i] >= mid[i] - margin ? 1 : 0;
+      }
+      const bool single =
+          lo_side[0] == hi_side[0] && lo_side[1] == hi_side[1] && lo_side[2] == hi_side[2];
+      for (int z = lo_side[2]; z <= hi_side[2]; ++z) {
+        for (int y = lo_side[1]; y <= hi_side[1]; ++y) {
+          for (int x = lo_side[0]; x <= hi_side[0]; ++x) {
+            const int i = x | (y << 1) | (z << 2);
+            if (!single) {
+              const Eigen::Vector3d center =
+                  lo + Eigen::Vector3d(x * half * h, y * half * h, z * half * h) + child_half;
+              if (!TriangleOverlapsBox(a, b, c, center, child_half)) continue;
+            }
+            child_tris[i].push_back(t);
+          }
+        }
+      }
+    }
+    for (int i = 0; i < 8; ++i) {
+      const OccupancyOctree::Cell child = OccupancyOctree::Child(cell, first, i);
+      std::vector<std::int32_t> own = std::move(child_tris[i]);
+      Split(child, own, level + 1);
+      // Progress counts the 64 grandchildren of the root (eight for a root child that is a
+      // leaf).
+      if (progress_ && level <= 1) {
+        if (level == 1) {
+          done_ += 1;
+        } else if (OccupancyOctree::IsLeaf(tree_.nodes_[child.node])) {
+          done_ += 8;
+        }
+        progress_(0.9 * done_ / 64.0);
+      }
+    }
+  }
+
+  // The state at p_W: full, with the first mesh whose winding number there is at least 1/2
+  // in magnitude, or empty (-1).
+  std::int32_t StateAt(const Eigen::Vector3d& p_W) const {
+    for (std::size_t m = 0; m < meshes_.size(); ++m) {
+      if (meshes_[m].mesh == nullptr || !mesh_box_W_[m].Intersects(Aabb{p_W, p_W})) continue;
+      const Eigen::Vector3d p_M = meshes_[m].X_WM.inverse() * p_W;
+      if (std::abs(WindingNumber(*meshes_[m].mesh, p_M)) >= 0.5) {
+        return static_cast<std::int32_t>(m);
+      }
+    }
+    return -1;
+  }
+
+  // Joins untouched leaves that share a face into components and decides each one's state.
+  // Leaves near a mesh that is not closed are decided one by one (an opening wider than a
+  // voxel joins its inside and outside), joined only to leaves of the same state, and
+  // components of equal state that touch are merged afterwards.
+  void Classify() {
+    auto& nodes = tree_.nodes_;
+    mesh_box_W_.resize(meshes_.size());
+    std::vector<Aabb> open_box_W;
+    std::map<const TriangleMesh*, bool> closed;  // parts often share one mesh
+    for (std::size_t m = 0; m < meshes_.size(); ++m) {
+      const TriangleMesh* mesh = meshes_[m].mesh;
+      if (mesh == nullptr) continue;
+      mesh_box_W_[m] = TransformBox(meshes_[m].X_WM, mesh->Bounds());
+      auto [it, inserted] = closed.try_emplace(mesh, false);
+      if (inserted) {
+        const MeshCheck check = CheckMesh(*mesh);
+        it->second = check.closed() && check.consistently_oriented();
+      }
+      if (!it->second) open_box_W.push_back(mesh_box_W_[m]);
+    }
+    const auto untouched = [&](std::int32_t node) {
+      return OccupancyOctree::IsLeaf(nodes[node]) &&
+             (nodes[node] & OccupancyOctree::kPartialBit) == 0;
+    };
+    // Per leaf: kUnknown, or the state found at its centre (-1 empty, else the mesh).
+    constexpr std::int32_t kUnknown = -2;
+    std::vector<std::int32_t> known;
+    if (!open_box_W.empty()) {
+      known.assign(nodes.size(), kUnknown);
+      tree_.ForEachLeaf([&](const OccupancyOctree::Cell& cell) {
+        if (!untouched(cell.node)) return;
+        const Eigen::Vector3d p_W = tree_.Box_W(cell).center();
+        for (const Aabb& box : open_box_W) {
+          if (box.Intersects(Aabb{p_W, p_W})) {
+            known[cell.node] = StateAt(p_W);
+            break;
+          }
+        }
+      });
+    }
+    const auto kind = [&](std::int32_t node) {
+      return known.empty() ? kUnknown : std::min<std::int32_t>(known[node], 0);
+    };
+
+    std::vector<std::int32_t> parent(nodes.size(), -1);
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      if (untouched(static_cast<std::int32_t>(i))) parent[i] = static_cast<std::int32_t>(i);
+    }
+    tree_.ForEachFaceNeighbours([&](const auto& a, const auto& b, int) {
+      if (!untouched(a.node) || !untouched(b.node) || kind(a.node) != kind(b.node)) return;
+      const std::int32_t ra = FindRoot(parent, a.node), rb = FindRoot(parent, b.node);
+      if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+    });
+
+    // Components in the order of their first leaf, each with its state.
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      if (parent[i] >= 0) parent[i] = FindRoot(parent, static_cast<std::int32_t>(i));
+    }
+    std::vector<std::int32_t> component_of_root(nodes.size(), -1);
+    std::vector<std::int32_t> state;  // -1 empty, else a mesh containing it
+    tree_.ForEachLeaf([&](const OccupancyOctree::Cell& cell) {
+      if (!untouched(cell.node)) return;
+      std::int32_t& id = component_of_root[parent[cell.node]];
+      if (id < 0) {
+        id = static_cast<std::int32_t>(state.size());
+        // The centre of an untouched cell is at least half a voxel from every surface, where
+        // the winding number is far from the 1/2 threshold.
+        state.push_back(kind(cell.node) == kUnknown ? StateAt(tree_.Box_W(cell).center())
+                                                    : known[cell.node]);
+      }
+    });
+    known = {};
+    // The first-pass component of each untouched leaf.
+    const auto first_pass = [&](std::int32_t node) { return component_of_root[parent[node]]; };
+
+    // Second pass: components of equal state that share a face are one.
+    std::vector<std::int32_t> merged(state.size());
+    std::iota(merged.begin(), merged.end(), 0);
+    if (!open_box_W.empty()) {
+      tree_.ForEachFaceNeighbours([&](const auto& a, const auto& b, int) {
+        if (!untouched(a.node) || !untouched(b.node)) return;
+        const std::int32_t ca = first_pass(a.node), cb = first_pass(b.node);
+        if ((state[ca] < 0) != (state[cb] < 0)) return;
+        const std::int32_t ra = FindRoot(merged, ca), rb = FindRoot(merged, cb);
+        if (ra != rb) merged[std::max(ra, rb)] = std::min(ra, rb);
+      });
+    }
+    std::vector<std::int32_t> final_id(state.size(), -1);
+    const std::int32_t n = tree_.resolution();
+    tree_.ForEachLeaf([&](const OccupancyOctree::Cell& cell) {
+      if (!untouched(cell.node)) return;
+      const std::int32_t first = FindRoot(merged, first_pass(cell.node));
+      std::int32_t& id = final_id[first];
+      if (id < 0) {
+        if (tree_.components_.size() >= OccupancyOctree::kPayload) {
+          throw std::length_error("octree has too many components");
+        }
+        id = static_cast<std::int32_t>(tree_.components_.size());
+        OccupancyOctree::Component component;
+        component.state = state[first] < 0 ? CellState::kEmpty : CellState::kFull;
+        component.mesh = state[first];
+        tree_.components_.push_back(component);
+      }
+      auto& component = tree_.components_[id];
+      component.voxels += std::int64_t{cell.size} * cell.size * cell.size;
+      for (int i = 0; i < 3; ++i) {
+        if (cell.min[i] == 0 || cell.min[i] + cell.size == n) component.exterior = true;
+      }
+      nodes[cell.node] = OccupancyOctree::kLeaf | static_cast<std::uint32_t>(id);
+    });
+    tree_.components_.shrink_to_fit();
+  }
+
+  OccupancyOctree& tree_;
+  const std::vector<PosedMesh>& meshes_;
+  const OccupancyOctree::Progress& progress_;
+  std::vector<Eigen::Vector3d> vertices_;
+  std::vector<std::array<std::int32_t, 3>> triangles_;
+  std::vector<std::int32_t> triangle_mesh_;
+  std::vector<Aabb> mesh_box_W_;
+  std::vector<Triangle> voxel_tris_;  // the triangles of the voxel being split, reused
+  FillScratch scratch_;
+  int done_ = 0;
+};
+
+OccupancyOctree OccupancyOctree::Build(const std::vector<PosedMesh>& meshes, double voxel,
+                                       const Progress& progress) {
+  OccupancyOctree tree;
+  OctreeBuilder(tree, meshes, progress).Run(voxel);
+  return tree;
+}
+
+OccupancyOctree::Cell OccupancyOctree::Child(const Cell& parent, std::uint32_t first, int i) {
+  Cell c;
+  c.node = static_cast<std::int32_t>(first) + i;
+  c.size = parent.size / 2;
+  for (int a = 0; a < 3; ++a) c.min[a] = parent.min[a] + ((i >> a) & 1) * c.size;
+  return c;
+}
+
+CellState OccupancyOctree::state(const Cell& cell) const {
+  const std::uint32_t word = nodes_[cell.node];
+  assert(IsLeaf(word));
+  if (word & kPartialBit) return CellState::kPartial;
+  return components_[word & kPayload].state;
+}
+
+std::int32_t OccupancyOctree::component(const Cell& cell) const {
+  const std::uint32_t word = nodes_[cell.node];
+  assert(IsLeaf(word));
+  if (word & kPartialBit) return -1;
+  return static_cast<std::int32_t>(word & kPayload);
+}
+
+OccupancyOctree::Fill OccupancyOctree::fill(const Cell& cell) const {
+  if (state(cell) != CellState::kPartial) return {};
+  const std::uint16_t bits = fills_[cell.node];
+  return {(bits & 0xff) / double{kFillUnit}, (bits >> 8) / double{kFillUnit}};
+}
+
+std::vector<std::int32_t> OccupancyOctree::touching_meshes(const Cell& cell) const {
+  const std::uint32_t word = nodes_[cell.node];
+  if (!IsLeaf(word) || !(word & kPartialBit)) return {};
+  if (word & kListBit) return multi_meshes_[word & kPayload];
+  return {static_cast<std::int32_t>(word & kPayload)};
+}
+
+Aabb OccupancyOctree::Box_W(const Cell& cell) const {
+  const Eigen::Vector3d lo =
+      origin_W_ + voxel_ * Eigen::Vector3d(cell.min[0], cell.min[1], cell.min[2]);
+  return Aabb{lo, lo + Eigen::Vector3d::Constant(voxel_ * cell.size)};
+}
+
+void OccupancyOctree::ForEachLeaf(const std::function<void(const Cell&)>& f) const {
+  const std::int32_t n = resolution();
+  ForEachLeafIn({0, 0, 0}, {n, n, n}, f);
+}
+
+void OccupancyOctree::CellProc(const Cell& c,
+                               const std::function<void(const Cell&, const Cell&, int)>& f) const {
+  const std::uint32_t word = nodes_[c.node];
+  if (IsLeaf(word)) return;
+  for (int i = 0; i < 8; ++i) CellProc(Child(c, word, i), f);
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int i = 0; i < 8; ++i) {
+      if ((i >> axis) & 1) continue;
+      FaceProc(Child(c, word, i), Child(c, word, i | (1 << axis)), axis, f);
+    }
+  }
+}
+
+void OccupancyOctree::FaceProc(const Cell& a, const Cell& b, int axis,
+                               const std::function<void(const Cell&, const Cell&, int)>& f) const {
+  const std::uint32_t wa = nodes_[a.node], wb = nodes_[b.node];
+  if (IsLeaf(wa) && IsLeaf(wb)) {
+    f(a, b, axis);
+    return;
+  }
+  // The four children pairs across the shared face: a's children on its high side, b's on
+  // its low side, matched by the other two bits.
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  for (int k = 0; k < 4; ++k) {
+    const int bits = (((k >> 0) & 1) << u) | (((k >> 1) & 1) << v);
+    const Cell ca = IsLeaf(wa) ? a : Child(a, wa, bits | (1 << axis));
+    const Cell cb = IsLeaf(wb) ? b : Child(b, wb, bits);
+    FaceProc(ca, cb, axis, f);
+  }
+}
+
+void OccupancyOctree::ForEachFaceNeighbours(
+    const std::function<void(const Cell&, const Cell&, int)>& f) const {
+  Cell root;
+  root.size = resolution();
+  CellProc(root, f);
+}
+
+void OccupancyOctree::ForEachLeafIn(const std::array<std::int32_t, 3>& min,
+                                    const std::array<std::int32_t, 3>& max,
+                                    const std::function<void(const Cell&)>& f) const {
+  std::vector<Cell> stack;
+  Cell root;
+  root.size = resolution();
+  stack.push_back(root);
+  const auto overlaps = [&](const Cell& c) {
+    for (int i = 0; i < 3; ++i) {
+      if (c.min[i] >= max[i] || min[i] >= c.min[i] + c.size) return false;
+    }
+    return true;
+  };
+  if (!overlaps(root)) return;
+  while (!stack.empty()) {
+    const Cell c = stack.back();
+    stack.pop_back();
+    const std::uint32_t word = nodes_[c.node];
+    if (IsLeaf(word)) {
+      f(c);
+      continue;
+    }
+    for (int i = 7; i >= 0; --i) {
+      const Cell child = Child(c, word, i);
+      if (overlaps(child)) stack.push_back(child);
+    }
+  }
+}
+
+OccupancyOctree::Cell OccupancyOctree::Locate(const std::array<std::int32_t, 3>& v) const {
+  Cell c;
+  c.size = resolution();
+  while (!IsLeaf(nodes_[c.node])) {
+    const std::int32_t half = c.size / 2;
+    int i = 0;
+    for (int a = 0; a < 3; ++a) {
+      if (v[a] >= c.min[a] + half) i |= 1 << a;
+    }
+    c = Child(c, nodes_[c.node], i);
+  }
+  return c;
+}
+
+std::size_t OccupancyOctree::MemoryBytes() const {
+  std::size_t bytes = sizeof(*this) + nodes_.capacity() * sizeof(std::uint32_t) +
+                      fills_.capacity() * sizeof(std::uint16_t) +
+                      components_.capacity() * sizeof(Component) +
+                      multi_meshes_.capacity() * sizeof(std::vector<std::int32_t>);
+  for (const auto& list : multi_meshes_) bytes += list.capacity() * sizeof(std::int32_t);
+  return bytes;
+}
+
+}  // namespace mechanist
