@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <queue>
 #include <set>
 
 #include "kernel/geometry/line_geometry.h"
 #include "reasoning/analysis.h"
+#include "reasoning/pair_graph.h"
+#include "reasoning/pair_recognition.h"
 
 namespace mechanist {
 namespace {
@@ -124,32 +125,13 @@ std::vector<FeatureRef> LooseThreadsAcross(const Assembly& assembly, const std::
 
 }  // namespace
 
-std::vector<std::size_t> CarriedParts(const Assembly& assembly, const std::vector<Pair>& pairs,
-                                      std::size_t adjustment) {
+std::vector<std::size_t> CarriedParts(const Assembly& assembly, const PairGraph& graph,
+                                      const std::vector<Pair>& pairs, std::size_t adjustment) {
   const std::size_t start = assembly.adjustments().at(adjustment).moves;
-  std::vector<std::vector<std::size_t>> next(assembly.parts().size());
-  for (const Pair& pair : pairs) {
-    if (Meshes(pair.type) || pair.a.part == pair.b.part) continue;
-    next[pair.a.part].push_back(pair.b.part);
-    next[pair.b.part].push_back(pair.a.part);
-  }
-  std::vector<bool> seen(assembly.parts().size(), false);
-  std::vector<std::size_t> carried;
-  std::queue<std::size_t> queue;
-  seen[start] = true;
-  queue.push(start);
-  while (!queue.empty()) {
-    const std::size_t p = queue.front();
-    queue.pop();
-    carried.push_back(p);
-    for (const std::size_t q : next[p]) {
-      if (seen[q] || assembly.part(q).ground) continue;
-      seen[q] = true;
-      queue.push(q);
-    }
-  }
-  std::sort(carried.begin(), carried.end());
-  return carried;
+  // Across every pair but meshing teeth, and into no ground part.
+  return graph.Reachable({&start, 1}, [&](std::size_t pair, std::size_t, std::size_t to) {
+    return !Meshes(pairs[pair].type) && !assembly.part(to).ground;
+  });
 }
 
 GoalError MeasureGoal(const Assembly& assembly, const AssemblyState& state, std::size_t goal) {
@@ -191,9 +173,10 @@ AdjustmentSummary SolveAdjustments(const Assembly& assembly, const std::vector<P
   AdjustmentSummary summary;
   const std::size_t n = assembly.adjustments().size();
   summary.adjustments.resize(n);
+  const PairGraph graph(assembly, pairs);
   for (std::size_t k = 0; k < n; ++k) {
     AdjustmentOutcome& out = summary.adjustments[k];
-    out.carried = CarriedParts(assembly, pairs, k);
+    out.carried = CarriedParts(assembly, graph, pairs, k);
     const std::set<std::size_t> carried(out.carried.begin(), out.carried.end());
     out.loosened = LooseThreadsAcross(assembly, pairs, carried);
     for (const Goal& goal : assembly.goals()) {
@@ -277,14 +260,16 @@ Assembly ApplyAdjustments(const Assembly& assembly, const AdjustmentSummary& sum
 
 Assembly Adjusted(const Assembly& assembly, AdjustmentSummary* summary) {
   if (assembly.adjustments().empty() || assembly.goals().empty()) return assembly;
-  AdjustmentSummary solved = SolveAdjustments(assembly, Analyze(assembly).pairs);
+  // The pairs alone, as recognised at the file's poses: the motion of the unadjusted
+  // assembly is not needed.
+  AdjustmentSummary solved = SolveAdjustments(assembly, RecognizePairs(assembly).pairs);
   Assembly adjusted = ApplyAdjustments(assembly, solved);
   if (summary) *summary = std::move(solved);
   return adjusted;
 }
 
-void SuggestAdjustments(const Assembly& assembly, const std::vector<Pair>& pairs,
-                        std::vector<Diagnostic>* diagnostics) {
+void SuggestAdjustments(const Assembly& assembly, const PairGraph& graph,
+                        const std::vector<Pair>& pairs, std::vector<Diagnostic>* diagnostics) {
   if (assembly.adjustments().empty()) return;  // nothing to suggest: no finding is read
   static const std::set<std::string> kNearMisses = {
       "gear_center_distance",        "gear_axes_not_parallel",   "worm_center_distance",
@@ -292,7 +277,9 @@ void SuggestAdjustments(const Assembly& assembly, const std::vector<Pair>& pairs
   std::vector<std::set<std::string>> carried;
   for (std::size_t k = 0; k < assembly.adjustments().size(); ++k) {
     std::set<std::string> ids;
-    for (const std::size_t p : CarriedParts(assembly, pairs, k)) ids.insert(assembly.part(p).id);
+    for (const std::size_t p : CarriedParts(assembly, graph, pairs, k)) {
+      ids.insert(assembly.part(p).id);
+    }
     carried.push_back(std::move(ids));
   }
   for (Diagnostic& d : *diagnostics) {

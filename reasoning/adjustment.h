@@ -9,15 +9,16 @@
 #include "kernel/assembly/diagnostic.h"
 #include "kernel/solvers/least_squares.h"
 #include "reasoning/pair.h"
+#include "reasoning/pair_graph.h"
 
 namespace mechanist {
 
 /// The parts that move with adjustment `adjustment`: its `moves` part and every part held to
-/// it through `pairs`, found by walking the pairs from it without entering a ground part and
-/// without crossing a gear, worm-gear or rack-and-pinion mesh (a mesh transmits motion, it
-/// does not carry). Ascending indices.
-std::vector<std::size_t> CarriedParts(const Assembly& assembly, const std::vector<Pair>& pairs,
-                                      std::size_t adjustment);
+/// it through `pairs` (whose graph is `graph`), found by walking the pairs from it without
+/// entering a ground part and without crossing a gear, worm-gear or rack-and-pinion mesh (a
+/// mesh transmits motion, it does not carry). Ascending indices.
+std::vector<std::size_t> CarriedParts(const Assembly& assembly, const PairGraph& graph,
+                                      const std::vector<Pair>& pairs, std::size_t adjustment);
 
 /// How far a goal is from being met, at some poses.
 struct GoalError {
@@ -89,7 +90,7 @@ Assembly Adjusted(const Assembly& assembly, AdjustmentSummary* summary = nullptr
 /// For every near miss between two parts (a gear off by a little) that an adjustment of the
 /// file can fix (it carries one of the two parts), the diagnostic with " (adjustment ID can
 /// fix this: mechanist adjust)" appended.
-void SuggestAdjustments(const Assembly& assembly, const std::vector<Pair>& pairs,
-                        std::vector<Diagnostic>* diagnostics);
+void SuggestAdjustments(const Assembly& assembly, const PairGraph& graph,
+                        const std::vector<Pair>& pairs, std::vector<Diagnostic>* diagnostics);
 
 }  // namespace mechanist

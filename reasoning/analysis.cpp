@@ -1,6 +1,7 @@
 #include "reasoning/analysis.h"
 
 #include <iterator>
+#include <memory>
 
 #include "kernel/assembly/assembly_check.h"
 #include "reasoning/adjustment.h"
@@ -16,7 +17,8 @@ Analysis Analyze(const Assembly& assembly, const std::vector<Pair>& extra) {
   Recognition recognition = RecognizePairs(assembly);
   analysis.pairs = std::move(recognition.pairs);
   analysis.pairs.insert(analysis.pairs.end(), extra.begin(), extra.end());
-  analysis.subassemblies = PairGraph(assembly, analysis.pairs).Subassemblies();
+  analysis.graph = std::make_shared<const PairGraph>(assembly, analysis.pairs);
+  analysis.subassemblies = analysis.graph->Subassemblies();
   analysis.subassembly_of.assign(assembly.parts().size(), 0);
   for (std::size_t s = 0; s < analysis.subassemblies.size(); ++s) {
     for (std::size_t part : analysis.subassemblies[s].parts) analysis.subassembly_of[part] = s;
@@ -33,7 +35,7 @@ Analysis Analyze(const Assembly& assembly, const std::vector<Pair>& extra) {
                                 std::make_move_iterator(found->end()));
     found->clear();
   }
-  SuggestAdjustments(assembly, analysis.pairs, &analysis.diagnostics);
+  SuggestAdjustments(assembly, *analysis.graph, analysis.pairs, &analysis.diagnostics);
   SortDiagnosticRuns(&analysis.diagnostics, run_starts);
   return analysis;
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "kernel/assembly/assembly.h"
@@ -16,6 +17,8 @@ struct Analysis {
   std::vector<Pair> pairs;
   std::vector<Subassembly> subassemblies;
   std::vector<std::size_t> subassembly_of;  ///< per part: index into `subassemblies`
+  /// The pair graph of `pairs` (adjacency, reachability); shared by copies of the analysis.
+  std::shared_ptr<const PairGraph> graph;
   /// Mobility and the drivers' motion; its findings are moved into `diagnostics`.
   MotionAnalysis motion;
   /// Description checks (meshes, features), recognition's near misses and the motion

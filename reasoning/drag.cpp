@@ -23,8 +23,7 @@ DragResult Drag(const Assembly& assembly, const Analysis& analysis, const DragRe
     result.axis = p.a.part == request.part ? p.a : p.b;
     break;
   }
-  result.motion = SolveImposed(assembly, analysis.pairs, analysis.subassemblies,
-                               analysis.subassembly_of, {{result.axis, request.rotate, 1.0, {}}});
+  result.motion = SolveImposed(analysis.motion, {{result.axis, request.rotate, 1.0, {}}});
   result.part_freedoms = analysis.motion.mobility.part_freedoms[request.part];
   for (std::size_t i = 0; i < analysis.pairs.size(); ++i) {
     const Pair& p = analysis.pairs[i];

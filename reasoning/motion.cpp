@@ -5,7 +5,9 @@
 #include <cmath>
 #include <deque>
 #include <map>
+#include <memory>
 #include <span>
+#include <stdexcept>
 
 #include "kernel/support/compressed_rows.h"
 #include "kernel/support/enum_names.h"
@@ -25,15 +27,16 @@ constexpr EnumNames<MotionKind, 4> kMotionKindNames{{
     {MotionKind::kScrew, "screw"},
 }};
 
+}  // namespace
+
 /// The velocity analysis of one assembly: its model, its constraint rows reduced once, and
-/// the scenarios (drivers, drags) solved on copies of that reduction.
-class Solver {
+/// the scenarios (drivers, drags, a joint's range) solved on copies of that reduction.
+class MotionModel {
  public:
-  Solver(const Assembly& assembly, const std::vector<Pair>& pairs,
-         const std::vector<Subassembly>& subassemblies,
-         const std::vector<std::size_t>& subassembly_of, std::vector<AxisSegment> axes_W = {})
+  MotionModel(const Assembly& assembly, const std::vector<Pair>& pairs,
+              const std::vector<Subassembly>& subassemblies,
+              const std::vector<std::size_t>& subassembly_of, std::vector<AxisSegment> axes_W = {})
       : assembly_(assembly),
-        pairs_(pairs),
         model_(assembly, pairs, subassemblies, subassembly_of, std::move(axes_W)),
         structural_(model_.freedoms().size(), kTolerance),
         mm_per_length_(ExactReal::FromDecimal(assembly.units().mm_per_length)) {
@@ -48,10 +51,13 @@ class Solver {
     }
     std::vector<std::pair<std::size_t, std::pair<std::size_t, std::size_t>>> edges;
     has_pair_.assign(model_.body_count(), false);
-    for (std::size_t i = 0; i < pairs_.size(); ++i) {
-      self_locking_worms_ |= pairs_[i].type == PairType::kWormGear && pairs_[i].self_locking;
-      const std::size_t a = model_.body_of_part(pairs_[i].a.part);
-      const std::size_t b = model_.body_of_part(pairs_[i].b.part);
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      if (pairs[i].type == PairType::kWormGear) {
+        worms_.emplace(i, pairs[i]);
+        self_locking_worms_ |= pairs[i].self_locking;
+      }
+      const std::size_t a = model_.body_of_part(pairs[i].a.part);
+      const std::size_t b = model_.body_of_part(pairs[i].b.part);
       has_pair_[a] = has_pair_[b] = true;
       if (a == b) continue;
       edges.push_back({a, {b, i}});
@@ -96,7 +102,7 @@ class Solver {
         motion.reason = labels[i] + " cannot move: the pairs lock its motion";
       } else if (unlocked.AddRow(row, Rational(1)) == LinearSystem::Outcome::kInconsistent) {
         motion.reason = labels[i] + " cannot move: it would drive worm gear " +
-                        PairName(locked_worms.front()) +
+                        WormName(locked_worms.front()) +
                         " from its wheel, and that worm gear is not back-drivable";
       } else {
         motion.contradiction = true;
@@ -109,8 +115,13 @@ class Solver {
     return motion;
   }
 
-  std::string PairName(std::size_t pair) const {
-    return assembly_.FeatureName(pairs_[pair].a) + " + " + assembly_.FeatureName(pairs_[pair].b);
+  /// The imposed motion's feature, for messages.
+  std::string Label(const ImposedMotion& m) const { return assembly_.FeatureName(m.feature); }
+
+  /// "a/f + b/g" for a worm gear pair.
+  std::string WormName(std::size_t pair) const {
+    const Pair& p = worms_.at(pair);
+    return assembly_.FeatureName(p.a) + " + " + assembly_.FeatureName(p.b);
   }
 
   /// Whether a part of `body` is in a pair (with a part of another body or of its own).
@@ -162,7 +173,7 @@ class Solver {
 
   /// The worm's rotation relative to the body carrying both axes, held at zero.
   LinearSystem::Row WormLock(std::size_t pair) const {
-    const Pair& p = pairs_[pair];
+    const Pair& p = worms_.at(pair);
     const std::size_t carrier = *model_.CommonCarrier(p.a, p.b);
     return model_.Angular(model_.body_of_part(p.a.part), carrier, model_.WorldAxis(p.a).direction);
   }
@@ -184,11 +195,11 @@ class Solver {
       queue.pop_front();
       if (body == model_.ground()) continue;
       for (const auto& [other, pair] : edges_[body]) {
-        const Pair& p = pairs_[pair];
-        const bool into_worm = p.type == PairType::kWormGear && p.self_locking &&
-                               body == model_.body_of_part(p.b.part) &&
-                               other == model_.body_of_part(p.a.part);
-        if (into_worm && !seen[other] && model_.CommonCarrier(p.a, p.b)) {
+        const auto worm = worms_.find(pair);
+        const Pair* p = worm == worms_.end() ? nullptr : &worm->second;
+        const bool into_worm = p && p->self_locking && body == model_.body_of_part(p->b.part) &&
+                               other == model_.body_of_part(p->a.part);
+        if (into_worm && !seen[other] && model_.CommonCarrier(p->a, p->b)) {
           locked.push_back(pair);
           continue;
         }
@@ -265,7 +276,8 @@ class Solver {
   }
 
   const Assembly& assembly_;
-  const std::vector<Pair>& pairs_;
+  std::map<std::size_t, Pair> worms_;  // the worm gear pairs, by index: the model keeps no
+                                       // reference to its analysis' pairs, which may move
   KinematicModel model_;
   LinearSystem structural_;
   std::vector<LinearSystem::Outcome> outcomes_;
@@ -275,6 +287,8 @@ class Solver {
   bool self_locking_worms_ = false;  // whether any worm gear pair is self-locking
   std::vector<bool> has_pair_;       // per body: HasPair
 };
+
+namespace {
 
 std::vector<ImposedMotion> DriverMotions(const Assembly& assembly) {
   std::vector<ImposedMotion> imposed;
@@ -341,26 +355,26 @@ const DrivenMotion* MotionAnalysis::ForExpectations() const {
   return driven.empty() ? nullptr : &driven.back();
 }
 
-DrivenMotion SolveImposed(const Assembly& assembly, const std::vector<Pair>& pairs,
-                          const std::vector<Subassembly>& subassemblies,
-                          const std::vector<std::size_t>& subassembly_of,
-                          const std::vector<ImposedMotion>& imposed) {
-  const Solver solver(assembly, pairs, subassemblies, subassembly_of);
+DrivenMotion SolveImposed(const MotionAnalysis& motion, const std::vector<ImposedMotion>& imposed) {
+  if (!motion.model)
+    throw std::invalid_argument("SolveImposed: a motion analysis without its model");
   std::vector<std::string> labels;
-  for (const ImposedMotion& m : imposed) labels.push_back(assembly.FeatureName(m.feature));
-  return solver.Solve(imposed, labels);
+  for (const ImposedMotion& m : imposed) labels.push_back(motion.model->Label(m));
+  return motion.model->Solve(imposed, labels);
 }
 
 MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& pairs,
                              const std::vector<Subassembly>& subassemblies,
                              const std::vector<std::size_t>& subassembly_of,
                              std::vector<AxisSegment> axes_W) {
-  const Solver solver(assembly, pairs, subassemblies, subassembly_of, std::move(axes_W));
-  const KinematicModel& model = solver.model();
   MotionAnalysis result;
+  result.model = std::make_shared<const MotionModel>(assembly, pairs, subassemblies, subassembly_of,
+                                                     std::move(axes_W));
+  const MotionModel& motion_model = *result.model;
+  const KinematicModel& model = motion_model.model();
   result.diagnostics = model.diagnostics();
   Mobility& mobility = result.mobility;
-  mobility.dof = static_cast<int>(solver.structural().nullity());
+  mobility.dof = static_cast<int>(motion_model.structural().nullity());
 
   auto part_ids = [&](const std::vector<std::size_t>& parts) {
     std::vector<std::string> ids;
@@ -386,7 +400,7 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   // Redundant constraints, per pair.
   std::vector<int> redundant(pairs.size(), 0);
   for (std::size_t r = 0; r < model.rows().size(); ++r) {
-    if (solver.outcomes()[r] == LinearSystem::Outcome::kRedundant)
+    if (motion_model.outcomes()[r] == LinearSystem::Outcome::kRedundant)
       ++redundant[model.rows()[r].pair];
   }
   // Face contacts over-constrain whatever rests on several faces (a motor flange on a plate):
@@ -452,7 +466,7 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   // One basis motion's rates, dense for lookup and cleared after it (a mechanism of 100,000
   // parts may have a thousand basis motions).
   std::vector<double> x(model.freedoms().size(), 0.0);
-  for (const LinearSystem::Row& n : solver.structural().NullSpace()) {
+  for (const LinearSystem::Row& n : motion_model.structural().NullSpace()) {
     for (const LinearSystem::Term& t : n) {
       moves[t.variable] = true;
       x[t.variable] = t.coefficient.value();
@@ -503,11 +517,12 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   for (std::size_t i = 0; i < locked.size(); ++i) {
     if (locked[i].empty()) continue;
     const std::size_t pair = *model.joints()[i].pair;
-    result.diagnostics.push_back({Severity::kWarning, "jam",
-                                  std::string(ToString(pairs[pair].type)) + " pair " +
-                                      solver.PairName(pair) + " cannot move as it allows (" +
-                                      locked[i] + "): the other pairs lock it",
-                                  pair_parts(pair), pair_features(pair)});
+    result.diagnostics.push_back(
+        {Severity::kWarning, "jam",
+         std::string(ToString(pairs[pair].type)) + " pair " + assembly.FeatureName(pairs[pair].a) +
+             " + " + assembly.FeatureName(pairs[pair].b) + " cannot move as it allows (" +
+             locked[i] + "): the other pairs lock it",
+         pair_parts(pair), pair_features(pair)});
   }
 
   // Drivers: each alone at unit rate, then all at their rates.
@@ -535,12 +550,14 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
       names.push_back(labels[k]);
     }
     std::vector<ExactReal> x;
-    DrivenMotion m = solver.SolveRates(alone, names, x, one_driver ? &driven_system : nullptr);
-    solver.Describe(x, m);
+    DrivenMotion m =
+        motion_model.SolveRates(alone, names, x, one_driver ? &driven_system : nullptr);
+    motion_model.Describe(x, m);
     m.driver = i;
     result.driven.push_back(std::move(m));
   }
-  if (imposed.size() > 1) result.driven.push_back(solver.Solve(imposed, labels, &driven_system));
+  if (imposed.size() > 1)
+    result.driven.push_back(motion_model.Solve(imposed, labels, &driven_system));
   for (const DrivenMotion& m : result.driven) {
     // Per driver, a locked driver; together, contradicting drivers (a driver held still while
     // another drives its freedom is no finding of its own).
@@ -557,7 +574,7 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   // Free motions: what the drivers leave undetermined. A floating body is one free motion
   // with all its freedoms; a body with no pair at all is reported as unconnected already.
   std::vector<bool> reported(model.joints().size(), false);
-  const LinearSystem& free_system = imposed.empty() ? solver.structural() : driven_system;
+  const LinearSystem& free_system = imposed.empty() ? motion_model.structural() : driven_system;
   for (const LinearSystem::Row& n : free_system.NullSpace()) {
     if (n.empty()) continue;
     const Freedom& f = model.freedoms()[n.front().variable];
@@ -571,17 +588,17 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     const std::size_t child =
         model.parent_joint(j.body_a) && *model.parent_joint(j.body_a) == f.joint ? j.body_a
                                                                                  : j.body_b;
-    const std::span<const std::size_t> own = solver.PartsOf(child);
+    const std::span<const std::size_t> own = motion_model.PartsOf(child);
     // Named by part ids, so that the file's order of parts changes nothing.
     const auto by_id = [&](std::size_t x, std::size_t y) {
       return assembly.PartRank(x) < assembly.PartRank(y);
     };
     free.part = own.empty() ? 0 : *std::min_element(own.begin(), own.end(), by_id);
     for (std::size_t body : MovedBodies(model, children, n)) {
-      for (std::size_t p : solver.PartsOf(body)) free.parts.push_back(p);
+      for (std::size_t p : motion_model.PartsOf(body)) free.parts.push_back(p);
     }
     std::sort(free.parts.begin(), free.parts.end(), by_id);
-    if (solver.HasPair(child)) {
+    if (motion_model.HasPair(child)) {
       std::string message = std::string(assembly.PartId(free.part)) + " " + free.freedom;
       if (free.pair) message += " (" + std::string(ToString(pairs[*free.pair].type)) + " pair)";
       message += ": nothing drives or holds this motion";

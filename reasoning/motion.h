@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -88,6 +89,11 @@ struct Mobility {
   std::vector<int> part_freedoms;        ///< per part: dimension of its allowable motion
 };
 
+/// The velocity model an analysis solved (its kinematic model and constraint rows reduced
+/// once), kept so that further imposed motions (a drag, a joint's range) are solved without
+/// rebuilding it. Opaque; it refers to the analysed assembly, which must outlive it.
+class MotionModel;
+
 /// The motion analysis of an assembly at its file poses.
 struct MotionAnalysis {
   Mobility mobility;
@@ -97,6 +103,9 @@ struct MotionAnalysis {
   std::vector<DrivenMotion> driven;
   /// Jams, free motions, redundant constraints, locked drivers, non-back-drivable worms.
   std::vector<Diagnostic> diagnostics;
+
+  /// The model the analysis solved, for SolveImposed; shared by copies of the analysis.
+  std::shared_ptr<const MotionModel> model;
 
   /// The motion an expectation's "ratio" refers to: the only driver's at unit rate, or all
   /// drivers at their rates (the last entry of `driven`); nullptr without drivers.
@@ -121,11 +130,9 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
                              std::vector<AxisSegment> axes_W = {});
 
 /// The motion when `imposed` run together (the first at its rate, the others as given) and
-/// every free motion is held still. Worm gears that are not back-drivable lock when the motion
-/// enters them from the wheel.
-DrivenMotion SolveImposed(const Assembly& assembly, const std::vector<Pair>& pairs,
-                          const std::vector<Subassembly>& subassemblies,
-                          const std::vector<std::size_t>& subassembly_of,
-                          const std::vector<ImposedMotion>& imposed);
+/// every free motion is held still, solved on `motion`'s model. Worm gears that are not
+/// back-drivable lock when the motion enters them from the wheel. Throws std::invalid_argument
+/// for a motion analysis without its model.
+DrivenMotion SolveImposed(const MotionAnalysis& motion, const std::vector<ImposedMotion>& imposed);
 
 }  // namespace mechanist

@@ -1,6 +1,7 @@
 #include "reasoning/pair_graph.h"
 
 #include <algorithm>
+#include <deque>
 #include <utility>
 
 // Boost 1.74's graph headers trip GCC 12's -Wmaybe-uninitialized in their own code.
@@ -75,6 +76,30 @@ std::vector<std::size_t> PairGraph::PairsOf(std::size_t part) const {
   }
   std::sort(result.begin(), result.end());
   return result;
+}
+
+std::vector<std::size_t> PairGraph::Reachable(
+    std::span<const std::size_t> from,
+    const std::function<bool(std::size_t pair, std::size_t at, std::size_t to)>& cross) const {
+  std::vector<bool> seen(part_count(), false);
+  std::deque<std::size_t> queue;
+  for (const std::size_t part : from) {
+    if (!seen[part]) seen[part] = true, queue.push_back(part);
+  }
+  std::vector<std::size_t> reached;
+  while (!queue.empty()) {
+    const std::size_t at = queue.front();
+    queue.pop_front();
+    reached.push_back(at);
+    for (const auto& edge : boost::make_iterator_range(boost::out_edges(at, impl_->all))) {
+      const std::size_t to = boost::target(edge, impl_->all);
+      if (seen[to] || !cross(impl_->all[edge], at, to)) continue;
+      seen[to] = true;
+      queue.push_back(to);
+    }
+  }
+  std::sort(reached.begin(), reached.end());
+  return reached;
 }
 
 std::vector<Subassembly> PairGraph::Subassemblies() const {

@@ -1,7 +1,9 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "kernel/assembly/assembly.h"
@@ -29,6 +31,12 @@ class PairGraph {
   std::size_t part_count() const;
   /// Indices (into the pairs given at construction) of the pairs that touch `part`, ascending.
   std::vector<std::size_t> PairsOf(std::size_t part) const;
+  /// The parts reached breadth-first from the parts `from` over the pairs, crossing pair
+  /// `pair` (an index into the pairs given at construction) from part `at` to part `to` when
+  /// `cross(pair, at, to)` says so; `from` included, ascending.
+  std::vector<std::size_t> Reachable(
+      std::span<const std::size_t> from,
+      const std::function<bool(std::size_t pair, std::size_t at, std::size_t to)>& cross) const;
   /// The subassemblies: connected components over fixed pairs, with every ground part joined
   /// to the world. Ordered by their first part's id; the ground one first when it exists.
   std::vector<Subassembly> Subassemblies() const;

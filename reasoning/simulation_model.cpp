@@ -411,8 +411,7 @@ class Builder {
       const std::size_t parent_part = a_is_child ? pair.b.part : pair.a.part;
       const bool hinge = j.kind == SimJoint::Kind::kHinge;
       const DrivenMotion motion =
-          SolveImposed(assembly_, analysis_.pairs, analysis_.subassemblies,
-                       analysis_.subassembly_of, {{child, hinge, 1.0, parent_part}});
+          SolveImposed(analysis_.motion, {{child, hinge, 1.0, parent_part}});
       if (!motion.possible) continue;
       std::vector<ScrewPath> paths;
       paths.reserve(motion.parts.size());

@@ -7,6 +7,7 @@
 #include "io/adjustment_report.h"
 #include "io/input_error.h"
 #include "reasoning/adjustment.h"
+#include "reasoning/pair_recognition.h"
 
 namespace mechanist::cli {
 
@@ -28,7 +29,7 @@ Command AdjustCommand() {
       throw InputError(s.file, "/adjustments", 0, 0, "expected adjustments to solve, found none");
     }
     // The pairs as the file stands, before any adjustment moves a part.
-    const AdjustmentSummary summary = SolveAdjustments(assembly, Analyze(assembly).pairs);
+    const AdjustmentSummary summary = SolveAdjustments(assembly, RecognizePairs(assembly).pairs);
     WriteAdjustmentSummary(assembly, summary, std::cout);
     if (!o->json.empty()) s.Report(o->json, AdjustmentJson(assembly, summary));
     if (!o->write.empty()) {

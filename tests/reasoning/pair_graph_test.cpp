@@ -45,6 +45,32 @@ TEST(PairGraph, SubassembliesAreFixedComponentsWithAllGroundPartsJoined) {
   EXPECT_EQ(groups[2].parts, (std::vector<std::size_t>{5}));
 }
 
+TEST(PairGraph, ReachableCrossesOnlyThePairsItIsAllowedTo) {
+  // a - b (fixed), b - c (gear), c - d (revolute), e alone; a pair from d to itself.
+  const Assembly assembly = MakeAssembly({MakePart("a", {}), MakePart("b", {}), MakePart("c", {}),
+                                          MakePart("d", {}), MakePart("e", {})});
+  const std::vector<Pair> pairs = {Edge(0, 1, PairType::kFixed), Edge(1, 2, PairType::kGear),
+                                   Edge(2, 3, PairType::kRevolute), Edge(3, 3, PairType::kFixed)};
+  const PairGraph graph(assembly, pairs);
+  auto all = [](std::size_t, std::size_t, std::size_t) { return true; };
+  const std::size_t a = 0, e = 4;
+  EXPECT_EQ(graph.Reachable({&a, 1}, all), (std::vector<std::size_t>{0, 1, 2, 3}));
+  EXPECT_EQ(graph.Reachable({&e, 1}, all), (std::vector<std::size_t>{4}));
+  // Not across gear teeth: a and b only.
+  const auto no_gears = [&](std::size_t pair, std::size_t, std::size_t) {
+    return pairs[pair].type != PairType::kGear;
+  };
+  EXPECT_EQ(graph.Reachable({&a, 1}, no_gears), (std::vector<std::size_t>{0, 1}));
+  // The callback sees each crossing's direction: from c, only towards higher indices.
+  const std::size_t c = 2;
+  EXPECT_EQ(
+      graph.Reachable({&c, 1}, [](std::size_t, std::size_t at, std::size_t to) { return to > at; }),
+      (std::vector<std::size_t>{2, 3}));
+  // Several starts, given twice.
+  const std::vector<std::size_t> starts = {3, 4, 3};
+  EXPECT_EQ(graph.Reachable(starts, no_gears), (std::vector<std::size_t>{2, 3, 4}));
+}
+
 TEST(PairGraph, SubassembliesMatchABruteForceGroupingOnRandomAssemblies) {
   // Oracle: components labelled by relaxing over the fixed pairs to the largest label (every
   // ground part starts with the largest, n, so they form one component), each ordered by id, the
