@@ -6,7 +6,7 @@ std::vector<Command> Commands() {
   return {ValidateCommand(),     InfoCommand(),     AnalyzeCommand(), CheckCommand(),
           InterferenceCommand(), AssembleCommand(), SweepCommand(),   GapsCommand(),
           DragCommand(),         FeaturesCommand(), AdjustCommand(),  AnimateCommand(),
-          ExportCommand()};
+          ExportCommand(),       ViewCommand()};
 }
 
 }  // namespace mechanist::cli

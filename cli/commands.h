@@ -19,5 +19,6 @@ Command FeaturesCommand();
 Command AdjustCommand();
 Command AnimateCommand();
 Command ExportCommand();
+Command ViewCommand();
 
 }  // namespace mechanist::cli

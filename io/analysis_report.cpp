@@ -265,7 +265,9 @@ void WriteDragReport(const Assembly& assembly, const Analysis& analysis, const D
       << assembly.FeatureName(drag.axis) << ": allowable motion " << drag.part_freedoms
       << (drag.part_freedoms == 1 ? " freedom" : " freedoms") << "\n";
   if (!drag.motion.possible) {
-    out << "blocked: " << drag.motion.reason << "\nheld by:\n";
+    out << "blocked: " << drag.motion.reason << "\n";
+    if (assembly.part(drag.axis.part).ground) out << "held by: the ground (a ground part)\n";
+    if (!drag.holding_pairs.empty()) out << "held by:\n";
     for (std::size_t i : drag.holding_pairs) out << "  " << pair_line(i) << "\n";
     return;
   }

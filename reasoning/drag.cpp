@@ -25,10 +25,16 @@ DragResult Drag(const Assembly& assembly, const Analysis& analysis, const DragRe
   }
   result.motion = SolveImposed(analysis.motion, {{result.axis, request.rotate, 1.0, {}}});
   result.part_freedoms = analysis.motion.mobility.part_freedoms[request.part];
+  // A part of the ground subassembly is held by the fixed pairs that join it to the ground
+  // (a motor's tight bolts), not by the pairs of the ground with moving parts.
+  const bool grounded = analysis.subassemblies[body].ground;
   for (std::size_t i = 0; i < analysis.pairs.size(); ++i) {
     const Pair& p = analysis.pairs[i];
     if (!result.motion.possible) {
-      if (other_body(p)) result.holding_pairs.push_back(i);
+      const bool own = p.a.part == request.part || p.b.part == request.part;
+      if (grounded ? own && p.type == PairType::kFixed : other_body(p)) {
+        result.holding_pairs.push_back(i);
+      }
       continue;
     }
     const bool a_moves = result.motion.parts[p.a.part].kind != MotionKind::kNone;

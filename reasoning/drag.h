@@ -27,8 +27,9 @@ struct DragResult {
   /// Pairs across which the motion stops: one side moves, the other stays (the pair that
   /// absorbs the motion), ascending.
   std::vector<std::size_t> absorbing_pairs;
-  /// When the motion is impossible: the dragged part's pairs with other subassemblies, which
-  /// hold it, ascending.
+  /// When the motion is impossible, the pairs that hold the part, ascending: for a part of the
+  /// ground subassembly its fixed pairs (the tight bolts that fix a motor to the housing; none
+  /// for a ground part itself), otherwise its subassembly's pairs with the others.
   std::vector<std::size_t> holding_pairs;
   int part_freedoms = 0;  ///< dimension of the dragged part's allowable motion
 };

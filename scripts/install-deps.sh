@@ -13,6 +13,7 @@ packages=(
   libocct-data-exchange-dev libocct-ocaf-dev libocct-modeling-algorithms-dev
   libocct-modeling-data-dev libocct-foundation-dev
   libmujoco-dev liburdfdom-tools
+  libjs-three chromium
 )
 
 missing=()

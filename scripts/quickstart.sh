@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Quick start, step 1: install dependencies, build, and run the main job (validate, info,
-# analyze) on a bundled example.
+# analyze, then the interactive viewer) on a bundled example.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -9,3 +9,5 @@ example=${1:-examples/robot_hand_worm/assembly.json}
 build/cli/mechanist validate "$example"
 build/cli/mechanist info "$example"
 build/cli/mechanist analyze "$example"
+# The interactive viewer of the example: one HTML file, opened by double-click.
+build/cli/mechanist view "$example" --out "$(basename "$(dirname "$example")").html"

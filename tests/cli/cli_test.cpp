@@ -540,7 +540,6 @@ TEST(Cli, StepAssembliesAreAnalysedWithoutWrittenFeatures) {
   std::filesystem::remove(bad);
 }
 
-
 TEST(Cli, ExportNeedsAnOutputAndAPositiveDensity) {
   const std::string file = Example("robot_hand_worm");
   const CommandResult none = Mechanist("export " + file);
@@ -553,11 +552,27 @@ TEST(Cli, ExportNeedsAnOutputAndAPositiveDensity) {
   EXPECT_EQ(density.exit_code, 2) << density.out;
   EXPECT_NE(density.out.find("--density"), std::string::npos) << density.out;
   EXPECT_FALSE(std::filesystem::exists(out / "m.urdf"));
-  const CommandResult ok = Mechanist("export " + file + " --no-limits --urdf " +
-                                     (out / "m.urdf").string());
+  const CommandResult ok =
+      Mechanist("export " + file + " --no-limits --urdf " + (out / "m.urdf").string());
   EXPECT_EQ(ok.exit_code, 0) << ok.out;
   EXPECT_TRUE(std::filesystem::exists(out / "m_meshes" / "worm_wheel.stl"));
   EXPECT_NE(ok.out.find("movable ranges not searched"), std::string::npos) << ok.out;
 }
 
 }  // namespace
+
+TEST(Cli, ViewWritesOnePageAndSaysWhere) {
+  const auto out = std::filesystem::temp_directory_path() / "mechanist_cli_view.html";
+  std::filesystem::remove(out);
+  const CommandResult view =
+      Mechanist("view " + Example("robot_hand_worm") + " --out " + out.string());
+  EXPECT_EQ(view.exit_code, 0) << view.out;
+  EXPECT_NE(view.out.find("viewer: " + out.string()), std::string::npos) << view.out;
+  std::ifstream in(out);
+  const std::string page((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(page.find("<title>worm drive of a robot hand</title>"), std::string::npos);
+  EXPECT_NE(page.find("OrbitControls"), std::string::npos);  // three.js inlined
+  EXPECT_EQ(Mechanist("view " + Example("robot_hand_worm") + " --out " + Example("robot_hand_worm"))
+                .exit_code,
+            2);  // never over the input
+}

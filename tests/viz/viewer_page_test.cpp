@@ -1,0 +1,145 @@
+// The viewer page: the mechanism's data it carries (the drivers' paths are the ones StateAt
+// uses), and the page itself in headless Chromium (tests/viz/viewer_browser.js): no console
+// error, no network request, a picture that changes with the driver, poses equal to StateAt,
+// a drag of the worm drive's motor shaft turning the wheel by -9 degrees a revolution, and a
+// part held by tight bolts naming them.
+
+#include "viz/viewer_page.h"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "io/assembly_reader.h"
+#include "reasoning/analysis.h"
+#include "reasoning/motion_run.h"
+
+namespace mechanist {
+namespace {
+
+using nlohmann::json;
+
+const std::string kWorm =
+    std::string(MECHANIST_SOURCE_DIR) + "/examples/robot_hand_worm/assembly.json";
+
+json PageData(const std::string& html) {
+  const std::string open = "<script type=\"application/json\" id=\"mechanist-data\">";
+  const std::size_t begin = html.find(open);
+  EXPECT_NE(begin, std::string::npos);
+  const std::size_t end = html.find("</script>", begin);
+  return json::parse(html.substr(begin + open.size(), end - begin - open.size()));
+}
+
+ScrewPath PathOf(const json& screws) {
+  ScrewPath path;
+  for (const json& m : screws) {
+    ScrewMotion s;
+    s.point_W = Eigen::Vector3d(m["point"][0], m["point"][1], m["point"][2]);
+    s.axis_W = Eigen::Vector3d(m["axis"][0], m["axis"][1], m["axis"][2]);
+    s.turns_per_unit = m["turns"];
+    s.travel_per_unit = m["travel"];
+    path.screws.push_back(s);
+  }
+  return path;
+}
+
+// Column-major, as the page's matrices.
+json Matrix(const RigidTransform& X) {
+  const Eigen::Matrix4d m = X.matrix();
+  return json(std::vector<double>(m.data(), m.data() + 16));
+}
+
+TEST(ViewerPage, CarriesTheDriversPathsThatStateAtUses) {
+  const Assembly assembly = ReadAssembly(kWorm);
+  const Analysis analysis = Analyze(assembly);
+  const json data = PageData(ViewerHtml(assembly, analysis));
+  ASSERT_EQ(data["parts"].size(), assembly.parts().size());
+  ASSERT_EQ(data["drivers"].size(), 1u);
+  EXPECT_EQ(data["pairs"].size(), analysis.pairs.size());
+  // One mesh per mesh source (library parts generate one each).
+  EXPECT_EQ(data["meshes"].size(), assembly.parts().size());
+  const MotionRun run = PlanRun(assembly, analysis, 0, std::nullopt);
+  for (const double s : {0.0, 0.37, 1.0}) {
+    const AssemblyState state = StateAt(assembly, run, s);
+    for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
+      const json& paths = data["drivers"][0]["paths"];
+      const std::string key = std::to_string(p);
+      const RigidTransform X = paths.contains(key)
+                                   ? PathOf(paths[key]).At(s) * assembly.part(p).X_WP
+                                   : assembly.part(p).X_WP;
+      EXPECT_LT((X.matrix() - state.X_WP[p].matrix()).norm(), 1e-12) << p << " at " << s;
+    }
+  }
+  // The motor shaft's drag turns; the motor body's is held by its two tight bolts.
+  const auto motor_body = assembly.FindPart("motor_body").value();
+  const json& held = data["drags"][motor_body]["turn"];
+  EXPECT_FALSE(held["possible"]);
+  ASSERT_EQ(held["holding"].size(), 2u);
+  for (const json& i : held["holding"]) {
+    EXPECT_EQ(analysis.pairs[i.get<std::size_t>()].fastening, PairFastening::kTight);
+  }
+  EXPECT_TRUE(data["drags"][assembly.FindPart("motor_shaft").value()]["turn"]["possible"]);
+}
+
+TEST(ViewerPage, SaysWhereThreeJsIsMissing) {
+  const Assembly assembly = ReadAssembly(kWorm);
+  ViewerOptions options;
+  options.three_dir = "/nonexistent";
+  try {
+    ViewerHtml(assembly, Analyze(assembly), options);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("libjs-three"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ViewerPage, WorksInABrowser) {
+  const std::string puppeteer = MECHANIST_PUPPETEER, chromium = MECHANIST_CHROMIUM;
+  if (puppeteer.empty() || chromium.empty() || std::string(MECHANIST_NODE).empty()) {
+    GTEST_SKIP() << "puppeteer-core, chromium or node not configured (scripts/test.sh does)";
+  }
+  const Assembly assembly = ReadAssembly(kWorm);
+  const Analysis analysis = Analyze(assembly);
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("mechanist_viewer_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "page.html") << ViewerHtml(assembly, analysis);
+  // The poses the page must show at s = 0.37 of the motor's run: StateAt's.
+  const double s = 0.37;
+  const AssemblyState state = StateAt(assembly, PlanRun(assembly, analysis, 0, std::nullopt), s);
+  json poses = json::object();
+  for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
+    poses[assembly.part(p).id] = Matrix(state.X_WP[p]);
+  }
+  const json checks = {{"poses", {{"driver", 0}, {"s", s}, {"parts", poses}}},
+                       {"drag",
+                        {{"part", "motor_shaft"},
+                         {"turns", 1},
+                         {"follower", "worm_wheel"},
+                         {"axis", {0, 0, 1}},
+                         {"degrees", -9}}},
+                       {"held", "motor_body"}};
+  std::ofstream(dir / "checks.json") << checks.dump();
+  const std::string command = "NODE_PATH='" + puppeteer + "' '" + MECHANIST_NODE + "' '" +
+                              MECHANIST_SOURCE_DIR + "/tests/viz/viewer_browser.js' '" + chromium +
+                              "' '" + (dir / "page.html").string() + "' '" +
+                              (dir / "checks.json").string() + "' '" + dir.string() + "' 2>&1";
+  std::string out;
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  char buffer[4096];
+  std::size_t n;
+  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
+  const int status = pclose(pipe);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out;
+  EXPECT_NE(out.find("all checks passed"), std::string::npos) << out;
+}
+
+}  // namespace
+}  // namespace mechanist

@@ -1,0 +1,236 @@
+#include "viz/viewer_page.h"
+
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+
+#include "reasoning/drag.h"
+#include "reasoning/motion_run.h"
+#include "viz/display_colors.h"
+#include "viz/feature_lines.h"
+#include "viz/viewer_template.h"
+
+namespace mechanist {
+namespace {
+
+using nlohmann::json;
+
+std::string Base64(const void* data, std::size_t size) {
+  static const char* kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  const auto* bytes = static_cast<const std::uint8_t*>(data);
+  std::string out;
+  out.reserve((size + 2) / 3 * 4);
+  for (std::size_t i = 0; i < size; i += 3) {
+    const std::uint32_t b0 = bytes[i];
+    const std::uint32_t b1 = i + 1 < size ? bytes[i + 1] : 0;
+    const std::uint32_t b2 = i + 2 < size ? bytes[i + 2] : 0;
+    const std::uint32_t v = b0 << 16 | b1 << 8 | b2;
+    out += kAlphabet[v >> 18 & 63];
+    out += kAlphabet[v >> 12 & 63];
+    out += i + 1 < size ? kAlphabet[v >> 6 & 63] : '=';
+    out += i + 2 < size ? kAlphabet[v & 63] : '=';
+  }
+  return out;
+}
+
+std::string ReadFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw std::runtime_error("three.js not found at " + path.string() +
+                             " (Debian package libjs-three)");
+  }
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+json Vector(const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+// A 4x4 pose, column-major as three.js' Matrix4.fromArray reads it.
+json Matrix(const RigidTransform& X) {
+  const Eigen::Matrix4d m = X.matrix();
+  return json(std::vector<double>(m.data(), m.data() + 16));
+}
+
+// The parts' paths that move: {part index: [screws]}, the others still.
+json Paths(const std::vector<ScrewPath>& paths) {
+  json out = json::object();
+  for (std::size_t p = 0; p < paths.size(); ++p) {
+    if (paths[p].still()) continue;
+    json screws = json::array();
+    for (const ScrewMotion& m : paths[p].screws) {
+      screws.push_back({{"point", Vector(m.point_W)},
+                        {"axis", Vector(m.axis_W)},
+                        {"turns", m.turns_per_unit},
+                        {"travel", m.travel_per_unit}});
+    }
+    out[std::to_string(p)] = screws;
+  }
+  return out;
+}
+
+json PairJson(const Assembly& assembly, const Pair& p) {
+  json j = {{"type", ToString(p.type)},       {"a", assembly.FeatureName(p.a)},
+            {"b", assembly.FeatureName(p.b)}, {"parts", json::array({p.a.part, p.b.part})},
+            {"source", ToString(p.source)},   {"fastening", ToString(p.fastening)}};
+  if (p.ratio) j["ratio"] = p.ratio->ToString();
+  if (p.travel_per_revolution) j["travel"] = *p.travel_per_revolution;
+  if (p.dof) j["dof"] = *p.dof;
+  return j;
+}
+
+json Data(const Assembly& assembly, const Analysis& analysis) {
+  json data;
+  data["name"] = assembly.name();
+  data["length_unit"] = assembly.units().length;
+  data["mm_per_length"] = assembly.units().mm_per_length;
+  const DisplayColors colors = ColorParts(analysis);
+  std::map<const TriangleMesh*, std::size_t> mesh_index;
+  json meshes = json::array(), parts = json::array();
+  for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
+    const Part& part = assembly.part(p);
+    json j = {{"id", part.id},
+              {"group", part.group},
+              {"ground", part.ground},
+              {"subassembly", analysis.subassembly_of[p]},
+              {"color", Vector(colors.part[p])},
+              {"X_WP", Matrix(part.X_WP)},
+              {"mesh", -1}};
+    if (part.HasGeometry()) {
+      auto [it, added] = mesh_index.emplace(part.mesh.get(), meshes.size());
+      if (added) {
+        std::vector<float> xyz;
+        for (const Eigen::Vector3d& v : part.mesh->vertices) {
+          xyz.insert(xyz.end(), {static_cast<float>(v.x()), static_cast<float>(v.y()),
+                                 static_cast<float>(v.z())});
+        }
+        std::vector<std::uint32_t> indices;
+        for (const TriangleMesh::Face& f : part.mesh->faces) {
+          for (const std::int32_t i : f) indices.push_back(static_cast<std::uint32_t>(i));
+        }
+        meshes.push_back({{"positions", Base64(xyz.data(), 4 * xyz.size())},
+                          {"indices", Base64(indices.data(), 4 * indices.size())}});
+      }
+      j["mesh"] = it->second;
+    }
+    json lines = json::array();
+    for (const auto& line : FeatureLines(part, !part.HasGeometry())) {
+      json points = json::array();
+      for (const Eigen::Vector3d& q : line) points.push_back(Vector(q));
+      lines.push_back(points);
+    }
+    j["lines"] = lines;
+    parts.push_back(j);
+  }
+  data["meshes"] = meshes;
+  data["parts"] = parts;
+  json pairs = json::array();
+  for (const Pair& p : analysis.pairs) pairs.push_back(PairJson(assembly, p));
+  data["pairs"] = pairs;
+  json subassemblies = json::array();
+  for (const Subassembly& s : analysis.subassemblies) {
+    subassemblies.push_back({{"parts", s.parts}, {"ground", s.ground}});
+  }
+  data["subassemblies"] = subassemblies;
+  const Mobility& mobility = analysis.motion.mobility;
+  json free = json::array();
+  for (const FreeMotion& f : mobility.free_motions) {
+    free.push_back({{"part", f.part}, {"freedom", f.freedom}, {"parts", f.parts}});
+  }
+  data["mobility"] = {{"dof", mobility.dof}, {"redundant", mobility.redundant}, {"free", free}};
+  json diagnostics = json::array();
+  for (const Diagnostic& d : analysis.diagnostics) {
+    diagnostics.push_back({{"severity", ToString(d.severity)},
+                           {"code", d.code},
+                           {"message", d.message},
+                           {"parts", d.parts}});
+  }
+  data["diagnostics"] = diagnostics;
+
+  // Each driver's run, on the same paths as animate and sweep.
+  json drivers = json::array();
+  for (std::size_t d = 0; d < assembly.drivers().size(); ++d) {
+    const Driver& driver = assembly.drivers()[d];
+    const MotionRun run = PlanRun(assembly, analysis, d, std::nullopt);
+    const bool rotation = driver.motion == Driver::Motion::kRotation;
+    drivers.push_back({{"id", driver.id},
+                       {"rotation", rotation},
+                       {"amount", run.amount},
+                       {"possible", run.possible},
+                       {"reason", run.reason},
+                       {"paths", Paths(run.paths)}});
+  }
+  data["drivers"] = drivers;
+
+  // Every part's drag: its allowable motion with what follows, or the pairs that hold it.
+  json drags = json::array();
+  for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
+    json entry = json::object();
+    for (const bool rotate : {true, false}) {
+      if (assembly.part(p).features.empty()) break;
+      const DragResult r = Drag(assembly, analysis, {p, std::nullopt, rotate});
+      json j = {{"axis", assembly.FeatureName(r.axis)}, {"possible", r.motion.possible}};
+      if (r.motion.possible) {
+        std::vector<ScrewPath> paths;
+        for (const PartMotion& m : r.motion.parts) paths.push_back(m.path);
+        j["paths"] = Paths(paths);
+      } else {
+        j["reason"] = r.motion.reason;
+        j["holding"] = r.holding_pairs;
+      }
+      entry[rotate ? "turn" : "slide"] = j;
+    }
+    drags.push_back(entry);
+  }
+  data["drags"] = drags;
+  return data;
+}
+
+std::string HtmlEscape(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else
+      out += c;
+  }
+  return out;
+}
+
+// Closes no script element early: "</" inside the JSON becomes "<\/".
+std::string ScriptSafe(std::string text) {
+  for (std::size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3)) {
+    text.replace(at, 2, "<\\/");
+  }
+  return text;
+}
+
+}  // namespace
+
+std::string ViewerHtml(const Assembly& assembly, const Analysis& analysis,
+                       const ViewerOptions& options) {
+  const std::string three = ReadFile(options.three_dir / "three.min.js");
+  const std::string orbit = ReadFile(options.three_dir / "examples/js/controls/OrbitControls.js");
+  const std::string title = assembly.name().empty() ? "mechanist" : assembly.name();
+  std::string html = kViewerTemplate;
+  auto put = [&](const std::string& marker, const std::string& text) {
+    const std::size_t at = html.find(marker);
+    if (at == std::string::npos) throw std::logic_error("viewer template lacks " + marker);
+    html.replace(at, marker.size(), text);
+  };
+  put("@TITLE@", HtmlEscape(title));
+  put("@THREE@", ScriptSafe(three));
+  put("@ORBIT@", ScriptSafe(orbit));
+  put("@DATA@", ScriptSafe(Data(assembly, analysis).dump()));
+  return html;
+}
+
+}  // namespace mechanist

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "kernel/assembly/assembly.h"
+#include "reasoning/analysis.h"
+
+namespace mechanist {
+
+/// Where ViewerHtml finds three.js (Debian's libjs-three, r111: the global build and its
+/// OrbitControls), inlined into every page.
+struct ViewerOptions {
+  std::filesystem::path three_dir = "/usr/share/javascript/three";
+};
+
+/// One self-contained HTML page (no server, no network) to look at and work the analysed
+/// mechanism in a browser: the parts in 3D at their file poses (three.js, inlined), coloured by
+/// subassembly with the ground muted, orbit/pan/zoom, a section plane, the feature axes on a
+/// toggle; beside it the subassemblies, the pairs (hover or click highlights their parts), the
+/// mobility and the diagnostics (click highlights the parts); a slider and a play button per
+/// driver, moving the parts along the same paths as `animate` and `sweep` (PlanRun: the pose
+/// after s is path.At(s) * X_WP); and a drag for every part: it turns about (or slides along)
+/// the axis Drag gives it, everything coupled follows, or the page says which pairs hold it.
+/// The page's state is `window.mechanist` (for tests and scripts). Throws std::runtime_error
+/// when three.js is not found under `options.three_dir`.
+std::string ViewerHtml(const Assembly& assembly, const Analysis& analysis,
+                       const ViewerOptions& options = {});
+
+}  // namespace mechanist

@@ -1,0 +1,395 @@
+#include "viz/viewer_template.h"
+
+namespace mechanist {
+
+// The page's script evaluates the paths C++ computed (PlanRun, Drag): the pose of part p at
+// parameter s is At(s) * X_WP, At the product of the screws, each a translation along its axis
+// after a turn about it (ScrewMotion::At).
+const char* const kViewerTemplate = R"html(<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<title>@TITLE@</title>
+<style>
+  html, body { margin: 0; height: 100%; font: 13px/1.35 sans-serif; color: #222; }
+  #app { display: flex; height: 100%; }
+  #panel { width: 380px; overflow-y: auto; padding: 8px 12px; box-sizing: border-box;
+           border-right: 1px solid #ccc; background: #fafafa; }
+  #view { flex: 1; position: relative; }
+  #hover { position: absolute; left: 8px; top: 8px; padding: 2px 6px; background: #fffd;
+           border: 1px solid #ccc; display: none; pointer-events: none; }
+  h1 { font-size: 16px; margin: 4px 0 8px; }
+  h2 { font-size: 13px; margin: 12px 0 4px; border-bottom: 1px solid #ddd; }
+  .row { margin: 2px 0; cursor: pointer; }
+  .row:hover, .row.on { background: #e4ecff; }
+  .warning { color: #9a5b00; } .error { color: #b00000; } .info { color: #555; }
+  input[type=range] { width: 200px; vertical-align: middle; }
+  button { font-size: 12px; }
+  #drag-info { color: #333; }
+</style>
+</head>
+<body>
+<div id="app">
+  <div id="panel">
+    <h1 id="title"></h1>
+    <div>
+      <label><input type="checkbox" id="show-axes"> feature axes</label>
+      <label><input type="checkbox" id="section"> section</label>
+      <input type="range" id="section-at" min="0" max="1000" value="500">
+      <button id="fit">fit</button>
+    </div>
+    <h2>Drivers</h2><div id="drivers"></div>
+    <h2>Drag</h2>
+    <div id="drag-info">Click a part, then turn or slide it here.</div>
+    <div id="drag-controls" style="display:none">
+      <select id="drag-mode"></select>
+      <input type="range" id="drag" min="-1000" max="1000" value="0">
+      <span id="drag-value"></span>
+    </div>
+    <h2>Mobility</h2><div id="mobility"></div>
+    <h2>Subassemblies</h2><div id="subassemblies"></div>
+    <h2>Pairs</h2><div id="pairs"></div>
+    <h2>Diagnostics</h2><div id="diagnostics"></div>
+  </div>
+  <div id="view"><div id="hover"></div></div>
+</div>
+<script>@THREE@</script>
+<script>@ORBIT@</script>
+<script type="application/json" id="mechanist-data">@DATA@</script>
+<script>
+"use strict";
+(function () {
+  const data = JSON.parse(document.getElementById("mechanist-data").textContent);
+  const $ = (id) => document.getElementById(id);
+  const text = (tag, content, cls) => {
+    const e = document.createElement(tag);
+    e.textContent = content;
+    if (cls) e.className = cls;
+    return e;
+  };
+
+  // ---- scene ----
+  const view = $("view");
+  const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+  renderer.setPixelRatio(window.devicePixelRatio);
+  renderer.localClippingEnabled = true;
+  view.appendChild(renderer.domElement);
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(0xffffff);
+  scene.add(new THREE.HemisphereLight(0xffffff, 0x777777, 0.9));
+  const sun = new THREE.DirectionalLight(0xffffff, 0.6);
+  sun.position.set(1, -1.5, 2);
+  scene.add(sun);
+  const camera = new THREE.PerspectiveCamera(35, 1, 0.1, 1e6);
+  camera.up.set(0, 0, 1);
+  const controls = new THREE.OrbitControls(camera, renderer.domElement);
+
+  const decode = (b64, Type) => {
+    const bin = atob(b64);
+    const bytes = new Uint8Array(bin.length);
+    for (let i = 0; i < bin.length; ++i) bytes[i] = bin.charCodeAt(i);
+    return new Type(bytes.buffer);
+  };
+  const geometries = data.meshes.map((m) => {
+    const g = new THREE.BufferGeometry();
+    g.setAttribute("position", new THREE.BufferAttribute(decode(m.positions, Float32Array), 3));
+    g.setIndex(new THREE.BufferAttribute(decode(m.indices, Uint32Array), 1));
+    g.computeVertexNormals();
+    return g;
+  });
+  const section = new THREE.Plane(new THREE.Vector3(-1, 0, 0), 0);
+  const clipping = [];
+  const parts = data.parts.map((p, index) => {
+    const group = new THREE.Group();
+    group.matrixAutoUpdate = false;
+    const base = new THREE.Matrix4().fromArray(p.X_WP);
+    group.matrix.copy(base);
+    const color = new THREE.Color(p.color[0], p.color[1], p.color[2]);
+    const material = new THREE.MeshStandardMaterial({
+      color, metalness: 0.1, roughness: 0.7, side: THREE.DoubleSide, flatShading: true,
+      clippingPlanes: clipping });
+    if (p.mesh >= 0) {
+      const mesh = new THREE.Mesh(geometries[p.mesh], material);
+      mesh.userData.part = index;
+      group.add(mesh);
+    }
+    // A features-only part is drawn by its lines, in its subassembly's colour.
+    const lineMaterial = new THREE.LineBasicMaterial({ color: p.mesh < 0 ? color : 0x222222 });
+    const axes = new THREE.Group();
+    for (const line of p.lines) {
+      const g = new THREE.BufferGeometry().setFromPoints(
+        line.map((q) => new THREE.Vector3(q[0], q[1], q[2])));
+      axes.add(new THREE.Line(g, lineMaterial));
+    }
+    axes.visible = p.mesh < 0;  // a features-only part is drawn by its feature lines
+    group.add(axes);
+    scene.add(group);
+    return { group, base, material, color, axes, sketch: p.mesh < 0 };
+  });
+
+  // ---- motion: the pose after s is At(s) * X_WP ----
+  const screwAt = (screws, s) => {
+    const D = new THREE.Matrix4();
+    for (const m of screws) {
+      const axis = new THREE.Vector3(m.axis[0], m.axis[1], m.axis[2]);
+      const point = new THREE.Vector3(m.point[0], m.point[1], m.point[2]);
+      const turn = new THREE.Matrix4().makeTranslation(point.x, point.y, point.z)
+        .multiply(new THREE.Matrix4().makeRotationAxis(axis, 2 * Math.PI * m.turns * s))
+        .multiply(new THREE.Matrix4().makeTranslation(-point.x, -point.y, -point.z));
+      const slide = new THREE.Matrix4().makeTranslation(
+        axis.x * m.travel * s, axis.y * m.travel * s, axis.z * m.travel * s);
+      D.multiply(slide.multiply(turn));
+    }
+    return D;
+  };
+  // The motion shown: a driver's run or a part's drag, at parameter s.
+  const state = { paths: {}, s: 0, driver: null, drag: null };
+  const update = () => {
+    parts.forEach((part, p) => {
+      const screws = state.paths[p];
+      part.group.matrix.copy(screws ? screwAt(screws, state.s).multiply(part.base) : part.base);
+      part.group.matrixWorldNeedsUpdate = true;
+    });
+  };
+  const show = (paths, s) => { state.paths = paths || {}; state.s = s; update(); };
+
+  // ---- highlight ----
+  const highlight = (indices) => {
+    const on = new Set(indices);
+    parts.forEach((part, p) => {
+      part.material.emissive.setHex(on.has(p) ? 0x3355ff : 0x000000);
+      part.material.emissiveIntensity = on.has(p) ? 0.6 : 0;
+    });
+  };
+  const partIndex = (id) => data.parts.findIndex((p) => p.id === id);
+
+  // ---- panel ----
+  $("title").textContent = data.name || "assembly";
+  const unit = (driver) => (driver.rotation ? "rev" : data.length_unit);
+  data.drivers.forEach((d, i) => {
+    const row = document.createElement("div");
+    row.appendChild(text("span", d.id + " "));
+    if (!d.possible) {
+      row.appendChild(text("span", "still: " + d.reason, "warning"));
+      $("drivers").appendChild(row);
+      return;
+    }
+    const slider = document.createElement("input");
+    Object.assign(slider, { type: "range", min: 0, max: 1000, value: 0, id: "driver-" + i });
+    const label = text("span", "");
+    const play = text("button", "play");
+    // Amounts in the file's units; the paths count mm for a slide, revolutions for a turn.
+    const scale = d.rotation ? 1 : data.mm_per_length;
+    const set = () => {
+      const s = (slider.value / 1000) * d.amount;
+      label.textContent = " " + (d.rotation ? (360 * s).toFixed(1) + " deg" :
+        s.toFixed(2) + " " + unit(d));
+      state.driver = i;
+      show(d.paths, s * scale);
+    };
+    slider.addEventListener("input", set);
+    let timer = null;
+    play.addEventListener("click", () => {
+      if (timer) { clearInterval(timer); timer = null; play.textContent = "play"; return; }
+      play.textContent = "stop";
+      timer = setInterval(() => { slider.value = (Number(slider.value) + 5) % 1001; set(); }, 30);
+    });
+    row.append(slider, play, label);
+    $("drivers").appendChild(row);
+  });
+  if (!data.drivers.length) $("drivers").textContent = "no driver";
+
+  const mobility = data.mobility;
+  $("mobility").appendChild(text("div", "mobility " + mobility.dof + ", " + mobility.redundant +
+    " redundant constraints"));
+  for (const f of mobility.free) {
+    const row = text("div", data.parts[f.part].id + " " + f.freedom + ": nothing drives or holds it",
+      "row warning");
+    row.addEventListener("click", () => highlight([f.part].concat(f.parts)));
+    $("mobility").appendChild(row);
+  }
+  data.subassemblies.forEach((s, i) => {
+    const row = text("div", "S" + (i + 1) + (s.ground ? " (ground)" : "") + ": " +
+      s.parts.map((p) => data.parts[p].id).join(" "), "row");
+    row.addEventListener("mouseenter", () => highlight(s.parts));
+    row.addEventListener("mouseleave", () => highlight([]));
+    $("subassemblies").appendChild(row);
+  });
+  data.pairs.forEach((p, i) => {
+    let words = "P" + (i + 1) + " " + p.type + ": " + p.a + " + " + p.b;
+    if (p.ratio) words += ", ratio " + p.ratio;
+    if (p.fastening) words += ", " + p.fastening;
+    if (p.source !== "recognised" && p.source !== p.fastening) words += " (" + p.source + ")";
+    const row = text("div", words, "row");
+    row.addEventListener("mouseenter", () => highlight(p.parts));
+    row.addEventListener("mouseleave", () => highlight(selected === null ? [] : [selected]));
+    $("pairs").appendChild(row);
+  });
+  data.diagnostics.forEach((d) => {
+    const row = text("div", d.severity + " " + d.code + ": " + d.message, "row " + d.severity);
+    row.addEventListener("click", () => highlight(d.parts.map(partIndex)));
+    $("diagnostics").appendChild(row);
+  });
+  if (!data.diagnostics.length) $("diagnostics").textContent = "none";
+
+  // ---- drag ----
+  let selected = null;
+  const dragSlider = $("drag"), dragMode = $("drag-mode");
+  const dragMotion = () => data.drags[selected][dragMode.value];
+  const setDrag = () => {
+    const motion = dragMotion();
+    const s = dragSlider.value / 1000;  // one revolution or one length unit either way
+    const scale = dragMode.value === "turn" ? 1 : data.mm_per_length;
+    $("drag-value").textContent = dragMode.value === "turn" ?
+      (360 * s).toFixed(1) + " deg" : s.toFixed(2) + " " + data.length_unit;
+    state.driver = null;
+    show(motion.paths, s * scale);
+  };
+  const select = (p) => {
+    selected = p;
+    highlight(p === null ? [] : [p]);
+    dragMode.innerHTML = "";
+    if (p === null) { $("drag-controls").style.display = "none"; return; }
+    const drags = data.drags[p];
+    const info = [data.parts[p].id];
+    for (const mode of ["turn", "slide"]) {
+      const d = drags[mode];
+      if (!d) continue;
+      if (d.possible) {
+        dragMode.appendChild(new Option(mode + " about " + d.axis, mode));
+      } else {
+        info.push(mode + " about " + d.axis + " blocked: " + d.reason +
+          (data.parts[p].ground ? "; a ground part" : "") +
+          (d.holding.length ? "; held by " + d.holding.map((i) => "P" + (i + 1)).join(", ") : ""));
+      }
+    }
+    $("drag-info").textContent = info.join(". ");
+    $("drag-controls").style.display = dragMode.options.length ? "" : "none";
+    if (!dragMode.options.length) {
+      const held = [];
+      for (const mode of ["turn", "slide"]) {
+        for (const i of (drags[mode] && drags[mode].holding) || []) held.push(...data.pairs[i].parts);
+      }
+      highlight([p].concat(held));
+    }
+    dragSlider.value = 0;
+  };
+  dragSlider.addEventListener("input", setDrag);
+  dragMode.addEventListener("change", () => { dragSlider.value = 0; setDrag(); });
+
+  const raycaster = new THREE.Raycaster();
+  const pick = (event) => {
+    const r = renderer.domElement.getBoundingClientRect();
+    const at = new THREE.Vector2(((event.clientX - r.left) / r.width) * 2 - 1,
+      -((event.clientY - r.top) / r.height) * 2 + 1);
+    raycaster.setFromCamera(at, camera);
+    const hit = raycaster.intersectObjects(scene.children, true)
+      .find((h) => h.object.userData.part !== undefined);
+    return hit ? hit.object.userData.part : null;
+  };
+  let down = null;
+  renderer.domElement.addEventListener("pointerdown", (e) => { down = [e.clientX, e.clientY]; });
+  renderer.domElement.addEventListener("pointerup", (e) => {
+    if (down && Math.hypot(e.clientX - down[0], e.clientY - down[1]) < 4) select(pick(e));
+  });
+  renderer.domElement.addEventListener("pointermove", (e) => {
+    const p = pick(e);
+    const hover = $("hover");
+    hover.style.display = p === null ? "none" : "block";
+    if (p !== null) {
+      hover.textContent = data.parts[p].id + (data.parts[p].group ? " (" + data.parts[p].group + ")" : "");
+    }
+  });
+
+  // ---- view controls ----
+  const bounds = () => {
+    const box = new THREE.Box3();
+    for (const part of parts) box.expandByObject(part.group);
+    return box;
+  };
+  const fit = () => {
+    const box = bounds();
+    const center = box.getCenter(new THREE.Vector3());
+    const size = Math.max(box.getSize(new THREE.Vector3()).length(), 1);
+    camera.position.copy(center).add(new THREE.Vector3(1, -1.4, 0.9).multiplyScalar(size));
+    camera.near = size / 100;
+    camera.far = size * 100;
+    camera.updateProjectionMatrix();
+    controls.target.copy(center);
+    controls.update();
+  };
+  $("fit").addEventListener("click", fit);
+  $("show-axes").addEventListener("change", (e) => {
+    for (const part of parts) part.axes.visible = e.target.checked || part.sketch;
+  });
+  const setSection = () => {
+    clipping.length = 0;
+    if ($("section").checked) {
+      const box = bounds();
+      const x = box.min.x + ($("section-at").value / 1000) * (box.max.x - box.min.x);
+      section.constant = x;
+      clipping.push(section);
+    }
+    for (const part of parts) part.material.needsUpdate = true;
+  };
+  $("section").addEventListener("change", setSection);
+  $("section-at").addEventListener("input", setSection);
+
+  const resize = () => {
+    const w = view.clientWidth, h = view.clientHeight;
+    renderer.setSize(w, h);
+    camera.aspect = w / Math.max(h, 1);
+    camera.updateProjectionMatrix();
+  };
+  window.addEventListener("resize", resize);
+  resize();
+  fit();
+  const frame = () => { renderer.render(scene, camera); requestAnimationFrame(frame); };
+  frame();
+
+  // ---- state for scripts and tests ----
+  window.mechanist = {
+    data,
+    /** Runs driver `index` to `s` (revolutions, or the file's length units). */
+    setDriver(index, s) {
+      const d = data.drivers[index];
+      const slider = $("driver-" + index);
+      if (slider) slider.value = Math.round((1000 * s) / d.amount);
+      state.driver = index;
+      show(d.paths, s * (d.rotation ? 1 : data.mm_per_length));
+      renderer.render(scene, camera);
+    },
+    /** Drags part `id` by `s` revolutions ("turn") or length units ("slide"); false when
+     *  the part cannot move so (see `selected`'s drag info). */
+    drag(id, s, mode = "turn") {
+      select(partIndex(id));
+      const d = data.drags[selected][mode];
+      if (!d || !d.possible) return false;
+      dragMode.value = mode;
+      dragSlider.value = Math.round(1000 * s);
+      show(d.paths, s * (mode === "turn" ? 1 : data.mm_per_length));
+      renderer.render(scene, camera);
+      return true;
+    },
+    /** The world pose of part `id` now, column-major. */
+    pose(id) { return parts[partIndex(id)].group.matrix.toArray(); },
+    /** Degrees part `id` has turned about the world axis `axis` since the file pose. */
+    turned(id, axis) {
+      const part = parts[partIndex(id)];
+      const R = new THREE.Matrix4().multiplyMatrices(part.group.matrix,
+        new THREE.Matrix4().getInverse(part.base));
+      const q = new THREE.Quaternion().setFromRotationMatrix(R);
+      const a = new THREE.Vector3(axis[0], axis[1], axis[2]).normalize();
+      return (2 * Math.atan2(new THREE.Vector3(q.x, q.y, q.z).dot(a), q.w) * 180) / Math.PI;
+    },
+    /** The drag info line shown for the selected part. */
+    dragInfo() { return $("drag-info").textContent; },
+    select(id) { select(id === null ? null : partIndex(id)); },
+  };
+})();
+</script>
+</body>
+</html>
+)html";
+
+}  // namespace mechanist
