@@ -11,7 +11,6 @@
 #include "kernel/geometry/aabb.h"
 #include "kernel/mesh/mass_properties.h"
 #include "kernel/mesh/mesh_check.h"
-#include "reasoning/drag.h"
 #include "reasoning/kinematic_model.h"
 #include "reasoning/operation_check.h"
 

@@ -5,10 +5,14 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include "kernel/collision/collision_model.h"
+#include "reasoning/assembly_plan.h"
 #include "reasoning/drag.h"
+#include "reasoning/expectation_check.h"
 #include "reasoning/motion_run.h"
 #include "viz/display_colors.h"
 #include "viz/feature_lines.h"
@@ -150,6 +154,21 @@ json Data(const Assembly& assembly, const Analysis& analysis) {
                            {"parts", d.parts}});
   }
   data["diagnostics"] = diagnostics;
+
+  // The file's expectations, as `mechanist check` evaluates them (the assembly plan, which
+  // sweeps every part, only when an entry asks for it).
+  std::optional<AssemblyPlan> plan;
+  for (const Expectation& e : assembly.expectations()) {
+    if (e.kind == Expectation::Kind::kAssemblable && !plan) {
+      plan = PlanAssembly(assembly, analysis, CollisionModel(assembly));
+    }
+  }
+  json expectations = json::array();
+  for (const ExpectationResult& r :
+       CheckExpectations(assembly, analysis, plan ? &*plan : nullptr)) {
+    expectations.push_back({{"passed", r.passed}, {"what", r.what}, {"detail", r.detail}});
+  }
+  data["expectations"] = expectations;
 
   // Each driver's run, on the same paths as animate and sweep.
   json drivers = json::array();

@@ -23,6 +23,9 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   .row { margin: 2px 0; cursor: pointer; }
   .row:hover, .row.on { background: #e4ecff; }
   .warning { color: #9a5b00; } .error { color: #b00000; } .info { color: #555; }
+  .passed { color: #1a7a1a; } .failed { color: #b00000; }
+  details { margin-left: 10px; } summary { cursor: pointer; }
+  .row, summary, #drag-info { overflow-wrap: anywhere; }
   input[type=range] { width: 200px; vertical-align: middle; }
   button { font-size: 12px; }
   #drag-info { color: #333; }
@@ -47,6 +50,8 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       <span id="drag-value"></span>
     </div>
     <h2>Mobility</h2><div id="mobility"></div>
+    <h2>Expectations</h2><div id="expectations"></div>
+    <h2>Parts</h2><div id="parts"></div>
     <h2>Subassemblies</h2><div id="subassemblies"></div>
     <h2>Pairs</h2><div id="pairs"></div>
     <h2>Diagnostics</h2><div id="diagnostics"></div>
@@ -202,12 +207,54 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   const mobility = data.mobility;
   $("mobility").appendChild(text("div", "mobility " + mobility.dof + ", " + mobility.redundant +
     " redundant constraints"));
+  // Free motions folded under one line: a real file may have dozens.
+  const free = document.createElement("details");
+  free.appendChild(text("summary", mobility.free.length + " free motion" +
+    (mobility.free.length === 1 ? "" : "s") + " (nothing drives or holds them)",
+    mobility.free.length ? "warning" : ""));
   for (const f of mobility.free) {
-    const row = text("div", data.parts[f.part].id + " " + f.freedom + ": nothing drives or holds it",
-      "row warning");
+    const row = text("div", data.parts[f.part].id + " " + f.freedom, "row warning");
     row.addEventListener("click", () => highlight([f.part].concat(f.parts)));
-    $("mobility").appendChild(row);
+    free.appendChild(row);
   }
+  $("mobility").appendChild(free);
+  data.expectations.forEach((e) => {
+    $("expectations").appendChild(text("div", (e.passed ? "passed " : "FAILED ") + e.what +
+      (e.passed ? "" : ": " + e.detail), e.passed ? "passed" : "failed"));
+  });
+  if (!data.expectations.length) $("expectations").textContent = "none in the file";
+
+  // The parts tree: the CAD product structure ("group", a path with "/"), then the parts.
+  const tree = { children: new Map(), parts: [] };
+  data.parts.forEach((p, i) => {
+    let node = tree;
+    for (const name of (p.group || "").split("/").filter((n) => n)) {
+      if (!node.children.has(name)) node.children.set(name, { children: new Map(), parts: [] });
+      node = node.children.get(name);
+    }
+    node.parts.push(i);
+  });
+  const partsOf = (node) => node.parts.concat(...[...node.children.values()].map(partsOf));
+  const drawTree = (node, into) => {
+    for (const [name, child] of node.children) {
+      const d = document.createElement("details");
+      const summary = text("summary", name);
+      summary.addEventListener("mouseenter", () => highlight(partsOf(child)));
+      summary.addEventListener("mouseleave", () => highlight([]));
+      d.appendChild(summary);
+      drawTree(child, d);
+      into.appendChild(d);
+    }
+    for (const i of node.parts) {
+      const row = text("div", data.parts[i].id + (data.parts[i].ground ? " (ground)" : ""), "row");
+      row.addEventListener("mouseenter", () => highlight([i]));
+      row.addEventListener("mouseleave", () => highlight(selected === null ? [] : [selected]));
+      row.addEventListener("click", () => select(i));
+      into.appendChild(row);
+    }
+  };
+  drawTree(tree, $("parts"));
+
   data.subassemblies.forEach((s, i) => {
     const row = text("div", "S" + (i + 1) + (s.ground ? " (ground)" : "") + ": " +
       s.parts.map((p) => data.parts[p].id).join(" "), "row");

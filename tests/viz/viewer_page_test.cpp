@@ -85,6 +85,9 @@ TEST(ViewerPage, CarriesTheDriversPathsThatStateAtUses) {
     EXPECT_EQ(analysis.pairs[i.get<std::size_t>()].fastening, PairFastening::kTight);
   }
   EXPECT_TRUE(data["drags"][assembly.FindPart("motor_shaft").value()]["turn"]["possible"]);
+  // The file's expectations, evaluated as `mechanist check` does: all nine pass.
+  ASSERT_EQ(data["expectations"].size(), assembly.expectations().size());
+  for (const json& e : data["expectations"]) EXPECT_TRUE(e["passed"]) << e.dump();
 }
 
 TEST(ViewerPage, SaysWhereThreeJsIsMissing) {
