@@ -12,7 +12,7 @@
 #include "kernel/mesh/mass_properties.h"
 #include "kernel/mesh/mesh_check.h"
 #include "reasoning/kinematic_model.h"
-#include "reasoning/operation_check.h"
+#include "reasoning/movable_range.h"
 
 namespace mechanist {
 namespace {
@@ -370,31 +370,7 @@ class Builder {
     }
   }
 
-  // The first contact along `paths` run `sense` (+1 or -1) over `amount`, if any.
-  std::optional<OperationClash> FirstContact(const CollisionModel& collision,
-                                             std::vector<ScrewPath> paths, double sense,
-                                             double amount) const {
-    for (ScrewPath& path : paths) {
-      for (ScrewMotion& m : path.screws) {
-        m.turns_per_unit *= sense;
-        m.travel_per_unit *= sense;
-      }
-    }
-    const OperationCheck check = SweepPaths(assembly_, analysis_, collision, paths, amount);
-    for (const OperationClash& c : check.clashes) {
-      // A part that nothing drives or holds yields to a push (the swept check carries it
-      // along): it is no stop.
-      if (!yields_[c.part_a] && !yields_[c.part_b]) return c;
-    }
-    return std::nullopt;
-  }
-
   void AddLimits(const CollisionModel& collision) {
-    yields_.assign(assembly_.parts().size(), false);
-    for (const FreeMotion& f : analysis_.motion.mobility.free_motions) {
-      yields_[f.part] = true;
-      for (const std::size_t p : f.parts) yields_[p] = true;
-    }
     const double reach = model_.reach / kMetresPerMm;
     for (std::size_t k = 0; k < model_.joints.size(); ++k) {
       if (options_.progress) options_.progress(static_cast<double>(k) / model_.joints.size());
@@ -419,10 +395,8 @@ class Builder {
       // assembly's size.
       const double amount = hinge ? 1.0 : reach;
       if (!(amount > 0.0)) continue;
-      const auto ahead = FirstContact(collision, paths, 1.0, amount);
-      // A hinge that turns a whole revolution one way meets nothing the other way either.
-      if (!ahead && hinge) continue;
-      const auto behind = FirstContact(collision, paths, -1.0, amount);
+      const MovableRange range =
+          FindMovableRange(assembly_, analysis_, collision, paths, amount, hinge);
       // The feature's axis may point against the joint's.
       const double sign = km_.WorldAxis(child).direction.dot(j.axis_W) > 0 ? 1.0 : -1.0;
       const double unit = hinge ? kTwoPi : kMetresPerMm;
@@ -438,8 +412,8 @@ class Builder {
           j.lower_contact = parts;
         }
       };
-      set(ahead, 1.0);
-      set(behind, -1.0);
+      set(range.ahead, 1.0);
+      set(range.behind, -1.0);
     }
     if (options_.progress) options_.progress(1.0);
   }
@@ -453,7 +427,6 @@ class Builder {
   std::vector<std::optional<std::size_t>> link_of_body_;
   std::vector<std::optional<std::size_t>> joint_of_freedom_;
   std::set<std::string> stems_;  // mesh file stems taken
-  std::vector<bool> yields_;     // per part: moved by a free motion, so a push carries it
   SimulationModel model_;
 };
 

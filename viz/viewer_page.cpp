@@ -10,10 +10,12 @@
 #include <stdexcept>
 
 #include "kernel/collision/collision_model.h"
+#include "kernel/geometry/aabb.h"
 #include "reasoning/assembly_plan.h"
 #include "reasoning/drag.h"
 #include "reasoning/expectation_check.h"
 #include "reasoning/motion_run.h"
+#include "reasoning/movable_range.h"
 #include "viz/display_colors.h"
 #include "viz/feature_lines.h"
 #include "viz/viewer_template.h"
@@ -87,7 +89,12 @@ json PairJson(const Assembly& assembly, const Pair& p) {
   return j;
 }
 
-json Data(const Assembly& assembly, const Analysis& analysis) {
+json Contact(const std::optional<OperationClash>& c) {
+  if (!c) return nullptr;
+  return {{"at", c->at}, {"parts", json::array({c->part_a, c->part_b})}, {"point", Vector(c->p_W)}};
+}
+
+json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOptions& options) {
   json data;
   data["name"] = assembly.name();
   data["length_unit"] = assembly.units().length;
@@ -185,7 +192,16 @@ json Data(const Assembly& assembly, const Analysis& analysis) {
   }
   data["drivers"] = drivers;
 
-  // Every part's drag: its allowable motion with what follows, or the pairs that hold it.
+  // Every part's drag: its allowable motion with what follows and how far it goes each way,
+  // or the pairs that hold it. A slide is searched over the assembly's diagonal.
+  Aabb bounds;
+  for (const Part& part : assembly.parts()) {
+    if (part.HasGeometry()) bounds.Extend(TransformBox(part.X_WP, part.mesh->Bounds()));
+  }
+  const double reach = bounds.empty() ? 0.0 : bounds.size().norm();
+  data["reach_mm"] = reach;
+  std::optional<CollisionModel> collision;
+  if (options.ranges) collision.emplace(assembly);
   json drags = json::array();
   for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
     json entry = json::object();
@@ -197,6 +213,12 @@ json Data(const Assembly& assembly, const Analysis& analysis) {
         std::vector<ScrewPath> paths;
         for (const PartMotion& m : r.motion.parts) paths.push_back(m.path);
         j["paths"] = Paths(paths);
+        if (collision && (rotate || reach > 0)) {
+          const MovableRange range =
+              FindMovableRange(assembly, analysis, *collision, paths, rotate ? 1.0 : reach, rotate);
+          j["ahead"] = Contact(range.ahead);
+          j["behind"] = Contact(range.behind);
+        }
       } else {
         j["reason"] = r.motion.reason;
         j["holding"] = r.holding_pairs;
@@ -248,7 +270,7 @@ std::string ViewerHtml(const Assembly& assembly, const Analysis& analysis,
   put("@TITLE@", HtmlEscape(title));
   put("@THREE@", ScriptSafe(three));
   put("@ORBIT@", ScriptSafe(orbit));
-  put("@DATA@", ScriptSafe(Data(assembly, analysis).dump()));
+  put("@DATA@", ScriptSafe(Data(assembly, analysis, options).dump()));
   return html;
 }
 

@@ -12,6 +12,9 @@ namespace mechanist {
 /// OrbitControls), inlined into every page.
 struct ViewerOptions {
   std::filesystem::path three_dir = "/usr/share/javascript/three";
+  /// Search every drag's movable range with the swept check (FindMovableRange): the page
+  /// stops a drag at the first contact each way and shows it. Slow on large real files.
+  bool ranges = true;
 };
 
 /// One self-contained HTML page (no server, no network) to look at and work the analysed
@@ -21,7 +24,8 @@ struct ViewerOptions {
 /// mobility and the diagnostics (click highlights the parts); a slider and a play button per
 /// driver, moving the parts along the same paths as `animate` and `sweep` (PlanRun: the pose
 /// after s is path.At(s) * X_WP); and a drag for every part: it turns about (or slides along)
-/// the axis Drag gives it, everything coupled follows, or the page says which pairs hold it.
+/// the axis Drag gives it, everything coupled follows, up to the first contact each way (the
+/// movable range, shown with the parts that meet), or the page says which pairs hold it.
 /// The page's state is `window.mechanist` (for tests and scripts). Throws std::runtime_error
 /// when three.js is not found under `options.three_dir`.
 std::string ViewerHtml(const Assembly& assembly, const Analysis& analysis,

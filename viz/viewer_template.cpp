@@ -217,7 +217,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     row.addEventListener("click", () => highlight([f.part].concat(f.parts)));
     free.appendChild(row);
   }
-  $("mobility").appendChild(free);
+  if (mobility.free.length) $("mobility").appendChild(free);
   data.expectations.forEach((e) => {
     $("expectations").appendChild(text("div", (e.passed ? "passed " : "FAILED ") + e.what +
       (e.passed ? "" : ": " + e.detail), e.passed ? "passed" : "failed"));
@@ -283,19 +283,44 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   let selected = null;
   const dragSlider = $("drag"), dragMode = $("drag-mode");
   const dragMotion = () => data.drags[selected][dragMode.value];
-  const setDrag = () => {
-    const motion = dragMotion();
-    const s = dragSlider.value / 1000;  // one revolution or one length unit either way
-    const scale = dragMode.value === "turn" ? 1 : data.mm_per_length;
-    $("drag-value").textContent = dragMode.value === "turn" ?
-      (360 * s).toFixed(1) + " deg" : s.toFixed(2) + " " + data.length_unit;
+  // A red dot where two parts meet at the end of a drag's movable range.
+  const stopMarker = new THREE.Mesh(new THREE.SphereGeometry(1, 16, 12),
+    new THREE.MeshBasicMaterial({ color: 0xdd1111, depthTest: false }));
+  stopMarker.visible = false;
+  stopMarker.renderOrder = 1;
+  scene.add(stopMarker);
+  // Drags part `selected` to s (revolutions, or mm for a slide), stopped by its movable range;
+  // returns the contact it stops at, or null.
+  const dragTo = (mode, s) => {
+    const motion = data.drags[selected][mode];
+    let stop = null;
+    if (motion.ahead && s > motion.ahead.at) { s = motion.ahead.at; stop = motion.ahead; }
+    if (motion.behind && s < -motion.behind.at) { s = -motion.behind.at; stop = motion.behind; }
     state.driver = null;
-    show(motion.paths, s * scale);
+    show(motion.paths, s);
+    stopMarker.visible = stop !== null;
+    if (stop) {
+      stopMarker.position.set(stop.point[0], stop.point[1], stop.point[2]);
+      stopMarker.scale.setScalar(data.reach_mm / 150);
+      highlight([selected].concat(stop.parts));
+    }
+    $("drag-value").textContent = (mode === "turn" ? (360 * s).toFixed(1) + " deg" :
+      (s / data.mm_per_length).toFixed(2) + " " + data.length_unit) +
+      (stop ? ": stopped, " + data.parts[stop.parts[0]].id + " meets " +
+        data.parts[stop.parts[1]].id : "");
+    return stop;
+  };
+  // The slider spans a revolution each way for a turn, the assembly's size for a slide.
+  const setDrag = () => {
+    const mode = dragMode.value;
+    const s = (dragSlider.value / 1000) * (mode === "turn" ? 1 : data.reach_mm);
+    dragTo(mode, s);
   };
   const select = (p) => {
     selected = p;
     highlight(p === null ? [] : [p]);
     dragMode.innerHTML = "";
+    stopMarker.visible = false;
     if (p === null) { $("drag-controls").style.display = "none"; return; }
     const drags = data.drags[p];
     const info = [data.parts[p].id];
@@ -406,17 +431,19 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       show(d.paths, s * (d.rotation ? 1 : data.mm_per_length));
       renderer.render(scene, camera);
     },
-    /** Drags part `id` by `s` revolutions ("turn") or length units ("slide"); false when
-     *  the part cannot move so (see `selected`'s drag info). */
+    /** Drags part `id` by `s` revolutions ("turn") or length units ("slide"): true, or
+     *  {stop: [the two parts that meet], at} when its movable range ends first; false when
+     *  the part cannot move so (see dragInfo). */
     drag(id, s, mode = "turn") {
       select(partIndex(id));
       const d = data.drags[selected][mode];
       if (!d || !d.possible) return false;
       dragMode.value = mode;
-      dragSlider.value = Math.round(1000 * s);
-      show(d.paths, s * (mode === "turn" ? 1 : data.mm_per_length));
+      const path_s = s * (mode === "turn" ? 1 : data.mm_per_length);
+      dragSlider.value = Math.round((1000 * path_s) / (mode === "turn" ? 1 : data.reach_mm));
+      const stop = dragTo(mode, path_s);
       renderer.render(scene, camera);
-      return true;
+      return stop ? { stop: stop.parts.map((i) => data.parts[i].id), at: stop.at } : true;
     },
     /** The world pose of part `id` now, column-major. */
     pose(id) { return parts[partIndex(id)].group.matrix.toArray(); },

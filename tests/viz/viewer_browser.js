@@ -2,7 +2,8 @@
 // and does: usage: node viewer_browser.js CHROMIUM PAGE.html CHECKS.json SCREENSHOT_DIR
 // CHECKS.json: {"poses": {"driver": 0, "s": S, "parts": {id: [16 column-major numbers]}},
 //               "drag": {"part": ID, "turns": T, "follower": ID, "axis": [x,y,z],
-//                        "degrees": D}, "held": ID}
+//                        "degrees": D}, "held": ID, "stop": {"part": ID, "turns": T,
+//                        "meets": [ID, ID]}}, every entry optional
 // Prints one line per check and exits 1 at the first failure.
 "use strict";
 const fs = require("fs");
@@ -90,6 +91,17 @@ function fail(message) {
     console.log("ok dragging " + d.part + " by " + d.turns + " rev turns " + d.follower + " by " +
                 turned.toFixed(6) + " deg");
     await shot("viewer_drag.png");
+  }
+  if (checks.stop) {
+    const t = checks.stop;
+    const result = await page.evaluate((t) => window.mechanist.drag(t.part, t.turns), t);
+    if (!result || !result.stop) fail("dragging " + t.part + " did not stop: " + JSON.stringify(result));
+    if (JSON.stringify(result.stop.slice().sort()) !== JSON.stringify(t.meets.slice().sort())) {
+      fail("dragging " + t.part + " stops where " + result.stop + " meet, not " + t.meets);
+    }
+    console.log("ok dragging " + t.part + " stops at " + (360 * result.at).toFixed(1) +
+                " deg where " + result.stop.join(" and ") + " meet");
+    await shot("viewer_stop.png");
   }
   if (checks.held) {
     const info = await page.evaluate((id) => {

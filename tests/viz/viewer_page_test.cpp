@@ -102,6 +102,40 @@ TEST(ViewerPage, SaysWhereThreeJsIsMissing) {
   }
 }
 
+std::string Slurp(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+std::string Replace(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+// Runs tests/viz/viewer_browser.js on `page` in `dir` with `checks`: "" when every check
+// passed, else what the script printed.
+std::string RunBrowser(const std::filesystem::path& dir, const std::string& page,
+                       const json& checks) {
+  const auto checks_file = dir / (page + ".checks.json");
+  std::ofstream(checks_file) << checks.dump();
+  const std::string command =
+      "NODE_PATH='" + std::string(MECHANIST_PUPPETEER) + "' '" + MECHANIST_NODE + "' '" +
+      MECHANIST_SOURCE_DIR + "/tests/viz/viewer_browser.js' '" + MECHANIST_CHROMIUM + "' '" +
+      (dir / page).string() + "' '" + checks_file.string() + "' '" + dir.string() + "' 2>&1";
+  std::string out;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return "cannot run node";
+  char buffer[4096];
+  std::size_t n;
+  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
+  const int status = pclose(pipe);
+  const bool passed = WIFEXITED(status) && WEXITSTATUS(status) == 0 &&
+                      out.find("all checks passed") != std::string::npos;
+  return passed ? "" : out;
+}
+
 TEST(ViewerPage, WorksInABrowser) {
   const std::string puppeteer = MECHANIST_PUPPETEER, chromium = MECHANIST_CHROMIUM;
   if (puppeteer.empty() || chromium.empty() || std::string(MECHANIST_NODE).empty()) {
@@ -128,20 +162,17 @@ TEST(ViewerPage, WorksInABrowser) {
                          {"axis", {0, 0, 1}},
                          {"degrees", -9}}},
                        {"held", "motor_body"}};
-  std::ofstream(dir / "checks.json") << checks.dump();
-  const std::string command = "NODE_PATH='" + puppeteer + "' '" + MECHANIST_NODE + "' '" +
-                              MECHANIST_SOURCE_DIR + "/tests/viz/viewer_browser.js' '" + chromium +
-                              "' '" + (dir / "page.html").string() + "' '" +
-                              (dir / "checks.json").string() + "' '" + dir.string() + "' 2>&1";
-  std::string out;
-  FILE* pipe = popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  char buffer[4096];
-  std::size_t n;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-  const int status = pclose(pipe);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out;
-  EXPECT_NE(out.find("all checks passed"), std::string::npos) << out;
+  EXPECT_EQ(RunBrowser(dir, "page.html", checks), "") << "worm drive";
+
+  // A drag that stops: with shaft a fixed to the ground, the arm's lug meets block b.
+  const std::string pushed =
+      std::string(MECHANIST_SOURCE_DIR) + "/examples/pushed_by_contact/assembly.json";
+  const Assembly stopped = ParseAssembly(Replace(Slurp(pushed), R"({"id": "a", "library")",
+                                                 R"({"id": "a", "ground": true, "library")"),
+                                         pushed);
+  std::ofstream(dir / "stop.html") << ViewerHtml(stopped, Analyze(stopped));
+  const json stop = {{"stop", {{"part", "d"}, {"turns", 0.5}, {"meets", {"b", "lug"}}}}};
+  EXPECT_EQ(RunBrowser(dir, "stop.html", stop), "") << "a drag that stops";
 }
 
 }  // namespace
