@@ -12,7 +12,7 @@ namespace mechanist::cli {
 Command ViewCommand() {
   struct Options {
     std::string out;
-    bool no_ranges = false;
+    bool ranges = false, no_ranges = false;
   };
   auto o = std::make_shared<Options>();
   Command c;
@@ -22,14 +22,28 @@ Command ViewCommand() {
   c.analysis = true;
   c.options = [o](CLI::App& app) {
     app.add_option("--out", o->out, "the HTML file (default: FILE's name with .html, here)");
-    app.add_flag("--no-ranges", o->no_ranges,
-                 "skip the swept check for where each drag stops (faster on large files)");
+    CLI::Option* ranges = app.add_flag(
+        "--ranges", o->ranges, "search where each drag stops even above 100,000 triangles (slow)");
+    app.add_flag("--no-ranges", o->no_ranges, "do not search where each drag stops")
+        ->excludes(ranges);
   };
   c.run = [o](Session& s) {
     const std::string path =
         o->out.empty() ? std::filesystem::path(s.file).stem().string() + ".html" : o->out;
+    // The swept check of every drag takes minutes on a large real file (the Onshape robot
+    // hand, 279,525 triangles: 43 s for one finger): above kMaxRangeTriangles it runs only
+    // when asked.
+    constexpr std::size_t kMaxRangeTriangles = 100000;
+    std::size_t triangles = 0;
+    for (const Part& part : s.assembly->parts()) {
+      if (part.HasGeometry()) triangles += part.mesh->faces.size();
+    }
     ViewerOptions options;
-    options.ranges = !o->no_ranges;
+    options.ranges = o->ranges || (!o->no_ranges && triangles <= kMaxRangeTriangles);
+    if (!options.ranges && !o->no_ranges) {
+      std::cout << "movable ranges not searched: " << triangles
+                << " triangles, more than 100,000 (--ranges searches them)\n";
+    }
     s.Report(path, ViewerHtml(*s.assembly, *s.analysis, options));
     std::cout << "viewer: " << std::filesystem::absolute(path).string()
               << " (open it in a browser)\n";
