@@ -359,12 +359,32 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       .find((h) => h.object.userData.part !== undefined);
     return hit ? hit.object.userData.part : null;
   };
-  let down = null;
-  renderer.domElement.addEventListener("pointerdown", (e) => { down = [e.clientX, e.clientY]; });
+  // Pressing on a part that can move and dragging the mouse sideways moves it (400 pixels: a
+  // revolution, or the assembly's size for a slide), the orbit held meanwhile; a click
+  // without moving selects.
+  let down = null, grab = null;
+  const kPixelsPerRange = 400;
+  renderer.domElement.addEventListener("pointerdown", (e) => {
+    down = [e.clientX, e.clientY];
+    const p = pick(e);
+    if (p === null) return;
+    const movable = ["turn", "slide"].some((m) => data.drags[p][m] && data.drags[p][m].possible);
+    if (!movable) return;
+    if (selected !== p) select(p);
+    grab = { x: e.clientX, value: Number(dragSlider.value) };
+    controls.enabled = false;
+  });
   renderer.domElement.addEventListener("pointerup", (e) => {
     if (down && Math.hypot(e.clientX - down[0], e.clientY - down[1]) < 4) select(pick(e));
+    down = null;
+    grab = null;
+    controls.enabled = true;
   });
   renderer.domElement.addEventListener("pointermove", (e) => {
+    if (grab && dragMode.options.length) {
+      dragSlider.value = grab.value + ((e.clientX - grab.x) / kPixelsPerRange) * 1000;
+      setDrag();
+    }
     const p = pick(e);
     const hover = $("hover");
     hover.style.display = p === null ? "none" : "block";
@@ -455,6 +475,13 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       const q = new THREE.Quaternion().setFromRotationMatrix(R);
       const a = new THREE.Vector3(axis[0], axis[1], axis[2]).normalize();
       return (2 * Math.atan2(new THREE.Vector3(q.x, q.y, q.z).dot(a), q.w) * 180) / Math.PI;
+    },
+    /** Where part `id`'s centre appears in the page, CSS pixels. */
+    screenPoint(id) {
+      const box = new THREE.Box3().setFromObject(parts[partIndex(id)].group);
+      const c = box.getCenter(new THREE.Vector3()).project(camera);
+      const r = renderer.domElement.getBoundingClientRect();
+      return [r.left + ((c.x + 1) / 2) * r.width, r.top + ((1 - c.y) / 2) * r.height];
     },
     /** The drag info line shown for the selected part. */
     dragInfo() { return $("drag-info").textContent; },

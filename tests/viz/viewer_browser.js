@@ -3,7 +3,8 @@
 // CHECKS.json: {"poses": {"driver": 0, "s": S, "parts": {id: [16 column-major numbers]}},
 //               "drag": {"part": ID, "turns": T, "follower": ID, "axis": [x,y,z],
 //                        "degrees": D}, "held": ID, "stop": {"part": ID, "turns": T,
-//                        "meets": [ID, ID]}}, every entry optional
+//                        "meets": [ID, ID]}, "mouse": {"part": ID, "pixels": P,
+//                        "follower": ID, "axis": [x,y,z], "degrees": D}}, every entry optional
 // Prints one line per check and exits 1 at the first failure.
 "use strict";
 const fs = require("fs");
@@ -91,6 +92,24 @@ function fail(message) {
     console.log("ok dragging " + d.part + " by " + d.turns + " rev turns " + d.follower + " by " +
                 turned.toFixed(6) + " deg");
     await shot("viewer_drag.png");
+  }
+  if (checks.mouse) {
+    // Press on the part and move the mouse sideways, as a person would.
+    const m = checks.mouse;
+    await page.evaluate(() => window.mechanist.select(null));
+    const [x, y] = await page.evaluate((id) => window.mechanist.screenPoint(id), m.part);
+    await page.mouse.move(x, y);
+    await page.mouse.down();
+    for (let k = 1; k <= 10; ++k) await page.mouse.move(x + (m.pixels * k) / 10, y);
+    await page.mouse.up();
+    const turned = await page.evaluate((m) => window.mechanist.turned(m.follower, m.axis), m);
+    if (!(Math.abs(Math.abs(turned) - m.degrees) < 0.01)) {
+      fail("a mouse drag of " + m.part + " by " + m.pixels + " px turned " + m.follower + " by " +
+           turned + " deg, not " + m.degrees);
+    }
+    console.log("ok a mouse drag of " + m.part + " by " + m.pixels + " px turns " + m.follower +
+                " by " + turned.toFixed(3) + " deg");
+    await shot("viewer_mouse.png");
   }
   if (checks.stop) {
     const t = checks.stop;

@@ -161,7 +161,15 @@ TEST(ViewerPage, WorksInABrowser) {
                          {"follower", "worm_wheel"},
                          {"axis", {0, 0, 1}},
                          {"degrees", -9}}},
-                       {"held", "motor_body"}};
+                       {"held", "motor_body"},
+                       // 200 px of a 400 px revolution: half a turn of the worm, 4.5 degrees
+                       // of the wheel.
+                       {"mouse",
+                        {{"part", "worm"},
+                         {"pixels", 200},
+                         {"follower", "worm_wheel"},
+                         {"axis", {0, 0, 1}},
+                         {"degrees", 4.5}}}};
   EXPECT_EQ(RunBrowser(dir, "page.html", checks), "") << "worm drive";
 
   // A drag that stops: with shaft a fixed to the ground, the arm's lug meets block b.
