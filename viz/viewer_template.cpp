@@ -53,6 +53,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     <h2>Expectations</h2><div id="expectations"></div>
     <h2>Parts</h2><div id="parts"></div>
     <h2>Subassemblies</h2><div id="subassemblies"></div>
+    <h2>Pair graph</h2><div id="graph"></div>
     <h2>Pairs</h2><div id="pairs"></div>
     <h2>Diagnostics</h2><div id="diagnostics"></div>
   </div>
@@ -262,6 +263,64 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     row.addEventListener("mouseleave", () => highlight([]));
     $("subassemblies").appendChild(row);
   });
+  // The pair graph between subassemblies: a node per subassembly on a circle, an edge per pair
+  // joining two of them (pairs inside one are the fixed ones that made it).
+  const svgNs = "http://www.w3.org/2000/svg";
+  const svg = document.createElementNS(svgNs, "svg");
+  svg.setAttribute("width", 340);
+  svg.setAttribute("height", 240);
+  const groupOf = data.parts.map((p) => p.subassembly);
+  const n = data.subassemblies.length;
+  const nodeAt = (i) => [170 + 95 * Math.cos((2 * Math.PI * i) / n - Math.PI / 2),
+                         120 + 95 * Math.sin((2 * Math.PI * i) / n - Math.PI / 2)];
+  const seen = new Map();  // parallel edges between two nodes bend apart
+  data.pairs.forEach((p, i) => {
+    const a = groupOf[p.parts[0]], b = groupOf[p.parts[1]];
+    if (a === b) return;
+    const key = Math.min(a, b) + "-" + Math.max(a, b);
+    const k = seen.get(key) || 0;
+    seen.set(key, k + 1);
+    const [x1, y1] = nodeAt(a), [x2, y2] = nodeAt(b);
+    const bend = (k % 2 ? -1 : 1) * Math.ceil(k / 2) * 14;
+    const [mx, my] = [(x1 + x2) / 2, (y1 + y2) / 2];
+    const len = Math.hypot(x2 - x1, y2 - y1) || 1;
+    const [cx, cy] = [mx - ((y2 - y1) / len) * bend, my + ((x2 - x1) / len) * bend];
+    const edge = document.createElementNS(svgNs, "path");
+    edge.setAttribute("d", "M" + x1 + "," + y1 + " Q" + cx + "," + cy + " " + x2 + "," + y2);
+    const coupling = p.dof === undefined;
+    edge.setAttribute("stroke", coupling ? "#c0392b" : "#555");
+    edge.setAttribute("stroke-dasharray", coupling ? "4 3" : "");
+    edge.setAttribute("fill", "none");
+    edge.setAttribute("stroke-width", 2);
+    edge.setAttribute("class", "edge");
+    const title = document.createElementNS(svgNs, "title");
+    title.textContent = "P" + (i + 1) + " " + p.type + (p.ratio ? " " + p.ratio : "") + ": " +
+      p.a + " + " + p.b;
+    edge.appendChild(title);
+    edge.addEventListener("mouseenter", () => highlight(p.parts));
+    edge.addEventListener("mouseleave", () => highlight([]));
+    svg.appendChild(edge);
+  });
+  data.subassemblies.forEach((sub, i) => {
+    const [x, y] = nodeAt(i);
+    const c = data.parts[sub.parts[0]].color;
+    const node = document.createElementNS(svgNs, "circle");
+    Object.entries({ cx: x, cy: y, r: 11, stroke: "#333",
+      fill: "rgb(" + c.map((v) => Math.round(255 * v)).join(",") + ")" })
+      .forEach(([k, v]) => node.setAttribute(k, v));
+    node.setAttribute("class", "node");
+    node.addEventListener("mouseenter", () => highlight(sub.parts));
+    node.addEventListener("mouseleave", () => highlight([]));
+    const label = document.createElementNS(svgNs, "text");
+    label.setAttribute("x", x + 13);
+    label.setAttribute("y", y + 4);
+    label.setAttribute("font-size", 11);
+    label.textContent = "S" + (i + 1) + (sub.ground ? " ground" : "");
+    svg.append(node, label);
+  });
+  $("graph").appendChild(svg);
+  $("graph").appendChild(text("div", "solid: joints; dashed: couplings (gears, worms, racks)", "info"));
+
   data.pairs.forEach((p, i) => {
     let words = "P" + (i + 1) + " " + p.type + ": " + p.a + " + " + p.b;
     if (p.ratio) words += ", ratio " + p.ratio;

@@ -4,7 +4,8 @@
 //               "drag": {"part": ID, "turns": T, "follower": ID, "axis": [x,y,z],
 //                        "degrees": D}, "held": ID, "stop": {"part": ID, "turns": T,
 //                        "meets": [ID, ID]}, "mouse": {"part": ID, "pixels": P,
-//                        "follower": ID, "axis": [x,y,z], "degrees": D}}, every entry optional
+//                        "follower": ID, "axis": [x,y,z], "degrees": D},
+//               "graph": {"nodes": N, "edges": E}}, every entry optional
 // Prints one line per check and exits 1 at the first failure.
 "use strict";
 const fs = require("fs");
@@ -40,6 +41,18 @@ function fail(message) {
   if (errors.length) fail("console errors: " + errors.join(" | "));
   if (requests.length) fail("network requests: " + requests.join(" "));
   console.log("ok loads with no console error and no network request");
+
+  if (checks.graph) {
+    const drawn = await page.evaluate(() => ({
+      nodes: document.querySelectorAll("#graph .node").length,
+      edges: document.querySelectorAll("#graph .edge").length,
+    }));
+    if (drawn.nodes !== checks.graph.nodes || drawn.edges !== checks.graph.edges) {
+      fail("the pair graph draws " + JSON.stringify(drawn) + ", not " + JSON.stringify(checks.graph));
+    }
+    console.log("ok the pair graph draws " + drawn.nodes + " subassemblies and " + drawn.edges +
+                " pairs between them");
+  }
 
   const shot = async (name) => {
     const file = path.join(shots, name);

@@ -154,7 +154,13 @@ TEST(ViewerPage, WorksInABrowser) {
   for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
     poses[assembly.part(p).id] = Matrix(state.X_WP[p]);
   }
+  // The pair graph: a node per subassembly, an edge per pair joining two of them.
+  std::size_t between = 0;
+  for (const Pair& p : analysis.pairs) {
+    between += analysis.subassembly_of[p.a.part] != analysis.subassembly_of[p.b.part];
+  }
   const json checks = {{"poses", {{"driver", 0}, {"s", s}, {"parts", poses}}},
+                       {"graph", {{"nodes", analysis.subassemblies.size()}, {"edges", between}}},
                        {"drag",
                         {{"part", "motor_shaft"},
                          {"turns", 1},
