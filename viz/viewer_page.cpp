@@ -1,5 +1,7 @@
 #include "viz/viewer_page.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -9,11 +11,14 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "kernel/assembly/assembly_state.h"
 #include "kernel/collision/collision_model.h"
 #include "kernel/geometry/aabb.h"
 #include "reasoning/assembly_plan.h"
 #include "reasoning/drag.h"
 #include "reasoning/expectation_check.h"
+#include "reasoning/gap_search.h"
+#include "reasoning/interference.h"
 #include "reasoning/motion_run.h"
 #include "reasoning/movable_range.h"
 #include "viz/display_colors.h"
@@ -192,6 +197,48 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
   }
   data["drivers"] = drivers;
 
+  // Clashes at rest (as `mechanist interference` finds them): the parts and where.
+  std::optional<CollisionModel> collision;
+  json clashes = json::array();
+  if (std::any_of(assembly.parts().begin(), assembly.parts().end(),
+                  [](const Part& p) { return p.HasGeometry(); })) {
+    collision.emplace(assembly);
+    for (const PartContact& c :
+         FindContacts(assembly, InitialState(assembly), *collision, analysis.pairs)) {
+      if (c.verdict != ContactVerdict::kClash) continue;
+      clashes.push_back(
+          {{"parts", json::array({c.part_a, c.part_b})},
+           {"point", Vector(c.measure.p_W)},
+           {"depth", std::isfinite(c.measure.depth) ? json(c.measure.depth) : json("unknown")}});
+    }
+  }
+  data["clashes"] = clashes;
+
+  // The enclosed gaps: their walls (world, mm) and volumes, when asked for.
+  json gaps = json::array();
+  if (options.gap_voxel > 0) {
+    GapSearchOptions gap_options;
+    gap_options.voxel = options.gap_voxel;
+    const GapSearch search = FindGaps(assembly, gap_options);
+    std::vector<std::int32_t> gap_of_face;
+    const TriangleMesh surface = GapSurface(search, &gap_of_face);
+    for (std::size_t g = 0; g < search.gaps.size(); ++g) {
+      std::vector<float> xyz;
+      for (std::size_t f = 0; f < surface.faces.size(); ++f) {
+        if (gap_of_face[f] != static_cast<std::int32_t>(g)) continue;
+        for (const std::int32_t i : surface.faces[f]) {
+          const Eigen::Vector3d& v = surface.vertices[i];
+          xyz.insert(xyz.end(), {static_cast<float>(v.x()), static_cast<float>(v.y()),
+                                 static_cast<float>(v.z())});
+        }
+      }
+      gaps.push_back({{"volume", search.gaps[g].volume},
+                      {"error", search.gaps[g].volume_error},
+                      {"triangles", Base64(xyz.data(), 4 * xyz.size())}});
+    }
+  }
+  data["gaps"] = gaps;
+
   // Every part's drag: its allowable motion with what follows and how far it goes each way,
   // or the pairs that hold it. A slide is searched over the assembly's diagonal.
   Aabb bounds;
@@ -200,8 +247,7 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
   }
   const double reach = bounds.empty() ? 0.0 : bounds.size().norm();
   data["reach_mm"] = reach;
-  std::optional<CollisionModel> collision;
-  if (options.ranges) collision.emplace(assembly);
+  if (!options.ranges) collision.reset();
   json drags = json::array();
   for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
     json entry = json::object();

@@ -15,6 +15,9 @@ struct ViewerOptions {
   /// Search every drag's movable range with the swept check (FindMovableRange): the page
   /// stops a drag at the first contact each way and shows it. Slow on large real files.
   bool ranges = true;
+  /// Find the enclosed gaps at this voxel edge (mm) and show them as translucent volumes with
+  /// their volumes; 0: no gaps.
+  double gap_voxel = 0.0;
 };
 
 /// One self-contained HTML page (no server, no network) to look at and work the analysed
@@ -26,7 +29,9 @@ struct ViewerOptions {
 /// after s is path.At(s) * X_WP); and a drag for every part: it turns about (or slides along)
 /// the axis Drag gives it, everything coupled follows, up to the first contact each way (the
 /// movable range, shown with the parts that meet), or the page says which pairs hold it.
-/// The page's state is `window.mechanist` (for tests and scripts). Throws std::runtime_error
+/// Parts in a clash at rest (interference) are drawn red with a dot at the contact point, and
+/// with `gap_voxel` the enclosed gaps show. The page's state is `window.mechanist` (for tests
+/// and scripts). Throws std::runtime_error
 /// when three.js is not found under `options.three_dir`.
 std::string ViewerHtml(const Assembly& assembly, const Analysis& analysis,
                        const ViewerOptions& options = {});

@@ -50,6 +50,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       <span id="drag-value"></span>
     </div>
     <h2>Mobility</h2><div id="mobility"></div>
+    <h2>Clashes and gaps</h2><div id="clashes"></div><div id="gaps"></div>
     <h2>Expectations</h2><div id="expectations"></div>
     <h2>Parts</h2><div id="parts"></div>
     <h2>Subassemblies</h2><div id="subassemblies"></div>
@@ -169,6 +170,35 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   };
   const partIndex = (id) => data.parts.findIndex((p) => p.id === id);
 
+  // ---- clashes and gaps ----
+  // Parts in a clash at rest: red, with a dot where they meet.
+  const clashing = new Set();
+  const dotSize = Math.max(data.reach_mm, 1) / 150;
+  for (const c of data.clashes) {
+    c.parts.forEach((p) => clashing.add(p));
+    const dot = new THREE.Mesh(new THREE.SphereGeometry(1, 12, 8),
+      new THREE.MeshBasicMaterial({ color: 0xdd1111, depthTest: false }));
+    dot.position.set(c.point[0], c.point[1], c.point[2]);
+    dot.scale.setScalar(dotSize);
+    dot.renderOrder = 1;
+    dot.userData.clash = true;
+    scene.add(dot);
+  }
+  for (const p of clashing) {
+    parts[p].color.setRGB(0.85, 0.05, 0.05);
+    parts[p].material.color.copy(parts[p].color);
+  }
+  // Enclosed gaps: translucent blue volumes, drawn inside the parts.
+  data.gaps.forEach((g) => {
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute("position",
+      new THREE.BufferAttribute(decode(g.triangles, Float32Array), 3));
+    geometry.computeVertexNormals();
+    scene.add(new THREE.Mesh(geometry, new THREE.MeshStandardMaterial({
+      color: 0x1a59f2, transparent: true, opacity: 0.45, side: THREE.DoubleSide,
+      depthWrite: false, clippingPlanes: clipping })));
+  });
+
   // ---- panel ----
   $("title").textContent = data.name || "assembly";
   const unit = (driver) => (driver.rotation ? "rev" : data.length_unit);
@@ -219,6 +249,20 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     free.appendChild(row);
   }
   if (mobility.free.length) $("mobility").appendChild(free);
+  data.clashes.forEach((c) => {
+    const row = text("div", data.parts[c.parts[0]].id + " and " + data.parts[c.parts[1]].id +
+      " clash, depth " + (typeof c.depth === "number" ? c.depth.toFixed(3) + " mm" : c.depth),
+      "row error");
+    row.addEventListener("mouseenter", () => highlight(c.parts));
+    row.addEventListener("mouseleave", () => highlight([]));
+    $("clashes").appendChild(row);
+  });
+  if (!data.clashes.length) $("clashes").textContent = "no clash at rest";
+  data.gaps.forEach((g, i) => {
+    $("gaps").appendChild(text("div", "gap " + (i + 1) + ": " + g.volume.toFixed(1) + " +/- " +
+      g.error.toFixed(1) + " mm^3"));
+  });
+
   data.expectations.forEach((e) => {
     $("expectations").appendChild(text("div", (e.passed ? "passed " : "FAILED ") + e.what +
       (e.passed ? "" : ": " + e.detail), e.passed ? "passed" : "failed"));

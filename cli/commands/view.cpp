@@ -2,8 +2,10 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 
 #include "cli/commands.h"
+#include "io/input_error.h"
 #include "viz/viewer_page.h"
 
 namespace mechanist::cli {
@@ -13,6 +15,7 @@ Command ViewCommand() {
   struct Options {
     std::string out;
     bool ranges = false, no_ranges = false;
+    double gaps = 0;  // voxel, file units; 0: none
   };
   auto o = std::make_shared<Options>();
   Command c;
@@ -26,6 +29,9 @@ Command ViewCommand() {
         "--ranges", o->ranges, "search where each drag stops even above 100,000 triangles (slow)");
     app.add_flag("--no-ranges", o->no_ranges, "do not search where each drag stops")
         ->excludes(ranges);
+    app.add_option("--gaps", o->gaps,
+                   "show the enclosed gaps found at this voxel size (file units)")
+        ->check(CLI::PositiveNumber);
   };
   c.run = [o](Session& s) {
     const std::string path =
@@ -40,11 +46,16 @@ Command ViewCommand() {
     }
     ViewerOptions options;
     options.ranges = o->ranges || (!o->no_ranges && triangles <= kMaxRangeTriangles);
+    options.gap_voxel = o->gaps * s.assembly->units().mm_per_length;
     if (!options.ranges && !o->no_ranges) {
       std::cout << "movable ranges not searched: " << triangles
                 << " triangles, more than 100,000 (--ranges searches them)\n";
     }
-    s.Report(path, ViewerHtml(*s.assembly, *s.analysis, options));
+    try {
+      s.Report(path, ViewerHtml(*s.assembly, *s.analysis, options));
+    } catch (const std::invalid_argument& e) {  // the gap search refuses the voxel
+      throw InputError(s.file, "", 0, 0, std::string("--gaps: ") + e.what());
+    }
     std::cout << "viewer: " << std::filesystem::absolute(path).string()
               << " (open it in a browser)\n";
     return kExitOk;

@@ -90,6 +90,30 @@ TEST(ViewerPage, CarriesTheDriversPathsThatStateAtUses) {
   for (const json& e : data["expectations"]) EXPECT_TRUE(e["passed"]) << e.dump();
 }
 
+TEST(ViewerPage, ShowsClashesAtRestAndEnclosedGaps) {
+  // Two plates overlapping by 3 mm: a clash, its parts and a point inside both.
+  const Assembly clash = ParseAssembly(R"({"mechanist": 1, "parts": [
+    {"id": "a", "ground": true,
+     "library": {"kind": "plate", "length": 20, "width": 20, "thickness": 5}},
+    {"id": "b", "library": {"kind": "plate", "length": 20, "width": 20, "thickness": 5},
+     "pose": {"position": [5, 0, 2]}}]})",
+                                       "clash.json");
+  const json data = PageData(ViewerHtml(clash, Analyze(clash)));
+  ASSERT_EQ(data["clashes"].size(), 1u);
+  EXPECT_EQ(data["clashes"][0]["parts"], json({0, 1}));
+  EXPECT_GT(data["clashes"][0]["depth"].get<double>(), 1.0);
+  EXPECT_TRUE(data["gaps"].empty());  // not asked for
+  // The sealed enclosure's cavity at 2 mm voxels, as `mechanist gaps` reports it.
+  const Assembly sealed =
+      ReadAssembly(std::string(MECHANIST_SOURCE_DIR) + "/examples/sealed_enclosure/assembly.json");
+  ViewerOptions options;
+  options.gap_voxel = 2.0;
+  const json gaps = PageData(ViewerHtml(sealed, Analyze(sealed), options))["gaps"];
+  ASSERT_EQ(gaps.size(), 1u);
+  EXPECT_NEAR(gaps[0]["volume"].get<double>(), 184680.0, gaps[0]["error"].get<double>());
+  EXPECT_FALSE(gaps[0]["triangles"].get<std::string>().empty());
+}
+
 TEST(ViewerPage, SaysWhereThreeJsIsMissing) {
   const Assembly assembly = ReadAssembly(kWorm);
   ViewerOptions options;
