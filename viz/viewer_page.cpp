@@ -167,12 +167,21 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
   }
   data["diagnostics"] = diagnostics;
 
+  // The collision model of the clashes, the assembly plan and the drags' ranges; none for a
+  // kinematic sketch.
+  std::optional<CollisionModel> collision;
+  if (std::any_of(assembly.parts().begin(), assembly.parts().end(),
+                  [](const Part& p) { return p.HasGeometry(); })) {
+    collision.emplace(assembly);
+  }
+
   // The file's expectations, as `mechanist check` evaluates them (the assembly plan, which
   // sweeps every part, only when an entry asks for it).
   std::optional<AssemblyPlan> plan;
   for (const Expectation& e : assembly.expectations()) {
     if (e.kind == Expectation::Kind::kAssemblable && !plan) {
-      plan = PlanAssembly(assembly, analysis, CollisionModel(assembly));
+      plan = collision ? PlanAssembly(assembly, analysis, *collision)
+                       : PlanAssembly(assembly, analysis, CollisionModel(assembly));
     }
   }
   json expectations = json::array();
@@ -198,11 +207,8 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
   data["drivers"] = drivers;
 
   // Clashes at rest (as `mechanist interference` finds them): the parts and where.
-  std::optional<CollisionModel> collision;
   json clashes = json::array();
-  if (std::any_of(assembly.parts().begin(), assembly.parts().end(),
-                  [](const Part& p) { return p.HasGeometry(); })) {
-    collision.emplace(assembly);
+  if (collision) {
     for (const PartContact& c :
          FindContacts(assembly, InitialState(assembly), *collision, analysis.pairs)) {
       if (c.verdict != ContactVerdict::kClash) continue;
