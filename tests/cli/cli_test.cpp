@@ -1,7 +1,6 @@
 // Runs the mechanist executable as a user would and checks exit codes and output.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <cstring>
@@ -9,24 +8,14 @@
 #include <fstream>
 #include <string>
 
+#include "run_command.h"
+
 namespace {
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string out;  ///< stdout and stderr together
-};
+using mechanist::testing::CommandResult;
 
 CommandResult Mechanist(const std::string& args) {
-  const std::string command = std::string(MECHANIST_EXE) + " " + args + " 2>&1";
-  CommandResult run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return run;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, n);
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
+  return mechanist::testing::RunCommand(std::string(MECHANIST_EXE) + " " + args);
 }
 
 std::string Example(const std::string& name) {

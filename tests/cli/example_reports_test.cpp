@@ -3,7 +3,6 @@
 // scripts/update_golden_reports.sh rewrites them, for an intended change of behaviour only.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -12,6 +11,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "run_command.h"
 
 namespace {
 
@@ -26,16 +27,9 @@ std::string Slurp(const fs::path& path) {
 
 // Runs a command in `dir` as the golden script does: stdout and stderr, then "exit N".
 std::string RunIn(const fs::path& dir, const std::string& args) {
-  const std::string command =
-      "cd '" + dir.string() + "' && '" + std::string(MECHANIST_EXE) + "' " + args + " 2>&1";
-  std::string out;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return out;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-  const int status = pclose(pipe);
-  return out + "exit " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + "\n";
+  const auto run = mechanist::testing::RunCommand("cd '" + dir.string() + "' && '" +
+                                                  std::string(MECHANIST_EXE) + "' " + args);
+  return run.out + "exit " + std::to_string(run.exit_code) + "\n";
 }
 
 std::vector<std::string> Examples() {
@@ -52,8 +46,8 @@ class ExampleReports : public ::testing::TestWithParam<std::string> {};
 TEST_P(ExampleReports, AreByteIdenticalToThePinnedOnes) {
   const fs::path dir = fs::path(MECHANIST_SOURCE_DIR) / "examples" / GetParam();
   const fs::path golden = fs::path(MECHANIST_SOURCE_DIR) / "tests/cli/golden" / GetParam();
-  const fs::path out = fs::temp_directory_path() /
-                       ("mechanist_reports_" + std::to_string(::getpid())) / GetParam();
+  const fs::path out =
+      fs::temp_directory_path() / ("mechanist_reports_" + std::to_string(::getpid())) / GetParam();
   fs::create_directories(out);
   ASSERT_TRUE(fs::exists(golden)) << "no pinned reports: run scripts/update_golden_reports.sh";
   for (const std::string command :
@@ -62,8 +56,8 @@ TEST_P(ExampleReports, AreByteIdenticalToThePinnedOnes) {
     std::string extra;
     if (command == "analyze") {
       files = {"analyze.json", "analyze.dot"};
-      extra = " --json '" + (out / files[0]).string() + "' --dot '" + (out / files[1]).string() +
-              "'";
+      extra =
+          " --json '" + (out / files[0]).string() + "' --dot '" + (out / files[1]).string() + "'";
     } else if (command == "interference" || command == "assemble" || command == "sweep") {
       files = {command + ".json"};
       extra = " --json '" + (out / files[0]).string() + "'";

@@ -7,18 +7,18 @@
 #include "viz/viewer_page.h"
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "io/assembly_reader.h"
+#include "io/text_edit.h"
 #include "reasoning/analysis.h"
 #include "reasoning/motion_run.h"
+#include "run_command.h"
 
 namespace mechanist {
 namespace {
@@ -126,38 +126,18 @@ TEST(ViewerPage, SaysWhereThreeJsIsMissing) {
   }
 }
 
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
-std::string Replace(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
-
 // Runs tests/viz/viewer_browser.js on `page` in `dir` with `checks`: "" when every check
 // passed, else what the script printed.
 std::string RunBrowser(const std::filesystem::path& dir, const std::string& page,
                        const json& checks) {
   const auto checks_file = dir / (page + ".checks.json");
   std::ofstream(checks_file) << checks.dump();
-  const std::string command =
+  const auto run = testing::RunCommand(
       "NODE_PATH='" + std::string(MECHANIST_PUPPETEER) + "' '" + MECHANIST_NODE + "' '" +
       MECHANIST_SOURCE_DIR + "/tests/viz/viewer_browser.js' '" + MECHANIST_CHROMIUM + "' '" +
-      (dir / page).string() + "' '" + checks_file.string() + "' '" + dir.string() + "' 2>&1";
-  std::string out;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return "cannot run node";
-  char buffer[4096];
-  std::size_t n;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) out.append(buffer, n);
-  const int status = pclose(pipe);
-  const bool passed = WIFEXITED(status) && WEXITSTATUS(status) == 0 &&
-                      out.find("all checks passed") != std::string::npos;
-  return passed ? "" : out;
+      (dir / page).string() + "' '" + checks_file.string() + "' '" + dir.string() + "'");
+  const bool passed = run.exit_code == 0 && run.out.find("all checks passed") != std::string::npos;
+  return passed ? "" : run.out;
 }
 
 TEST(ViewerPage, WorksInABrowser) {
@@ -205,9 +185,10 @@ TEST(ViewerPage, WorksInABrowser) {
   // A drag that stops: with shaft a fixed to the ground, the arm's lug meets block b.
   const std::string pushed =
       std::string(MECHANIST_SOURCE_DIR) + "/examples/pushed_by_contact/assembly.json";
-  const Assembly stopped = ParseAssembly(Replace(Slurp(pushed), R"({"id": "a", "library")",
-                                                 R"({"id": "a", "ground": true, "library")"),
-                                         pushed);
+  const Assembly stopped =
+      ParseAssembly(testing::Replace(testing::ReadText(pushed), R"({"id": "a", "library")",
+                                     R"({"id": "a", "ground": true, "library")"),
+                    pushed);
   std::ofstream(dir / "stop.html") << ViewerHtml(stopped, Analyze(stopped));
   const json stop = {{"stop", {{"part", "d"}, {"turns", 0.5}, {"meets", {"b", "lug"}}}}};
   EXPECT_EQ(RunBrowser(dir, "stop.html", stop), "") << "a drag that stops";

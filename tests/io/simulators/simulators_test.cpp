@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 #include <mujoco/mujoco.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -17,28 +16,15 @@
 #include "reasoning/adjustment.h"
 #include "reasoning/analysis.h"
 #include "reasoning/simulation_model.h"
+#include "run_command.h"
 
 namespace mechanist {
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586;
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string out;
-};
-
-CommandResult RunCommand(const std::string& command) {
-  CommandResult run;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return run;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, n);
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+using testing::CommandResult;
+using testing::RunCommand;
 
 std::filesystem::path Folder(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() /
