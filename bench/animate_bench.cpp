@@ -10,7 +10,7 @@
 #include <functional>
 #include <string>
 
-#include "io/assembly_reader.h"
+#include "io/load_assembly.h"
 #include "kernel/assembly/assembly_state.h"
 #include "kernel/collision/collision_model.h"
 #include "reasoning/analysis.h"
@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
   std::filesystem::remove_all(out);
   std::filesystem::create_directories(out);
 
-  Assembly assembly = ReadAssembly(MECHANIST_SOURCE_DIR "/examples/robot_hand_worm/assembly.json");
+  Assembly assembly = LoadAssembly(MECHANIST_SOURCE_DIR "/examples/robot_hand_worm/assembly.json");
   Analysis analysis;
   Animation animation;
   double total = 0;

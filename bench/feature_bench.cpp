@@ -7,7 +7,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "io/assembly_reader.h"
+#include "io/load_assembly.h"
 #include "kernel/features/feature_recognition.h"
 #include "kernel/features/part_library.h"
 #include "reasoning/analysis.h"
@@ -61,7 +61,7 @@ int main() {
   for (int run = 0; run < 3; ++run) {
     const auto start = std::chrono::steady_clock::now();
     const mechanist::Assembly as1 =
-        mechanist::ReadAssembly(MECHANIST_SHARED_DATA "/step/as1_pe_203.stp");
+        mechanist::LoadAssembly(MECHANIST_SHARED_DATA "/step/as1_pe_203.stp");
     subassemblies = mechanist::Analyze(as1).subassemblies.size();
     best = std::min(
         best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

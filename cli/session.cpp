@@ -7,8 +7,8 @@
 #include <iostream>
 
 #include "cli/command.h"
-#include "io/assembly_reader.h"
 #include "io/input_error.h"
+#include "io/load_assembly.h"
 #include "kernel/support/number_format.h"
 #include "reasoning/adjustment.h"
 
@@ -73,13 +73,13 @@ void WithinReadTimeout(const std::string& file, const std::function<void()>& rea
 
 Assembly ReadInput(const std::string& file) {
   const ReadTimeout timeout(file);
-  return ReadAssembly(file);
+  return LoadAssembly(file);
 }
 
 Assembly LoadAdjusted(const std::string& file, std::ostream& out) {
-  const Assembly assembly = ReadInput(file);
   AdjustmentSummary summary;
-  Assembly adjusted = Adjusted(assembly, &summary);
+  const ReadTimeout timeout(file);
+  Assembly assembly = LoadAssembly(file, {.adjust = true, .adjustments = &summary});
   for (std::size_t k = 0; k < summary.adjustments.size(); ++k) {
     const Adjustment& a = assembly.adjustments()[k];
     if (!summary.adjustments[k].used) continue;
@@ -95,7 +95,7 @@ Assembly LoadAdjusted(const std::string& file, std::ostream& out) {
     out << "\n";
   }
   if (!summary.all_met) out << "adjusted: some goals are not met (mechanist adjust tells)\n";
-  return adjusted;
+  return assembly;
 }
 
 std::optional<std::size_t> DriverIndex(const std::string& file, const Assembly& assembly,

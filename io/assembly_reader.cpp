@@ -16,14 +16,11 @@
 #include <utility>
 #include <vector>
 
-#include "io/fastener_inference.h"
 #include "io/input_error.h"
 #include "io/internal/json_source.h"
 #include "io/mesh_reader.h"
 #include "io/step_reader.h"
-#include "kernel/features/feature_recognition.h"
 #include "kernel/features/part_library.h"
-#include "reasoning/placement.h"
 
 namespace mechanist {
 namespace {
@@ -73,10 +70,10 @@ std::string JoinWords(std::initializer_list<std::string_view> words) {
 /// error names it.
 class Reader {
  public:
-  Reader(const JsonSource& source, std::filesystem::path dir)
-      : src_(source), dir_(std::move(dir)) {}
+  Reader(JsonSource source, std::filesystem::path dir)
+      : src_(std::move(source)), dir_(std::move(dir)) {}
 
-  Assembly Read() {
+  WrittenParts ReadParts() {
     const Json& root = src_.root;
     ExpectObject(root, "");
     CheckKeys(root, "",
@@ -105,14 +102,15 @@ class Reader {
     } else {
       if (!parts) Fail("", "expected \"parts\" (an array of parts), found no such key");
       ReadParts(*parts, "/parts");
-      std::vector<std::pair<std::size_t, const Json*>> entries;
-      for (std::size_t i = 0; i < parts->size(); ++i) entries.emplace_back(i, &(*parts)[i]);
-      ReadPlacements(entries);
-      // The heuristic reinterprets only inferred features, never written ones.
-      const auto found = InferNutsOnBolts(&spec_.parts, spec_.tolerance.length,
-                                          spec_.tolerance.angle, &recognised_);
-      spec_.findings.insert(spec_.findings.end(), found.begin(), found.end());
+      for (std::size_t i = 0; i < parts->size(); ++i) placed_.emplace_back(i, &(*parts)[i]);
     }
+    return {std::move(spec_), std::move(origins_)};
+  }
+
+  AssemblySpec ReadRelations(AssemblySpec spec) {
+    spec_ = std::move(spec);
+    const Json& root = src_.root;
+    ReadPlacements(placed_);
     ForEach(root, "drivers", [this](const Json& v, const std::string& p) { ReadDriver(v, p); });
     ForEach(root, "adjustments",
             [this](const Json& v, const std::string& p) { ReadAdjustment(v, p); });
@@ -120,12 +118,11 @@ class Reader {
     ForEach(root, "steps", [this](const Json& v, const std::string& p) { ReadStep(v, p); });
     ForEach(root, "overrides", [this](const Json& v, const std::string& p) { ReadOverride(v, p); });
     ForEach(root, "expect", [this](const Json& v, const std::string& p) { ReadExpectation(v, p); });
-    try {
-      return Assembly(std::move(spec_));
-    } catch (const std::invalid_argument& e) {
-      // The checks above reject everything Assembly checks; this is a last line of defence.
-      Fail("", e.what());
-    }
+    return std::move(spec_);
+  }
+
+  [[noreturn]] void FailAtPlacement(std::size_t part, const std::string& message) const {
+    Fail(EntryOf(part) + "/place", message);
   }
 
  private:
@@ -357,13 +354,15 @@ class Reader {
       const Json* library = Find(v, "library");
       if (mesh && library) Fail(p, "expected either \"mesh\" or \"library\", found both");
       std::vector<Feature> step_features;
+      PartOrigin origin;
       if (mesh) {
         part.mesh_source = String(*mesh, p + "/mesh");
         std::string extension = std::filesystem::path(part.mesh_source).extension().string();
         for (char& c : extension)
           c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
         if (extension == ".step" || extension == ".stp") {
-          part.mesh = LoadStepPart(part.mesh_source, p + "/mesh", &step_features, &part.notes);
+          part.mesh = LoadStepPart(part.mesh_source, p + "/mesh", &step_features, &part.notes,
+                                   &origin.step_solids);
         } else {
           part.mesh = LoadMesh(part.mesh_source, p + "/mesh");
         }
@@ -383,22 +382,20 @@ class Reader {
       }
       if (const Json* features = Find(v, "features")) {
         ReadFeatures(*features, p + "/features", part);
-      } else if (!step_features.empty()) {
-        part.features = std::move(step_features);  // from the STEP file's exact faces
+        origin.step_solids.clear();
       } else if (mesh) {
-        // A mesh without written features: what its geometry shows (RecognizeFeatures).
-        for (RecognizedFeature& r : RecognizeFeatures(*part.mesh).features) {
-          part.features.push_back(std::move(r.feature));
-        }
+        // The reasoning layer completes them from the geometry (CompleteFeatures).
+        part.features = std::move(step_features);  // from the STEP file's exact faces
+        origin.features_written = false;
       }
-      recognised_.push_back(mesh && !Find(v, "features"));
+      origins_.push_back(std::move(origin));
       entry_of_.emplace(spec_.parts.size(), p);
       part_index_.emplace(part.id, spec_.parts.size());
       spec_.parts.push_back(std::move(part));
     }
   }
 
-  // Every solid of the STEP file as a part, then the nut-on-bolt heuristic.
+  // Every solid of the STEP file as a part, with the features of its exact faces.
   void ReadImport(const Json& v, const std::string& p) {
     const std::string relative = String(v, p);
     std::vector<StepSolid> solids;
@@ -410,7 +407,12 @@ class Reader {
     }
     AddStepMessages(relative, messages);
     for (StepSolid& s : solids) {
-      AddTessellationGears(&s);
+      PartOrigin origin;
+      origin.features_written = false;
+      origin.imported = true;
+      origin.step_solids.push_back(
+          {s.mesh, RigidTransform(), "", s.features.size(), s.notes.size()});
+      origins_.push_back(std::move(origin));
       Part part;
       part.id = s.path;
       part.mesh_source = relative + "#" + s.product;
@@ -422,9 +424,6 @@ class Reader {
       part_index_.emplace(part.id, spec_.parts.size());
       spec_.parts.push_back(std::move(part));
     }
-    const auto found =
-        InferNutsOnBolts(&spec_.parts, spec_.tolerance.length, spec_.tolerance.angle);
-    spec_.findings.insert(spec_.findings.end(), found.begin(), found.end());
   }
 
   // Entries next to an import: an imported part's id adds `ground` and features to it (an
@@ -432,7 +431,6 @@ class Reader {
   // placement by features (its own and the imported parts').
   void AddToImported(const Json& parts, const std::string& pointer) {
     if (!parts.is_array()) Fail(pointer, "expected an array of parts, found " + Describe(parts));
-    std::vector<std::pair<std::size_t, const Json*>> added;
     for (std::size_t i = 0; i < parts.size(); ++i) {
       const std::string p = JoinPointer(pointer, std::to_string(i));
       const Json& v = parts[i];
@@ -441,7 +439,7 @@ class Reader {
       const auto it = part_index_.find(id);
       if (it == part_index_.end()) {
         ReadPart(v, p);
-        added.emplace_back(spec_.parts.size() - 1, &v);
+        placed_.emplace_back(spec_.parts.size() - 1, &v);
         continue;
       }
       CheckKeys(v, p, {"id", "ground", "compliant", "features"});
@@ -464,6 +462,7 @@ class Reader {
             fid && fid->is_string() ? part.FindFeature(fid->get<std::string>()) : std::nullopt;
         if (!existing) {
           part.features.push_back(ReadFeature(f, fp));
+          origins_[it->second].written.push_back(part.features.back().id);
           continue;
         }
         CheckKeys(f, fp, {"id", "fastening"});
@@ -474,28 +473,10 @@ class Reader {
           }
           part.features[*existing].fastening =
               value == "tight" ? Fastening::kTight : Fastening::kLoose;
+          origins_[it->second].written.push_back(part.features[*existing].id);
         }
       }
     }
-    ReadPlacements(added);
-  }
-
-  // The gears and racks that the mesh recogniser finds on a STEP solid's tessellation, added
-  // to its features with a note each: CAD systems write involute flanks as free-form faces or
-  // as many small cylinder patches, which give no feature of their own. Once per shared mesh.
-  void AddTessellationGears(StepSolid* solid) {
-    auto [found, added] = tessellation_gears_.try_emplace(solid->mesh.get());
-    if (added) {
-      for (RecognizedFeature& r : RecognizeFeatures(*solid->mesh).features) {
-        if (r.feature.kind != FeatureKind::kGear && r.feature.kind != FeatureKind::kRack) continue;
-        found->second.notes.push_back(r.feature.id + ": " + r.detail +
-                                      " (found on the solid's tessellation)");
-        found->second.features.push_back(std::move(r.feature));
-      }
-    }
-    const TessellationGears& gears = found->second;
-    solid->features.insert(solid->features.end(), gears.features.begin(), gears.features.end());
-    solid->notes.insert(solid->notes.end(), gears.notes.begin(), gears.notes.end());
   }
 
   // Open CASCADE's messages on reading `relative` as findings `step_reader` (an error as a
@@ -522,11 +503,12 @@ class Reader {
   }
 
   // A STEP file as one rigid part: its solids' meshes and features at their placements (ids
-  // prefixed "solidN_" when it holds several solids).
+  // prefixed "solidN_" when it holds several solids), each solid in `solids`.
   std::shared_ptr<const TriangleMesh> LoadStepPart(const std::string& relative,
                                                    const std::string& pointer,
                                                    std::vector<Feature>* features,
-                                                   std::vector<std::string>* notes) {
+                                                   std::vector<std::string>* notes,
+                                                   std::vector<PartOrigin::StepSolid>* in_part) {
     std::vector<StepSolid> solids;
     std::vector<StepMessage> messages;
     try {
@@ -537,20 +519,22 @@ class Reader {
     AddStepMessages(relative, messages);
     auto mesh = std::make_shared<TriangleMesh>();
     for (std::size_t k = 0; k < solids.size(); ++k) {
-      AddTessellationGears(&solids[k]);
+      const std::string prefix = solids.size() > 1 ? "solid" + std::to_string(k + 1) : "";
       TriangleMesh placed = *solids[k].mesh;
       for (Eigen::Vector3d& v : placed.vertices) v = solids[k].X_WP * v;
       mesh->Append(placed);
       for (Feature f : solids[k].features) {
-        if (solids.size() > 1) f.id = "solid" + std::to_string(k + 1) + "_" + f.id;
+        if (!prefix.empty()) f.id = prefix + "_" + f.id;
         f.origin = solids[k].X_WP * f.origin;
         f.axis = solids[k].X_WP.RotateDirection(f.axis);
         f.normal = solids[k].X_WP.RotateDirection(f.normal);
         features->push_back(f);
       }
       for (const std::string& note : solids[k].notes) {
-        notes->push_back(solids.size() > 1 ? "solid" + std::to_string(k + 1) + ": " + note : note);
+        notes->push_back(prefix.empty() ? note : prefix + ": " + note);
       }
+      in_part->push_back({solids[k].mesh, solids[k].X_WP, prefix.empty() ? "" : prefix + "_",
+                          features->size(), notes->size()});
     }
     return mesh;
   }
@@ -987,8 +971,8 @@ class Reader {
     return it == entry_of_.end() ? "/parts" : it->second;
   }
 
-  /// The `place` of the parts read from the entries in `entries` (part index -> its entry),
-  /// solved once every part is known.
+  /// The `place` of the parts read from the entries in `entries` (part index -> its entry);
+  /// the reasoning layer solves them (ResolvePlacements).
   void ReadPlacements(const std::vector<std::pair<std::size_t, const Json*>>& entries) {
     for (const auto& [i, entry] : entries) {
       const Json* place = Find(*entry, "place");
@@ -1009,11 +993,6 @@ class Reader {
       }
     }
     CheckPlacementTree();
-    try {
-      ResolvePlacements(&spec_);
-    } catch (const PlacementError& e) {
-      Fail(EntryOf(e.part()) + "/place", e.what());
-    }
   }
 
   PlacementCondition ReadCondition(const Json& v, const std::string& p, std::size_t part) const {
@@ -1322,16 +1301,12 @@ class Reader {
     return *parsed;
   }
 
-  const JsonSource& src_;
+  JsonSource src_;
   std::filesystem::path dir_;
-  std::vector<bool>
-      recognised_;  // per part: its features were inferred (mesh or STEP), not written
-  struct TessellationGears {
-    std::vector<Feature> features;
-    std::vector<std::string> notes;
-  };
-  std::map<const TriangleMesh*, TessellationGears> tessellation_gears_;  // per STEP solid mesh
   AssemblySpec spec_;
+  std::vector<PartOrigin> origins_;  // per part
+  // The entries whose `place` ReadRelations reads: (part index, its entry).
+  std::vector<std::pair<std::size_t, const Json*>> placed_;
   std::map<std::string, std::size_t> part_index_;
   std::map<std::size_t, std::string> entry_of_;  // part index -> its entry's JSON pointer
   std::map<std::filesystem::path, std::shared_ptr<const TriangleMesh>> mesh_cache_;
@@ -1371,29 +1346,63 @@ std::optional<ExpectedRatio> ParseRatio(const std::string& text) {
   return r;
 }
 
-Assembly ParseAssembly(std::string_view text, const std::filesystem::path& file) {
-  const JsonSource source = internal::ParseJson(text, file.string());
-  return Reader(source, file.parent_path()).Read();
-}
+namespace {
 
-Assembly ReadAssembly(const std::filesystem::path& file) {
-  if (std::filesystem::is_directory(file)) {
-    throw InputError(file.string(), "", 0, 0, "expected an assembly file, found a directory");
-  }
+bool IsStepFile(const std::filesystem::path& file) {
   std::string extension = file.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension == ".step" || extension == ".stp") {
-    // A STEP assembly alone: as a file that imports it and adds nothing.
-    const nlohmann::json text = {
-        {"mechanist", 1}, {"name", file.stem().string()}, {"import", file.filename().string()}};
+  return extension == ".step" || extension == ".stp";
+}
+
+}  // namespace
+
+struct AssemblyFileReader::Impl {
+  Reader reader;
+  bool step_alone = false;  // a STEP file read as a file that imports it and adds nothing
+
+  // Runs `read`; for a STEP file alone, its errors name the STEP file itself, not a line of
+  // the file made up around it.
+  template <typename Read>
+  auto Run(Read&& read) {
     try {
-      return ParseAssembly(text.dump(), file);
+      return read();
     } catch (const InputError& e) {
-      // The place is the STEP file itself, not the line of the file made up around it.
+      if (!step_alone) throw;
       throw InputError(e.file(), "", 0, 0, e.detail());
     }
   }
-  return ParseAssembly(ReadText(file), file);
+};
+
+AssemblyFileReader::AssemblyFileReader(std::string_view text, const std::filesystem::path& file)
+    : impl_(std::make_unique<Impl>(
+          Impl{Reader(internal::ParseJson(text, file.string()), file.parent_path())})) {}
+
+AssemblyFileReader AssemblyFileReader::Open(const std::filesystem::path& file) {
+  if (std::filesystem::is_directory(file)) {
+    throw InputError(file.string(), "", 0, 0, "expected an assembly file, found a directory");
+  }
+  if (!IsStepFile(file)) return AssemblyFileReader(ReadText(file), file);
+  const nlohmann::json text = {
+      {"mechanist", 1}, {"name", file.stem().string()}, {"import", file.filename().string()}};
+  AssemblyFileReader reader(text.dump(), file);
+  reader.impl_->step_alone = true;
+  return reader;
+}
+
+AssemblyFileReader::AssemblyFileReader(AssemblyFileReader&&) noexcept = default;
+AssemblyFileReader& AssemblyFileReader::operator=(AssemblyFileReader&&) noexcept = default;
+AssemblyFileReader::~AssemblyFileReader() = default;
+
+WrittenParts AssemblyFileReader::ReadParts() {
+  return impl_->Run([&] { return impl_->reader.ReadParts(); });
+}
+
+AssemblySpec AssemblyFileReader::ReadRelations(AssemblySpec spec) {
+  return impl_->Run([&] { return impl_->reader.ReadRelations(std::move(spec)); });
+}
+
+void AssemblyFileReader::FailAtPlacement(std::size_t part, const std::string& message) const {
+  impl_->reader.FailAtPlacement(part, message);
 }
 
 }  // namespace mechanist

@@ -3,8 +3,8 @@
 #include <stdexcept>
 
 #include "io/assembly_reader.h"
+#include "io/load_assembly.h"
 #include "kernel/collision/collision_model.h"
-#include "reasoning/adjustment.h"
 #include "reasoning/assembly_plan.h"
 #include "reasoning/expectation_check.h"
 
@@ -38,7 +38,7 @@ Mechanism::Mechanism(Assembly assembly)
     : assembly_(std::move(assembly)), analysis_(Analyze(assembly_)) {}
 
 Mechanism Mechanism::Load(const std::filesystem::path& file) {
-  return Mechanism(Adjusted(ReadAssembly(file)));
+  return Mechanism(LoadAssembly(file, {.adjust = true}));
 }
 
 ::testing::AssertionResult HasRatio(const Mechanism& m, const std::string& feature,

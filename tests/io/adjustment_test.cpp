@@ -13,8 +13,8 @@
 
 #include "io/adjusted_file_writer.h"
 #include "io/adjustment_report.h"
-#include "io/assembly_reader.h"
 #include "io/input_error.h"
+#include "io/load_assembly.h"
 #include "reasoning/analysis.h"
 #include "text_edit.h"
 
@@ -37,7 +37,7 @@ double WormDistance(double phi) { return 20 * std::cos(phi) - 35 * std::sin(phi)
 AdjustmentSummary Solve(const Assembly& a) { return SolveAdjustments(a, Analyze(a).pairs); }
 
 TEST(Adjustment, SwingsTheMotorUntilTheWormMeshesAndTheWheelTurns) {
-  const Assembly swung = ReadAssembly(kSwung);
+  const Assembly swung = LoadAssembly(kSwung);
   const AdjustmentSummary s = Solve(swung);
   EXPECT_EQ(s.solver.status, LeastSquaresSummary::Status::kConverged) << s.solver.message;
   ASSERT_EQ(s.adjustments.size(), 1u);
@@ -57,7 +57,7 @@ TEST(Adjustment, SwingsTheMotorUntilTheWormMeshesAndTheWheelTurns) {
                                                "worm_sleeve", "worm", "setscrew"}));
   // Locked, the drive is the original example's: the worm gear pair and its exact ratio.
   const Assembly adjusted = ApplyAdjustments(swung, s);
-  const Assembly original = ReadAssembly(kWorm);
+  const Assembly original = LoadAssembly(kWorm);
   for (std::size_t p = 0; p < adjusted.parts().size(); ++p) {
     EXPECT_TRUE(adjusted.part(p).X_WP.IsNearlyEqualTo(original.part(p).X_WP, 1e-6, 1e-8))
         << adjusted.part(p).id;
@@ -71,7 +71,7 @@ TEST(Adjustment, SwingsTheMotorUntilTheWormMeshesAndTheWheelTurns) {
 }
 
 TEST(Adjustment, AnInfeasibleGoalStopsAtTheBoundAndTheNearMissSuggestsTheAdjustment) {
-  const Assembly a = ParseAssembly(
+  const Assembly a = LoadAssemblyText(
       Replace(ReadText(kSwung), R"("range": [-10, 10])", R"("range": [-2.5, 10])"), kSwung);
   const AdjustmentSummary s = Solve(a);
   EXPECT_NEAR(s.adjustments[0].value, Deg(-2.5), 1e-9);
@@ -104,7 +104,7 @@ TEST(Adjustment, AGoalAlreadyMetStaysAndASpareAdjustmentIsLeftAlone) {
      "range": [-2, 2]}],
   "goals": [{"mesh": ["worm_wheel/teeth", "worm/worm"]}],
   "drivers": [)");
-  const Assembly a = ParseAssembly(text, kWorm);
+  const Assembly a = LoadAssemblyText(text, kWorm);
   const AdjustmentSummary s = Solve(a);
   EXPECT_TRUE(s.before[0].met);
   EXPECT_TRUE(s.all_met);
@@ -129,7 +129,7 @@ TEST(Adjustment, SeveralAdjustmentsWorkTogether) {
     {"id": "wheel_lift", "moves": "wheel_shaft", "translate_along": "housing/wheel_bearing",
      "range": [-1, 1]}
   ],)");
-  const Assembly a = ParseAssembly(text, kSwung);
+  const Assembly a = LoadAssemblyText(text, kSwung);
   const AdjustmentSummary s = Solve(a);
   ASSERT_EQ(s.adjustments.size(), 2u);
   EXPECT_TRUE(s.adjustments[0].used && s.adjustments[1].used);
@@ -148,7 +148,7 @@ TEST(Adjustment, ConflictingGoalsAreReportedAsNotMet) {
   text = Replace(text, R"("goals": [{"mesh": ["worm/worm", "worm_wheel/teeth"]}])",
                  R"("goals": [{"mesh": ["worm/worm", "worm_wheel/teeth"]},
             {"coaxial": ["housing/motor_hole_b", "bolt_b/thread"]}])");
-  const AdjustmentSummary s = Solve(ParseAssembly(text, kSwung));
+  const AdjustmentSummary s = Solve(LoadAssemblyText(text, kSwung));
   EXPECT_NE(s.solver.status, LeastSquaresSummary::Status::kFailure) << s.solver.message;
   EXPECT_FALSE(s.all_met);
   EXPECT_FALSE(s.after[0].met && s.after[1].met);
@@ -156,14 +156,14 @@ TEST(Adjustment, ConflictingGoalsAreReportedAsNotMet) {
 }
 
 TEST(Adjustment, TheAdjustedFileReadsBackAsTheAdjustedAssembly) {
-  const Assembly swung = ReadAssembly(kSwung);
+  const Assembly swung = LoadAssembly(kSwung);
   const AdjustmentSummary s = Solve(swung);
   const Assembly adjusted = ApplyAdjustments(swung, s);
   const std::filesystem::path out =
       std::filesystem::temp_directory_path() / "mechanist_adjust_test" / "adjusted.json";
   std::filesystem::create_directories(out.parent_path());
   const std::string text = AdjustedAssemblyText(swung, adjusted, out);
-  const Assembly again = ParseAssembly(text, out);
+  const Assembly again = LoadAssemblyText(text, out);
   for (std::size_t p = 0; p < adjusted.parts().size(); ++p) {
     EXPECT_TRUE(again.part(p).X_WP.IsNearlyEqualTo(adjusted.part(p).X_WP, 1e-9, 1e-9))
         << adjusted.part(p).id;
@@ -182,7 +182,7 @@ TEST(Adjustment, LockingTightensTheLooseBoltTheMotorSwungOn) {
   // both the worm's and the wheel's axes.
   const std::string text = Replace(ReadText(kSwung), R"("pitch": 0.5, "length": 12},)",
                                    R"("pitch": 0.5, "length": 12, "fastening": "loose"},)");
-  const Assembly swung = ParseAssembly(text, kSwung);
+  const Assembly swung = LoadAssemblyText(text, kSwung);
   const AdjustmentSummary s = Solve(swung);
   ASSERT_TRUE(s.all_met);
   ASSERT_EQ(s.adjustments[0].loosened.size(), 1u);
@@ -213,7 +213,7 @@ TEST(Adjustment, LockingTightensTheLooseBoltTheMotorSwungOn) {
   const std::filesystem::path out =
       std::filesystem::temp_directory_path() / "mechanist_adjust_test" / "locked.json";
   std::filesystem::create_directories(out.parent_path());
-  const Assembly again = ParseAssembly(AdjustedAssemblyText(swung, adjusted, out), out);
+  const Assembly again = LoadAssemblyText(AdjustedAssemblyText(swung, adjusted, out), out);
   EXPECT_EQ(again.feature(*again.FindFeature("bolt_a/thread")).fastening, Fastening::kTight);
   const Analysis an_again = Analyze(again);
   EXPECT_EQ(
@@ -226,7 +226,7 @@ TEST(Adjustment, GoalsMustNameFeaturesThatCanMesh) {
       Replace(ReadText(kSwung), R"("goals": [{"mesh": ["worm/worm", "worm_wheel/teeth"]}])",
               R"("goals": [{"mesh": ["worm/worm", "wheel_shaft/shaft"]}])");
   try {
-    ParseAssembly(text, kSwung);
+    LoadAssemblyText(text, kSwung);
     FAIL() << "a worm cannot mesh a shaft";
   } catch (const InputError& e) {
     EXPECT_EQ(e.pointer(), "/goals/0/mesh");

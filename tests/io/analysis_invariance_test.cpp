@@ -13,7 +13,7 @@
 #include <tuple>
 
 #include "io/analysis_report.h"
-#include "io/assembly_reader.h"
+#include "io/load_assembly.h"
 #include "reasoning/adjustment.h"
 #include "reasoning/analysis.h"
 
@@ -46,8 +46,8 @@ nlohmann::json ReportWithoutFile(const Assembly& assembly) {
 
 TEST(AnalysisInvariance, SameInputGivesByteIdenticalReports) {
   for (const auto& file : Examples()) {
-    const Assembly a = ReadAssembly(file);
-    const Assembly b = ReadAssembly(file);
+    const Assembly a = LoadAssembly(file);
+    const Assembly b = LoadAssembly(file);
     EXPECT_EQ(AnalysisJson(a, Analyze(a)), AnalysisJson(b, Analyze(b))) << file;
     EXPECT_EQ(AnalysisDot(a, Analyze(a)), AnalysisDot(b, Analyze(b))) << file;
   }
@@ -63,8 +63,8 @@ TEST(AnalysisInvariance, ReorderingPartsAndFeaturesChangesNothing) {
         std::reverse(part["features"].begin(), part["features"].end());
       }
     }
-    const Assembly original = ReadAssembly(file);
-    const Assembly reordered = ParseAssembly(document.dump(), file);
+    const Assembly original = LoadAssembly(file);
+    const Assembly reordered = LoadAssemblyText(document.dump(), file);
     EXPECT_EQ(ReportWithoutFile(original), ReportWithoutFile(reordered));
   }
 }
@@ -72,7 +72,7 @@ TEST(AnalysisInvariance, ReorderingPartsAndFeaturesChangesNothing) {
 TEST(AnalysisInvariance, RenamingPartsChangesOnlyNames) {
   for (const auto& file : Examples()) {
     SCOPED_TRACE(file.string());
-    const Assembly original = ReadAssembly(file);
+    const Assembly original = LoadAssembly(file);
     AssemblySpec spec;
     spec.name = original.name();
     spec.tolerance = original.tolerance();
@@ -110,7 +110,7 @@ TEST(AnalysisInvariance, RenamingPartsChangesOnlyNames) {
 TEST(AnalysisInvariance, ExamplesMeetTheirExpectations) {
   for (const auto& file : Examples()) {
     SCOPED_TRACE(file.string());
-    const Assembly assembly = Adjusted(ReadAssembly(file));  // as the commands see it
+    const Assembly assembly = Adjusted(LoadAssembly(file));  // as the commands see it
     const Analysis analysis = Analyze(assembly);
     const std::vector<ExpectationResult> results = CheckExpectations(assembly, analysis);
     ASSERT_EQ(results.size(), assembly.expectations().size());

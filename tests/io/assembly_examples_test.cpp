@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "io/assembly_reader.h"
+#include "io/load_assembly.h"
 #include "kernel/assembly/assembly_check.h"
 #include "kernel/assembly/assembly_state.h"
 #include "kernel/collision/collision_model.h"
@@ -40,7 +40,7 @@ TEST(AssemblyExamples, EveryExampleIsFreeOfClashesAssemblableAndRunsClear) {
     if (!std::filesystem::exists(file)) continue;
     ++examples;
     // With adjustments and goals, as the commands see it: solved and locked.
-    const Assembly a = Adjusted(ReadAssembly(file));
+    const Assembly a = Adjusted(LoadAssembly(file));
     const Analysis an = Analyze(a);
     const CollisionModel model(a);
     for (const PartContact& c : FindContacts(a, InitialState(a), model, an.pairs)) {
@@ -75,7 +75,7 @@ TEST(AssemblyExamples, EveryExampleIsFreeOfClashesAssemblableAndRunsClear) {
 TEST(AssemblyExamples, BoltLargerThanThePlateHoleIsAClashAndBlocksItsStep) {
   const std::string text = Replace(ReadText(kBracket), R"("at": [-30, 0], "diameter": 6.6)",
                                    R"("at": [-30, 0], "diameter": 5)");
-  const Assembly a = ParseAssembly(text, kBracket);
+  const Assembly a = LoadAssemblyText(text, kBracket);
   const Analysis an = Analyze(a);
   const AssemblyPlan plan = PlanAssembly(a, an, CollisionModel(a));
   EXPECT_FALSE(plan.assemblable);
@@ -104,7 +104,7 @@ TEST(AssemblyExamples, StepIntoAPartNotYetPlacedHitsWhatIsInTheWay) {
                                    R"("steps": [
     {"insert": "bolt_left/thread", "into": "plate/hole_left"},
     {"insert": "bracket_left/base_bottom", "into": "plate/top"},)");
-  const Assembly a = ParseAssembly(text, kBracket);
+  const Assembly a = LoadAssemblyText(text, kBracket);
   const AssemblyPlan plan = PlanAssembly(a, Analyze(a), CollisionModel(a));
   ASSERT_EQ(plan.steps.size(), 3u);
   EXPECT_TRUE(plan.steps[0].clear);
@@ -119,7 +119,7 @@ TEST(FastenerChecks, BoltTooShortForItsNutIsReportedWithTheShortfall) {
   const std::string bolt =
       R"({"id": "bolt_left", "library": {"kind": "hex_bolt", "diameter": 6, "pitch": 1, "length": 16})";
   // 12 mm: the tip is 3 mm into the 5.2 mm nut.
-  const Assembly partial = ParseAssembly(
+  const Assembly partial = LoadAssemblyText(
       Replace(text, bolt, Replace(bolt, R"("length": 16)", R"("length": 12)")), kBracket);
   const Analysis an = Analyze(partial);
   const Diagnostic* d = Find(an, "bolt_too_short");
@@ -127,7 +127,7 @@ TEST(FastenerChecks, BoltTooShortForItsNutIsReportedWithTheShortfall) {
   EXPECT_NE(d->message.find("engages 3 mm"), std::string::npos) << d->message;
   EXPECT_NE(d->message.find("2.2 mm too short"), std::string::npos) << d->message;
   // 8 mm: the tip stops 1 mm above the nut.
-  const Assembly missing = ParseAssembly(
+  const Assembly missing = LoadAssemblyText(
       Replace(text, bolt, Replace(bolt, R"("length": 16)", R"("length": 8)")), kBracket);
   const Analysis an2 = Analyze(missing);
   d = Find(an2, "bolt_too_short");
@@ -135,7 +135,7 @@ TEST(FastenerChecks, BoltTooShortForItsNutIsReportedWithTheShortfall) {
   EXPECT_NE(d->message.find("does not reach"), std::string::npos) << d->message;
   EXPECT_NE(d->message.find("6.2 mm too short"), std::string::npos) << d->message;
   EXPECT_EQ(Find(an2, "nut_without_bolt"), nullptr) << "the short bolt is named instead";
-  EXPECT_EQ(Find(Analyze(ReadAssembly(kBracket)), "bolt_too_short"), nullptr);
+  EXPECT_EQ(Find(Analyze(LoadAssembly(kBracket)), "bolt_too_short"), nullptr);
 }
 
 TEST(FastenerChecks, NutWithoutBoltAndLooseOnlyFastening) {
@@ -154,7 +154,7 @@ TEST(FastenerChecks, NutWithoutBoltAndLooseOnlyFastening) {
   text = Replace(text, R"("bolt_left", "bolt_right",)", R"("bolt_left",)");
   text =
       Replace(text, R"({"pair": ["bolt_right/thread", "nut_right/thread"], "type": "fixed"},)", "");
-  const Analysis an = Analyze(ParseAssembly(text, kBracket));
+  const Analysis an = Analyze(LoadAssemblyText(text, kBracket));
   const Diagnostic* d = Find(an, "nut_without_bolt");
   ASSERT_NE(d, nullptr);
   EXPECT_EQ(d->parts, std::vector<std::string>{"nut_right"});
@@ -163,7 +163,7 @@ TEST(FastenerChecks, NutWithoutBoltAndLooseOnlyFastening) {
       ReadText(kBracket),
       R"({"id": "bolt_left", "library": {"kind": "hex_bolt", "diameter": 6, "pitch": 1, "length": 16},)",
       R"({"id": "bolt_left", "library": {"kind": "hex_bolt", "diameter": 6, "pitch": 1, "length": 16, "fastening": "loose"},)");
-  const Analysis an2 = Analyze(ParseAssembly(loose, kBracket));
+  const Analysis an2 = Analyze(LoadAssemblyText(loose, kBracket));
   d = Find(an2, "loose_fastening_only");
   ASSERT_NE(d, nullptr);
   EXPECT_EQ(d->parts, std::vector<std::string>{"bolt_left"});

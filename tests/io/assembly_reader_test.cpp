@@ -1,5 +1,3 @@
-#include "io/assembly_reader.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +6,7 @@
 #include <string>
 
 #include "io/input_error.h"
+#include "io/load_assembly.h"
 
 namespace mechanist {
 namespace {
@@ -29,7 +28,7 @@ class AssemblyReaderTest : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 
-  Assembly Parse(const std::string& text) { return ParseAssembly(text, dir_ / "a.json"); }
+  Assembly Parse(const std::string& text) { return LoadAssemblyText(text, dir_ / "a.json"); }
 
   /// Parses `text` expecting an InputError at `pointer` whose message contains `contains`;
   /// returns it for further checks.
@@ -447,13 +446,13 @@ TEST_F(AssemblyReaderTest, NeverModifiesItsInput) {
   const std::string text = OnePart("");
   std::ofstream(file) << text;
   const auto before = std::filesystem::last_write_time(file);
-  ReadAssembly(file);
+  LoadAssembly(file);
   std::ifstream in(file);
   const std::string after((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_EQ(after, text);
   EXPECT_EQ(std::filesystem::last_write_time(file), before);
-  EXPECT_THROW(ReadAssembly(dir_ / "nothing.json"), InputError);
-  EXPECT_THROW(ReadAssembly(dir_), InputError);
+  EXPECT_THROW(LoadAssembly(dir_ / "nothing.json"), InputError);
+  EXPECT_THROW(LoadAssembly(dir_), InputError);
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "io/assembly_reader.h"
+#include "io/load_assembly.h"
 #include "kernel/assembly/assembly_check.h"
 
 namespace mechanist {
@@ -17,7 +17,7 @@ TEST(Examples, EveryExampleLoadsCleanly) {
     if (!entry.is_directory()) continue;
     SCOPED_TRACE(entry.path().string());
     EXPECT_TRUE(std::filesystem::exists(entry.path() / "README.md"));
-    const Assembly assembly = ReadAssembly(entry.path() / "assembly.json");
+    const Assembly assembly = LoadAssembly(entry.path() / "assembly.json");
     EXPECT_FALSE(assembly.parts().empty());
     EXPECT_FALSE(assembly.expectations().empty());
     for (const Diagnostic& d : CheckAssembly(assembly)) {

@@ -5,14 +5,14 @@
 #include <cmath>
 #include <filesystem>
 
-#include "io/assembly_reader.h"
+#include "io/load_assembly.h"
 #include "reasoning/gap_search.h"
 
 namespace mechanist {
 namespace {
 
 TEST(GapExamples, SealedEnclosureDrainsOnceTheVoxelResolvesItsHole) {
-  const Assembly assembly = ReadAssembly(std::filesystem::path(MECHANIST_SOURCE_DIR) /
+  const Assembly assembly = LoadAssembly(std::filesystem::path(MECHANIST_SOURCE_DIR) /
                                          "examples/sealed_enclosure/assembly.json");
   GapSearchOptions options;
   options.voxel = 2.0;

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "io/assembly_reader.h"
+#include "io/load_assembly.h"
 #include "io/mesh_reader.h"
 #include "kernel/features/feature_recognition.h"
 #include "reasoning/analysis.h"
@@ -74,7 +74,7 @@ Assembly StlAssembly(const std::string& name, const std::vector<std::string>& fi
             R"(", "mesh": ")" + (kGears / files[i]).string() + "\"}";
   }
   text += "]}";
-  return ParseAssembly(text, std::filesystem::temp_directory_path() / (name + ".json"));
+  return LoadAssemblyText(text, std::filesystem::temp_directory_path() / (name + ".json"));
 }
 
 TEST(GearData, StlPartsAloneMeshAsGearAndRackPairs) {

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io/assembly_reader.h"
+#include "io/load_assembly.h"
 #include "kernel/collision/collision_model.h"
 #include "reasoning/analysis.h"
 #include "reasoning/motion_run.h"
@@ -38,7 +38,7 @@ const std::string kWorm =
 TEST(Motion, SelfLockingWormCannotBeDrivenFromItsWheel) {
   const std::string text = Replace(ReadText(kWorm), R"("part": "motor_shaft", "feature": "shaft")",
                                    R"("part": "worm_wheel", "feature": "teeth")");
-  const Assembly locked = ParseAssembly(text, kWorm);
+  const Assembly locked = LoadAssemblyText(text, kWorm);
   const Analysis an = Analyze(locked);
   ASSERT_EQ(an.motion.driven.size(), 1u);
   EXPECT_FALSE(an.motion.driven[0].possible);
@@ -46,7 +46,7 @@ TEST(Motion, SelfLockingWormCannotBeDrivenFromItsWheel) {
       << an.motion.driven[0].reason;
   // Without friction the lead angle exceeds the friction angle: the wheel drives the worm.
   const Assembly free =
-      ParseAssembly(Replace(text, R"("friction": 0.15)", R"("friction": 0.01)"), kWorm);
+      LoadAssemblyText(Replace(text, R"("friction": 0.15)", R"("friction": 0.01)"), kWorm);
   const Analysis an_free = Analyze(free);
   ASSERT_TRUE(an_free.motion.driven[0].possible) << an_free.motion.driven[0].reason;
   EXPECT_EQ(Exact(Rate(free, an_free, "worm/worm")), "-40");
@@ -56,8 +56,8 @@ TEST(Motion, ReversingTheDriverNegatesEveryRate) {
   const std::string path =
       std::string(MECHANIST_SOURCE_DIR) + "/examples/planetary_gear_set/assembly.json";
   const std::string text = ReadText(path);
-  const Assembly forward = ParseAssembly(text, path);
-  const Assembly backward = ParseAssembly(Replace(text, R"("rate": 1)", R"("rate": -1)"), path);
+  const Assembly forward = LoadAssemblyText(text, path);
+  const Assembly backward = LoadAssemblyText(Replace(text, R"("rate": 1)", R"("rate": -1)"), path);
   const Analysis f = Analyze(forward), b = Analyze(backward);
   // The reported ratios are per unit driver rate, the same whichever way the driver turns.
   ASSERT_EQ(f.motion.driven.size(), 1u);
@@ -91,7 +91,7 @@ TEST(Motion, ReversingTheDriverNegatesEveryRate) {
 TEST(Motion, ThreePlanetsAreTwoRedundantConstraintsNotALock) {
   const std::string path =
       std::string(MECHANIST_SOURCE_DIR) + "/examples/planetary_gear_set/assembly.json";
-  const Analysis an = Analyze(ReadAssembly(path));
+  const Analysis an = Analyze(LoadAssembly(path));
   EXPECT_EQ(an.motion.mobility.dof, 1);
   EXPECT_EQ(an.motion.mobility.redundant, 2);
   EXPECT_FALSE(HasCode(an, "jam"));
@@ -103,7 +103,7 @@ TEST(Motion, ThreePlanetsAreTwoRedundantConstraintsNotALock) {
 TEST(Motion, PlanetPathOrbitsWithTheCarrierAndSpinsOnItsPin) {
   const std::string path =
       std::string(MECHANIST_SOURCE_DIR) + "/examples/planetary_gear_set/assembly.json";
-  const Assembly a = ReadAssembly(path);
+  const Assembly a = LoadAssembly(path);
   const Analysis an = Analyze(a);
   const std::size_t planet = *a.FindPart("planet_1");
   const ScrewPath& p = an.motion.ForExpectations()->parts[planet].path;
@@ -133,7 +133,7 @@ TEST(Motion, SweepFindsAPlanetHittingAPostInItsOrbit) {
      "library": {"kind": "shaft", "diameter": 4, "length": 8, "segments": 48},
      "pose": {"position": [7.5, 12.990381056766580, 1]}},
     {"id": "sun",)");
-  const Assembly a = ParseAssembly(with_post, path);
+  const Assembly a = LoadAssemblyText(with_post, path);
   const Analysis an = Analyze(a);
   const OperationCheck check = CheckOperation(a, an, CollisionModel(a), std::nullopt, 0.5);
   ASSERT_FALSE(check.clashes.empty());
@@ -153,7 +153,7 @@ TEST(Motion, SweepFindsAPlanetHittingAPostInItsOrbit) {
 TEST(Motion, SweepCarriesAFreePartThatIsPushed) {
   const std::string path =
       std::string(MECHANIST_SOURCE_DIR) + "/examples/pushed_by_contact/assembly.json";
-  const Assembly a = ReadAssembly(path);
+  const Assembly a = LoadAssembly(path);
   const Analysis an = Analyze(a);
   EXPECT_EQ(an.motion.mobility.dof, 2) << "the driver's freedom and the free a, b, c";
   const OperationCheck check = CheckOperation(a, an, CollisionModel(a), std::nullopt, std::nullopt);
@@ -189,7 +189,7 @@ TEST(Motion, SweepFindsAJamWhenThePushCannotBeYielded) {
      "pose": {"position": [0, 0, 43], "rotation": {"axis": [1, 0, 0], "angle": 180}}}],
     "drivers": [{"id": "press", "part": "ram", "feature": "shaft", "motion": "translation",
                  "amount": 10}]})";
-  const Assembly a = ParseAssembly(text, "ram.json");
+  const Assembly a = LoadAssemblyText(text, "ram.json");
   const Analysis an = Analyze(a);
   const OperationCheck check = CheckOperation(a, an, CollisionModel(a), std::nullopt, std::nullopt);
   ASSERT_EQ(check.inferred.size(), 1u);
@@ -215,7 +215,7 @@ TEST(Motion, SweepFindsAJamWhenThePushCannotBeYielded) {
       cm.replace(at, from.size(), to);
     }
   }
-  const Assembly b = ParseAssembly(cm, "ram_cm.json");
+  const Assembly b = LoadAssemblyText(cm, "ram_cm.json");
   const OperationCheck in_cm =
       CheckOperation(b, Analyze(b), CollisionModel(b), std::nullopt, std::nullopt);
   EXPECT_DOUBLE_EQ(in_cm.amount, 1.0);

@@ -7,7 +7,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
-#include "io/assembly_reader.h"
+#include "io/load_assembly.h"
 #include "io/mjcf_writer.h"
 #include "io/urdf_writer.h"
 #include "kernel/collision/collision_model.h"
@@ -43,7 +43,7 @@ std::size_t JointIndex(const SimulationModel& m, const std::string& name) {
 }
 
 TEST(SimulationModel, WormDriveIsTwoHingesCoupledAtMinusOneFortieth) {
-  const Assembly a = ReadAssembly(Example("robot_hand_worm"));
+  const Assembly a = LoadAssembly(Example("robot_hand_worm"));
   const Analysis an = Analyze(a);
   const SimulationModel m = BuildSimulationModel(a, an);
   ASSERT_EQ(m.links.size(), 3u);
@@ -79,7 +79,7 @@ TEST(SimulationModel, WormDriveIsTwoHingesCoupledAtMinusOneFortieth) {
 }
 
 TEST(SimulationModel, PlanetsCoupleToTheirCarrierAndTheSunThroughATendon) {
-  const Assembly a = ReadAssembly(Example("planetary_gear_set"));
+  const Assembly a = LoadAssembly(Example("planetary_gear_set"));
   const Analysis an = Analyze(a);
   const SimulationModel m = BuildSimulationModel(a, an);
   // ring (ground), carrier, three planets, sun.
@@ -107,7 +107,7 @@ TEST(SimulationModel, PlanetsCoupleToTheirCarrierAndTheSunThroughATendon) {
 }
 
 TEST(SimulationModel, ScrewIsAHingeAndASlideAdvancingTheLead) {
-  const Assembly a = ReadAssembly(Example("diaphragm_valve"));
+  const Assembly a = LoadAssembly(Example("diaphragm_valve"));
   const Analysis an = Analyze(a);
   const SimulationModel m = BuildSimulationModel(a, an);
   // The tree prefers the screw (one freedom) to the cylindrical fits beside it.
@@ -134,7 +134,7 @@ TEST(SimulationModel, ScrewIsAHingeAndASlideAdvancingTheLead) {
 }
 
 TEST(SimulationModel, LinkMassIsDensityTimesTheVolumeOfItsClosedMeshes) {
-  const Assembly a = ReadAssembly(Example("connecting_rod"));
+  const Assembly a = LoadAssembly(Example("connecting_rod"));
   const Analysis an = Analyze(a);
   SimulationOptions options;
   options.density = 2700;
@@ -156,7 +156,7 @@ TEST(SimulationModel, LinkMassIsDensityTimesTheVolumeOfItsClosedMeshes) {
 }
 
 TEST(SimulationModel, FeaturesOnlyPartsGetTheDefaultInertiaAndHeldDriversABrake) {
-  const Assembly a = ReadAssembly(Example("planetary_differential_sketch"));
+  const Assembly a = LoadAssembly(Example("planetary_differential_sketch"));
   const Analysis an = Analyze(a);
   const SimulationModel m = BuildSimulationModel(a, an);
   for (const SimLink& l : m.links) {
@@ -180,7 +180,7 @@ TEST(SimulationModel, MovableRangeEndsWhereTheSweptPartsTouch) {
   // fixed to the ground, b stops the arm both ways, and at each end of the range the two parts
   // are within the contact tolerance.
   const std::string file = Example("pushed_by_contact");
-  const Assembly free_a = ReadAssembly(file);
+  const Assembly free_a = LoadAssembly(file);
   const Analysis free_an = Analyze(free_a);
   const CollisionModel free_collision(free_a);
   SimulationOptions free_options;
@@ -188,9 +188,9 @@ TEST(SimulationModel, MovableRangeEndsWhereTheSweptPartsTouch) {
   const SimulationModel pushed = BuildSimulationModel(free_a, free_an, free_options);
   EXPECT_FALSE(pushed.joints[JointIndex(pushed, "d_arm_hinge")].upper);
   const Assembly a =
-      ParseAssembly(testing::Replace(testing::ReadText(file), R"({"id": "a", "library")",
-                                     R"({"id": "a", "ground": true, "library")"),
-                    file);
+      LoadAssemblyText(testing::Replace(testing::ReadText(file), R"({"id": "a", "library")",
+                                        R"({"id": "a", "ground": true, "library")"),
+                       file);
   const Analysis an = Analyze(a);
   const CollisionModel collision(a);
   SimulationOptions options;
@@ -221,7 +221,7 @@ TEST(SimulationModel, MovableRangeEndsWhereTheSweptPartsTouch) {
 }
 
 TEST(SimulationModel, OutputIsDeterministic) {
-  const Assembly a = ReadAssembly(Example("planetary_gear_set"));
+  const Assembly a = LoadAssembly(Example("planetary_gear_set"));
   const Analysis an = Analyze(a);
   const SimulationModel m1 = BuildSimulationModel(a, an);
   const SimulationModel m2 = BuildSimulationModel(a, an);

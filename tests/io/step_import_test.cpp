@@ -13,9 +13,9 @@
 #include <set>
 #include <sstream>
 
-#include "io/assembly_reader.h"
 #include "io/feature_report.h"
 #include "io/input_error.h"
+#include "io/load_assembly.h"
 #include "io/occt/step_fixtures.h"
 #include "io/step_reader.h"
 #include "kernel/features/part_library.h"
@@ -38,7 +38,7 @@ int Count(const Assembly& a, const std::string& product) {
 }
 
 TEST(StepImport, As1KeepsItsProductStructureAndSharesItsProducts) {
-  const Assembly a = ReadAssembly(kAs1);
+  const Assembly a = LoadAssembly(kAs1);
   ASSERT_EQ(a.parts().size(), 18u);
   EXPECT_EQ(Count(a, "BOLT"), 6);
   EXPECT_EQ(Count(a, "NUT"), 8);
@@ -63,7 +63,7 @@ TEST(StepImport, As1KeepsItsProductStructureAndSharesItsProducts) {
 }
 
 TEST(StepImport, As1IsOneRigidBoltedAssembly) {
-  const Assembly a = ReadAssembly(kAs1);
+  const Assembly a = LoadAssembly(kAs1);
   // Every nut is found on its bolt or on the rod, and their cylinders become tight threads.
   int nuts = 0;
   for (const Diagnostic& d : a.findings()) nuts += d.code == "nut_on_bolt";
@@ -91,32 +91,32 @@ TEST(StepImport, AnImportingFileAddsGroundAndNamesBadImports) {
   std::filesystem::create_directories(dir);
   const std::string grounded = R"({"mechanist": 1, "import": ")" + kAs1.string() +
                                R"(", "parts": [{"id": "AS1_PE_ASM.PLATE", "ground": true}]})";
-  const Analysis an = Analyze(ParseAssembly(grounded, dir / "a.json"));
+  const Analysis an = Analyze(LoadAssemblyText(grounded, dir / "a.json"));
   EXPECT_EQ(an.motion.mobility.dof, 0);
   EXPECT_TRUE(an.subassemblies[0].ground);
   // A feature's fastening set by name.
   const std::string bolt = "AS1_PE_ASM.L_BRACKET_ASSEMBLY.NUT_BOLT_ASSEMBLY.BOLT";
-  const Assembly loose =
-      ParseAssembly(R"({"mechanist": 1, "import": ")" + kAs1.string() + R"(", "parts": [{"id": ")" +
-                        bolt + R"(", "features": [{"id": "shaft_1", "fastening": "loose"}]}]})",
-                    dir / "d.json");
+  const Assembly loose = LoadAssemblyText(
+      R"({"mechanist": 1, "import": ")" + kAs1.string() + R"(", "parts": [{"id": ")" + bolt +
+          R"(", "features": [{"id": "shaft_1", "fastening": "loose"}]}]})",
+      dir / "d.json");
   const Part& b = loose.part(*loose.FindPart(bolt));
   EXPECT_EQ(b.features[*b.FindFeature("shaft_1")].fastening, Fastening::kLoose);
   // A part whose mesh is the STEP file: one rigid body with every solid's features.
-  const Assembly whole = ParseAssembly(
+  const Assembly whole = LoadAssemblyText(
       R"({"mechanist": 1, "parts": [{"id": "as1", "mesh": ")" + kAs1.string() + R"("}]})",
       dir / "e.json");
   ASSERT_EQ(whole.parts().size(), 1u);
   EXPECT_TRUE(whole.part(0).FindFeature("solid1_hole_1").has_value());
   EXPECT_GT(whole.part(0).features.size(), 100u);
   try {
-    ParseAssembly(R"({"mechanist": 1, "import": "missing.stp"})", dir / "b.json");
+    LoadAssemblyText(R"({"mechanist": 1, "import": "missing.stp"})", dir / "b.json");
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(e.pointer(), "/import");
   }
   // A new id adds a part (with a pose, not a place).
-  const Assembly more = ParseAssembly(
+  const Assembly more = LoadAssemblyText(
       R"({"mechanist": 1, "import": ")" + kAs1.string() +
           R"(", "parts": [{"id": "base", "ground": true, "pose": {"position": [0, -600, 0]},
             "library": {"kind": "plate", "length": 100, "width": 100, "thickness": 5}}]})",
@@ -126,16 +126,16 @@ TEST(StepImport, AnImportingFileAddsGroundAndNamesBadImports) {
   // A new part placed by its features onto an imported one: a pin of the plate hole's
   // diameter inserted 3 mm into it lies on the hole's axis and turns in it.
   const Assembly as1 =
-      ParseAssembly(R"({"mechanist": 1, "import": ")" + kAs1.string() + R"("})", dir / "f.json");
+      LoadAssemblyText(R"({"mechanist": 1, "import": ")" + kAs1.string() + R"("})", dir / "f.json");
   const FeatureRef hole = *as1.FindFeature("AS1_PE_ASM.PLATE/hole_1");
   const Feature& h = as1.feature(hole);
   const AxisSegment hole_W = h.WorldAxis(as1.part(hole.part).X_WP);
-  const Assembly pinned =
-      ParseAssembly(R"({"mechanist": 1, "import": ")" + kAs1.string() +
-                        R"(", "parts": [{"id": "pin", "library": {"kind": "shaft", "diameter": )" +
-                        std::to_string(h.diameter) + R"(, "length": 40},
+  const Assembly pinned = LoadAssemblyText(
+      R"({"mechanist": 1, "import": ")" + kAs1.string() +
+          R"(", "parts": [{"id": "pin", "library": {"kind": "shaft", "diameter": )" +
+          std::to_string(h.diameter) + R"(, "length": 40},
             "place": {"insert": "pin/shaft", "into": "AS1_PE_ASM.PLATE/hole_1", "depth": 3}}]})",
-                    dir / "g.json");
+      dir / "g.json");
   const Part& pin = pinned.part(*pinned.FindPart("pin"));
   const AxisSegment pin_W = pin.features[0].WorldAxis(pin.X_WP);
   EXPECT_NEAR(std::abs(pin_W.direction.dot(hole_W.direction)), 1.0, 1e-9);
@@ -150,11 +150,11 @@ TEST(StepImport, AnImportingFileAddsGroundAndNamesBadImports) {
   EXPECT_TRUE(turns);
   // Its errors name the entry's place.
   try {
-    ParseAssembly(R"({"mechanist": 1, "import": ")" + kAs1.string() +
-                      R"(", "parts": [{"id": "pin", "library": {"kind": "shaft", "diameter": 5,
+    LoadAssemblyText(R"({"mechanist": 1, "import": ")" + kAs1.string() +
+                         R"(", "parts": [{"id": "pin", "library": {"kind": "shaft", "diameter": 5,
                       "length": 20}, "place": {"insert": "pin/shaft",
                       "into": "AS1_PE_ASM.PLATE/no_such_hole"}}]})",
-                  dir / "c.json");
+                     dir / "c.json");
     FAIL();
   } catch (const InputError& e) {
     EXPECT_EQ(e.pointer(), "/parts/0/place/into");
@@ -178,7 +178,7 @@ TEST(StepImport, OpenCascadesMessagesBecomeFindingsNeverOutput) {
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "dangling.stp", std::ios::binary) << step;
   ::testing::internal::CaptureStdout();
-  const Assembly a = ReadAssembly(dir / "dangling.stp");
+  const Assembly a = LoadAssembly(dir / "dangling.stp");
   const std::string printed = ::testing::internal::GetCapturedStdout();
   EXPECT_EQ(printed, "");
   EXPECT_EQ(a.parts().size(), 18u);
@@ -199,7 +199,7 @@ TEST(StepImport, OpenCascadesMessagesBecomeFindingsNeverOutput) {
   EXPECT_EQ(unresolved, 1);
   EXPECT_EQ(entity, 1);
   // The file read as it is gives no such finding.
-  const Assembly intact = ReadAssembly(kAs1);
+  const Assembly intact = LoadAssembly(kAs1);
   for (const Diagnostic& d : intact.findings()) EXPECT_NE(d.code, "step_reader");
   std::filesystem::remove_all(dir);
 }
@@ -240,8 +240,8 @@ TEST(StepImport, As1WithEverySurfaceABSplineGivesTheSamePairs) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_nurbs";
   std::filesystem::create_directories(dir);
   testing::WriteNurbsCopy(kAs1, dir / "as1_nurbs.stp");
-  const Assembly original = ReadAssembly(kAs1);
-  const Assembly nurbs = ReadAssembly(dir / "as1_nurbs.stp");
+  const Assembly original = LoadAssembly(kAs1);
+  const Assembly nurbs = LoadAssembly(dir / "as1_nurbs.stp");
   ASSERT_EQ(nurbs.parts().size(), original.parts().size());
   for (std::size_t p = 0; p < nurbs.parts().size(); ++p) {
     EXPECT_EQ(nurbs.part(p).id, original.part(p).id);
@@ -264,7 +264,7 @@ TEST(StepImport, GearTeethWithFreeFormFlanksAreFoundOnTheSolidsTessellation) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_step_gears";
   std::filesystem::create_directories(dir);
   testing::WriteSpurGearPairStep(dir / "pair.step", 10, 27, 1.5);
-  const Assembly a = ReadAssembly(dir / "pair.step");
+  const Assembly a = LoadAssembly(dir / "pair.step");
   ASSERT_EQ(a.parts().size(), 2u);
   const Analysis an = Analyze(a);
   const Gears g(a, an);
@@ -297,7 +297,7 @@ TEST(StepImport, GearTeethWithFreeFormFlanksAreFoundOnTheSolidsTessellation) {
 TEST(StepImport, TheSolidWorksSpurPairMeshesAtMinusOneHalf) {
   // ../shared/data/real: SolidWorks Toolbox gears, flanks as many small cylinder patches; the
   // truth: 40 and 20 teeth, module 2, centre distance 60, ratio -1/2 from the pinion.
-  const Assembly a = ReadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) / "real" /
+  const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) / "real" /
                                   "spur_pair_20T_40T_solidworks" /
                                   "ISO standard Spur Gear Drive (2-1 ratio).STEP");
   ASSERT_EQ(a.parts().size(), 2u);
@@ -330,7 +330,7 @@ TEST(StepImport, NoGearIsFoundOnTheRealExportsThatHaveNone) {
                            "hinge_clamshell_build123d/clamshell_full.step",
                            "lead_screw_linear_actuator_onshape/Assembly.step",
                            "robot_hand_finger_hinges_onshape/Assembly 1.step"}) {
-    const Assembly a = ReadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) / "real" / file);
+    const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) / "real" / file);
     for (const Part& p : a.parts()) {
       for (const Feature& f : p.features) {
         EXPECT_NE(f.kind, FeatureKind::kGear) << file << ": " << p.id;
@@ -345,7 +345,7 @@ TEST(StepImport, TheRobotHandsFingerHingesTurnOnImpliedPins) {
   // between a fork's two cheeks. The truth lists 15 revolutes with their axes.
   const std::filesystem::path dir =
       std::filesystem::path(MECHANIST_SHARED_DATA) / "real" / "robot_hand_finger_hinges_onshape";
-  const Assembly a = ReadAssembly(dir / "Assembly 1.step");
+  const Assembly a = LoadAssembly(dir / "Assembly 1.step");
   const Analysis an = Analyze(a);
   std::ifstream in(dir / "truth.json");
   const nlohmann::json truth = nlohmann::json::parse(in);
@@ -409,7 +409,7 @@ TEST(StepImport, AFileThatCrashesOpenCascadeIsAnErrorAndTheProcessGoesOn) {
   const std::filesystem::path file =
       WriteDamagedStep(dir, "#259 = SURFACE_SIDE_STYLE( '', ( #425 ) );", "");
   try {
-    ReadAssembly(file);
+    LoadAssembly(file);
     ADD_FAILURE() << "read a damaged file";
   } catch (const InputError& e) {
     const std::string what = e.what();
@@ -422,7 +422,7 @@ TEST(StepImport, AFileThatCrashesOpenCascadeIsAnErrorAndTheProcessGoesOn) {
   // An oriented edge that is its own edge: the reader recurses until the stack overflows, and
   // the signal is caught on a stack of its own.
   try {
-    ReadAssembly(WriteDamagedStep(dir, "#330 = ORIENTED_EDGE( '', *, *, #587",
+    LoadAssembly(WriteDamagedStep(dir, "#330 = ORIENTED_EDGE( '', *, *, #587",
                                   "#330 = ORIENTED_EDGE( '', *, *, #330"));
     ADD_FAILURE() << "read an edge that is its own";
   } catch (const InputError& e) {
@@ -430,7 +430,7 @@ TEST(StepImport, AFileThatCrashesOpenCascadeIsAnErrorAndTheProcessGoesOn) {
         << e.what();
   }
   // The process goes on, and reads a sound file as before.
-  EXPECT_EQ(ReadAssembly(kAs1).parts().size(), 18u);
+  EXPECT_EQ(LoadAssembly(kAs1).parts().size(), 18u);
   std::filesystem::remove_all(dir);
 }
 
@@ -470,12 +470,12 @@ TEST(StepImport, ConesAreNamedInNotesAndSpheresAreBalls) {
   EXPECT_NEAR((ball.origin - Eigen::Vector3d(0, 60, 5)).norm(), 0, 1e-9);
   EXPECT_TRUE(solids[2].notes.empty()) << ::testing::PrintToString(solids[2].notes);
   // `mechanist features` lists the notes of imported parts.
-  const Assembly a = ReadAssembly(dir / "cones.step");
+  const Assembly a = LoadAssembly(dir / "cones.step");
   std::ostringstream listing;
   WriteFeatureReport(RecogniseAssemblyFeatures(a), listing);
   EXPECT_NE(listing.str().find("note: countersink of hole_1"), std::string::npos) << listing.str();
   // A part whose mesh is the STEP file keeps its solids' notes, named by solid.
-  const Assembly whole = ParseAssembly(
+  const Assembly whole = LoadAssemblyText(
       R"({"mechanist": 1, "parts": [{"id": "all", "mesh": "cones.step"}]})", dir / "w.json");
   const std::vector<std::string>& notes = whole.part(0).notes;
   EXPECT_NE(std::find(notes.begin(), notes.end(),
@@ -516,9 +516,12 @@ TEST(NutOnBolt, MeshPartsAloneAreANutOnItsBolt) {
   const std::string text = R"({"mechanist": 1, "parts": [
     {"id": "bolt", "mesh": "bolt.stl"},
     {"id": "nut", "mesh": "nut.stl", "pose": {"position": [0, 0, 10]}}]})";
-  const Assembly a = ParseAssembly(text, dir / "a.json");
-  ASSERT_EQ(a.findings().size(), 1u);
-  EXPECT_EQ(a.findings()[0].code, "nut_on_bolt");
+  const Assembly a = LoadAssemblyText(text, dir / "a.json");
+  // What each step of the load did: recognition, then the heuristic.
+  ASSERT_EQ(a.findings().size(), 2u);
+  EXPECT_EQ(a.findings()[0].code, "features_recognised");
+  EXPECT_EQ(a.findings()[0].parts, (std::vector<std::string>{"bolt", "nut"}));
+  EXPECT_EQ(a.findings()[1].code, "nut_on_bolt");
   const Analysis an = Analyze(a);
   ASSERT_EQ(an.pairs.size(), 1u);
   EXPECT_EQ(an.pairs[0].type, PairType::kFixed);
@@ -527,7 +530,10 @@ TEST(NutOnBolt, MeshPartsAloneAreANutOnItsBolt) {
     {"id": "bolt", "mesh": "bolt.stl", "features": [{"id": "s", "kind": "shaft", "origin": [0, 0, 0],
       "axis": [0, 0, 1], "diameter": 6, "length": 20}]},
     {"id": "nut", "mesh": "nut.stl", "pose": {"position": [0, 0, 10]}}]})";
-  EXPECT_TRUE(ParseAssembly(written, dir / "b.json").findings().empty());
+  const Assembly w = LoadAssemblyText(written, dir / "b.json");
+  ASSERT_EQ(w.findings().size(), 1u);
+  EXPECT_EQ(w.findings()[0].code, "features_recognised");
+  EXPECT_EQ(w.findings()[0].parts, std::vector<std::string>{"nut"});
 }
 
 }  // namespace

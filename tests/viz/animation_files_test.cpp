@@ -15,7 +15,7 @@
 #include <set>
 #include <string>
 
-#include "io/assembly_reader.h"
+#include "io/load_assembly.h"
 #include "io/text_edit.h"
 #include "reasoning/analysis.h"
 #include "reasoning/animation.h"
@@ -76,7 +76,7 @@ struct Glb {
 };
 
 struct Worm {
-  Assembly assembly = ReadAssembly(kWorm);
+  Assembly assembly = LoadAssembly(kWorm);
   Analysis analysis = Analyze(assembly);
   MotionRun run = PlanRun(assembly, analysis, std::nullopt, std::nullopt);
   std::size_t wheel = *assembly.FindPart("worm_wheel");
@@ -117,7 +117,7 @@ TEST(MotionRun, AShorterAmountAndANegativeRate) {
   EXPECT_NEAR(TurnAboutZ(w.assembly.part(w.wheel).X_WP.rotation(), end.X_WP[w.wheel].rotation()),
               -4.5, 1e-9);
   // Reversing the driver's rate runs every part backwards: the wheel turns +4.5 degrees.
-  const Assembly reversed = ParseAssembly(
+  const Assembly reversed = LoadAssemblyText(
       testing::Replace(testing::ReadText(kWorm), R"("rate": 1.0)", R"("rate": -1.0)"), kWorm);
   const MotionRun back = PlanRun(reversed, Analyze(reversed), std::nullopt, 0.5);
   EXPECT_NEAR(TurnAboutZ(w.assembly.part(w.wheel).X_WP.rotation(),
@@ -199,7 +199,7 @@ TEST(GltfAnimation, KeyframesAreTheComputedPosesAndTheStillPartsSitAtTheirs) {
 }
 
 TEST(GltfAnimation, AFeaturesOnlyPartIsDrawnByItsFeatureLines) {
-  const Assembly a = ReadAssembly(std::string(MECHANIST_SOURCE_DIR) +
+  const Assembly a = LoadAssembly(std::string(MECHANIST_SOURCE_DIR) +
                                   "/examples/planetary_differential_sketch/assembly.json");
   const Analysis an = Analyze(a);
   const Animation animation = SampleRun(a, PlanRun(a, an, std::nullopt, std::nullopt), 3);
@@ -299,7 +299,7 @@ TEST(VtpSeries, TheCollectionReferencesEveryFrameAndEachFrameHoldsThePoses) {
 
 TEST(VtpSeries, GapsAreAStaticSecondPartOfEveryTimeStep) {
   const Assembly assembly =
-      ReadAssembly(std::string(MECHANIST_SOURCE_DIR) + "/examples/sealed_enclosure/assembly.json");
+      LoadAssembly(std::string(MECHANIST_SOURCE_DIR) + "/examples/sealed_enclosure/assembly.json");
   const Analysis analysis = Analyze(assembly);
   const Animation animation =
       SampleRun(assembly, PlanRun(assembly, analysis, std::nullopt, std::nullopt), 3);

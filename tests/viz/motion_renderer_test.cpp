@@ -13,7 +13,7 @@
 #include <fstream>
 #include <string>
 
-#include "io/assembly_reader.h"
+#include "io/load_assembly.h"
 #include "kernel/assembly/assembly_state.h"
 #include "reasoning/analysis.h"
 #include "reasoning/animation.h"
@@ -35,7 +35,7 @@ struct Scene {
   Analysis analysis;
   Animation animation;
   Scene(const std::string& example, std::size_t frames, double amount)
-      : assembly(ReadAssembly(Example(example))),
+      : assembly(LoadAssembly(Example(example))),
         analysis(Analyze(assembly)),
         animation(SampleRun(assembly, PlanRun(assembly, analysis, std::nullopt, amount), frames)) {}
 };

@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "io/assembly_reader.h"
+#include "io/load_assembly.h"
 #include "io/text_edit.h"
 #include "reasoning/analysis.h"
 #include "reasoning/motion_run.h"
@@ -56,7 +56,7 @@ json Matrix(const RigidTransform& X) {
 }
 
 TEST(ViewerPage, CarriesTheDriversPathsThatStateAtUses) {
-  const Assembly assembly = ReadAssembly(kWorm);
+  const Assembly assembly = LoadAssembly(kWorm);
   const Analysis analysis = Analyze(assembly);
   const json data = PageData(ViewerHtml(assembly, analysis));
   ASSERT_EQ(data["parts"].size(), assembly.parts().size());
@@ -92,12 +92,12 @@ TEST(ViewerPage, CarriesTheDriversPathsThatStateAtUses) {
 
 TEST(ViewerPage, ShowsClashesAtRestAndEnclosedGaps) {
   // Two plates overlapping by 3 mm: a clash, its parts and a point inside both.
-  const Assembly clash = ParseAssembly(R"({"mechanist": 1, "parts": [
+  const Assembly clash = LoadAssemblyText(R"({"mechanist": 1, "parts": [
     {"id": "a", "ground": true,
      "library": {"kind": "plate", "length": 20, "width": 20, "thickness": 5}},
     {"id": "b", "library": {"kind": "plate", "length": 20, "width": 20, "thickness": 5},
      "pose": {"position": [5, 0, 2]}}]})",
-                                       "clash.json");
+                                          "clash.json");
   const json data = PageData(ViewerHtml(clash, Analyze(clash)));
   ASSERT_EQ(data["clashes"].size(), 1u);
   EXPECT_EQ(data["clashes"][0]["parts"], json({0, 1}));
@@ -105,7 +105,7 @@ TEST(ViewerPage, ShowsClashesAtRestAndEnclosedGaps) {
   EXPECT_TRUE(data["gaps"].empty());  // not asked for
   // The sealed enclosure's cavity at 2 mm voxels, as `mechanist gaps` reports it.
   const Assembly sealed =
-      ReadAssembly(std::string(MECHANIST_SOURCE_DIR) + "/examples/sealed_enclosure/assembly.json");
+      LoadAssembly(std::string(MECHANIST_SOURCE_DIR) + "/examples/sealed_enclosure/assembly.json");
   ViewerOptions options;
   options.gap_voxel = 2.0;
   const json gaps = PageData(ViewerHtml(sealed, Analyze(sealed), options))["gaps"];
@@ -115,7 +115,7 @@ TEST(ViewerPage, ShowsClashesAtRestAndEnclosedGaps) {
 }
 
 TEST(ViewerPage, SaysWhereThreeJsIsMissing) {
-  const Assembly assembly = ReadAssembly(kWorm);
+  const Assembly assembly = LoadAssembly(kWorm);
   ViewerOptions options;
   options.three_dir = "/nonexistent";
   try {
@@ -145,7 +145,7 @@ TEST(ViewerPage, WorksInABrowser) {
   if (puppeteer.empty() || chromium.empty() || std::string(MECHANIST_NODE).empty()) {
     GTEST_SKIP() << "puppeteer-core, chromium or node not configured (scripts/test.sh does)";
   }
-  const Assembly assembly = ReadAssembly(kWorm);
+  const Assembly assembly = LoadAssembly(kWorm);
   const Analysis analysis = Analyze(assembly);
   const auto dir =
       std::filesystem::temp_directory_path() / ("mechanist_viewer_" + std::to_string(::getpid()));
@@ -186,9 +186,9 @@ TEST(ViewerPage, WorksInABrowser) {
   const std::string pushed =
       std::string(MECHANIST_SOURCE_DIR) + "/examples/pushed_by_contact/assembly.json";
   const Assembly stopped =
-      ParseAssembly(testing::Replace(testing::ReadText(pushed), R"({"id": "a", "library")",
-                                     R"({"id": "a", "ground": true, "library")"),
-                    pushed);
+      LoadAssemblyText(testing::Replace(testing::ReadText(pushed), R"({"id": "a", "library")",
+                                        R"({"id": "a", "ground": true, "library")"),
+                       pushed);
   std::ofstream(dir / "stop.html") << ViewerHtml(stopped, Analyze(stopped));
   const json stop = {{"stop", {{"part", "d"}, {"turns", 0.5}, {"meets", {"b", "lug"}}}}};
   EXPECT_EQ(RunBrowser(dir, "stop.html", stop), "") << "a drag that stops";

@@ -12,7 +12,7 @@
 #include <fstream>
 #include <string>
 
-#include "io/assembly_reader.h"
+#include "io/load_assembly.h"
 #include "reasoning/adjustment.h"
 #include "reasoning/analysis.h"
 #include "reasoning/simulation_model.h"
@@ -113,7 +113,7 @@ TEST_P(Simulators, ExportedModelsLoadAndMoveAtTheAnalysisRatios) {
 
   // The analysis, as the command sees the file (adjustments solved and locked).
   if (c.file.extension() != ".json") return;  // STEP files: nothing drives them
-  const Assembly assembly = Adjusted(ReadAssembly(c.file));
+  const Assembly assembly = Adjusted(LoadAssembly(c.file));
   const Analysis analysis = Analyze(assembly);
   const SimulationModel model = BuildSimulationModel(assembly, analysis);
   const DrivenMotion* motion = analysis.motion.ForExpectations();

@@ -1,4 +1,4 @@
-#include "io/fastener_inference.h"
+#include "reasoning/fastener_inference.h"
 
 #include <array>
 #include <cmath>
@@ -24,20 +24,20 @@ double CoarsePitch(double diameter) {
   return best->second;
 }
 
-std::vector<Diagnostic> InferNutsOnBolts(std::vector<Part>* parts, double length_tolerance,
-                                         double angle_tolerance,
-                                         const std::vector<bool>* eligible) {
+std::vector<Diagnostic> InferNutsOnBolts(
+    std::vector<Part>* parts, double length_tolerance, double angle_tolerance,
+    const std::function<bool(std::size_t part, std::size_t feature)>& inferred) {
   std::vector<Diagnostic> found;
-  auto may = [&](std::size_t p) { return !eligible || (*eligible)[p]; };
   std::map<const TriangleMesh*, MeshFeatures> shapes;
   for (std::size_t n = 0; n < parts->size(); ++n) {
-    if (!may(n)) continue;
     Part& nut = (*parts)[n];
     std::vector<std::size_t> holes;
+    bool all_inferred = true;
     for (std::size_t f = 0; f < nut.features.size(); ++f) {
+      all_inferred = all_inferred && inferred(n, f);
       if (nut.features[f].kind == FeatureKind::kHole) holes.push_back(f);
     }
-    if (holes.size() != 1) continue;
+    if (!all_inferred || holes.size() != 1) continue;
     // Instances of one product share their mesh: recognised once.
     auto cached = shapes.find(nut.mesh.get());
     if (cached == shapes.end())
@@ -48,11 +48,13 @@ std::vector<Diagnostic> InferNutsOnBolts(std::vector<Part>* parts, double length
     if (AngleBetweenLines(hole.axis, *shape.axis) > angle_tolerance) continue;
     const AxisSegment h = hole.WorldAxis(nut.X_WP);
     for (std::size_t b = 0; b < parts->size(); ++b) {
-      if (b == n || !may(b)) continue;
+      if (b == n) continue;
       Part& bolt = (*parts)[b];
-      for (Feature& shaft : bolt.features) {
+      for (std::size_t f = 0; f < bolt.features.size(); ++f) {
+        Feature& shaft = bolt.features[f];
         // A shaft, or one a nut before this one made a thread (a rod with a nut at each end).
         if (shaft.kind != FeatureKind::kShaft && shaft.kind != FeatureKind::kThread) continue;
+        if (!inferred(b, f)) continue;
         const AxisSegment s = shaft.WorldAxis(bolt.X_WP);
         if (AngleBetweenLines(s.direction, h.direction) > angle_tolerance ||
             DistanceToLine(h.origin, s.origin, s.direction) > length_tolerance ||

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "kernel/assembly/diagnostic.h"
@@ -14,11 +16,12 @@ namespace mechanist {
 /// overlaps it along the axis, is a nut on a bolt: the hole becomes a tight tapped hole and the
 /// shaft a tight thread (ISO coarse pitch for the diameter), so that recognition makes the
 /// pair fixed and clamps every part whose clearance hole the bolt passes through. Returns one
-/// info diagnostic `nut_on_bolt` per nut, naming both parts and features. With `eligible`,
-/// only those parts (whose features were inferred, not written) take part.
-std::vector<Diagnostic> InferNutsOnBolts(std::vector<Part>* parts, double length_tolerance,
-                                         double angle_tolerance,
-                                         const std::vector<bool>* eligible = nullptr);
+/// info diagnostic `nut_on_bolt` per nut, naming both parts and features. Only features for
+/// which `inferred(part, feature)` holds (recognised or imported, not written by the file)
+/// are reinterpreted, and a nut's part must have no written feature.
+std::vector<Diagnostic> InferNutsOnBolts(
+    std::vector<Part>* parts, double length_tolerance, double angle_tolerance,
+    const std::function<bool(std::size_t part, std::size_t feature)>& inferred);
 
 /// ISO 261 coarse pitch (mm) for a nominal diameter (mm): the table's nearest diameter.
 double CoarsePitch(double diameter);

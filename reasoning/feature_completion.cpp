@@ -1,0 +1,114 @@
+#include "reasoning/feature_completion.h"
+
+#include <algorithm>
+#include <iterator>
+#include <map>
+#include <utility>
+
+#include "kernel/features/feature_recognition.h"
+
+namespace mechanist {
+namespace {
+
+/// The gears and racks found on one solid's tessellation, in the solid's frame.
+struct TessellationGears {
+  std::vector<Feature> features;
+  std::vector<std::string> notes;
+};
+
+TessellationGears FindTessellationGears(const TriangleMesh& mesh) {
+  TessellationGears gears;
+  for (RecognizedFeature& r : RecognizeFeatures(mesh).features) {
+    if (r.feature.kind != FeatureKind::kGear && r.feature.kind != FeatureKind::kRack) continue;
+    gears.notes.push_back(r.feature.id + ": " + r.detail + " (found on the solid's tessellation)");
+    gears.features.push_back(std::move(r.feature));
+  }
+  return gears;
+}
+
+/// "a, b and 3 more": the first few names of a list for a one-line message.
+std::string FewNames(const std::vector<std::string>& names) {
+  constexpr std::size_t kShown = 8;
+  std::string text;
+  for (std::size_t i = 0; i < names.size() && i < kShown; ++i) {
+    text += (i ? ", " : "") + names[i];
+  }
+  if (names.size() > kShown) text += " and " + std::to_string(names.size() - kShown) + " more";
+  return text;
+}
+
+}  // namespace
+
+bool PartOrigin::Inferred(const Part& part, std::size_t feature) const {
+  if (features_written) return false;
+  return std::find(written.begin(), written.end(), part.features.at(feature).id) == written.end();
+}
+
+std::vector<Diagnostic> CompleteFeatures(std::vector<Part>* parts,
+                                         const std::vector<PartOrigin>& origins) {
+  std::map<const TriangleMesh*, TessellationGears> gears_of;  // instances share their mesh
+  std::vector<std::string> recognised;
+  std::vector<std::string> with_gears;
+  for (std::size_t p = 0; p < parts->size(); ++p) {
+    const PartOrigin& origin = origins.at(p);
+    if (origin.features_written) continue;
+    Part& part = (*parts)[p];
+    // Backwards, so that each solid's insertion points stay where the reader put them.
+    bool found_gears = false;
+    for (auto solid = origin.step_solids.rbegin(); solid != origin.step_solids.rend(); ++solid) {
+      auto cached = gears_of.find(solid->mesh.get());
+      if (cached == gears_of.end()) {
+        cached = gears_of.emplace(solid->mesh.get(), FindTessellationGears(*solid->mesh)).first;
+      }
+      std::vector<Feature> features = cached->second.features;
+      for (Feature& f : features) {
+        f.id = solid->prefix + f.id;
+        f.origin = solid->X_PS * f.origin;
+        f.axis = solid->X_PS.RotateDirection(f.axis);
+        f.normal = solid->X_PS.RotateDirection(f.normal);
+      }
+      std::vector<std::string> notes = cached->second.notes;
+      if (!solid->prefix.empty()) {
+        const std::string label = solid->prefix.substr(0, solid->prefix.size() - 1) + ": ";
+        for (std::string& note : notes) note = label + note;
+      }
+      found_gears = found_gears || !features.empty();
+      part.features.insert(part.features.begin() + solid->features_end,
+                           std::make_move_iterator(features.begin()),
+                           std::make_move_iterator(features.end()));
+      part.notes.insert(part.notes.begin() + solid->notes_end, notes.begin(), notes.end());
+    }
+    if (found_gears) with_gears.push_back(part.id);
+    const bool only_tessellation_gears = origin.imported || !part.features.empty();
+    if (!origin.step_solids.empty() && only_tessellation_gears) continue;
+    if (!part.HasGeometry()) continue;
+    for (RecognizedFeature& r : RecognizeFeatures(*part.mesh).features) {
+      part.features.push_back(std::move(r.feature));
+    }
+    if (!part.features.empty()) recognised.push_back(part.id);
+  }
+  std::vector<Diagnostic> done;
+  if (!recognised.empty()) {
+    done.push_back({Severity::kInfo,
+                    "features_recognised",
+                    "the file writes no features for " + std::to_string(recognised.size()) +
+                        (recognised.size() == 1 ? " part" : " parts") +
+                        ", so they were recognised from the mesh: " + FewNames(recognised),
+                    recognised,
+                    {}});
+  }
+  if (!with_gears.empty()) {
+    done.push_back({Severity::kInfo,
+                    "tessellation_gears",
+                    "gears or racks of " + std::to_string(with_gears.size()) +
+                        (with_gears.size() == 1 ? " STEP solid" : " STEP solids") +
+                        " were found on the tessellation of their free-form faces (the part's "
+                        "notes say which): " +
+                        FewNames(with_gears),
+                    with_gears,
+                    {}});
+  }
+  return done;
+}
+
+}  // namespace mechanist
