@@ -94,6 +94,69 @@ json PairJson(const Assembly& assembly, const Pair& p) {
   return j;
 }
 
+// A mesh quantised for the page: each coordinate a 16-bit step across the mesh's box (a step
+// is the box's size / 65535, so a vertex moves by at most half a step: 0.8 um on a 100 mm
+// part), and indices 16-bit when the mesh has at most 65,536 vertices. A quarter of the
+// vertex bytes and half the index bytes of float32 and uint32.
+json QuantisedMesh(const TriangleMesh& mesh) {
+  const Aabb box = mesh.Bounds();
+  const Eigen::Vector3d step = (box.max - box.min) / 65535.0;
+  std::vector<std::uint16_t> xyz;
+  xyz.reserve(3 * mesh.vertices.size());
+  for (const Eigen::Vector3d& v : mesh.vertices) {
+    for (int k = 0; k < 3; ++k) {
+      const double q = step[k] > 0 ? std::round((v[k] - box.min[k]) / step[k]) : 0.0;
+      xyz.push_back(static_cast<std::uint16_t>(std::clamp(q, 0.0, 65535.0)));
+    }
+  }
+  json j = {{"triangles", mesh.faces.size()},
+            {"min", Vector(box.min)},
+            {"step", Vector(step)},
+            {"positions", Base64(xyz.data(), sizeof(std::uint16_t) * xyz.size())}};
+  const bool narrow = mesh.vertices.size() <= 65536;
+  std::vector<std::uint16_t> narrow_indices;
+  std::vector<std::uint32_t> wide_indices;
+  for (const TriangleMesh::Face& f : mesh.faces) {
+    for (const std::int32_t i : f) {
+      if (narrow) {
+        narrow_indices.push_back(static_cast<std::uint16_t>(i));
+      } else {
+        wide_indices.push_back(static_cast<std::uint32_t>(i));
+      }
+    }
+  }
+  j["index_bytes"] = narrow ? 2 : 4;
+  j["indices"] = narrow ? Base64(narrow_indices.data(), 2 * narrow_indices.size())
+                        : Base64(wide_indices.data(), 4 * wide_indices.size());
+  return j;
+}
+
+// The assembly sequence for the stepper: the insertions in order, then the parts no insertion
+// places (with the attempt that got furthest).
+json Insertion(const InsertionStep& step, bool placed) {
+  json blocked = json::array();
+  for (const InsertionObstacle& o : step.blocked_by) {
+    blocked.push_back({{"part", o.part},
+                       {"travel", o.travel},
+                       {"short_by", o.short_by},
+                       {"point", Vector(o.p_W)}});
+  }
+  return {
+      {"part", step.part},     {"carried", step.carried}, {"direction", Vector(step.direction_W)},
+      {"travel", step.travel}, {"clear", step.clear},     {"placed", placed},
+      {"blocked_by", blocked}};
+}
+
+json Sequence(const AssemblyPlan& plan) {
+  json steps = json::array();
+  for (const InsertionStep& step : plan.steps) steps.push_back(Insertion(step, true));
+  for (const InsertionStep& step : plan.unplaced) steps.push_back(Insertion(step, false));
+  return {{"assemblable", plan.assemblable},
+          {"from_steps", plan.from_steps},
+          {"base", plan.base},
+          {"steps", steps}};
+}
+
 json Contact(const std::optional<OperationClash>& c) {
   if (!c) return nullptr;
   return {{"at", c->at}, {"parts", json::array({c->part_a, c->part_b})}, {"point", Vector(c->p_W)}};
@@ -118,19 +181,7 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
               {"mesh", -1}};
     if (part.HasGeometry()) {
       auto [it, added] = mesh_index.emplace(part.mesh.get(), meshes.size());
-      if (added) {
-        std::vector<float> xyz;
-        for (const Eigen::Vector3d& v : part.mesh->vertices) {
-          xyz.insert(xyz.end(), {static_cast<float>(v.x()), static_cast<float>(v.y()),
-                                 static_cast<float>(v.z())});
-        }
-        std::vector<std::uint32_t> indices;
-        for (const TriangleMesh::Face& f : part.mesh->faces) {
-          for (const std::int32_t i : f) indices.push_back(static_cast<std::uint32_t>(i));
-        }
-        meshes.push_back({{"positions", Base64(xyz.data(), 4 * xyz.size())},
-                          {"indices", Base64(indices.data(), 4 * indices.size())}});
-      }
+      if (added) meshes.push_back(QuantisedMesh(*part.mesh));
       j["mesh"] = it->second;
     }
     json lines = json::array();
@@ -175,15 +226,17 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
     collision.emplace(assembly);
   }
 
-  // The file's expectations, as `mechanist check` evaluates them (the assembly plan, which
-  // sweeps every part, only when an entry asks for it).
+  // The assembly sequence (PlanAssembly sweeps every part) for the stepper, and for the
+  // file's expectations as `mechanist check` evaluates them.
   std::optional<AssemblyPlan> plan;
-  for (const Expectation& e : assembly.expectations()) {
-    if (e.kind == Expectation::Kind::kAssemblable && !plan) {
-      plan = collision ? PlanAssembly(assembly, analysis, *collision)
-                       : PlanAssembly(assembly, analysis, CollisionModel(assembly));
-    }
+  const bool asked =
+      std::any_of(assembly.expectations().begin(), assembly.expectations().end(),
+                  [](const Expectation& e) { return e.kind == Expectation::Kind::kAssemblable; });
+  if (asked || (options.plan && collision)) {
+    plan = collision ? PlanAssembly(assembly, analysis, *collision)
+                     : PlanAssembly(assembly, analysis, CollisionModel(assembly));
   }
+  data["assembly"] = plan && options.plan ? Sequence(*plan) : json(nullptr);
   json expectations = json::array();
   for (const ExpectationResult& r :
        CheckExpectations(assembly, analysis, plan ? &*plan : nullptr)) {

@@ -15,6 +15,9 @@ struct ViewerOptions {
   /// Search every drag's movable range with the swept check (FindMovableRange): the page
   /// stops a drag at the first contact each way and shows it. Slow on large real files.
   bool ranges = true;
+  /// Plan the assembly sequence (PlanAssembly, a swept check of every part) for the page's
+  /// stepper. Slow on large real files.
+  bool plan = true;
   /// Find the enclosed gaps at this voxel edge (mm) and show them as translucent volumes with
   /// their volumes; 0: no gaps.
   double gap_voxel = 0.0;
@@ -30,9 +33,12 @@ struct ViewerOptions {
 /// the axis Drag gives it, everything coupled follows, up to the first contact each way (the
 /// movable range, shown with the parts that meet), or the page says which pairs hold it.
 /// Parts in a clash at rest (interference) are drawn red with a dot at the contact point, and
-/// with `gap_voxel` the enclosed gaps show. The page's state is `window.mechanist` (for tests
-/// and scripts). Throws std::runtime_error
-/// when three.js is not found under `options.three_dir`.
+/// with `gap_voxel` the enclosed gaps show. With `plan`, a stepper shows the assembly sequence
+/// (PlanAssembly): each insertion moving along its direction into place, a blocked one up to
+/// its first contact with the obstacle shown. Meshes are stored once per shared mesh,
+/// quantised to 16 bits per coordinate across their box. The page's state is `window.mechanist`
+/// (for tests and scripts). Throws std::runtime_error when three.js is not found under
+/// `options.three_dir`.
 std::string ViewerHtml(const Assembly& assembly, const Analysis& analysis,
                        const ViewerOptions& options = {});
 

@@ -49,6 +49,15 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       <input type="range" id="drag" min="-1000" max="1000" value="0">
       <span id="drag-value"></span>
     </div>
+    <h2>Assembly sequence</h2>
+    <div id="assembly-summary"></div>
+    <div id="assembly-controls" style="display:none">
+      <button id="step-back">&lt; step</button>
+      <button id="step-next">step &gt;</button>
+      <button id="step-play">play</button>
+      <button id="step-done">assembled</button>
+    </div>
+    <div id="assembly-steps"></div>
     <h2>Mobility</h2><div id="mobility"></div>
     <h2>Clashes and gaps</h2><div id="clashes"></div><div id="gaps"></div>
     <h2>Expectations</h2><div id="expectations"></div>
@@ -77,7 +86,13 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
 
   // ---- scene ----
   const view = $("view");
-  const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+  // A large scene is drawn without multisampling (five times faster in software) and from a
+  // cache of its still parts while parts move (below).
+  const kLargeTriangles = 200000;
+  let triangles = 0;
+  for (const p of data.parts) if (p.mesh >= 0) triangles += data.meshes[p.mesh].triangles;
+  const large = triangles > kLargeTriangles;
+  const renderer = new THREE.WebGLRenderer({ antialias: !large, preserveDrawingBuffer: true });
   renderer.setPixelRatio(window.devicePixelRatio);
   renderer.localClippingEnabled = true;
   view.appendChild(renderer.domElement);
@@ -91,16 +106,90 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   camera.up.set(0, 0, 1);
   const controls = new THREE.OrbitControls(camera, renderer.domElement);
 
+  // ---- drawing: a large scene redraws only what moves ----
+  // Software rendering (headless browsers, weak GPUs) takes a quarter of a second a frame for a
+  // million triangles. So in a large scene, while parts move (a drag, a driver, an assembly
+  // step), the still parts are drawn once into a colour and depth cache, and each frame copies
+  // the cache (its depth too) and draws only the moving parts over it. The cache is redrawn
+  // when anything about the still parts changes (`changed`: the camera, colours, visibility,
+  // the section, the axes, the size) or the set of moving parts does.
+  let stillVersion = 0, dirty = true;
+  function changed() { ++stillVersion; dirty = true; }
+  controls.addEventListener("change", changed);
+  const canCache = !!(renderer.extensions.get("WEBGL_depth_texture") &&
+                      renderer.extensions.get("EXT_frag_depth"));
+  const cache = { on: large, target: null, drawn: "", scene: new THREE.Scene(),
+                  camera: new THREE.OrthographicCamera(-1, 1, 1, -1, 0, 1) };
+  const copy = new THREE.ShaderMaterial({
+    uniforms: { color: { value: null }, depth: { value: null } },
+    vertexShader: "varying vec2 at;\n" +
+      "void main() { at = uv; gl_Position = vec4(position.xy, 0.0, 1.0); }",
+    fragmentShader: "uniform sampler2D color;\nuniform sampler2D depth;\nvarying vec2 at;\n" +
+      "void main() {\n  gl_FragColor = texture2D(color, at);\n" +
+      "  gl_FragDepthEXT = texture2D(depth, at).x;\n}",
+    depthTest: true, depthWrite: true, depthFunc: THREE.AlwaysDepth,
+  });
+  copy.extensions.fragDepth = true;
+  cache.scene.add(new THREE.Mesh(new THREE.PlaneBufferGeometry(2, 2), copy));
+  const setCacheSize = (w, h) => {
+    if (!cache.target) {
+      cache.target = new THREE.WebGLRenderTarget(w, h);
+      cache.target.depthTexture = new THREE.DepthTexture(w, h);
+      cache.target.depthTexture.type = THREE.UnsignedIntType;
+      copy.uniforms.color.value = cache.target.texture;
+      copy.uniforms.depth.value = cache.target.depthTexture;
+    }
+    cache.target.setSize(w, h);
+  };
+  let framesDrawn = 0;
+  const draw = () => {
+    ++framesDrawn;
+    const moving = Object.keys(state.paths);
+    if (!cache.on || !canCache || moving.length === 0) {
+      renderer.render(scene, camera);
+      return;
+    }
+    const movingSet = new Set(moving.map(Number));
+    const shown = parts.map((part) => part.group.visible);
+    const key = stillVersion + ":" + moving.join(",");
+    if (cache.drawn !== key) {
+      // The still parts only: the markers and gaps are few triangles, drawn every frame.
+      const others = scene.children.filter((o) => !o.isLight && !parts.some((q) => q.group === o));
+      const othersShown = others.map((o) => o.visible);
+      others.forEach((o) => { o.visible = false; });
+      parts.forEach((part, p) => { part.group.visible = shown[p] && !movingSet.has(p); });
+      renderer.setRenderTarget(cache.target);
+      renderer.render(scene, camera);
+      renderer.setRenderTarget(null);
+      others.forEach((o, k) => { o.visible = othersShown[k]; });
+      cache.drawn = key;
+    }
+    renderer.render(cache.scene, cache.camera);
+    parts.forEach((part, p) => { part.group.visible = shown[p] && movingSet.has(p); });
+    const background = scene.background;
+    scene.background = null;
+    renderer.autoClear = false;
+    renderer.render(scene, camera);
+    renderer.autoClear = true;
+    scene.background = background;
+    parts.forEach((part, p) => { part.group.visible = shown[p]; });
+  };
+
   const decode = (b64, Type) => {
     const bin = atob(b64);
     const bytes = new Uint8Array(bin.length);
     for (let i = 0; i < bin.length; ++i) bytes[i] = bin.charCodeAt(i);
     return new Type(bytes.buffer);
   };
+  // Meshes come quantised: a coordinate is min + q * step, q a 16-bit step count.
   const geometries = data.meshes.map((m) => {
+    const q = decode(m.positions, Uint16Array);
+    const xyz = new Float32Array(q.length);
+    for (let i = 0; i < q.length; ++i) xyz[i] = m.min[i % 3] + q[i] * m.step[i % 3];
     const g = new THREE.BufferGeometry();
-    g.setAttribute("position", new THREE.BufferAttribute(decode(m.positions, Float32Array), 3));
-    g.setIndex(new THREE.BufferAttribute(decode(m.indices, Uint32Array), 1));
+    g.setAttribute("position", new THREE.BufferAttribute(xyz, 3));
+    g.setIndex(new THREE.BufferAttribute(
+      decode(m.indices, m.index_bytes === 2 ? Uint16Array : Uint32Array), 1));
     g.computeVertexNormals();
     return g;
   });
@@ -158,10 +247,16 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       part.group.matrixWorldNeedsUpdate = true;
     });
   };
-  const show = (paths, s) => { state.paths = paths || {}; state.s = s; update(); };
+  const show = (paths, s) => { state.paths = paths || {}; state.s = s; update(); dirty = true; };
+  // Parts the assembly stepper has not put in yet are hidden; a driver or drag shows them all.
+  const showAll = () => {
+    for (const part of parts) part.group.visible = true;
+    changed();
+  };
 
   // ---- highlight ----
   const highlight = (indices) => {
+    changed();
     const on = new Set(indices);
     parts.forEach((part, p) => {
       part.material.emissive.setHex(on.has(p) ? 0x3355ff : 0x000000);
@@ -221,6 +316,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       label.textContent = " " + (d.rotation ? (360 * s).toFixed(1) + " deg" :
         s.toFixed(2) + " " + unit(d));
       state.driver = i;
+      leaveSteps();
       show(d.paths, s * scale);
     };
     slider.addEventListener("input", set);
@@ -400,6 +496,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     if (motion.ahead && s > motion.ahead.at) { s = motion.ahead.at; stop = motion.ahead; }
     if (motion.behind && s < -motion.behind.at) { s = -motion.behind.at; stop = motion.behind; }
     state.driver = null;
+    leaveSteps();
     show(motion.paths, s);
     stopMarker.visible = stop !== null;
     if (stop) {
@@ -496,6 +593,127 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     }
   });
 
+  // ---- assembly sequence ----
+  // Step k shows the base and the parts of steps before k in place, step k's part (and what
+  // it carries) travelling along its direction into place, u of the way (a blocked step only
+  // up to its first contact, the obstacle marked), and hides the parts of later steps.
+  const plan = data.assembly;
+  let step = null, stepTimer = null;
+  const stepMarker = new THREE.Mesh(new THREE.SphereGeometry(1, 16, 12),
+    new THREE.MeshBasicMaterial({ color: 0xdd1111, depthTest: false }));
+  stepMarker.visible = false;
+  stepMarker.renderOrder = 1;
+  scene.add(stepMarker);
+  const stepWords = (st) => {
+    const moving = [st.part].concat(st.carried).map((p) => data.parts[p].id).join(" + ");
+    const d = st.direction.map((v) => +v.toFixed(3)).join(", ");
+    let words = moving + " along (" + d + "), " +
+      (st.travel / data.mm_per_length).toFixed(2) + " " + data.length_unit;
+    if (st.clear) return words + ": clear";
+    const first = st.blocked_by[0];
+    words += ": blocked by " + (first ? data.parts[first.part].id + " after " +
+      (first.travel / data.mm_per_length).toFixed(2) + " " + data.length_unit : "?");
+    return words + (st.placed ? "" : " (cannot be placed)");
+  };
+  // The obstacle of a blocked step is drawn see-through in red, so that the part it stops
+  // and the contact point show.
+  const seeThrough = (obstacle) => {
+    changed();
+    parts.forEach((part, p) => {
+      const on = p === obstacle;
+      part.material.transparent = on;
+      part.material.opacity = on ? 0.45 : 1;
+      part.material.depthWrite = !on;
+      if (on) part.material.emissive.setHex(0xaa0000), part.material.emissiveIntensity = 0.5;
+    });
+  };
+  const stepTo = (k, u) => {
+    const st = plan.steps[k];
+    step = k;
+    const later = new Set();
+    plan.steps.forEach((other, j) => {
+      if (j > k) [other.part].concat(other.carried).forEach((p) => later.add(p));
+    });
+    parts.forEach((part, p) => { part.group.visible = !later.has(p); });
+    changed();
+    const first = st.clear ? null : st.blocked_by[0] || null;
+    const end = first ? first.travel : st.travel;
+    const screw = [{ point: [0, 0, 0], axis: st.direction, turns: 0, travel: 1 }];
+    const paths = {};
+    [st.part].concat(st.carried).forEach((p) => { paths[p] = screw; });
+    state.driver = null;
+    show(paths, u * end - st.travel);
+    const reached = first !== null && u >= 1;
+    stepMarker.visible = reached;
+    if (reached) {
+      stepMarker.position.set(first.point[0], first.point[1], first.point[2]);
+      stepMarker.scale.setScalar(dotSize);
+    }
+    highlight([st.part]);
+    seeThrough(reached ? first.part : null);
+    document.querySelectorAll("#assembly-steps .row").forEach((row, j) => {
+      row.classList.toggle("on", j === k);
+    });
+    return { part: data.parts[st.part].id, clear: st.clear, placed: st.placed,
+             obstacle: reached ? data.parts[first.part].id : null,
+             at: reached ? first.travel / data.mm_per_length : null,
+             hidden: [...later].map((p) => data.parts[p].id) };
+  };
+  const stopPlaying = () => {
+    if (stepTimer) clearInterval(stepTimer);
+    stepTimer = null;
+    $("step-play").textContent = "play";
+  };
+  // Animates step k from outside to its end over 40 frames, then the next step.
+  const playFrom = (k) => {
+    stopPlaying();
+    $("step-play").textContent = "stop";
+    let u = 0;
+    stepTimer = setInterval(() => {
+      u = Math.min(u + 0.025, 1);
+      stepTo(k, u);
+      if (u < 1) return;
+      if (k + 1 < plan.steps.length && plan.steps[k].clear) { k += 1; u = 0; return; }
+      stopPlaying();
+    }, 30);
+  };
+  function leaveSteps() {
+    if (step === null) return;
+    stopPlaying();
+    step = null;
+    stepMarker.visible = false;
+    seeThrough(null);
+    showAll();
+  }
+  if (!plan) {
+    $("assembly-summary").textContent = "not planned (mechanist view --plan plans it)";
+  } else {
+    $("assembly-summary").textContent = (plan.assemblable ? "assemblable" : "not assemblable") +
+      ", " + plan.steps.length + " insertion" + (plan.steps.length === 1 ? "" : "s") +
+      (plan.from_steps ? " (the file's steps)" : " (found by disassembly)") + "; in place first: " +
+      (plan.base.map((p) => data.parts[p].id).join(" ") || "nothing");
+    $("assembly-summary").className = plan.assemblable ? "passed" : "failed";
+    $("assembly-controls").style.display = plan.steps.length ? "" : "none";
+    plan.steps.forEach((st, k) => {
+      const row = text("div", (k + 1) + ". " + stepWords(st), "row" + (st.clear ? "" : " error"));
+      row.addEventListener("click", () => { stopPlaying(); stepTo(k, 1); });
+      $("assembly-steps").appendChild(row);
+    });
+    $("step-next").addEventListener("click", () => {
+      stopPlaying();
+      playFrom(step === null ? 0 : Math.min(step + 1, plan.steps.length - 1));
+    });
+    $("step-back").addEventListener("click", () => {
+      stopPlaying();
+      stepTo(step === null || step === 0 ? 0 : step - 1, 1);
+    });
+    $("step-play").addEventListener("click", () => {
+      if (stepTimer) { stopPlaying(); return; }
+      playFrom(step === null ? 0 : step);
+    });
+    $("step-done").addEventListener("click", () => { leaveSteps(); show({}, 0); highlight([]); });
+  }
+
   // ---- view controls ----
   const bounds = () => {
     const box = new THREE.Box3();
@@ -516,6 +734,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   $("fit").addEventListener("click", fit);
   $("show-axes").addEventListener("change", (e) => {
     for (const part of parts) part.axes.visible = e.target.checked || part.sketch;
+    changed();
   });
   const setSection = () => {
     clipping.length = 0;
@@ -526,6 +745,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       clipping.push(section);
     }
     for (const part of parts) part.material.needsUpdate = true;
+    changed();
   };
   $("section").addEventListener("change", setSection);
   $("section-at").addEventListener("input", setSection);
@@ -533,18 +753,27 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   const resize = () => {
     const w = view.clientWidth, h = view.clientHeight;
     renderer.setSize(w, h);
+    setCacheSize(w * renderer.getPixelRatio(), h * renderer.getPixelRatio());
+    changed();
     camera.aspect = w / Math.max(h, 1);
     camera.updateProjectionMatrix();
   };
   window.addEventListener("resize", resize);
   resize();
   fit();
-  const frame = () => { renderer.render(scene, camera); requestAnimationFrame(frame); };
+  // Drawn when something changed, not every frame: a still page costs nothing.
+  const frame = () => {
+    if (dirty) draw();
+    dirty = false;
+    requestAnimationFrame(frame);
+  };
   frame();
 
   // ---- state for scripts and tests ----
   window.mechanist = {
     data,
+    /** Milliseconds from the start of navigation to the first frame drawn. */
+    loadedMs: performance.now(),
     /** Runs driver `index` to `s` (revolutions, or the file's length units). */
     setDriver(index, s) {
       const d = data.drivers[index];
@@ -552,7 +781,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       if (slider) slider.value = Math.round((1000 * s) / d.amount);
       state.driver = index;
       show(d.paths, s * (d.rotation ? 1 : data.mm_per_length));
-      renderer.render(scene, camera);
+      draw();
     },
     /** Drags part `id` by `s` revolutions ("turn") or length units ("slide"): true, or
      *  {stop: [the two parts that meet], at} when its movable range ends first; false when
@@ -565,7 +794,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       const path_s = s * (mode === "turn" ? 1 : data.mm_per_length);
       dragSlider.value = Math.round((1000 * path_s) / (mode === "turn" ? 1 : data.reach_mm));
       const stop = dragTo(mode, path_s);
-      renderer.render(scene, camera);
+      draw();
       return stop ? { stop: stop.parts.map((i) => data.parts[i].id), at: stop.at } : true;
     },
     /** The world pose of part `id` now, column-major. */
@@ -579,13 +808,33 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       const a = new THREE.Vector3(axis[0], axis[1], axis[2]).normalize();
       return (2 * Math.atan2(new THREE.Vector3(q.x, q.y, q.z).dot(a), q.w) * 180) / Math.PI;
     },
-    /** Where part `id`'s centre appears in the page, CSS pixels. */
-    screenPoint(id) {
+    /** Where a point of part `id`'s world box appears in the page, CSS pixels: its centre, or
+     *  `at` (fractions of the box along x, y, z). */
+    screenPoint(id, at = [0.5, 0.5, 0.5]) {
       const box = new THREE.Box3().setFromObject(parts[partIndex(id)].group);
-      const c = box.getCenter(new THREE.Vector3()).project(camera);
+      const c = new THREE.Vector3(at[0], at[1], at[2]).multiply(box.getSize(new THREE.Vector3()))
+        .add(box.min).project(camera);
       const r = renderer.domElement.getBoundingClientRect();
       return [r.left + ((c.x + 1) / 2) * r.width, r.top + ((1 - c.y) / 2) * r.height];
     },
+    /** Shows assembly step k (0-based) u of the way in (default: to its end): the moving part,
+     *  whether it is clear, the obstacle it meets at the end of a blocked step and after how
+     *  many length units, and the parts of later steps, hidden. */
+    assemblyStep(k, u = 1) {
+      const result = stepTo(k, u);
+      draw();
+      return result;
+    },
+    /** Draws the still parts from a cache while parts move (on by itself above 200,000
+     *  triangles, where multisampling is off too): whether the cache is used; for tests. */
+    setCache(on) {
+      cache.on = on;
+      cache.drawn = "";
+      draw();
+      return cache.on && canCache;
+    },
+    /** How many frames the page has drawn (it draws only when something changed). */
+    framesDrawn() { return framesDrawn; },
     /** The drag info line shown for the selected part. */
     dragInfo() { return $("drag-info").textContent; },
     select(id) { select(id === null ? null : partIndex(id)); },

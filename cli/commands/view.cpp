@@ -15,6 +15,7 @@ Command ViewCommand() {
   struct Options {
     std::string out;
     bool ranges = false, no_ranges = false;
+    bool plan = false, no_plan = false;
     double gaps = 0;  // voxel, file units; 0: none
   };
   auto o = std::make_shared<Options>();
@@ -29,6 +30,9 @@ Command ViewCommand() {
         "--ranges", o->ranges, "search where each drag stops even above 100,000 triangles (slow)");
     app.add_flag("--no-ranges", o->no_ranges, "do not search where each drag stops")
         ->excludes(ranges);
+    CLI::Option* plan = app.add_flag(
+        "--plan", o->plan, "plan the assembly sequence even above 100,000 triangles (slow)");
+    app.add_flag("--no-plan", o->no_plan, "do not plan the assembly sequence")->excludes(plan);
     app.add_option("--gaps", o->gaps,
                    "show the enclosed gaps found at this voxel size (file units)")
         ->check(CLI::PositiveNumber);
@@ -36,20 +40,25 @@ Command ViewCommand() {
   c.run = [o](Session& s) {
     const std::string path =
         o->out.empty() ? std::filesystem::path(s.file).stem().string() + ".html" : o->out;
-    // The swept check of every drag takes minutes on a large real file (the Onshape robot
-    // hand, 279,525 triangles: 43 s for one finger): above kMaxRangeTriangles it runs only
-    // when asked.
-    constexpr std::size_t kMaxRangeTriangles = 100000;
+    // The swept checks of every drag and of every insertion take minutes on a large real
+    // file (the Onshape robot hand, 279,525 triangles: 43 s for one finger's drag): above
+    // kMaxSweptTriangles they run only when asked.
+    constexpr std::size_t kMaxSweptTriangles = 100000;
     std::size_t triangles = 0;
     for (const Part& part : s.assembly->parts()) {
       if (part.HasGeometry()) triangles += part.mesh->faces.size();
     }
     ViewerOptions options;
-    options.ranges = o->ranges || (!o->no_ranges && triangles <= kMaxRangeTriangles);
+    options.ranges = o->ranges || (!o->no_ranges && triangles <= kMaxSweptTriangles);
+    options.plan = o->plan || (!o->no_plan && triangles <= kMaxSweptTriangles);
     options.gap_voxel = o->gaps * s.assembly->units().mm_per_length;
     if (!options.ranges && !o->no_ranges) {
       std::cout << "movable ranges not searched: " << triangles
                 << " triangles, more than 100,000 (--ranges searches them)\n";
+    }
+    if (!options.plan && !o->no_plan) {
+      std::cout << "assembly sequence not planned: " << triangles
+                << " triangles, more than 100,000 (--plan plans it)\n";
     }
     try {
       s.Report(path, ViewerHtml(*s.assembly, *s.analysis, options));

@@ -5,7 +5,9 @@
 //                        "degrees": D}, "held": ID, "stop": {"part": ID, "turns": T,
 //                        "meets": [ID, ID]}, "mouse": {"part": ID, "pixels": P,
 //                        "follower": ID, "axis": [x,y,z], "degrees": D},
-//               "graph": {"nodes": N, "edges": E}}, every entry optional
+//               "graph": {"nodes": N, "edges": E},
+//               "step": {"part": ID, "obstacle": ID},
+//               "cache": {"part": ID, "turns": T}}, every entry optional
 // Prints one line per check and exits 1 at the first failure.
 "use strict";
 const fs = require("fs");
@@ -150,6 +152,68 @@ function fail(message) {
       if (p.type !== "fixed") fail("a holding pair is not fixed: " + JSON.stringify(p));
     }
     console.log("ok a part held by tight bolts names the holding pairs: " + info);
+  }
+  if (checks.step) {
+    // The assembly stepper: the step that inserts the part starts outside, and, blocked,
+    // ends at its first contact with the obstacle, later steps' parts hidden.
+    const t = checks.step;
+    const result = await page.evaluate((t) => {
+      const m = window.mechanist;
+      const k = m.data.assembly.steps.findIndex((st) => m.data.parts[st.part].id === t.part);
+      if (k < 0) return null;
+      const start = m.assemblyStep(k, 0);
+      const outside = m.pose(t.part);
+      const end = m.assemblyStep(k, 1);
+      return { start, end, outside, inside: m.pose(t.part),
+               later: m.data.assembly.steps.slice(k + 1).map((st) => m.data.parts[st.part].id) };
+    }, t);
+    if (!result) fail("no assembly step inserts " + t.part);
+    if (result.end.clear || result.end.obstacle !== t.obstacle) {
+      fail("the step of " + t.part + " shows " + JSON.stringify(result.end) + ", not the obstacle " +
+           t.obstacle);
+    }
+    const moved = Math.hypot(...[12, 13, 14].map((k) => result.outside[k] - result.inside[k]));
+    if (!(moved > 1)) fail("the step of " + t.part + " does not move it in (" + moved + ")");
+    for (const id of result.later) {
+      if (!result.end.hidden.includes(id)) fail("a later step's part is shown: " + id);
+    }
+    console.log("ok the assembly step of " + t.part + " moves it " + moved.toFixed(2) +
+                " and stops where it meets " + result.end.obstacle + " after " +
+                result.end.at.toFixed(2) + ", " + result.end.hidden.length + " later parts hidden");
+    await shot("viewer_step.png");
+  }
+  if (checks.cache) {
+    // A drag drawn from the cache of the still parts looks as when everything is redrawn.
+    const c = checks.cache;
+    const result = await page.evaluate((c) => {
+      const m = window.mechanist;
+      const pixels = () => {
+        const gl = document.querySelector("canvas").getContext("webgl");
+        const out = new Uint8Array(gl.drawingBufferWidth * gl.drawingBufferHeight * 4);
+        gl.readPixels(0, 0, gl.drawingBufferWidth, gl.drawingBufferHeight, gl.RGBA,
+                      gl.UNSIGNED_BYTE, out);
+        return out;
+      };
+      if (!m.drag(c.part, c.turns)) return null;
+      const used = m.setCache(true);
+      const cached = pixels();
+      m.setCache(false);
+      const full = pixels();
+      let differ = 0, drawn = 0;
+      for (let i = 0; i < full.length; i += 4) {
+        drawn += full[i] < 250 || full[i + 1] < 250 || full[i + 2] < 250;
+        differ += Math.max(...[0, 1, 2].map((k) => Math.abs(full[i + k] - cached[i + k]))) > 24;
+      }
+      return { used, differ: differ / drawn };
+    }, c);
+    if (!result) fail("cannot drag " + c.part);
+    if (!result.used) fail("the page draws no cache here (WEBGL_depth_texture, EXT_frag_depth)");
+    if (!(result.differ < 0.01)) {
+      fail("a drag drawn from the cache differs from a full redraw in " +
+           (100 * result.differ).toFixed(2) + "% of the drawn pixels");
+    }
+    console.log("ok a drag drawn from the cache of still parts matches a full redraw (" +
+                (100 * result.differ).toFixed(3) + "% of the drawn pixels differ)");
   }
   if (errors.length) fail("console errors: " + errors.join(" | "));
   await browser.close();

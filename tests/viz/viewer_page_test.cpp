@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -17,6 +19,7 @@
 #include "io/load_assembly.h"
 #include "io/text_edit.h"
 #include "reasoning/analysis.h"
+#include "reasoning/assembly_plan.h"
 #include "reasoning/motion_run.h"
 #include "run_command.h"
 
@@ -114,6 +117,83 @@ TEST(ViewerPage, ShowsClashesAtRestAndEnclosedGaps) {
   EXPECT_FALSE(gaps[0]["triangles"].get<std::string>().empty());
 }
 
+std::vector<std::uint8_t> Base64Bytes(const std::string& text) {
+  const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::vector<std::uint8_t> bytes;
+  std::uint32_t bits = 0;
+  int count = 0;
+  for (const char c : text) {
+    if (c == '=') break;
+    bits = bits << 6 | static_cast<std::uint32_t>(alphabet.find(c));
+    count += 6;
+    if (count >= 8) {
+      count -= 8;
+      bytes.push_back(static_cast<std::uint8_t>(bits >> count & 0xff));
+    }
+  }
+  return bytes;
+}
+
+template <typename T>
+std::vector<T> Values(const std::string& base64) {
+  const std::vector<std::uint8_t> bytes = Base64Bytes(base64);
+  std::vector<T> values(bytes.size() / sizeof(T));
+  std::memcpy(values.data(), bytes.data(), values.size() * sizeof(T));
+  return values;
+}
+
+TEST(ViewerPage, StoresEachMeshOnceQuantisedWithinHalfAStep) {
+  const Assembly assembly = LoadAssembly(kWorm);
+  const json data = PageData(ViewerHtml(assembly, Analyze(assembly)));
+  for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
+    const TriangleMesh& mesh = *assembly.part(p).mesh;
+    const json& m = data["meshes"][data["parts"][p]["mesh"].get<std::size_t>()];
+    const std::vector<std::uint16_t> q = Values<std::uint16_t>(m["positions"]);
+    ASSERT_EQ(q.size(), 3 * mesh.vertices.size());
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+      for (int k = 0; k < 3; ++k) {
+        const double step = m["step"][k];
+        const double x = m["min"][k].get<double>() + q[3 * v + k] * step;
+        EXPECT_LE(std::abs(x - mesh.vertices[v][k]), 0.5 * step + 1e-12) << p << " " << v;
+      }
+    }
+    ASSERT_EQ(m["index_bytes"], 2);  // every part here has fewer than 65,536 vertices
+    const std::vector<std::uint16_t> indices = Values<std::uint16_t>(m["indices"]);
+    ASSERT_EQ(indices.size(), 3 * mesh.faces.size());
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+      for (int k = 0; k < 3; ++k) EXPECT_EQ(indices[3 * f + k], mesh.faces[f][k]);
+    }
+  }
+}
+
+TEST(ViewerPage, CarriesTheAssemblySequence) {
+  const Assembly assembly =
+      LoadAssembly(std::string(MECHANIST_SOURCE_DIR) + "/examples/pushed_by_contact/assembly.json");
+  const Analysis analysis = Analyze(assembly);
+  const json sequence = PageData(ViewerHtml(assembly, analysis))["assembly"];
+  const AssemblyPlan plan = PlanAssembly(assembly, analysis, CollisionModel(assembly));
+  EXPECT_EQ(sequence["assemblable"], plan.assemblable);
+  ASSERT_EQ(sequence["steps"].size(), plan.steps.size() + plan.unplaced.size());
+  for (std::size_t k = 0; k < sequence["steps"].size(); ++k) {
+    const json& step = sequence["steps"][k];
+    const bool placed = k < plan.steps.size();
+    const InsertionStep& expected = placed ? plan.steps[k] : plan.unplaced[k - plan.steps.size()];
+    EXPECT_EQ(step["part"], expected.part);
+    EXPECT_EQ(step["placed"], placed);
+    EXPECT_EQ(step["clear"], expected.clear);
+    EXPECT_EQ(step["travel"], expected.travel);
+    ASSERT_EQ(step["blocked_by"].size(), expected.blocked_by.size());
+    for (std::size_t o = 0; o < expected.blocked_by.size(); ++o) {
+      EXPECT_EQ(step["blocked_by"][o]["part"], expected.blocked_by[o].part);
+      EXPECT_EQ(step["blocked_by"][o]["travel"], expected.blocked_by[o].travel);
+    }
+  }
+  // Not planned when not asked for: the stepper says so.
+  ViewerOptions options;
+  options.plan = false;
+  EXPECT_TRUE(PageData(ViewerHtml(assembly, analysis, options))["assembly"].is_null());
+}
+
 TEST(ViewerPage, SaysWhereThreeJsIsMissing) {
   const Assembly assembly = LoadAssembly(kWorm);
   ViewerOptions options;
@@ -172,6 +252,8 @@ TEST(ViewerPage, WorksInABrowser) {
                          {"axis", {0, 0, 1}},
                          {"degrees", -9}}},
                        {"held", "motor_body"},
+                       // Large pages draw still parts from a cache while others move.
+                       {"cache", {{"part", "motor_shaft"}, {"turns", 0.3}}},
                        // 200 px of a 400 px revolution: half a turn of the worm, 4.5 degrees
                        // of the wheel.
                        {"mouse",
@@ -192,6 +274,13 @@ TEST(ViewerPage, WorksInABrowser) {
   std::ofstream(dir / "stop.html") << ViewerHtml(stopped, Analyze(stopped));
   const json stop = {{"stop", {{"part", "d"}, {"turns", 0.5}, {"meets", {"b", "lug"}}}}};
   EXPECT_EQ(RunBrowser(dir, "stop.html", stop), "") << "a drag that stops";
+
+  // The assembly stepper: as the file stands, part c cannot go in; its step stops where it
+  // meets the top.
+  const Assembly blocked = LoadAssembly(pushed);
+  std::ofstream(dir / "steps.html") << ViewerHtml(blocked, Analyze(blocked));
+  const json step = {{"step", {{"part", "c"}, {"obstacle", "top"}}}};
+  EXPECT_EQ(RunBrowser(dir, "steps.html", step), "") << "a blocked insertion";
 }
 
 }  // namespace
