@@ -1,3 +1,5 @@
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
@@ -35,7 +37,8 @@ Command ViewCommand() {
   };
   c.run = [o](Session& s) {
     const std::string path =
-        o->out.empty() ? std::filesystem::path(s.file).stem().string() + ".html" : o->out;
+        o->out.empty() ? fmt::format("{}.html", std::filesystem::path(s.file).stem().string())
+                       : o->out;
     // The swept check of every drag takes minutes on a large real file (the Onshape robot
     // hand, 279,525 triangles: 43 s for one finger): above kMaxRangeTriangles it runs only
     // when asked.
@@ -54,7 +57,7 @@ Command ViewCommand() {
     try {
       s.Report(path, ViewerHtml(*s.assembly, *s.analysis, options));
     } catch (const std::invalid_argument& e) {  // the gap search refuses the voxel
-      throw InputError(s.file, "", 0, 0, std::string("--gaps: ") + e.what());
+      throw InputError(s.file, "", 0, 0, fmt::format("--gaps: {}", e.what()));
     }
     std::cout << "viewer: " << std::filesystem::absolute(path).string()
               << " (open it in a browser)\n";
