@@ -2,6 +2,8 @@
 // commands/, and here what they share: the options every command has, reading what a command
 // needs, writing its reports, and turning errors into exit codes.
 
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
@@ -37,7 +39,7 @@ int main(int argc, char** argv) {
   CLI::App app{
       "mechanist: reads a mechanical assembly and tells whether it can be assembled "
       "and how it moves"};
-  app.set_version_flag("--version", std::string("mechanist ") + MECHANIST_VERSION);
+  app.set_version_flag("--version", fmt::format("mechanist {}", MECHANIST_VERSION));
   app.require_subcommand(1);
   app.add_option("--read-timeout", g_read_timeout,
                  "seconds reading one input file may take before mechanist gives up with exit "

@@ -1,3 +1,4 @@
+#include <fmt/format.h>
 #include <sys/time.h>
 #include <unistd.h>
 
@@ -36,9 +37,10 @@ class ReadTimeout {
  public:
   explicit ReadTimeout(const std::string& file) {
     if (!(g_read_timeout > 0)) return;
-    g_timeout_message = "mechanist: error: " + file + ": reading it took longer than " +
-                        FormatNumber(g_read_timeout) +
-                        " s (--read-timeout); the file may be damaged\n";
+    g_timeout_message = fmt::format(
+        "mechanist: error: {}: reading it took longer than {} s (--read-timeout); the file may be "
+        "damaged\n",
+        file, FormatNumber(g_read_timeout));
     std::signal(SIGALRM, OnReadTimeout);
     itimerval timer{};
     timer.it_value.tv_sec = static_cast<time_t>(g_read_timeout);
@@ -104,7 +106,8 @@ std::optional<std::size_t> DriverIndex(const std::string& file, const Assembly& 
   for (std::size_t d = 0; d < assembly.drivers().size(); ++d) {
     if (assembly.drivers()[d].id == driver) return d;
   }
-  throw InputError(file, "", 0, 0, "--driver: expected a driver id, found \"" + driver + "\"");
+  throw InputError(file, "", 0, 0,
+                   fmt::format("--driver: expected a driver id, found \"{}\"", driver));
 }
 
 std::function<void(double)> Progress(const char* what) {

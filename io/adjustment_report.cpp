@@ -1,8 +1,11 @@
 #include "io/adjustment_report.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "kernel/support/number_format.h"
@@ -33,13 +36,16 @@ const std::string& UnitOf(const Assembly& assembly, const Adjustment& a) {
   return a.kind == Adjustment::Kind::kRotate ? assembly.units().angle : assembly.units().length;
 }
 
-std::string Degrees(double radians) { return Fixed(radians * 180.0 / M_PI) + " deg"; }
+std::string Degrees(double radians) { return fmt::format("{} deg", Fixed(radians * 180.0 / M_PI)); }
 
-std::string Mm(double mm) { return Fixed(mm) + " mm"; }
+std::string Mm(double mm) { return fmt::format("{} mm", Fixed(mm)); }
 
 std::string Describe(const GoalError& e) {
-  std::string s = "centre distance off by " + Mm(e.distance) + ", axes off by " + Degrees(e.angle);
-  if (std::abs(e.axial) >= 5e-5) s += ", axial offset " + Mm(e.axial);
+  std::string s =
+      fmt::format("centre distance off by {}, axes off by {}", Mm(e.distance), Degrees(e.angle));
+  if (std::abs(e.axial) >= 5e-5) {
+    fmt::format_to(std::back_inserter(s), ", axial offset {}", Mm(e.axial));
+  }
   if (!e.engaged) s += ", not engaged along the axes";
   return s;
 }

@@ -1,7 +1,10 @@
 #include "io/analysis_report.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -12,13 +15,14 @@ namespace {
 
 std::string PairParameters(const Pair& p) {
   std::string s;
-  if (p.dof) s += ", dof " + std::to_string(*p.dof);
-  if (p.ratio) s += ", ratio " + p.ratio->ToString();
+  auto out = std::back_inserter(s);
+  if (p.dof) fmt::format_to(out, ", dof {}", *p.dof);
+  if (p.ratio) fmt::format_to(out, ", ratio {}", p.ratio->ToString());
   if (p.travel_per_revolution) {
-    s += ", " + FormatNumber(*p.travel_per_revolution, 9) + " mm per revolution";
+    fmt::format_to(out, ", {} mm per revolution", FormatNumber(*p.travel_per_revolution, 9));
   }
   if (p.type == PairType::kWormGear) s += p.self_locking ? ", self-locking" : ", back-drivable";
-  if (p.fastening != PairFastening::kNone) s += ", " + std::string(ToString(p.fastening));
+  if (p.fastening != PairFastening::kNone) fmt::format_to(out, ", {}", ToString(p.fastening));
   return s;
 }
 
@@ -40,30 +44,30 @@ std::vector<double> Clean(const Eigen::Vector3d& v) {
 
 std::string Vector(const Eigen::Vector3d& v) {
   const std::vector<double> c = Clean(v);
-  return "(" + FormatNumber(c[0]) + ", " + FormatNumber(c[1]) + ", " + FormatNumber(c[2]) + ")";
+  return fmt::format("({}, {}, {})", FormatNumber(c[0]), FormatNumber(c[1]), FormatNumber(c[2]));
 }
 
 std::string DrivenTitle(const Assembly& assembly, const DrivenMotion& m) {
   if (!m.driver) return "all drivers at their rates";
   const Driver& d = assembly.drivers()[*m.driver];
-  return "driver " + d.id + " (" + assembly.FeatureName(d.feature) + " " +
-         (d.motion == Driver::Motion::kRotation ? "rotation" : "translation") + ", per unit rate" +
-         (d.rate == 0.0 ? "; held (rate 0): what it drives when released)" : ")");
+  return fmt::format("driver {} ({} {}, per unit rate{}", d.id, assembly.FeatureName(d.feature),
+                     d.motion == Driver::Motion::kRotation ? "rotation" : "translation",
+                     d.rate == 0.0 ? "; held (rate 0): what it drives when released)" : ")");
 }
 
 std::string Describe(const Assembly& assembly, const PartMotion& m) {
   const std::string axis =
-      (m.axis_feature ? assembly.FeatureName(*m.axis_feature) + " " : std::string("")) +
-      Vector(m.axis_W);
+      m.axis_feature ? fmt::format("{} {}", assembly.FeatureName(*m.axis_feature), Vector(m.axis_W))
+                     : Vector(m.axis_W);
   switch (m.kind) {
     case MotionKind::kRotation:
-      return "turns " + m.rotation.ToString() + " rev about " + axis + " through " +
-             Vector(m.point_W);
+      return fmt::format("turns {} rev about {} through {}", m.rotation.ToString(), axis,
+                         Vector(m.point_W));
     case MotionKind::kScrew:
-      return "turns " + m.rotation.ToString() + " rev about " + axis + " and advances " +
-             m.translation.ToString() + " along it";
+      return fmt::format("turns {} rev about {} and advances {} along it", m.rotation.ToString(),
+                         axis, m.translation.ToString());
     case MotionKind::kTranslation:
-      return "slides " + m.translation.ToString() + " along " + axis;
+      return fmt::format("slides {} along {}", m.translation.ToString(), axis);
     case MotionKind::kNone:
       break;
   }
@@ -136,7 +140,7 @@ std::string AnalysisJson(const Assembly& assembly, const Analysis& analysis) {
   for (std::size_t i = 0; i < analysis.pairs.size(); ++i) {
     const Pair& p = analysis.pairs[i];
     Json j;
-    j["id"] = "P" + std::to_string(i + 1);
+    j["id"] = fmt::format("P{}", i + 1);
     j["type"] = ToString(p.type);
     j["a"] = assembly.FeatureName(p.a);
     j["b"] = assembly.FeatureName(p.b);
@@ -159,21 +163,21 @@ std::string AnalysisJson(const Assembly& assembly, const Analysis& analysis) {
     const Subassembly& s = analysis.subassemblies[i];
     Json parts = Json::array();
     for (std::size_t p : s.parts) parts.push_back(assembly.part(p).id);
-    groups.push_back({{"id", "S" + std::to_string(i + 1)}, {"parts", parts}, {"ground", s.ground}});
+    groups.push_back({{"id", fmt::format("S{}", i + 1)}, {"parts", parts}, {"ground", s.ground}});
   }
   report["subassemblies"] = std::move(groups);
 
   const Mobility& mobility = analysis.motion.mobility;
   Json redundant = Json::array();
   for (const RedundantConstraint& r : mobility.redundant_pairs) {
-    redundant.push_back({{"pair", "P" + std::to_string(r.pair + 1)}, {"count", r.count}});
+    redundant.push_back({{"pair", fmt::format("P{}", r.pair + 1)}, {"count", r.count}});
   }
   Json free = Json::array();
   for (const FreeMotion& f : mobility.free_motions) {
     Json parts = Json::array();
     for (std::size_t p : f.parts) parts.push_back(assembly.part(p).id);
     free.push_back({{"part", assembly.part(f.part).id},
-                    {"pair", f.pair ? Json("P" + std::to_string(*f.pair + 1)) : Json(nullptr)},
+                    {"pair", f.pair ? Json(fmt::format("P{}", *f.pair + 1)) : Json(nullptr)},
                     {"freedom", f.freedom},
                     {"parts", parts}});
   }
@@ -238,7 +242,7 @@ std::string AnalysisDot(const Assembly& assembly, const Analysis& analysis) {
   for (std::size_t i = 0; i < analysis.subassemblies.size(); ++i) {
     const Subassembly& s = analysis.subassemblies[i];
     dot << "  subgraph cluster_S" << i + 1
-        << " {\n    label=" << Dq("S" + std::to_string(i + 1) + (s.ground ? " (ground)" : ""))
+        << " {\n    label=" << Dq(fmt::format("S{}{}", i + 1, s.ground ? " (ground)" : ""))
         << ";\n";
     if (s.ground) dot << "    style=filled; color=lightgrey;\n";
     for (std::size_t p : s.parts) dot << "    " << Dq(assembly.part(p).id) << ";\n";
@@ -247,7 +251,8 @@ std::string AnalysisDot(const Assembly& assembly, const Analysis& analysis) {
   for (const Pair& p : analysis.pairs) {
     dot << "  " << Dq(assembly.part(p.a.part).id) << " -- " << Dq(assembly.part(p.b.part).id)
         << " [label="
-        << Dq(std::string(ToString(p.type)) + (p.ratio ? " " + p.ratio->ToString() : ""))
+        << Dq(p.ratio ? fmt::format("{} {}", ToString(p.type), p.ratio->ToString())
+                      : std::string(ToString(p.type)))
         << (p.type == PairType::kFixed ? ", style=dashed" : "") << "];\n";
   }
   dot << "}\n";
@@ -258,8 +263,8 @@ void WriteDragReport(const Assembly& assembly, const Analysis& analysis, const D
                      bool rotate, std::ostream& out) {
   auto pair_line = [&](std::size_t i) {
     const Pair& p = analysis.pairs[i];
-    return "P" + std::to_string(i + 1) + " " + std::string(ToString(p.type)) + ": " +
-           assembly.FeatureName(p.a) + " + " + assembly.FeatureName(p.b);
+    return fmt::format("P{} {}: {} + {}", i + 1, ToString(p.type), assembly.FeatureName(p.a),
+                       assembly.FeatureName(p.b));
   };
   out << "drag " << assembly.part(drag.axis.part).id << (rotate ? " about " : " along ")
       << assembly.FeatureName(drag.axis) << ": allowable motion " << drag.part_freedoms

@@ -1,5 +1,7 @@
 #include "io/assembly_reader.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -39,11 +41,11 @@ std::string Describe(const Json& v) {
     case Json::value_t::boolean:
       return v.get<bool>() ? "true" : "false";
     case Json::value_t::string:
-      return "the string \"" + v.get<std::string>() + "\"";
+      return fmt::format("the string \"{}\"", v.get<std::string>());
     case Json::value_t::object:
       return "an object";
     case Json::value_t::array:
-      return "an array of " + std::to_string(v.size());
+      return fmt::format("an array of {}", v.size());
     default: {
       std::ostringstream s;
       s.precision(17);
@@ -52,7 +54,7 @@ std::string Describe(const Json& v) {
       } else {
         s << v.get<double>();
       }
-      return "the number " + s.str();
+      return fmt::format("the number {}", s.str());
     }
   }
 }
@@ -82,7 +84,7 @@ class Reader {
     const Json* version = Find(root, "mechanist");
     if (!version) Fail("", "expected the format version \"mechanist\": 1, found no such key");
     if (!version->is_number_integer() || version->get<long long>() != 1) {
-      Fail("/mechanist", "expected format version 1, found " + Describe(*version));
+      Fail("/mechanist", fmt::format("expected format version 1, found {}", Describe(*version)));
     }
     spec_.source = src_.file;
     if (const Json* name = Find(root, "name")) spec_.name = String(*name, "/name");
@@ -91,7 +93,8 @@ class Reader {
     if (const Json* friction = Find(root, "friction")) {
       spec_.friction = Number(*friction, "/friction");
       if (spec_.friction < 0) {
-        Fail("/friction", "expected a friction coefficient >= 0, found " + Describe(*friction));
+        Fail("/friction",
+             fmt::format("expected a friction coefficient >= 0, found {}", Describe(*friction)));
       }
     }
     const Json* import = Find(root, "import");
@@ -141,13 +144,12 @@ class Reader {
   const Json& Require(const Json& object, const std::string& pointer, const char* key,
                       const char* what) const {
     const Json* v = Find(object, key);
-    if (!v)
-      Fail(pointer, std::string("expected \"") + key + "\" (" + what + "), found no such key");
+    if (!v) Fail(pointer, fmt::format("expected \"{}\" ({}), found no such key", key, what));
     return *v;
   }
 
   void ExpectObject(const Json& v, const std::string& pointer) const {
-    if (!v.is_object()) Fail(pointer, "expected an object, found " + Describe(v));
+    if (!v.is_object()) Fail(pointer, fmt::format("expected an object, found {}", Describe(v)));
   }
 
   void CheckKeys(const Json& object, const std::string& pointer,
@@ -156,35 +158,41 @@ class Reader {
       if (key == "extra") continue;
       if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
         Fail(JoinPointer(pointer, key),
-             "unknown key \"" + key + "\" (expected one of: " + JoinWords(allowed) + ", extra)");
+             fmt::format("unknown key \"{}\" (expected one of: {}, extra)", key,
+                         JoinWords(allowed)));
       }
     }
   }
 
   double Number(const Json& v, const std::string& pointer) const {
-    if (!v.is_number()) Fail(pointer, "expected a number, found " + Describe(v));
+    if (!v.is_number()) Fail(pointer, fmt::format("expected a number, found {}", Describe(v)));
     const double x = v.get<double>();
-    if (!std::isfinite(x)) Fail(pointer, "expected a finite number, found " + Describe(v));
+    if (!std::isfinite(x)) {
+      Fail(pointer, fmt::format("expected a finite number, found {}", Describe(v)));
+    }
     // Beyond any assembly (a million km in mm), and far from where squares and sums overflow.
     if (std::abs(x) > kMaxMagnitude) {
-      Fail(pointer, "expected a number of magnitude at most 1e12, found " + Describe(v));
+      Fail(pointer,
+           fmt::format("expected a number of magnitude at most 1e12, found {}", Describe(v)));
     }
     return x;
   }
 
   std::string String(const Json& v, const std::string& pointer) const {
-    if (!v.is_string()) Fail(pointer, "expected a string, found " + Describe(v));
+    if (!v.is_string()) Fail(pointer, fmt::format("expected a string, found {}", Describe(v)));
     return v.get<std::string>();
   }
 
   bool Bool(const Json& v, const std::string& pointer) const {
-    if (!v.is_boolean()) Fail(pointer, "expected true or false, found " + Describe(v));
+    if (!v.is_boolean()) {
+      Fail(pointer, fmt::format("expected true or false, found {}", Describe(v)));
+    }
     return v.get<bool>();
   }
 
   int PositiveCount(const Json& v, const std::string& pointer) const {
     if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 1000000) {
-      Fail(pointer, "expected a positive whole number, found " + Describe(v));
+      Fail(pointer, fmt::format("expected a positive whole number, found {}", Describe(v)));
     }
     return static_cast<int>(v.get<long long>());
   }
@@ -192,7 +200,7 @@ class Reader {
   /// A positive length in file units, returned in mm.
   double PositiveLength(const Json& v, const std::string& pointer) const {
     const double x = Number(v, pointer);
-    if (!(x > 0)) Fail(pointer, "expected a positive length, found " + Describe(v));
+    if (!(x > 0)) Fail(pointer, fmt::format("expected a positive length, found {}", Describe(v)));
     return x * spec_.units.mm_per_length;
   }
 
@@ -206,7 +214,7 @@ class Reader {
 
   Eigen::Vector3d Vec3(const Json& v, const std::string& pointer) const {
     if (!v.is_array() || v.size() != 3) {
-      Fail(pointer, "expected an array of 3 numbers, found " + Describe(v));
+      Fail(pointer, fmt::format("expected an array of 3 numbers, found {}", Describe(v)));
     }
     Eigen::Vector3d x;
     for (int i = 0; i < 3; ++i) x[i] = Number(v[i], JoinPointer(pointer, std::to_string(i)));
@@ -230,7 +238,7 @@ class Reader {
         std::find(choices.begin(), choices.end(), v.get<std::string>()) != choices.end()) {
       return v.get<std::string>();
     }
-    Fail(pointer, "expected one of " + JoinWords(choices) + ", found " + Describe(v));
+    Fail(pointer, fmt::format("expected one of {}, found {}", JoinWords(choices), Describe(v)));
   }
 
   Hand ReadHand(const Json& v, const std::string& pointer) const {
@@ -245,7 +253,9 @@ class Reader {
   std::size_t PartRef(const Json& v, const std::string& pointer) const {
     const std::string id = String(v, pointer);
     const auto it = part_index_.find(id);
-    if (it == part_index_.end()) Fail(pointer, "expected a part id, found no part \"" + id + "\"");
+    if (it == part_index_.end()) {
+      Fail(pointer, fmt::format("expected a part id, found no part \"{}\"", id));
+    }
     return it->second;
   }
 
@@ -254,24 +264,26 @@ class Reader {
     const std::string path = String(v, pointer);
     const std::size_t slash = path.find('/');
     if (slash == std::string::npos) {
-      Fail(pointer, "expected a feature as \"part/feature\", found \"" + path + "\"");
+      Fail(pointer, fmt::format("expected a feature as \"part/feature\", found \"{}\"", path));
     }
     const auto it = part_index_.find(path.substr(0, slash));
     if (it == part_index_.end()) {
-      Fail(pointer, "expected a feature as \"part/feature\", found \"" + path + "\" (no part \"" +
-                        path.substr(0, slash) + "\")");
+      Fail(pointer,
+           fmt::format("expected a feature as \"part/feature\", found \"{}\" (no part \"{}\")",
+                       path, path.substr(0, slash)));
     }
     const auto feature = spec_.parts[it->second].FindFeature(path.substr(slash + 1));
     if (!feature) {
-      Fail(pointer, "expected a feature as \"part/feature\", found \"" + path + "\" (part \"" +
-                        it->first + "\" has no feature \"" + path.substr(slash + 1) + "\")");
+      Fail(pointer, fmt::format("expected a feature as \"part/feature\", found \"{}\" (part \"{}\" "
+                                "has no feature \"{}\")",
+                                path, it->first, path.substr(slash + 1)));
     }
     return {it->second, *feature};
   }
 
   std::array<FeatureRef, 2> RefPair(const Json& v, const std::string& pointer) const {
     if (!v.is_array() || v.size() != 2) {
-      Fail(pointer, "expected an array of two features, found " + Describe(v));
+      Fail(pointer, fmt::format("expected an array of two features, found {}", Describe(v)));
     }
     const FeatureRef a = Ref(v[0], pointer + "/0");
     const FeatureRef b = Ref(v[1], pointer + "/1");
@@ -283,8 +295,10 @@ class Reader {
                const std::function<void(const Json&, const std::string&)>& read) const {
     const Json* list = Find(root, key);
     if (!list) return;
-    const std::string pointer = std::string("/") + key;
-    if (!list->is_array()) Fail(pointer, "expected an array, found " + Describe(*list));
+    const std::string pointer = fmt::format("/{}", key);
+    if (!list->is_array()) {
+      Fail(pointer, fmt::format("expected an array, found {}", Describe(*list)));
+    }
     for (std::size_t i = 0; i < list->size(); ++i) {
       const std::string p = JoinPointer(pointer, std::to_string(i));
       ExpectObject((*list)[i], p);
@@ -318,7 +332,8 @@ class Reader {
     if (const Json* angle = Find(v, "angle")) {
       spec_.tolerance.angle = Angle(*angle, pointer + "/angle");
       if (!(spec_.tolerance.angle > 0)) {
-        Fail(pointer + "/angle", "expected a positive angle, found " + Describe(*angle));
+        Fail(pointer + "/angle",
+             fmt::format("expected a positive angle, found {}", Describe(*angle)));
       }
     }
   }
@@ -326,7 +341,9 @@ class Reader {
   // ---- parts ----
 
   void ReadParts(const Json& parts, const std::string& pointer) {
-    if (!parts.is_array()) Fail(pointer, "expected an array of parts, found " + Describe(parts));
+    if (!parts.is_array()) {
+      Fail(pointer, fmt::format("expected an array of parts, found {}", Describe(parts)));
+    }
     for (std::size_t i = 0; i < parts.size(); ++i) {
       ReadPart(parts[i], JoinPointer(pointer, std::to_string(i)));
     }
@@ -344,11 +361,12 @@ class Reader {
       part.id = String(Require(v, p, "id", "the part's id"), p + "/id");
       if (!std::regex_match(part.id, kId)) {
         Fail(p + "/id",
-             "expected an id of letters, digits, '_', '.' and '-', found \"" + part.id + "\"");
+             fmt::format("expected an id of letters, digits, '_', '.' and '-', found \"{}\"",
+                         part.id));
       }
       if (part_index_.count(part.id)) {
-        Fail(p + "/id", "duplicate part id \"" + part.id + "\" (first at /parts/" +
-                            std::to_string(part_index_.at(part.id)) + ")");
+        Fail(p + "/id", fmt::format("duplicate part id \"{}\" (first at /parts/{})", part.id,
+                                    part_index_.at(part.id)));
       }
       const Json* mesh = Find(v, "mesh");
       const Json* library = Find(v, "library");
@@ -403,7 +421,7 @@ class Reader {
     try {
       solids = mechanist::ReadStep((dir_ / relative).lexically_normal(), &messages);
     } catch (const std::exception& e) {
-      Fail(p, "cannot import \"" + relative + "\": " + e.what());
+      Fail(p, fmt::format("cannot import \"{}\": {}", relative, e.what()));
     }
     AddStepMessages(relative, messages);
     for (StepSolid& s : solids) {
@@ -415,7 +433,7 @@ class Reader {
       origins_.push_back(std::move(origin));
       Part part;
       part.id = s.path;
-      part.mesh_source = relative + "#" + s.product;
+      part.mesh_source = fmt::format("{}#{}", relative, s.product);
       part.mesh = s.mesh;
       part.X_WP = s.X_WP;
       part.group = s.path;
@@ -430,7 +448,9 @@ class Reader {
   // imported feature's id with `fastening` sets that); a new id adds a part, with a pose or a
   // placement by features (its own and the imported parts').
   void AddToImported(const Json& parts, const std::string& pointer) {
-    if (!parts.is_array()) Fail(pointer, "expected an array of parts, found " + Describe(parts));
+    if (!parts.is_array()) {
+      Fail(pointer, fmt::format("expected an array of parts, found {}", Describe(parts)));
+    }
     for (std::size_t i = 0; i < parts.size(); ++i) {
       const std::string p = JoinPointer(pointer, std::to_string(i));
       const Json& v = parts[i];
@@ -451,7 +471,8 @@ class Reader {
       const Json* features = Find(v, "features");
       if (!features) continue;
       if (!features->is_array()) {
-        Fail(p + "/features", "expected an array of features, found " + Describe(*features));
+        Fail(p + "/features",
+             fmt::format("expected an array of features, found {}", Describe(*features)));
       }
       for (std::size_t k = 0; k < features->size(); ++k) {
         const std::string fp = JoinPointer(p + "/features", std::to_string(k));
@@ -469,7 +490,8 @@ class Reader {
         if (const Json* fastening = Find(f, "fastening")) {
           const std::string value = String(*fastening, fp + "/fastening");
           if (value != "tight" && value != "loose") {
-            Fail(fp + "/fastening", "expected \"tight\" or \"loose\", found \"" + value + "\"");
+            Fail(fp + "/fastening",
+                 fmt::format("expected \"tight\" or \"loose\", found \"{}\"", value));
           }
           part.features[*existing].fastening =
               value == "tight" ? Fastening::kTight : Fastening::kLoose;
@@ -493,12 +515,13 @@ class Reader {
       }
     }
     for (const auto& [m, count] : unique) {
-      spec_.findings.push_back({m->error ? Severity::kWarning : Severity::kInfo,
-                                "step_reader",
-                                relative + ": Open CASCADE's STEP reader: " + m->text +
-                                    (count > 1 ? " (" + std::to_string(count) + " times)" : ""),
-                                {},
-                                {}});
+      spec_.findings.push_back(
+          {m->error ? Severity::kWarning : Severity::kInfo,
+           "step_reader",
+           fmt::format("{}: Open CASCADE's STEP reader: {}{}", relative, m->text,
+                       count > 1 ? fmt::format(" ({} times)", count) : ""),
+           {},
+           {}});
     }
   }
 
@@ -514,24 +537,24 @@ class Reader {
     try {
       solids = mechanist::ReadStep((dir_ / relative).lexically_normal(), &messages);
     } catch (const std::exception& e) {
-      Fail(pointer, "cannot use mesh \"" + relative + "\": " + e.what());
+      Fail(pointer, fmt::format("cannot use mesh \"{}\": {}", relative, e.what()));
     }
     AddStepMessages(relative, messages);
     auto mesh = std::make_shared<TriangleMesh>();
     for (std::size_t k = 0; k < solids.size(); ++k) {
-      const std::string prefix = solids.size() > 1 ? "solid" + std::to_string(k + 1) : "";
+      const std::string prefix = solids.size() > 1 ? fmt::format("solid{}", k + 1) : "";
       TriangleMesh placed = *solids[k].mesh;
       for (Eigen::Vector3d& v : placed.vertices) v = solids[k].X_WP * v;
       mesh->Append(placed);
       for (Feature f : solids[k].features) {
-        if (!prefix.empty()) f.id = prefix + "_" + f.id;
+        if (!prefix.empty()) f.id = fmt::format("{}_{}", prefix, f.id);
         f.origin = solids[k].X_WP * f.origin;
         f.axis = solids[k].X_WP.RotateDirection(f.axis);
         f.normal = solids[k].X_WP.RotateDirection(f.normal);
         features->push_back(f);
       }
       for (const std::string& note : solids[k].notes) {
-        notes->push_back(prefix.empty() ? note : prefix + ": " + note);
+        notes->push_back(prefix.empty() ? note : fmt::format("{}: {}", prefix, note));
       }
       in_part->push_back({solids[k].mesh, solids[k].X_WP, prefix.empty() ? "" : prefix + "_",
                           features->size(), notes->size()});
@@ -547,7 +570,7 @@ class Reader {
     try {
       mesh = ReadMesh(path);
     } catch (const InputError& e) {
-      Fail(pointer, "cannot use mesh \"" + relative + "\": " + e.what());
+      Fail(pointer, fmt::format("cannot use mesh \"{}\": {}", relative, e.what()));
     }
     mesh.Scale(spec_.units.mm_per_length);
     auto shared = std::make_shared<const TriangleMesh>(std::move(mesh));
@@ -564,14 +587,15 @@ class Reader {
       }
       const std::string mp = pointer + "/matrix";
       if (!m->is_array() || m->size() != 4) {
-        Fail(mp, "expected a 4x4 matrix (4 rows of 4 numbers), found " + Describe(*m));
+        Fail(mp,
+             fmt::format("expected a 4x4 matrix (4 rows of 4 numbers), found {}", Describe(*m)));
       }
       Eigen::Matrix4d matrix;
       for (int r = 0; r < 4; ++r) {
         const std::string rp = JoinPointer(mp, std::to_string(r));
         const Json& row = (*m)[r];
         if (!row.is_array() || row.size() != 4) {
-          Fail(rp, "expected a row of 4 numbers, found " + Describe(row));
+          Fail(rp, fmt::format("expected a row of 4 numbers, found {}", Describe(row)));
         }
         for (int c = 0; c < 4; ++c)
           matrix(r, c) = Number(row[c], JoinPointer(rp, std::to_string(c)));
@@ -602,7 +626,7 @@ class Reader {
     if (quaternion) {
       const std::string qp = pointer + "/quaternion";
       if (!quaternion->is_array() || quaternion->size() != 4) {
-        Fail(qp, "expected [w, x, y, z], found " + Describe(*quaternion));
+        Fail(qp, fmt::format("expected [w, x, y, z], found {}", Describe(*quaternion)));
       }
       double q[4];
       for (int i = 0; i < 4; ++i)
@@ -620,24 +644,25 @@ class Reader {
     found.precision(6);
     found << "determinant " << R.determinant() << ", |R^T R - I| = "
           << (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
-    Fail(pointer, "expected a proper rotation (orthonormal within 1e-6, determinant +1), found " +
-                      found.str());
+    Fail(pointer, fmt::format("expected a proper rotation (orthonormal within 1e-6, determinant "
+                              "+1), found {}",
+                              found.str()));
   }
 
   // ---- features ----
 
   void ReadFeatures(const Json& features, const std::string& pointer, Part& part) const {
     if (!features.is_array()) {
-      Fail(pointer, "expected an array of features, found " + Describe(features));
+      Fail(pointer, fmt::format("expected an array of features, found {}", Describe(features)));
     }
     for (std::size_t i = 0; i < features.size(); ++i) {
       const std::string p = JoinPointer(pointer, std::to_string(i));
       Feature f = ReadFeature(features[i], p);
       if (part.FindFeature(f.id)) {
-        Fail(p + "/id",
-             "duplicate feature id \"" + f.id + "\" in part \"" + part.id + "\"" +
-                 (part.mesh_source.rfind("library:", 0) == 0 ? " (the library part defines it)"
-                                                             : ""));
+        Fail(p + "/id", fmt::format("duplicate feature id \"{}\" in part \"{}\"{}", f.id, part.id,
+                                    part.mesh_source.rfind("library:", 0) == 0
+                                        ? " (the library part defines it)"
+                                        : ""));
       }
       part.features.push_back(std::move(f));
     }
@@ -648,15 +673,15 @@ class Reader {
     Feature f;
     f.id = String(Require(v, p, "id", "the feature's id"), p + "/id");
     if (f.id.empty() || f.id.find('/') != std::string::npos) {
-      Fail(p + "/id", "expected a non-empty id without '/', found \"" + f.id + "\"");
+      Fail(p + "/id", fmt::format("expected a non-empty id without '/', found \"{}\"", f.id));
     }
     const Json& kind = Require(v, p, "kind", "the feature's kind");
     const auto parsed = ParseFeatureKind(kind.is_string() ? kind.get<std::string>() : "");
     if (!parsed) {
       Fail(p + "/kind",
-           "expected one of shaft, hole, thread, tapped_hole, slot, key, gear, worm, worm_wheel, "
-           "rack, ball, socket, face, cycloid_disc, pin_ring, found " +
-               Describe(kind));
+           fmt::format("expected one of shaft, hole, thread, tapped_hole, slot, key, gear, worm, "
+                       "worm_wheel, rack, ball, socket, face, cycloid_disc, pin_ring, found {}",
+                       Describe(kind)));
     }
     f.kind = *parsed;
     const bool point_feature = f.kind == FeatureKind::kBall || f.kind == FeatureKind::kSocket;
@@ -678,9 +703,9 @@ class Reader {
       const Eigen::Vector3d n = Direction(Require(v, p, "normal", "a direction"), p + "/normal");
       if (std::abs(n.dot(f.axis)) > std::sin(spec_.tolerance.angle)) {
         Fail(p + "/normal",
-             "expected a normal perpendicular to the axis, found one at " +
-                 std::to_string(std::acos(std::clamp(n.dot(f.axis), -1.0, 1.0)) * 180.0 / kPi) +
-                 " degrees to it");
+             fmt::format(
+                 "expected a normal perpendicular to the axis, found one at {} degrees to it",
+                 std::to_string(std::acos(std::clamp(n.dot(f.axis), -1.0, 1.0)) * 180.0 / kPi)));
       }
       return Eigen::Vector3d((n - n.dot(f.axis) * f.axis).normalized());
     };
@@ -746,7 +771,8 @@ class Reader {
           f.helix_angle = Angle(*h, p + "/helix_angle");
           if (!(std::abs(f.helix_angle) < kPi / 2)) {
             Fail(p + "/helix_angle",
-                 "expected an angle between -90 and 90 degrees, found " + Describe(*h));
+                 fmt::format("expected an angle between -90 and 90 degrees, found {}",
+                             Describe(*h)));
           }
         }
         break;
@@ -828,7 +854,7 @@ class Reader {
         field = Angle(*x, p + "/pressure_angle");
         if (!(field > 0 && field < kPi / 4)) {
           Fail(p + "/pressure_angle",
-               "expected an angle between 0 and 45 degrees, found " + Describe(*x));
+               fmt::format("expected an angle between 0 and 45 degrees, found {}", Describe(*x)));
         }
       }
     };
@@ -837,7 +863,9 @@ class Reader {
       const Json* list = Find(v, key);
       if (!list) return result;
       const std::string lp = p + "/" + key;
-      if (!list->is_array()) Fail(lp, "expected an array of holes, found " + Describe(*list));
+      if (!list->is_array()) {
+        Fail(lp, fmt::format("expected an array of holes, found {}", Describe(*list)));
+      }
       for (std::size_t i = 0; i < list->size(); ++i) {
         const std::string hp = JoinPointer(lp, std::to_string(i));
         const Json& h = (*list)[i];
@@ -847,7 +875,7 @@ class Reader {
         if (const Json* id = Find(h, "id")) hole.id = String(*id, hp + "/id");
         const Json& at = Require(h, hp, "at", "[x, y]");
         if (!at.is_array() || at.size() != 2) {
-          Fail(hp + "/at", "expected [x, y], found " + Describe(at));
+          Fail(hp + "/at", fmt::format("expected [x, y], found {}", Describe(at)));
         }
         hole.center = Eigen::Vector2d(Length(at[0], hp + "/at/0"), Length(at[1], hp + "/at/1"));
         hole.diameter =
@@ -952,9 +980,10 @@ class Reader {
       spec = s;
     } else {
       Fail(p + "/kind",
-           "expected one of plate, l_bracket, hex_bolt, hex_nut, washer, setscrew, shaft, "
-           "spur_gear, ring_gear, worm, worm_wheel, rack, found \"" +
-               kind + "\"");
+           fmt::format(
+               "expected one of plate, l_bracket, hex_bolt, hex_nut, washer, setscrew, shaft, "
+               "spur_gear, ring_gear, worm, worm_wheel, rack, found \"{}\"",
+               kind));
     }
     try {
       return MakeLibraryPart(spec);
@@ -988,8 +1017,8 @@ class Reader {
           part.placement.push_back(ReadCondition((*place)[k], cp, i));
         }
       } else {
-        Fail(p, "expected a placement condition or a non-empty array of them, found " +
-                    Describe(*place));
+        Fail(p, fmt::format("expected a placement condition or a non-empty array of them, found {}",
+                            Describe(*place)));
       }
     }
     CheckPlacementTree();
@@ -1019,8 +1048,9 @@ class Reader {
     }
     const FeatureRef own = Ref(v[own_key], p + "/" + own_key);
     if (own.part != part) {
-      Fail(p + "/" + own_key, "expected a feature of the placed part \"" + spec_.parts[part].id +
-                                  "\", found one of \"" + spec_.parts[own.part].id + "\"");
+      Fail(p + "/" + own_key,
+           fmt::format("expected a feature of the placed part \"{}\", found one of \"{}\"",
+                       spec_.parts[part].id, spec_.parts[own.part].id));
     }
     c.feature = own.feature;
     c.target = Ref(Require(v, p, target_key, "a feature \"part/feature\""), p + "/" + target_key);
@@ -1035,8 +1065,9 @@ class Reader {
     std::function<void(std::size_t)> visit = [&](std::size_t i) {
       if (marks[i] == Mark::kDone) return;
       if (marks[i] == Mark::kVisiting) {
-        Fail(EntryOf(i) + "/place", "placement of part \"" + spec_.parts[i].id +
-                                        "\" depends on itself through a cycle of placements");
+        Fail(EntryOf(i) + "/place",
+             fmt::format("placement of part \"{}\" depends on itself through a cycle of placements",
+                         spec_.parts[i].id));
       }
       marks[i] = Mark::kVisiting;
       for (const PlacementCondition& c : spec_.parts[i].placement) visit(c.target.part);
@@ -1055,13 +1086,14 @@ class Reader {
         String(Require(v, p, "feature", "a feature id of the part"), p + "/feature");
     const auto index = spec_.parts[part].FindFeature(feature);
     if (!index) {
-      Fail(p + "/feature", "expected a feature of part \"" + spec_.parts[part].id + "\", found \"" +
-                               feature + "\"");
+      Fail(p + "/feature", fmt::format("expected a feature of part \"{}\", found \"{}\"",
+                                       spec_.parts[part].id, feature));
     }
     d.feature = {part, *index};
-    d.id = Find(v, "id") ? String(v["id"], p + "/id") : spec_.parts[part].id + "/" + feature;
+    d.id = Find(v, "id") ? String(v["id"], p + "/id")
+                         : fmt::format("{}/{}", spec_.parts[part].id, feature);
     for (const Driver& other : spec_.drivers) {
-      if (other.id == d.id) Fail(p + "/id", "duplicate driver id \"" + d.id + "\"");
+      if (other.id == d.id) Fail(p + "/id", fmt::format("duplicate driver id \"{}\"", d.id));
     }
     if (const Json* r = Find(v, "relative_to")) {
       d.relative_to = PartRef(*r, p + "/relative_to");
@@ -1083,7 +1115,9 @@ class Reader {
     }
     if (const Json* a = Find(v, "amount")) {
       d.amount = Number(*a, p + "/amount") * scale;
-      if (!(d.amount > 0)) Fail(p + "/amount", "expected a positive amount, found " + Describe(*a));
+      if (!(d.amount > 0)) {
+        Fail(p + "/amount", fmt::format("expected a positive amount, found {}", Describe(*a)));
+      }
     } else {
       d.amount = scale;
     }
@@ -1095,7 +1129,7 @@ class Reader {
     Adjustment a;
     a.id = String(Require(v, p, "id", "the adjustment's id"), p + "/id");
     for (const Adjustment& other : spec_.adjustments) {
-      if (other.id == a.id) Fail(p + "/id", "duplicate adjustment id \"" + a.id + "\"");
+      if (other.id == a.id) Fail(p + "/id", fmt::format("duplicate adjustment id \"{}\"", a.id));
     }
     a.moves = PartRef(Require(v, p, "moves", "a part id"), p + "/moves");
     const Json* rotate = Find(v, "rotate_about");
@@ -1111,17 +1145,17 @@ class Reader {
         Ref(rotate ? *rotate : *translate, p + (rotate ? "/rotate_about" : "/translate_along"));
     const Json& range = Require(v, p, "range", "[lower, upper]");
     if (!range.is_array() || range.size() != 2) {
-      Fail(p + "/range", "expected [lower, upper], found " + Describe(range));
+      Fail(p + "/range", fmt::format("expected [lower, upper], found {}", Describe(range)));
     }
     auto bound = [&](int i) {
-      const std::string bp = p + "/range/" + std::to_string(i);
+      const std::string bp = fmt::format("{}/range/{}", p, i);
       return rotate ? Angle(range[i], bp) : Length(range[i], bp);
     };
     a.lower = bound(0);
     a.upper = bound(1);
     if (a.lower > a.upper) {
-      Fail(p + "/range",
-           "expected lower <= upper, found " + Describe(range[0]) + " > " + Describe(range[1]));
+      Fail(p + "/range", fmt::format("expected lower <= upper, found {} > {}", Describe(range[0]),
+                                     Describe(range[1])));
     }
     spec_.adjustments.push_back(a);
   }
@@ -1154,9 +1188,9 @@ class Reader {
                                          either(FeatureKind::kWorm, FeatureKind::kWormWheel) ||
                                          either(FeatureKind::kGear, FeatureKind::kRack))) {
       Fail(fp,
-           "expected two features that mesh (gear and gear, worm and worm_wheel, gear and "
-           "rack), found " +
-               std::string(ToString(k0)) + " and " + std::string(ToString(k1)));
+           fmt::format("expected two features that mesh (gear and gear, worm and worm_wheel, gear "
+                       "and rack), found {} and {}",
+                       ToString(k0), ToString(k1)));
     }
     if (g.kind == Goal::Kind::kCoaxial && (k0 == FeatureKind::kFace || k1 == FeatureKind::kFace)) {
       Fail(fp, "expected two features with axes, found a face");
@@ -1188,9 +1222,9 @@ class Reader {
     const auto parsed = ParsePairType(name);
     if (!parsed) {
       Fail(p,
-           "expected one of fixed, revolute, cylindrical, screw, prismatic, pin_slot, "
-           "spherical, planar, gear, worm_gear, rack_pinion, cycloidal, none, found " +
-               Describe(type));
+           fmt::format("expected one of fixed, revolute, cylindrical, screw, prismatic, pin_slot, "
+                       "spherical, planar, gear, worm_gear, rack_pinion, cycloidal, none, found {}",
+                       Describe(type)));
     }
     return parsed;
   }
@@ -1208,8 +1242,8 @@ class Reader {
         const std::string id = String(*feature, p + "/feature");
         const auto index = spec_.parts[*e.part].FindFeature(id);
         if (!index) {
-          Fail(p + "/feature", "expected a feature of part \"" + spec_.parts[*e.part].id +
-                                   "\", found \"" + id + "\"");
+          Fail(p + "/feature", fmt::format("expected a feature of part \"{}\", found \"{}\"",
+                                           spec_.parts[*e.part].id, id));
         }
         e.feature = FeatureRef{*e.part, *index};
       }
@@ -1224,7 +1258,8 @@ class Reader {
       e.kind = Expectation::Kind::kMobility;
       if (!mobility->is_number_integer() || mobility->get<long long>() < 0 ||
           mobility->get<long long>() > 1000000) {
-        Fail(p + "/mobility", "expected a whole number >= 0, found " + Describe(*mobility));
+        Fail(p + "/mobility",
+             fmt::format("expected a whole number >= 0, found {}", Describe(*mobility)));
       }
       e.mobility = static_cast<int>(mobility->get<long long>());
     } else if (const Json* pair = Find(v, "pair")) {
@@ -1240,7 +1275,8 @@ class Reader {
       e.kind = Expectation::Kind::kSameSubassembly;
       e.parts = PartList(*same, p + "/same_subassembly");
       if (e.parts.size() < 2) {
-        Fail(p + "/same_subassembly", "expected at least two parts, found " + Describe(*same));
+        Fail(p + "/same_subassembly",
+             fmt::format("expected at least two parts, found {}", Describe(*same)));
       }
     } else if (const Json* assemblable = Find(v, "assemblable")) {
       CheckKeys(v, p, {"assemblable"});
@@ -1261,7 +1297,7 @@ class Reader {
   }
 
   std::vector<std::size_t> PartList(const Json& v, const std::string& p) const {
-    if (!v.is_array()) Fail(p, "expected an array of part ids, found " + Describe(v));
+    if (!v.is_array()) Fail(p, fmt::format("expected an array of part ids, found {}", Describe(v)));
     std::vector<std::size_t> parts;
     for (std::size_t i = 0; i < v.size(); ++i) {
       parts.push_back(PartRef(v[i], JoinPointer(p, std::to_string(i))));
@@ -1287,16 +1323,18 @@ class Reader {
       return r;
     }
     if (!v.is_string()) {
-      Fail(p, "expected a ratio (an integer, \"p/q\" or a decimal), found " + Describe(v));
+      Fail(p, fmt::format("expected a ratio (an integer, \"p/q\" or a decimal), found {}",
+                          Describe(v)));
     }
     r.text = v.get<std::string>();
     const std::optional<ExpectedRatio> parsed = ParseRatio(r.text);
     static const std::regex kZeroDenominator(R"(\s*[+-]?\d{1,18}\s*/\s*0+\s*)");
     if (!parsed && std::regex_match(r.text, kZeroDenominator)) {
-      Fail(p, "expected a non-zero denominator, found \"" + r.text + "\"");
+      Fail(p, fmt::format("expected a non-zero denominator, found \"{}\"", r.text));
     }
     if (!parsed) {
-      Fail(p, "expected a ratio (an integer, \"p/q\" or a decimal), found \"" + r.text + "\"");
+      Fail(p, fmt::format("expected a ratio (an integer, \"p/q\" or a decimal), found \"{}\"",
+                          r.text));
     }
     return *parsed;
   }

@@ -1,7 +1,10 @@
 #include "io/assembly_report.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -20,13 +23,13 @@ double Num(double x) { return RoundToSignificant(x); }
 Json Point(const Eigen::Vector3d& p) { return Json::array({Num(p.x()), Num(p.y()), Num(p.z())}); }
 
 std::string Text(const Eigen::Vector3d& p) {
-  return "(" + FormatNumber(p.x()) + ", " + FormatNumber(p.y()) + ", " + FormatNumber(p.z()) + ")";
+  return fmt::format("({}, {}, {})", FormatNumber(p.x()), FormatNumber(p.y()), FormatNumber(p.z()));
 }
 
 std::string PairText(const Assembly& assembly, const Analysis& analysis, std::size_t k) {
   const Pair& p = analysis.pairs.at(k);
-  return std::string(ToString(p.type)) + " " + assembly.FeatureName(p.a) + " - " +
-         assembly.FeatureName(p.b);
+  return fmt::format("{} {} - {}", ToString(p.type), assembly.FeatureName(p.a),
+                     assembly.FeatureName(p.b));
 }
 
 Json ContactJson(const Assembly& assembly, const Analysis& analysis, const PartContact& c) {
@@ -56,24 +59,26 @@ std::string OpenSheets(const Assembly& assembly, const PartContact& c) {
       ids += (ids.empty() ? "" : " and ") + assembly.part(k ? c.part_b : c.part_a).id;
   }
   const bool both = c.measure.open[0] && c.measure.open[1];
-  return "the mesh" + std::string(both ? "es of " : " of ") + ids + (both ? " are" : " is") +
-         " an open sheet with no inside";
+  return fmt::format("the mesh{}{}{} an open sheet with no inside", both ? "es of " : " of ", ids,
+                     both ? " are" : " is");
 }
 
 std::string ContactText(const Assembly& assembly, const Analysis& analysis, const PartContact& c) {
-  std::string s = assembly.part(c.part_a).id + " and " + assembly.part(c.part_b).id + ": " +
-                  std::string(ToString(c.verdict));
+  std::string s;
+  auto out = std::back_inserter(s);
+  fmt::format_to(out, "{} and {}: {}", assembly.part(c.part_a).id, assembly.part(c.part_b).id,
+                 ToString(c.verdict));
   if (std::isfinite(c.measure.depth)) {
-    s += ", depth " + FormatNumber(c.measure.depth) + " mm";
+    fmt::format_to(out, ", depth {} mm", FormatNumber(c.measure.depth));
   } else {
-    s += ", depth unknown (" + OpenSheets(assembly, c) + ")";
+    fmt::format_to(out, ", depth unknown ({})", OpenSheets(assembly, c));
   }
-  s += " at " + Text(c.measure.p_W);
+  fmt::format_to(out, " at {}", Text(c.measure.p_W));
   if (c.measure.contained != 0) {
-    s += ", " + assembly.part(c.measure.contained == 1 ? c.part_a : c.part_b).id +
-         " lies entirely inside the other";
+    fmt::format_to(out, ", {} lies entirely inside the other",
+                   assembly.part(c.measure.contained == 1 ? c.part_a : c.part_b).id);
   }
-  if (c.pair) s += " (" + PairText(assembly, analysis, *c.pair) + ")";
+  if (c.pair) fmt::format_to(out, " ({})", PairText(assembly, analysis, *c.pair));
   return s;
 }
 
@@ -102,29 +107,32 @@ Json StepJson(const Assembly& assembly, const Analysis& analysis, const Insertio
 
 std::string StepText(const Assembly& assembly, const Analysis& analysis, const InsertionStep& s) {
   std::string t = assembly.part(s.part).id;
-  for (const std::size_t c : s.carried) t += " + " + assembly.part(c).id;
-  if (s.feature) t += " (" + assembly.FeatureName(*s.feature) + ")";
-  if (s.into) t += " into " + assembly.FeatureName(*s.into);
-  t += " along " + Text(s.direction_W) + ", " + FormatNumber(s.travel) + " mm: ";
+  auto out = std::back_inserter(t);
+  for (const std::size_t c : s.carried) fmt::format_to(out, " + {}", assembly.part(c).id);
+  if (s.feature) fmt::format_to(out, " ({})", assembly.FeatureName(*s.feature));
+  if (s.into) fmt::format_to(out, " into {}", assembly.FeatureName(*s.into));
+  fmt::format_to(out, " along {}, {} mm: ", Text(s.direction_W), FormatNumber(s.travel));
   if (s.clear) {
     t += "clear";
   } else {
     t += "blocked by ";
     for (std::size_t k = 0; k < s.blocked_by.size(); ++k) {
       const InsertionObstacle& o = s.blocked_by[k];
-      t += (k ? "; " : "") + assembly.part(o.part).id + " after " + FormatNumber(o.travel) +
-           " mm (" + FormatNumber(o.short_by) + " mm short of its place) at " + Text(o.p_W);
+      fmt::format_to(out, "{}{} after {} mm ({} mm short of its place) at {}", k ? "; " : "",
+                     assembly.part(o.part).id, FormatNumber(o.travel), FormatNumber(o.short_by),
+                     Text(o.p_W));
     }
   }
-  if (s.pair) t += "; makes " + PairText(assembly, analysis, *s.pair);
+  if (s.pair) fmt::format_to(out, "; makes {}", PairText(assembly, analysis, *s.pair));
   return t;
 }
 
 std::string DriverUnit(const Assembly& assembly, const OperationCheck& check) {
   if (!check.driver) return "time units (all drivers at their rates)";
   const Driver& d = assembly.drivers()[*check.driver];
-  return d.motion == Driver::Motion::kRotation ? "rev of " + d.id
-                                               : assembly.units().length + " of " + d.id;
+  return d.motion == Driver::Motion::kRotation
+             ? fmt::format("rev of {}", d.id)
+             : fmt::format("{} of {}", assembly.units().length, d.id);
 }
 
 Json ClashJson(const Assembly& assembly, const OperationClash& c) {
@@ -194,8 +202,9 @@ void WriteOperationSummary(const Assembly& assembly, const OperationCheck& check
         const PartMotion& m = after->parts[p];
         if (m.kind == MotionKind::kNone) continue;
         out << " " << assembly.part(p).id << " ("
-            << (m.kind == MotionKind::kTranslation ? m.translation.ToString() + " along "
-                                                   : m.rotation.ToString() + " rev about ")
+            << (m.kind == MotionKind::kTranslation
+                    ? fmt::format("{} along ", m.translation.ToString())
+                    : fmt::format("{} rev about ", m.rotation.ToString()))
             << Text(m.axis_W) << ")";
       }
       out << "\n";

@@ -1,5 +1,6 @@
 #include "io/atomic_file.h"
 
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <fstream>
@@ -21,7 +22,7 @@ void WriteFileAtomically(const std::filesystem::path& path, std::string_view con
 
 AtomicOutput::AtomicOutput(const std::filesystem::path& path, const std::filesystem::path& protect)
     : path_(path),
-      temporary_(path.string() + ".tmp" + std::to_string(static_cast<long>(::getpid()))) {
+      temporary_(fmt::format("{}.tmp{}", path.string(), static_cast<long>(::getpid()))) {
   std::error_code ec;
   if (!protect.empty() && std::filesystem::exists(path, ec) &&
       std::filesystem::equivalent(path, protect, ec)) {

@@ -1,5 +1,7 @@
 #include "io/ccd_query_reader.h"
 
+#include <fmt/format.h>
+
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -28,7 +30,7 @@ std::vector<CcdQuery> ReadCcdQueries(const std::filesystem::path& path) {
     for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
     if (cells.size() != 7) {
       throw InputError(name, "", line_number, 0,
-                       "expected 7 columns, found " + std::to_string(cells.size()));
+                       fmt::format("expected 7 columns, found {}", cells.size()));
     }
     if (row % 8 == 0) {
       queries.emplace_back();
@@ -43,14 +45,15 @@ std::vector<CcdQuery> ReadCcdQueries(const std::filesystem::path& path) {
       throw InputError(name, "", line_number, 0, e.what());
     }
     if (cells[6] != "0" && cells[6] != "1") {
-      throw InputError(name, "", line_number, 7, "expected 0 or 1, found \"" + cells[6] + "\"");
+      throw InputError(name, "", line_number, 7,
+                       fmt::format("expected 0 or 1, found \"{}\"", cells[6]));
     }
     q.colliding = cells[6] == "1";
     ++row;
   }
   if (row % 8 != 0) {
     throw InputError(name, "", line_number, 0,
-                     std::to_string(row) + " rows, expected a multiple of 8");
+                     fmt::format("{} rows, expected a multiple of 8", row));
   }
   return queries;
 }

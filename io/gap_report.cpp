@@ -1,5 +1,7 @@
 #include "io/gap_report.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
@@ -19,7 +21,7 @@ double Num(double x) { return RoundToSignificant(x); }
 Json Point(const Eigen::Vector3d& p) { return Json::array({Num(p.x()), Num(p.y()), Num(p.z())}); }
 
 std::string Text(const Eigen::Vector3d& p) {
-  return "(" + FormatNumber(p.x()) + ", " + FormatNumber(p.y()) + ", " + FormatNumber(p.z()) + ")";
+  return fmt::format("({}, {}, {})", FormatNumber(p.x()), FormatNumber(p.y()), FormatNumber(p.z()));
 }
 
 std::string PartList(const Assembly& assembly, const Gap& gap) {

@@ -1,6 +1,10 @@
 #include "io/info_report.h"
 
+#include <fmt/format.h>
+
+#include <iterator>
 #include <string>
+#include <utility>
 
 #include "kernel/assembly/assembly_state.h"
 #include "kernel/support/number_format.h"
@@ -11,75 +15,80 @@ namespace {
 constexpr double kDegPerRad = 57.29577951308232;
 
 std::string Vec(const Eigen::Vector3d& v) {
-  return "(" + FormatNumber(v.x()) + ", " + FormatNumber(v.y()) + ", " + FormatNumber(v.z()) + ")";
+  return fmt::format("({}, {}, {})", FormatNumber(v.x()), FormatNumber(v.y()), FormatNumber(v.z()));
 }
 
 std::string Parameters(const Feature& f) {
   std::string s;
-  auto add = [&s](const std::string& item) { s += " " + item; };
-  auto mm = [](double x) { return FormatNumber(x) + " mm"; };
+  // One parameter, after a space.
+  auto add = [&s]<typename... T>(fmt::format_string<T...> format, T&&... args) {
+    s += ' ';
+    fmt::format_to(std::back_inserter(s), format, std::forward<T>(args)...);
+  };
   switch (f.kind) {
     case FeatureKind::kShaft:
     case FeatureKind::kHole:
-      add("diameter " + mm(f.diameter));
-      add("length " + mm(f.length));
+      add("diameter {} mm", FormatNumber(f.diameter));
+      add("length {} mm", FormatNumber(f.length));
       if (f.through) add("through");
       if (f.retained) add("retained");
       break;
     case FeatureKind::kThread:
     case FeatureKind::kTappedHole:
-      add("M" + FormatNumber(f.diameter) + "x" + FormatNumber(f.pitch));
-      add("length " + mm(f.length));
-      if (f.starts != 1) add(std::to_string(f.starts) + " starts");
+      add("M{}x{}", FormatNumber(f.diameter), FormatNumber(f.pitch));
+      add("length {} mm", FormatNumber(f.length));
+      if (f.starts != 1) add("{} starts", f.starts);
       if (f.hand == Hand::kLeft) add("left-hand");
       if (f.through) add("through");
-      if (f.kind == FeatureKind::kThread) add(f.fastening == Fastening::kTight ? "tight" : "loose");
+      if (f.kind == FeatureKind::kThread) {
+        add("{}", f.fastening == Fastening::kTight ? "tight" : "loose");
+      }
       break;
     case FeatureKind::kSlot:
     case FeatureKind::kKey:
-      add("width " + mm(f.width));
-      add("length " + mm(f.length));
-      if (f.depth > 0) add("depth " + mm(f.depth));
-      add("normal " + Vec(f.normal));
+      add("width {} mm", FormatNumber(f.width));
+      add("length {} mm", FormatNumber(f.length));
+      if (f.depth > 0) add("depth {} mm", FormatNumber(f.depth));
+      add("normal {}", Vec(f.normal));
       break;
     case FeatureKind::kGear:
     case FeatureKind::kWormWheel:
-      add(std::to_string(f.teeth) + " teeth");
-      add("module " + mm(f.module));
-      add("face width " + mm(f.length));
+      add("{} teeth", f.teeth);
+      add("module {} mm", FormatNumber(f.module));
+      add("face width {} mm", FormatNumber(f.length));
       if (f.internal) add("internal");
-      if (f.helix_angle != 0.0) add("helix " + FormatNumber(f.helix_angle * 180.0 / M_PI) + " deg");
+      if (f.helix_angle != 0.0) add("helix {} deg", FormatNumber(f.helix_angle * 180.0 / M_PI));
       break;
     case FeatureKind::kWorm:
-      add(std::to_string(f.starts) + (f.starts == 1 ? " start" : " starts"));
-      add("module " + mm(f.module));
-      add("pitch diameter " + mm(f.pitch_diameter));
-      add("length " + mm(f.length));
+      add("{} {}", f.starts, f.starts == 1 ? "start" : "starts");
+      add("module {} mm", FormatNumber(f.module));
+      add("pitch diameter {} mm", FormatNumber(f.pitch_diameter));
+      add("length {} mm", FormatNumber(f.length));
       if (f.hand == Hand::kLeft) add("left-hand");
       break;
     case FeatureKind::kRack:
-      add("module " + mm(f.module));
-      add("length " + mm(f.length));
-      add("normal " + Vec(f.normal));
+      add("module {} mm", FormatNumber(f.module));
+      add("length {} mm", FormatNumber(f.length));
+      add("normal {}", Vec(f.normal));
       break;
     case FeatureKind::kBall:
     case FeatureKind::kSocket:
-      add("diameter " + mm(f.diameter));
+      add("diameter {} mm", FormatNumber(f.diameter));
       break;
     case FeatureKind::kFace:
-      if (f.width > 0) add("width " + mm(f.width));
-      if (f.height > 0) add("height " + mm(f.height));
+      if (f.width > 0) add("width {} mm", FormatNumber(f.width));
+      if (f.height > 0) add("height {} mm", FormatNumber(f.height));
       break;
     case FeatureKind::kCycloidDisc:
-      add(std::to_string(f.teeth) + " lobes");
-      add("eccentricity " + mm(f.eccentricity));
-      add("length " + mm(f.length));
+      add("{} lobes", f.teeth);
+      add("eccentricity {} mm", FormatNumber(f.eccentricity));
+      add("length {} mm", FormatNumber(f.length));
       break;
     case FeatureKind::kPinRing:
-      add(std::to_string(f.teeth) + " pins");
-      add("pin circle " + mm(f.diameter));
-      add("pin diameter " + mm(f.pin_diameter));
-      add("length " + mm(f.length));
+      add("{} pins", f.teeth);
+      add("pin circle {} mm", FormatNumber(f.diameter));
+      add("pin diameter {} mm", FormatNumber(f.pin_diameter));
+      add("length {} mm", FormatNumber(f.length));
       break;
   }
   return s;
@@ -89,8 +98,8 @@ std::string Parameters(const Feature& f) {
 
 std::string DescribeFeature(const Feature& f, const RigidTransform& X_WP) {
   const AxisSegment axis_W = f.WorldAxis(X_WP);
-  return f.id + ": " + std::string(ToString(f.kind)) + " at " + Vec(axis_W.origin) + " axis " +
-         Vec(axis_W.direction) + Parameters(f);
+  return fmt::format("{}: {} at {} axis {}{}", f.id, ToString(f.kind), Vec(axis_W.origin),
+                     Vec(axis_W.direction), Parameters(f));
 }
 
 void WriteInfo(const Assembly& assembly, std::ostream& out) {

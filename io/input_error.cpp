@@ -1,5 +1,8 @@
 #include "io/input_error.h"
 
+#include <fmt/format.h>
+
+#include <iterator>
 #include <utility>
 
 namespace mechanist {
@@ -8,13 +11,15 @@ namespace {
 std::string Format(const std::string& file, const std::string& pointer, int line, int column,
                    const std::string& message) {
   std::string text = file;
+  auto out = std::back_inserter(text);
   if (line > 0) {
-    text += ":" + std::to_string(line);
-    if (column > 0) text += ":" + std::to_string(column);
+    fmt::format_to(out, ":{}", line);
+    if (column > 0) fmt::format_to(out, ":{}", column);
   }
   text += ": ";
-  if (!pointer.empty()) text += "at " + pointer + ": ";
-  return text + message;
+  if (!pointer.empty()) fmt::format_to(out, "at {}: ", pointer);
+  text += message;
+  return text;
 }
 
 }  // namespace

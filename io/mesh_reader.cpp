@@ -1,5 +1,7 @@
 #include "io/mesh_reader.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -176,11 +178,12 @@ Eigen::Vector3d ReadPoint(LineTokens& tokens, const std::string& what, const Sou
     const std::optional<double> value = ParseReal(token.text);
     if (!value) {
       source.Fail(token.line, token.column,
-                  "expected 3 numbers " + what + ", found " + Found(token));
+                  fmt::format("expected 3 numbers {}, found {}", what, Found(token)));
     }
     if (!std::isfinite(*value)) {
-      source.Fail(token.line, token.column,
-                  "expected a finite coordinate " + what + ", found " + Quote(token.text));
+      source.Fail(
+          token.line, token.column,
+          fmt::format("expected a finite coordinate {}, found {}", what, Quote(token.text)));
     }
     p[i] = *value;
   }
@@ -226,8 +229,7 @@ class VertexWelder {
       if (vertices_[index] == p) return index;
     }
     if (static_cast<std::int64_t>(vertices_.size()) >= kMaxVertices) {
-      source.Fail(0, 0,
-                  "too many distinct vertices (more than " + std::to_string(kMaxVertices) + ")");
+      source.Fail(0, 0, fmt::format("too many distinct vertices (more than {})", kMaxVertices));
     }
     const auto index = static_cast<std::int32_t>(vertices_.size());
     vertices_.push_back(p);
@@ -278,9 +280,11 @@ TriangleMesh ReadBinaryStl(std::string_view data, std::uint32_t count, const Sou
       Eigen::Vector3d p;
       for (int i = 0; i < 3; ++i) p[i] = Load<float>(record + 4 * (3 * k + i), false);
       if (!p.allFinite()) {
-        source.Fail(0, 0,
-                    "expected finite coordinates, found a non-finite one in triangle " +
-                        std::to_string(t) + " (counting from 0) of the binary STL");
+        source.Fail(
+            0, 0,
+            fmt::format("expected finite coordinates, found a non-finite one in triangle {} "
+                        "(counting from 0) of the binary STL",
+                        t));
       }
       face[k] = welder.Add(p, source);
     }
@@ -313,7 +317,8 @@ TriangleMesh ReadAsciiStl(std::string_view data, const Source& source) {
     } else if (state == kFacet && word == "outer") {
       const Token loop = tokens.Next();
       if (Lower(loop.text) != "loop") {
-        source.Fail(loop.line, loop.column, "expected 'loop' after 'outer', found " + Found(loop));
+        source.Fail(loop.line, loop.column,
+                    fmt::format("expected 'loop' after 'outer', found {}", Found(loop)));
       }
       polygon.clear();
       state = kLoop;
@@ -322,8 +327,8 @@ TriangleMesh ReadAsciiStl(std::string_view data, const Source& source) {
     } else if (state == kLoop && word == "endloop") {
       if (polygon.size() < 3) {
         source.Fail(keyword.line, keyword.column,
-                    "expected at least 3 vertices in a facet's loop, found " +
-                        std::to_string(polygon.size()));
+                    fmt::format("expected at least 3 vertices in a facet's loop, found {}",
+                                polygon.size()));
       }
       AddFan(polygon, mesh.faces);
       state = kLoopClosed;
@@ -331,12 +336,13 @@ TriangleMesh ReadAsciiStl(std::string_view data, const Source& source) {
       state = kSolid;
     } else {
       source.Fail(keyword.line, keyword.column,
-                  std::string("expected ") + kExpected[state] + ", found " + Quote(keyword.text));
+                  fmt::format("expected {}, found {}", kExpected[state], Quote(keyword.text)));
     }
   }
   if (state != kOutside) {
     const std::string missing = state == kSolid ? "'endsolid'" : kExpected[state];
-    source.Fail(lines.number(), 0, "expected " + missing + ", found end of file (truncated?)");
+    source.Fail(lines.number(), 0,
+                fmt::format("expected {}, found end of file (truncated?)", missing));
   }
   return mesh;
 }
@@ -363,15 +369,17 @@ TriangleMesh ReadStl(std::string_view data, const Source& source) {
   }
   if (LooksLikeText(data)) return ReadAsciiStl(data, source);
   if (!count) {
-    source.Fail(0, 0,
-                "expected a binary STL of at least 84 bytes (header and triangle count) or an "
-                "ASCII STL, found " +
-                    std::to_string(data.size()) + " bytes of binary data");
+    source.Fail(
+        0, 0,
+        fmt::format("expected a binary STL of at least 84 bytes (header and triangle count) "
+                    "or an ASCII STL, found {} bytes of binary data",
+                    data.size()));
   }
-  source.Fail(0, 0,
-              "binary STL declares " + std::to_string(*count) + " triangles, which take " +
-                  std::to_string(kHeaderSize + kRecordSize * *count) + " bytes, but the file has " +
-                  std::to_string(data.size()) + " bytes (truncated or corrupt)");
+  source.Fail(
+      0, 0,
+      fmt::format("binary STL declares {} triangles, which take {} bytes, but the file has {} "
+                  "bytes (truncated or corrupt)",
+                  *count, kHeaderSize + kRecordSize * *count, data.size()));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -401,17 +409,16 @@ TriangleMesh ReadObj(std::string_view data, const Source& source) {
         const std::optional<std::int64_t> index =
             ParseInteger(token.text.substr(0, token.text.find('/')));
         if (!index || *index == 0) {
-          source.Fail(
-              token.line, token.column,
-              "expected a vertex index (a non-zero integer, optionally with /texture/normal "
-              "indices) after 'f', found " +
-                  Quote(token.text));
+          source.Fail(token.line, token.column,
+                      fmt::format("expected a vertex index (a non-zero integer, optionally with "
+                                  "/texture/normal indices) after 'f', found {}",
+                                  Quote(token.text)));
         }
         const std::int64_t resolved = *index < 0 ? count + *index : *index - 1;
         if (resolved < 0 || resolved >= kMaxVertices) {
           source.Fail(token.line, token.column,
-                      "vertex index " + std::to_string(*index) +
-                          " is out of range: " + std::to_string(count) + " vertices precede it");
+                      fmt::format("vertex index {} is out of range: {} vertices precede it", *index,
+                                  count));
         }
         if (resolved >= count && resolved + 1 > largest_forward) {
           largest_forward = resolved + 1;
@@ -420,9 +427,9 @@ TriangleMesh ReadObj(std::string_view data, const Source& source) {
         polygon.push_back(static_cast<std::int32_t>(resolved));
       }
       if (polygon.size() < 3) {
-        source.Fail(keyword.line, keyword.column,
-                    "expected at least 3 vertex indices after 'f', found " +
-                        std::to_string(polygon.size()));
+        source.Fail(
+            keyword.line, keyword.column,
+            fmt::format("expected at least 3 vertex indices after 'f', found {}", polygon.size()));
       }
       AddFan(polygon, mesh.faces);
     }
@@ -430,9 +437,8 @@ TriangleMesh ReadObj(std::string_view data, const Source& source) {
   }
   if (forward_reference && largest_forward > static_cast<std::int64_t>(mesh.vertices.size())) {
     source.Fail(forward_reference->line, forward_reference->column,
-                "vertex index " + std::to_string(largest_forward) +
-                    " is out of range: the file has " + std::to_string(mesh.vertices.size()) +
-                    " vertices");
+                fmt::format("vertex index {} is out of range: the file has {} vertices",
+                            largest_forward, mesh.vertices.size()));
   }
   return mesh;
 }
@@ -445,7 +451,7 @@ std::int64_t ReadCount(const Token& token, const std::string& what, const Source
   const std::optional<std::int64_t> count = ParseInteger(token.text);
   if (!count || *count < 0 || *count > kMaxVertices) {
     source.Fail(token.line, token.column,
-                "expected " + what + " (a non-negative integer), found " + Found(token));
+                fmt::format("expected {} (a non-negative integer), found {}", what, Found(token)));
   }
   return *count;
 }
@@ -461,11 +467,13 @@ TriangleMesh ReadOff(std::string_view data, const Source& source) {
   if (first.text.ends_with("OFF")) {
     const std::string_view prefix = first.text.substr(0, first.text.size() - 3);
     if (prefix.find_first_of("4n") != std::string_view::npos) {
-      source.Fail(first.line, first.column,
-                  "only three-dimensional OFF is supported, found " + Quote(first.text));
+      source.Fail(
+          first.line, first.column,
+          fmt::format("only three-dimensional OFF is supported, found {}", Quote(first.text)));
     }
     if (prefix.find_first_not_of("STCN") != std::string_view::npos) {
-      source.Fail(first.line, first.column, "expected 'OFF', found " + Quote(first.text));
+      source.Fail(first.line, first.column,
+                  fmt::format("expected 'OFF', found {}", Quote(first.text)));
     }
     first = tokens.Next();
     if (first.text == "BINARY") {
@@ -481,7 +489,8 @@ TriangleMesh ReadOff(std::string_view data, const Source& source) {
     }
   } else if (!ParseInteger(first.text)) {
     source.Fail(first.line, first.column,
-                "expected 'OFF' or the vertex, face and edge counts, found " + Quote(first.text));
+                fmt::format("expected 'OFF' or the vertex, face and edge counts, found {}",
+                            Quote(first.text)));
   }
   const std::int64_t vertex_count = ReadCount(first, "the vertex count", source);
   const std::int64_t face_count = ReadCount(tokens.Next(), "the face count", source);
@@ -492,10 +501,10 @@ TriangleMesh ReadOff(std::string_view data, const Source& source) {
   for (std::int64_t i = 0; i < vertex_count; ++i) {
     if (!NextDataLine(lines, tokens)) {
       source.Fail(lines.number(), 0,
-                  "expected " + std::to_string(vertex_count) + " vertices, found " +
-                      std::to_string(i) + " before the end of the file");
+                  fmt::format("expected {} vertices, found {} before the end of the file",
+                              vertex_count, i));
     }
-    mesh.vertices.push_back(ReadPoint(tokens, "for vertex " + std::to_string(i), source));
+    mesh.vertices.push_back(ReadPoint(tokens, fmt::format("for vertex {}", i), source));
   }
 
   std::vector<std::int32_t> polygon;
@@ -503,9 +512,9 @@ TriangleMesh ReadOff(std::string_view data, const Source& source) {
   for (std::int64_t f = 0;; ++f) {
     if (!NextDataLine(lines, tokens)) {
       if (f < face_count) {
-        source.Fail(lines.number(), 0,
-                    "expected " + std::to_string(face_count) + " faces, found " +
-                        std::to_string(f) + " before the end of the file");
+        source.Fail(
+            lines.number(), 0,
+            fmt::format("expected {} faces, found {} before the end of the file", face_count, f));
       }
       break;
     }
@@ -513,8 +522,9 @@ TriangleMesh ReadOff(std::string_view data, const Source& source) {
     const std::optional<std::int64_t> size = ParseInteger(size_token.text);
     if (!size || *size < 3) {
       source.Fail(size_token.line, size_token.column,
-                  "expected the number of vertices of face " + std::to_string(f) +
-                      " (an integer of at least 3), found " + Quote(size_token.text));
+                  fmt::format("expected the number of vertices of face {} (an integer of at least "
+                              "3), found {}",
+                              f, Quote(size_token.text)));
     }
     polygon.clear();
     for (std::int64_t k = 0; k < *size; ++k) {
@@ -522,13 +532,13 @@ TriangleMesh ReadOff(std::string_view data, const Source& source) {
       const std::optional<std::int64_t> index = ParseInteger(token.text);
       if (!index) {
         source.Fail(token.line, token.column,
-                    "expected " + std::to_string(*size) + " vertex indices for face " +
-                        std::to_string(f) + ", found " + Found(token));
+                    fmt::format("expected {} vertex indices for face {}, found {}", *size, f,
+                                Found(token)));
       }
       if (*index < 0 || *index >= vertex_count) {
         source.Fail(token.line, token.column,
-                    "vertex index " + std::to_string(*index) + " is out of range: the file has " +
-                        std::to_string(vertex_count) + " vertices");
+                    fmt::format("vertex index {} is out of range: the file has {} vertices", *index,
+                                vertex_count));
       }
       polygon.push_back(static_cast<std::int32_t>(*index));
     }
@@ -593,9 +603,9 @@ PlyType ToPlyType(const Token& token, const Source& source) {
   const std::optional<PlyType> type = ParsePlyType(token.text);
   if (!type) {
     source.Fail(token.line, token.column,
-                "expected a PLY type (char, uchar, short, ushort, int, uint, float, double or "
-                "int8 ... float64), found " +
-                    Found(token));
+                fmt::format("expected a PLY type (char, uchar, short, ushort, int, uint, float, "
+                            "double or int8 ... float64), found {}",
+                            Found(token)));
   }
   return *type;
 }
@@ -608,7 +618,8 @@ PlyHeader ReadPlyHeader(std::string_view data, const Source& source) {
     LineTokens tokens(lines.line(), lines.number());
     const Token magic = tokens.Next();
     if (magic.text != "ply") {
-      source.Fail(1, magic.column, "expected 'ply' on the first line, found " + Found(magic));
+      source.Fail(1, magic.column,
+                  fmt::format("expected 'ply' on the first line, found {}", Found(magic)));
     }
   }
   bool has_format = false;
@@ -630,8 +641,9 @@ PlyHeader ReadPlyHeader(std::string_view data, const Source& source) {
         header.format = PlyHeader::Format::kBinaryBigEndian;
       } else {
         source.Fail(format.line, format.column,
-                    "expected 'ascii', 'binary_little_endian' or 'binary_big_endian', found " +
-                        Found(format));
+                    fmt::format("expected 'ascii', 'binary_little_endian' or "
+                                "'binary_big_endian', found {}",
+                                Found(format)));
       }
       has_format = true;
     } else if (keyword.text == "element") {
@@ -641,11 +653,12 @@ PlyHeader ReadPlyHeader(std::string_view data, const Source& source) {
       }
       for (const PlyElement& element : header.elements) {
         if (element.name == name.text) {
-          source.Fail(name.line, name.column, "element " + Quote(name.text) + " is declared twice");
+          source.Fail(name.line, name.column,
+                      fmt::format("element {} is declared twice", Quote(name.text)));
         }
       }
-      const std::int64_t count =
-          ReadCount(tokens.Next(), "the number of " + Quote(name.text) + " elements", source);
+      const std::int64_t count = ReadCount(
+          tokens.Next(), fmt::format("the number of {} elements", Quote(name.text)), source);
       header.elements.push_back({std::string(name.text), count, {}, keyword.line});
     } else if (keyword.text == "property") {
       if (header.elements.empty()) {
@@ -657,9 +670,9 @@ PlyHeader ReadPlyHeader(std::string_view data, const Source& source) {
         const Token length_type = tokens.Next();
         property.length_type = ToPlyType(length_type, source);
         if (!IsInteger(*property.length_type)) {
-          source.Fail(
-              length_type.line, length_type.column,
-              "expected an integer type for a list's length, found " + Quote(length_type.text));
+          source.Fail(length_type.line, length_type.column,
+                      fmt::format("expected an integer type for a list's length, found {}",
+                                  Quote(length_type.text)));
         }
         type = tokens.Next();
       }
@@ -672,8 +685,9 @@ PlyHeader ReadPlyHeader(std::string_view data, const Source& source) {
       header.elements.back().properties.push_back(std::move(property));
     } else {
       source.Fail(keyword.line, keyword.column,
-                  "expected 'format', 'element', 'property', 'comment' or 'end_header', found " +
-                      Quote(keyword.text));
+                  fmt::format("expected 'format', 'element', 'property', 'comment' or "
+                              "'end_header', found {}",
+                              Quote(keyword.text)));
     }
   }
   if (!has_format) source.Fail(lines.number(), 0, "expected a 'format' line before 'end_header'");
@@ -688,8 +702,8 @@ struct PlyPlace {
 };
 
 std::string Describe(const PlyPlace& place) {
-  return "property " + Quote(place.property.name) + " of " + place.element.name + " " +
-         std::to_string(place.index);
+  return fmt::format("property {} of {} {}", Quote(place.property.name), place.element.name,
+                     place.index);
 }
 
 /// The values of an ASCII PLY body, as whitespace-separated words.
@@ -702,8 +716,9 @@ class PlyAsciiValues {
     const Token& token = Next(place);
     const std::optional<double> value = ParseReal(token.text);
     if (!value) {
-      source_.Fail(token.line, token.column,
-                   "expected a number for " + Describe(place) + ", found " + Quote(token.text));
+      source_.Fail(
+          token.line, token.column,
+          fmt::format("expected a number for {}, found {}", Describe(place), Quote(token.text)));
     }
     return *value;
   }
@@ -712,8 +727,9 @@ class PlyAsciiValues {
     const Token& token = Next(place);
     const std::optional<std::int64_t> value = ParseInteger(token.text);
     if (!value) {
-      source_.Fail(token.line, token.column,
-                   "expected an integer for " + Describe(place) + ", found " + Quote(token.text));
+      source_.Fail(
+          token.line, token.column,
+          fmt::format("expected an integer for {}, found {}", Describe(place), Quote(token.text)));
     }
     return *value;
   }
@@ -727,9 +743,11 @@ class PlyAsciiValues {
   void Finish() {
     const Token token = NextToken();
     if (!token.text.empty()) {
-      source_.Fail(token.line, token.column,
-                   "expected the end of the data after the elements the header declares, found " +
-                       Quote(token.text) + " (are the element counts right?)");
+      source_.Fail(
+          token.line, token.column,
+          fmt::format("expected the end of the data after the elements the header declares, "
+                      "found {} (are the element counts right?)",
+                      Quote(token.text)));
     }
   }
 
@@ -746,10 +764,10 @@ class PlyAsciiValues {
   const Token& Next(const PlyPlace& place) {
     last_ = NextToken();
     if (last_.text.empty()) {
-      source_.Fail(last_.line, 0,
-                   "expected " + Describe(place) + ", found end of file (the header declares " +
-                       std::to_string(place.element.count) + " " + place.element.name +
-                       " elements)");
+      source_.Fail(
+          last_.line, 0,
+          fmt::format("expected {}, found end of file (the header declares {} {} elements)",
+                      Describe(place), place.element.count, place.element.name));
     }
     return last_;
   }
@@ -795,7 +813,7 @@ class PlyBinaryValues {
 
   /// Fails at the value read last.
   [[noreturn]] void Fail(const std::string& message) const {
-    source_.Fail(0, 0, message + " (binary data, byte offset " + std::to_string(last_) + ")");
+    source_.Fail(0, 0, fmt::format("{} (binary data, byte offset {})", message, last_));
   }
 
   /// Bytes after the last element cannot be told from padding, so they are allowed.
@@ -805,10 +823,9 @@ class PlyBinaryValues {
   const char* Take(std::size_t size, const PlyPlace& place) {
     if (data_.size() - offset_ < size) {
       source_.Fail(0, 0,
-                   "expected " + Describe(place) + " at byte offset " + std::to_string(offset_) +
-                       ", found end of file (the header declares " +
-                       std::to_string(place.element.count) + " " + place.element.name +
-                       " elements; truncated?)");
+                   fmt::format("expected {} at byte offset {}, found end of file (the header "
+                               "declares {} {} elements; truncated?)",
+                               Describe(place), offset_, place.element.count, place.element.name));
     }
     last_ = offset_;
     offset_ += size;
@@ -837,9 +854,8 @@ std::vector<PlyRole> PlyRoles(const PlyElement& element, const Source& source) {
                                    [&](const PlyProperty& p) { return p.name == name; });
       if (it == element.properties.end() || it->length_type) {
         source.Fail(element.line, 0,
-                    std::string("expected a scalar property '") + name +
-                        "' in element 'vertex', found " +
-                        (it == element.properties.end() ? "none" : "a list"));
+                    fmt::format("expected a scalar property '{}' in element 'vertex', found {}",
+                                name, it == element.properties.end() ? "none" : "a list"));
       }
       roles[it - element.properties.begin()] = role;
     }
@@ -850,11 +866,11 @@ std::vector<PlyRole> PlyRoles(const PlyElement& element, const Source& source) {
                                  });
     if (it == element.properties.end() || !it->length_type || !IsInteger(it->type)) {
       source.Fail(element.line, 0,
-                  "expected a list property 'vertex_indices' (or 'vertex_index') of an integer "
-                  "type in element 'face', found " +
-                      std::string(it == element.properties.end() ? "none"
-                                  : !it->length_type             ? "a scalar"
-                                                                 : "a list of reals"));
+                  fmt::format("expected a list property 'vertex_indices' (or 'vertex_index') of "
+                              "an integer type in element 'face', found {}",
+                              it == element.properties.end() ? "none"
+                              : !it->length_type             ? "a scalar"
+                                                             : "a list of reals"));
     }
     roles[it - element.properties.begin()] = PlyRole::kFaceIndices;
   }
@@ -884,32 +900,32 @@ TriangleMesh ReadPlyBody(const PlyHeader& header, Values& values, std::size_t da
           const double value = values.Real(property.type, place);
           if (roles[k] == PlyRole::kNone) continue;
           if (!std::isfinite(value)) {
-            values.Fail("expected a finite coordinate for " + Describe(place) + ", found " +
-                        std::to_string(value));
+            values.Fail(fmt::format("expected a finite coordinate for {}, found {}",
+                                    Describe(place), std::to_string(value)));
           }
           p[static_cast<int>(roles[k]) - static_cast<int>(PlyRole::kX)] = value;
           continue;
         }
         const std::int64_t length = values.Integer(*property.length_type, place);
         if (length < 0) {
-          values.Fail("expected a list length for " + Describe(place) + ", found " +
-                      std::to_string(length));
+          values.Fail(
+              fmt::format("expected a list length for {}, found {}", Describe(place), length));
         }
         if (roles[k] != PlyRole::kFaceIndices) {
           for (std::int64_t j = 0; j < length; ++j) values.Real(property.type, place);
           continue;
         }
         if (length < 3) {
-          values.Fail("expected at least 3 vertex indices for face " + std::to_string(i) +
-                      ", found " + std::to_string(length));
+          values.Fail(
+              fmt::format("expected at least 3 vertex indices for face {}, found {}", i, length));
         }
         polygon.clear();
         for (std::int64_t j = 0; j < length; ++j) {
           const std::int64_t index = values.Integer(property.type, place);
           if (index < 0 || index >= vertex_count) {
-            values.Fail("vertex index " + std::to_string(index) + " of face " + std::to_string(i) +
-                        " is out of range: the file has " + std::to_string(vertex_count) +
-                        " vertices");
+            values.Fail(
+                fmt::format("vertex index {} of face {} is out of range: the file has {} vertices",
+                            index, i, vertex_count));
           }
           polygon.push_back(static_cast<std::int32_t>(index));
         }
@@ -971,17 +987,18 @@ TriangleMesh ReadMesh(const std::filesystem::path& path) {
                 "name it as a part's mesh in an assembly file");
   } else {
     source.Fail(0, 0,
-                (extension.empty() ? "the file name has no extension"
-                                   : "unsupported mesh file extension " + Quote(extension)) +
-                    "; supported: .stl, .obj, .ply, .off");
+                fmt::format("{}; supported: .stl, .obj, .ply, .off",
+                            extension.empty() ? "the file name has no extension"
+                                              : fmt::format("unsupported mesh file extension {}",
+                                                            Quote(extension))));
   }
   const std::string data = ReadFile(path, source);
   if (data.empty()) source.Fail(0, 0, "expected a mesh, found an empty file");
   TriangleMesh mesh = reader(data, source);
   if (mesh.faces.empty()) {
     source.Fail(0, 0,
-                "expected a mesh with faces, found " + std::to_string(mesh.vertices.size()) +
-                    " vertices and no faces");
+                fmt::format("expected a mesh with faces, found {} vertices and no faces",
+                            mesh.vertices.size()));
   }
   return mesh;
 }

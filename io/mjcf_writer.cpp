@@ -1,6 +1,9 @@
 #include "io/mjcf_writer.h"
 
+#include <fmt/format.h>
+
 #include <Eigen/Geometry>
+#include <iterator>
 #include <sstream>
 
 #include "io/internal/simulator_text.h"
@@ -25,7 +28,7 @@ std::string Quaternion(const Eigen::Matrix3d& R) {
   Eigen::Quaterniond q(R);
   q.normalize();
   if (q.w() < 0) q.coeffs() *= -1.0;  // one of the two for the same rotation, always the same
-  return Number(q.w()) + " " + Number(q.x()) + " " + Number(q.y()) + " " + Number(q.z());
+  return fmt::format("{} {} {} {}", Number(q.w()), Number(q.x()), Number(q.y()), Number(q.z()));
 }
 
 class MjcfWriter {
@@ -62,7 +65,7 @@ class MjcfWriter {
     out_ << "  <asset>\n";
     for (const SimMesh& m : model_.meshes) {
       out_ << "    <mesh name=\"" << XmlEscape(m.name) << "\" file=\""
-           << XmlEscape(options_.mesh_dir + "/" + m.name) << ".stl\"/>\n";
+           << XmlEscape(fmt::format("{}/{}", options_.mesh_dir, m.name)) << ".stl\"/>\n";
     }
     out_ << "  </asset>\n";
   }
@@ -71,7 +74,8 @@ class MjcfWriter {
     const SimLink& link = model_.links[l];
     const std::string pad(2 * depth, ' ');
     const std::string inner(2 * depth + (l == 0 ? 0 : 2), ' ');
-    out_ << pad << XmlComment("link " + link.name + ": " + internal::LinkLabel(assembly_, link))
+    out_ << pad
+         << XmlComment(fmt::format("link {}: {}", link.name, internal::LinkLabel(assembly_, link)))
          << "\n";
     if (l != 0) {
       const Eigen::Vector3d p = link.p_WL - model_.links[*link.parent].p_WL;
@@ -127,15 +131,17 @@ class MjcfWriter {
       // joints' inverse inertias added without the ratio, which leaves a screw's slide or a
       // light pinion's rack almost free; a tendon's softness comes from its own Jacobian.)
       const SimCoupling& c = model_.couplings[k];
-      const std::string name = "coupling_" + std::to_string(k + 1);
-      std::string relation = model_.joints[c.terms[0].first].name + " =";
+      const std::string name = fmt::format("coupling_{}", k + 1);
+      std::string relation = fmt::format("{} =", model_.joints[c.terms[0].first].name);
       for (std::size_t t = 1; t < c.terms.size(); ++t) {
-        relation += (t > 1 ? " + " : " ") + Number(-c.terms[t].second / c.terms[0].second) + " * " +
-                    model_.joints[c.terms[t].first].name;
+        fmt::format_to(std::back_inserter(relation), "{}{} * {}", t > 1 ? " + " : " ",
+                       Number(-c.terms[t].second / c.terms[0].second),
+                       model_.joints[c.terms[t].first].name);
       }
       if (c.terms.size() == 1) relation += " 0";
       equality << "    "
-               << XmlComment(internal::PairLabel(assembly_, analysis_, c.pair) + ": " + relation)
+               << XmlComment(fmt::format(
+                      "{}: {}", internal::PairLabel(assembly_, analysis_, c.pair), relation))
                << "\n    <tendon tendon1=\"" << name << "\" polycoef=\"0 0 0 0 0\"/>\n";
       tendons << "    <fixed name=\"" << name << "\">\n";
       for (const auto& [j, coefficient] : c.terms) {
@@ -148,7 +154,8 @@ class MjcfWriter {
       if (!a.joint || a.rate != 0.0) continue;
       // A held driver is a brake: an equality holds its joint at the file pose.
       const Driver& d = assembly_.drivers()[a.driver];
-      equality << "    " << XmlComment("driver " + d.id + " held (rate 0): deactivate to release")
+      equality << "    "
+               << XmlComment(fmt::format("driver {} held (rate 0): deactivate to release", d.id))
                << "\n    <joint name=\"" << XmlEscape(d.id) << "\" joint1=\""
                << XmlEscape(model_.joints[*a.joint].name) << "\" polycoef=\"0 0 0 0 0\" solimp=\""
                << kStiff << "\"/>\n";
@@ -156,10 +163,10 @@ class MjcfWriter {
     for (const SimLoop& loop : model_.loops) {
       const std::string label = internal::PairLabel(assembly_, analysis_, loop.pair);
       if (loop.anchors_W.empty()) {
-        equality << "    " << XmlComment("loop left open: " + label) << "\n";
+        equality << "    " << XmlComment(fmt::format("loop left open: {}", label)) << "\n";
         continue;
       }
-      equality << "    " << XmlComment("loop closed: " + label) << "\n";
+      equality << "    " << XmlComment(fmt::format("loop closed: {}", label)) << "\n";
       for (const Eigen::Vector3d& anchor : loop.anchors_W) {
         equality << "    <connect body1=\"" << BodyName(loop.link_a) << "\" body2=\""
                  << BodyName(loop.link_b) << "\" anchor=\""
@@ -205,8 +212,8 @@ class MjcfWriter {
       const SimJoint& j = model_.joints[*a.joint];
       const double kv = InertiaAbout(j) / kDriveTimeConstant;
       actuators << "    "
-                << XmlComment("driver " + d.id + ": " + Number(a.rate) +
-                              (j.kind == SimJoint::Kind::kSlide ? " m/s" : " rad/s"))
+                << XmlComment(fmt::format("driver {}: {} {}", d.id, Number(a.rate),
+                                          j.kind == SimJoint::Kind::kSlide ? "m/s" : "rad/s"))
                 << "\n";
       actuators << "    <velocity name=\"" << XmlEscape(d.id) << "\" joint=\"" << XmlEscape(j.name)
                 << "\" kv=\"" << Number(kv) << "\"/>\n";

@@ -1,6 +1,9 @@
 #include "io/urdf_writer.h"
 
+#include <fmt/format.h>
+
 #include <Eigen/Geometry>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -18,7 +21,7 @@ using internal::XmlEscape;
 // URDF's fixed-axis roll, pitch, yaw of R = Rz(yaw) Ry(pitch) Rx(roll).
 std::string Rpy(const Eigen::Matrix3d& R) {
   const Eigen::Vector3d ypr = R.eulerAngles(2, 1, 0);
-  return Number(ypr.z()) + " " + Number(ypr.y()) + " " + Number(ypr.x());
+  return fmt::format("{} {} {}", Number(ypr.z()), Number(ypr.y()), Number(ypr.x()));
 }
 
 struct Mimic {
@@ -38,20 +41,21 @@ class UrdfWriter {
     for (const std::string& note : model_.notes) out_ << XmlComment(note) << "\n";
     for (const std::string& c : unexpressed_) out_ << XmlComment(c) << "\n";
     for (const SimLoop& loop : model_.loops) {
-      out_ << XmlComment("loop cut: the " + internal::PairLabel(assembly_, analysis_, loop.pair) +
-                         " between links " + model_.links[loop.link_a].name + " and " +
-                         model_.links[loop.link_b].name +
-                         " is not a joint here: URDF cannot close a loop")
+      out_ << XmlComment(fmt::format(
+                  "loop cut: the {} between links {} and {} is not a joint here: URDF cannot "
+                  "close a loop",
+                  internal::PairLabel(assembly_, analysis_, loop.pair),
+                  model_.links[loop.link_a].name, model_.links[loop.link_b].name))
            << "\n";
     }
     for (const SimActuator& a : model_.actuators) {
       const Driver& d = assembly_.drivers()[a.driver];
       if (a.joint) {
-        out_ << XmlComment(
-                    "driver " + d.id + ": joint " + model_.joints[*a.joint].name + " at " +
-                    Number(a.rate) +
-                    (model_.joints[*a.joint].kind == SimJoint::Kind::kSlide ? " m/s" : " rad/s") +
-                    (a.rate == 0.0 ? " (held)" : ""))
+        out_ << XmlComment(fmt::format(
+                    "driver {}: joint {} at {} {}{}", d.id, model_.joints[*a.joint].name,
+                    Number(a.rate),
+                    model_.joints[*a.joint].kind == SimJoint::Kind::kSlide ? "m/s" : "rad/s",
+                    a.rate == 0.0 ? " (held)" : ""))
              << "\n";
       } else {
         out_ << XmlComment(a.reason) << "\n";
@@ -86,9 +90,11 @@ class UrdfWriter {
       }
       std::string terms;
       for (const auto& [j, coefficient] : c.terms) {
-        terms += (terms.empty() ? "" : " + ") + Number(coefficient) + " * " + model_.joints[j].name;
+        fmt::format_to(std::back_inserter(terms), "{}{} * {}", terms.empty() ? "" : " + ",
+                       Number(coefficient), model_.joints[j].name);
       }
-      unexpressed_.push_back("coupling not expressed in URDF (" + label + "): " + terms + " = 0");
+      unexpressed_.push_back(
+          fmt::format("coupling not expressed in URDF ({}): {} = 0", label, terms));
     }
   }
 
@@ -99,7 +105,8 @@ class UrdfWriter {
 
   void WriteLink(std::size_t l) {
     const SimLink& link = model_.links[l];
-    out_ << "  " << XmlComment("link " + link.name + ": " + internal::LinkLabel(assembly_, link))
+    out_ << "  "
+         << XmlComment(fmt::format("link {}: {}", link.name, internal::LinkLabel(assembly_, link)))
          << "\n";
     out_ << "  <link name=\"" << XmlEscape(link.name) << "\">\n";
     if (!link.ground) {
@@ -114,10 +121,11 @@ class UrdfWriter {
     }
     for (const SimVisual& v : link.visuals) {
       const std::string name = XmlEscape(assembly_.part(v.part).id);
-      const std::string body = "      <origin xyz=\"" + Numbers(v.p_LP) + "\" rpy=\"" +
-                               Rpy(v.R_LP) + "\"/>\n      <geometry><mesh filename=\"" +
-                               XmlEscape(mesh_dir_ + "/" + model_.meshes[v.mesh].name) +
-                               ".stl\"/></geometry>\n";
+      const std::string body = fmt::format(
+          "      <origin xyz=\"{}\" rpy=\"{}\"/>\n"
+          "      <geometry><mesh filename=\"{}.stl\"/></geometry>\n",
+          Numbers(v.p_LP), Rpy(v.R_LP),
+          XmlEscape(fmt::format("{}/{}", mesh_dir_, model_.meshes[v.mesh].name)));
       out_ << "    <visual name=\"" << name << "\">\n" << body << "    </visual>\n";
       out_ << "    <collision name=\"" << name << "\">\n" << body << "    </collision>\n";
     }
@@ -149,8 +157,8 @@ class UrdfWriter {
         case SimJoint::Kind::kBall:
           // URDF has no ball joint: three hinges about the world axes through the centre.
           for (int i = 0; i < 3; ++i) {
-            steps.push_back({j.name + "_" + "xyz"[i], "continuous", Eigen::Vector3d::Unit(i), &j,
-                             std::nullopt});
+            steps.push_back({fmt::format("{}_{}", j.name, "xyz"[i]), "continuous",
+                             Eigen::Vector3d::Unit(i), &j, std::nullopt});
           }
           break;
         case SimJoint::Kind::kFree:
@@ -166,8 +174,9 @@ class UrdfWriter {
       if (!last) out_ << "  <link name=\"" << XmlEscape(child) << "\"/>\n";
       if (step.joint->kind == SimJoint::Kind::kBall && s % 3 == 0) {
         out_ << "  "
-             << XmlComment("ball joint " + step.joint->name +
-                           ": three hinges about the world axes through its centre")
+             << XmlComment(fmt::format(
+                    "ball joint {}: three hinges about the world axes through its centre",
+                    step.joint->name))
              << "\n";
       }
       const Eigen::Vector3d origin =
@@ -198,10 +207,11 @@ class UrdfWriter {
     if (!stops.empty()) out_ << "    " << XmlComment(stops) << "\n";
     if (!j.lower || !j.upper) {
       out_ << "    "
-           << XmlComment("no contact stops this slide within the assembly's size on the " +
-                         std::string(!j.lower && !j.upper ? "both sides"
-                                     : j.lower            ? "upper side"
-                                                          : "lower side"))
+           << XmlComment(
+                  fmt::format("no contact stops this slide within the assembly's size on the {}",
+                              !j.lower && !j.upper ? "both sides"
+                              : j.lower            ? "upper side"
+                                                   : "lower side"))
            << "\n";
     }
     out_ << "    <limit lower=\"" << Number(lower) << "\" upper=\"" << Number(upper)

@@ -1,7 +1,10 @@
 #include "reasoning/adjustment.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <set>
 
@@ -249,10 +252,10 @@ Assembly ApplyAdjustments(const Assembly& assembly, const AdjustmentSummary& sum
     std::sort(parts.begin(), parts.end());
     parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
     spec.findings.push_back({Severity::kInfo, "adjustment_locked",
-                             "adjustment " + spec.adjustments[k].id +
-                                 " is locked at its solved value: its loose fastening" +
-                                 (out.loosened.size() > 1 ? "s " : " ") + names +
-                                 (out.loosened.size() > 1 ? " are" : " is") + " taken as tightened",
+                             fmt::format("adjustment {} is locked at its solved value: its loose "
+                                         "fastening{} {} {} taken as tightened",
+                                         spec.adjustments[k].id, out.loosened.size() > 1 ? "s" : "",
+                                         names, out.loosened.size() > 1 ? "are" : "is"),
                              parts, features});
   }
   return Assembly(std::move(spec));
@@ -286,8 +289,9 @@ void SuggestAdjustments(const Assembly& assembly, const PairGraph& graph,
     if (!kNearMisses.count(d.code) || d.parts.size() != 2) continue;
     for (std::size_t k = 0; k < carried.size(); ++k) {
       if (carried[k].count(d.parts[0]) != carried[k].count(d.parts[1])) {
-        d.message +=
-            " (adjustment " + assembly.adjustments()[k].id + " can fix this: mechanist adjust)";
+        fmt::format_to(std::back_inserter(d.message),
+                       " (adjustment {} can fix this: mechanist adjust)",
+                       assembly.adjustments()[k].id);
         break;
       }
     }

@@ -1,5 +1,7 @@
 #include "reasoning/drag.h"
 
+#include <fmt/format.h>
+
 #include <stdexcept>
 
 namespace mechanist {
@@ -7,7 +9,8 @@ namespace mechanist {
 DragResult Drag(const Assembly& assembly, const Analysis& analysis, const DragRequest& request) {
   const Part& part = assembly.part(request.part);
   if (part.features.empty()) {
-    throw std::invalid_argument("part " + part.id + " has no feature to take an axis from");
+    throw std::invalid_argument(
+        fmt::format("part {} has no feature to take an axis from", part.id));
   }
   const std::size_t body = analysis.subassembly_of[request.part];
   auto other_body = [&](const Pair& p) {

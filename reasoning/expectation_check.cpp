@@ -1,7 +1,10 @@
 #include "reasoning/expectation_check.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "kernel/support/number_format.h"
 
@@ -19,8 +22,8 @@ ExpectationResult CheckPair(const Assembly& assembly, const Analysis& analysis,
   ExpectationResult r;
   const std::string a = assembly.FeatureName(e.pair[0]);
   const std::string b = assembly.FeatureName(e.pair[1]);
-  r.what = "pair " + a + " + " + b +
-           (e.pair_type ? " is " + std::string(ToString(*e.pair_type)) : std::string(""));
+  r.what = e.pair_type ? fmt::format("pair {} + {} is {}", a, b, ToString(*e.pair_type))
+                       : fmt::format("pair {} + {}", a, b);
   std::vector<std::string> found;
   for (const Pair& p : analysis.pairs) {
     if ((p.a == e.pair[0] && p.b == e.pair[1]) || (p.a == e.pair[1] && p.b == e.pair[0])) {
@@ -33,7 +36,7 @@ ExpectationResult CheckPair(const Assembly& assembly, const Analysis& analysis,
     for (const Diagnostic& d : analysis.diagnostics) {
       if (std::find(d.features.begin(), d.features.end(), a) != d.features.end() &&
           std::find(d.features.begin(), d.features.end(), b) != d.features.end()) {
-        r.detail += "; " + d.code + ": " + d.message;
+        fmt::format_to(std::back_inserter(r.detail), "; {}: {}", d.code, d.message);
       }
     }
   } else {
@@ -46,16 +49,16 @@ ExpectationResult CheckPair(const Assembly& assembly, const Analysis& analysis,
 ExpectationResult CheckSameSubassembly(const Assembly& assembly, const Analysis& analysis,
                                        const Expectation& e) {
   ExpectationResult r;
-  r.what = "same subassembly: " + PartList(assembly, e.parts);
+  r.what = fmt::format("same subassembly: {}", PartList(assembly, e.parts));
   const std::size_t first = analysis.subassembly_of[e.parts.front()];
   r.passed = std::all_of(e.parts.begin(), e.parts.end(),
                          [&](std::size_t p) { return analysis.subassembly_of[p] == first; });
   if (r.passed) {
-    r.detail = "all in subassembly S" + std::to_string(first + 1);
+    r.detail = fmt::format("all in subassembly S{}", first + 1);
   } else {
     for (std::size_t p : e.parts) {
-      r.detail += (r.detail.empty() ? "" : ", ") + assembly.part(p).id + " in S" +
-                  std::to_string(analysis.subassembly_of[p] + 1);
+      fmt::format_to(std::back_inserter(r.detail), "{}{} in S{}", r.detail.empty() ? "" : ", ",
+                     assembly.part(p).id, analysis.subassembly_of[p] + 1);
     }
   }
   return r;
@@ -64,8 +67,9 @@ ExpectationResult CheckSameSubassembly(const Assembly& assembly, const Analysis&
 ExpectationResult CheckDiagnostic(const Assembly& assembly, const Analysis& analysis,
                                   const Expectation& e) {
   ExpectationResult r;
-  r.what = "diagnostic \"" + e.diagnostic + "\"" +
-           (e.parts.empty() ? std::string("") : " about " + PartList(assembly, e.parts));
+  r.what = e.parts.empty() ? fmt::format("diagnostic \"{}\"", e.diagnostic)
+                           : fmt::format("diagnostic \"{}\" about {}", e.diagnostic,
+                                         PartList(assembly, e.parts));
   for (const Diagnostic& d : analysis.diagnostics) {
     const bool text = d.code == e.diagnostic || d.message.find(e.diagnostic) != std::string::npos;
     const bool parts = std::all_of(e.parts.begin(), e.parts.end(), [&](std::size_t p) {
@@ -73,11 +77,11 @@ ExpectationResult CheckDiagnostic(const Assembly& assembly, const Analysis& anal
     });
     if (text && parts) {
       r.passed = true;
-      r.detail = d.code + ": " + d.message;
+      r.detail = fmt::format("{}: {}", d.code, d.message);
       return r;
     }
   }
-  r.detail = "no such diagnostic among " + std::to_string(analysis.diagnostics.size());
+  r.detail = fmt::format("no such diagnostic among {}", analysis.diagnostics.size());
   return r;
 }
 
@@ -85,9 +89,9 @@ ExpectationResult CheckRatio(const Assembly& assembly, const Analysis& analysis,
                              const Expectation& e) {
   ExpectationResult r;
   const std::size_t part = *e.part;
-  r.what = "ratio of " + assembly.part(part).id +
-           (e.feature ? "/" + assembly.feature(*e.feature).id : std::string("")) + " is " +
-           e.ratio.text;
+  r.what = e.feature ? fmt::format("ratio of {}/{} is {}", assembly.part(part).id,
+                                   assembly.feature(*e.feature).id, e.ratio.text)
+                     : fmt::format("ratio of {} is {}", assembly.part(part).id, e.ratio.text);
   const DrivenMotion* motion = analysis.motion.ForExpectations();
   if (!motion) {
     r.detail = "the file has no drivers";
@@ -104,11 +108,11 @@ ExpectationResult CheckRatio(const Assembly& assembly, const Analysis& analysis,
   if (e.ratio.exact) {
     const Rational expected(e.ratio.numerator, e.ratio.denominator);
     r.passed = found.is_exact() && *found.exact() == expected;
-    r.detail = "found " + found.ToString() + (found.is_exact() ? "" : " (not exact)");
+    r.detail = fmt::format("found {}{}", found.ToString(), found.is_exact() ? "" : " (not exact)");
   } else {
     r.passed =
         std::abs(found.value() - e.ratio.value) <= std::max(1e-9 * std::abs(e.ratio.value), 1e-12);
-    r.detail = "found " + FormatNumber(found.value(), 12);
+    r.detail = fmt::format("found {}", FormatNumber(found.value(), 12));
   }
   return r;
 }
@@ -117,7 +121,7 @@ ExpectationResult CheckMoves(const Assembly& assembly, const Analysis& analysis,
                              const Expectation& e) {
   ExpectationResult r;
   const std::size_t part = *e.part;
-  r.what = assembly.part(part).id + (e.flag ? " moves" : " does not move");
+  r.what = fmt::format("{} {}", assembly.part(part).id, e.flag ? "moves" : "does not move");
   std::string moved_by;
   for (const DrivenMotion& m : analysis.motion.driven) {
     // A held driver (rate 0) moves nothing; its entry is what it would drive if released.
@@ -128,24 +132,23 @@ ExpectationResult CheckMoves(const Assembly& assembly, const Analysis& analysis,
     moved_by += (moved_by.empty() ? "" : ", ") + assembly.drivers()[*m.driver].id;
   }
   r.passed = moved_by.empty() != e.flag;
-  r.detail = moved_by.empty() ? "no driver moves it" : "moved by driver " + moved_by;
+  r.detail = moved_by.empty() ? "no driver moves it" : fmt::format("moved by driver {}", moved_by);
   return r;
 }
 
 ExpectationResult CheckMobility(const Analysis& analysis, const Expectation& e) {
   ExpectationResult r;
-  r.what = "mobility " + std::to_string(e.mobility);
+  r.what = fmt::format("mobility {}", e.mobility);
   const Mobility& m = analysis.motion.mobility;
   r.passed = m.dof == e.mobility;
-  r.detail = "found " + std::to_string(m.dof) + " (" + std::to_string(m.redundant) +
-             " redundant constraints)";
+  r.detail = fmt::format("found {} ({} redundant constraints)", m.dof, m.redundant);
   return r;
 }
 
 ExpectationResult CheckAssemblable(const Assembly& assembly, const AssemblyPlan* plan,
                                    const Expectation& e) {
   ExpectationResult r;
-  r.what = std::string("assemblable ") + (e.flag ? "true" : "false");
+  r.what = fmt::format("assemblable {}", e.flag ? "true" : "false");
   if (plan == nullptr) {
     r.detail = "not evaluated: no assembly plan was given";
     return r;
@@ -154,14 +157,15 @@ ExpectationResult CheckAssemblable(const Assembly& assembly, const AssemblyPlan*
   std::size_t blocked = plan->unplaced.size();
   for (const InsertionStep& s : plan->steps) blocked += s.clear ? 0 : 1;
   if (plan->assemblable) {
-    r.detail = "found assemblable (" + std::to_string(plan->steps.size()) + " insertions" +
-               (plan->from_steps ? " from the file's steps" : " found by disassembly") + ")";
+    r.detail = fmt::format("found assemblable ({} insertions {})", plan->steps.size(),
+                           plan->from_steps ? "from the file's steps" : "found by disassembly");
   } else {
-    r.detail = "found not assemblable: " + std::to_string(plan->clashes.size()) + " clashes, " +
-               std::to_string(blocked) + " blocked insertions";
+    r.detail = fmt::format("found not assemblable: {} clashes, {} blocked insertions",
+                           plan->clashes.size(), blocked);
     if (!plan->clashes.empty()) {
-      r.detail += " (first clash: " + assembly.part(plan->clashes.front().part_a).id + " and " +
-                  assembly.part(plan->clashes.front().part_b).id + ")";
+      fmt::format_to(std::back_inserter(r.detail), " (first clash: {} and {})",
+                     assembly.part(plan->clashes.front().part_a).id,
+                     assembly.part(plan->clashes.front().part_b).id);
     }
   }
   return r;

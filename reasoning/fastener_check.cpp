@@ -1,7 +1,10 @@
 #include "reasoning/fastener_check.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 
 #include "kernel/geometry/line_geometry.h"
@@ -11,7 +14,7 @@
 namespace mechanist {
 namespace {
 
-std::string Mm(double x) { return FormatNumber(x) + " mm"; }
+std::string Mm(double x) { return fmt::format("{} mm", FormatNumber(x)); }
 
 bool IsThreadPair(const Pair& p) {
   return p.source == PairSource::kRecognised &&
@@ -33,9 +36,10 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
     out.push_back(
         {Severity::kWarning,
          "bolt_too_short",
-         "thread " + assembly.FeatureName(thread) + " " + how + " tapped hole " +
-             assembly.FeatureName(nut) + " (" + Mm(assembly.feature(nut).length) +
-             " long): it is " + Mm(shortfall) + " too short for the parts it passes and its nut",
+         fmt::format("thread {} {} tapped hole {} ({} long): it is {} too short for the parts it "
+                     "passes and its nut",
+                     assembly.FeatureName(thread), how, assembly.FeatureName(nut),
+                     Mm(assembly.feature(nut).length), Mm(shortfall)),
          {std::string(assembly.PartId(thread.part)), std::string(assembly.PartId(nut.part))},
          {assembly.FeatureName(thread), assembly.FeatureName(nut)}});
   };
@@ -66,7 +70,7 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
       engaged = true;
       const double overlap = AxialOverlap(world(pair.a), world(nut));
       if (overlap < h.length - L) {
-        too_short(pair.a, nut, h.length - overlap, "engages " + Mm(overlap) + " of");
+        too_short(pair.a, nut, h.length - overlap, fmt::format("engages {} of", Mm(overlap)));
       }
     }
     if (engaged) continue;
@@ -93,8 +97,8 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
     if (!reported && nut_like) {
       out.push_back({Severity::kWarning,
                      "nut_without_bolt",
-                     "nut " + part.id + " has no thread in its tapped hole " +
-                         assembly.FeatureName(nut) + ": nothing holds it",
+                     fmt::format("nut {} has no thread in its tapped hole {}: nothing holds it",
+                                 part.id, assembly.FeatureName(nut)),
                      {part.id},
                      {assembly.FeatureName(nut)}});
     }
@@ -107,15 +111,16 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
     for (std::size_t part : {pair.a.part, pair.b.part}) {
       if (firm[part]) continue;
       std::string& list = loose[part];
-      list += (list.empty() ? "" : ", ") + assembly.FeatureName(pair.a) + " in " +
-              assembly.FeatureName(pair.b);
+      fmt::format_to(std::back_inserter(list), "{}{} in {}", list.empty() ? "" : ", ",
+                     assembly.FeatureName(pair.a), assembly.FeatureName(pair.b));
     }
   }
   for (const auto& [p, list] : loose) {
     out.push_back({Severity::kWarning,
                    "loose_fastening_only",
-                   "part " + assembly.part(p).id + " is held only by loose threads (" + list +
-                       "): it can turn and travel on them",
+                   fmt::format("part {} is held only by loose threads ({}): it can turn and travel "
+                               "on them",
+                               assembly.part(p).id, list),
                    {assembly.part(p).id},
                    {}});
   }

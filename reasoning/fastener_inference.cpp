@@ -1,5 +1,7 @@
 #include "reasoning/fastener_inference.h"
 
+#include <fmt/format.h>
+
 #include <array>
 #include <cmath>
 #include <map>
@@ -69,15 +71,16 @@ std::vector<Diagnostic> InferNutsOnBolts(
         shaft.kind = FeatureKind::kThread;
         shaft.fastening = Fastening::kTight;
         shaft.pitch = pitch;
-        found.push_back({Severity::kInfo,
-                         "nut_on_bolt",
-                         "part '" + nut.id + "' (a " + std::to_string(shape.polygon_sides) +
-                             "-sided prism with a bore) sits on '" + bolt.id + "/" + shaft.id +
-                             "' (" + FormatNumber(shaft.diameter) +
-                             " mm): taken as a nut on a bolt, a tight thread of pitch " +
-                             FormatNumber(pitch) + " mm (heuristic)",
-                         {nut.id, bolt.id},
-                         {nut.id + "/" + hole.id, bolt.id + "/" + shaft.id}});
+        found.push_back(
+            {Severity::kInfo,
+             "nut_on_bolt",
+             fmt::format("part '{}' (a {}-sided prism with a bore) sits on '{}/{}' ({} "
+                         "mm): taken as a nut on a bolt, a tight thread of pitch {} mm "
+                         "(heuristic)",
+                         nut.id, shape.polygon_sides, bolt.id, shaft.id,
+                         FormatNumber(shaft.diameter), FormatNumber(pitch)),
+             {nut.id, bolt.id},
+             {fmt::format("{}/{}", nut.id, hole.id), fmt::format("{}/{}", bolt.id, shaft.id)}});
         break;
       }
       if (hole.kind == FeatureKind::kTappedHole) break;

@@ -1,5 +1,7 @@
 #include "reasoning/feature_completion.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <iterator>
 #include <map>
@@ -20,7 +22,8 @@ TessellationGears FindTessellationGears(const TriangleMesh& mesh) {
   TessellationGears gears;
   for (RecognizedFeature& r : RecognizeFeatures(mesh).features) {
     if (r.feature.kind != FeatureKind::kGear && r.feature.kind != FeatureKind::kRack) continue;
-    gears.notes.push_back(r.feature.id + ": " + r.detail + " (found on the solid's tessellation)");
+    gears.notes.push_back(
+        fmt::format("{}: {} (found on the solid's tessellation)", r.feature.id, r.detail));
     gears.features.push_back(std::move(r.feature));
   }
   return gears;
@@ -33,7 +36,9 @@ std::string FewNames(const std::vector<std::string>& names) {
   for (std::size_t i = 0; i < names.size() && i < kShown; ++i) {
     text += (i ? ", " : "") + names[i];
   }
-  if (names.size() > kShown) text += " and " + std::to_string(names.size() - kShown) + " more";
+  if (names.size() > kShown) {
+    fmt::format_to(std::back_inserter(text), " and {} more", names.size() - kShown);
+  }
   return text;
 }
 
@@ -69,8 +74,8 @@ std::vector<Diagnostic> CompleteFeatures(std::vector<Part>* parts,
       }
       std::vector<std::string> notes = cached->second.notes;
       if (!solid->prefix.empty()) {
-        const std::string label = solid->prefix.substr(0, solid->prefix.size() - 1) + ": ";
-        for (std::string& note : notes) note = label + note;
+        const std::string label = solid->prefix.substr(0, solid->prefix.size() - 1);
+        for (std::string& note : notes) note = fmt::format("{}: {}", label, note);
       }
       found_gears = found_gears || !features.empty();
       part.features.insert(part.features.begin() + solid->features_end,
@@ -91,22 +96,23 @@ std::vector<Diagnostic> CompleteFeatures(std::vector<Part>* parts,
   if (!recognised.empty()) {
     done.push_back({Severity::kInfo,
                     "features_recognised",
-                    "the file writes no features for " + std::to_string(recognised.size()) +
-                        (recognised.size() == 1 ? " part" : " parts") +
-                        ", so they were recognised from the mesh: " + FewNames(recognised),
+                    fmt::format("the file writes no features for {} {}, so they were recognised "
+                                "from the mesh: {}",
+                                recognised.size(), recognised.size() == 1 ? "part" : "parts",
+                                FewNames(recognised)),
                     recognised,
                     {}});
   }
   if (!with_gears.empty()) {
-    done.push_back({Severity::kInfo,
-                    "tessellation_gears",
-                    "gears or racks of " + std::to_string(with_gears.size()) +
-                        (with_gears.size() == 1 ? " STEP solid" : " STEP solids") +
-                        " were found on the tessellation of their free-form faces (the part's "
-                        "notes say which): " +
-                        FewNames(with_gears),
-                    with_gears,
-                    {}});
+    done.push_back(
+        {Severity::kInfo,
+         "tessellation_gears",
+         fmt::format("gears or racks of {} {} were found on the tessellation of "
+                     "their free-form faces (the part's notes say which): {}",
+                     with_gears.size(), with_gears.size() == 1 ? "STEP solid" : "STEP solids",
+                     FewNames(with_gears)),
+         with_gears,
+         {}});
   }
   return done;
 }

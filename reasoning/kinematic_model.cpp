@@ -1,5 +1,7 @@
 #include "reasoning/kinematic_model.h"
 
+#include <fmt/format.h>
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
@@ -69,9 +71,8 @@ KinematicModel::KinematicModel(const Assembly& assembly, const std::vector<Pair>
       for (const Feature& f : part.features) axes_.push_back(f.WorldAxis(part.X_WP));
     }
   } else if (axes_.size() != assembly.feature_count()) {
-    throw std::invalid_argument("KinematicModel: " + std::to_string(axes_.size()) +
-                                " world axes for " + std::to_string(assembly.feature_count()) +
-                                " features");
+    throw std::invalid_argument(fmt::format("KinematicModel: {} world axes for {} features",
+                                            axes_.size(), assembly.feature_count()));
   }
   BuildJoints(pairs);
   std::vector<std::pair<std::size_t, std::size_t>> joints_by_body;  // (body, joint)
@@ -499,8 +500,9 @@ void KinematicModel::BuildRows(const std::vector<Pair>& pairs) {
       diagnostics_.push_back(
           {Severity::kWarning,
            "coupling_without_carrier",
-           "worm gear " + assembly_.FeatureName(p.a) + " + " + assembly_.FeatureName(p.b) +
-               ": no part carries both axes, so the motion analysis leaves this coupling out",
+           fmt::format("worm gear {} + {}: no part carries both axes, so the motion analysis "
+                       "leaves this coupling out",
+                       assembly_.FeatureName(p.a), assembly_.FeatureName(p.b)),
            {std::string(assembly_.PartId(p.a.part)), std::string(assembly_.PartId(p.b.part))},
            {assembly_.FeatureName(p.a), assembly_.FeatureName(p.b)}});
       continue;

@@ -1,5 +1,7 @@
 #include "reasoning/motion.h"
 
+#include <fmt/format.h>
+
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
@@ -99,15 +101,16 @@ class MotionModel {
       LinearSystem unlocked = structural_;
       for (std::size_t w : locked_worms) unlocked.AddRow(WormLock(w));
       if (free.AddRow(row, Rational(1)) == LinearSystem::Outcome::kInconsistent) {
-        motion.reason = labels[i] + " cannot move: the pairs lock its motion";
+        motion.reason = fmt::format("{} cannot move: the pairs lock its motion", labels[i]);
       } else if (unlocked.AddRow(row, Rational(1)) == LinearSystem::Outcome::kInconsistent) {
-        motion.reason = labels[i] + " cannot move: it would drive worm gear " +
-                        WormName(locked_worms.front()) +
-                        " from its wheel, and that worm gear is not back-drivable";
+        motion.reason = fmt::format(
+            "{} cannot move: it would drive worm gear {} from its wheel, and that worm gear is "
+            "not back-drivable",
+            labels[i], WormName(locked_worms.front()));
       } else {
         motion.contradiction = true;
-        motion.reason = labels[i] + " contradicts " + (i == 1 ? labels[0] : "the other drivers") +
-                        ": they drive the same freedom";
+        motion.reason = fmt::format("{} contradicts {}: they drive the same freedom", labels[i],
+                                    i == 1 ? labels[0] : "the other drivers");
       }
     }
     x = motion.possible ? s.Solve() : std::vector<ExactReal>(model_.freedoms().size());
@@ -121,7 +124,7 @@ class MotionModel {
   /// "a/f + b/g" for a worm gear pair.
   std::string WormName(std::size_t pair) const {
     const Pair& p = worms_.at(pair);
-    return assembly_.FeatureName(p.a) + " + " + assembly_.FeatureName(p.b);
+    return fmt::format("{} + {}", assembly_.FeatureName(p.a), assembly_.FeatureName(p.b));
   }
 
   /// Whether a part of `body` is in a pair (with a part of another body or of its own).
@@ -332,17 +335,17 @@ std::string FreedomWords(const Assembly& assembly, const std::vector<Pair>& pair
   if (!j.pair) {
     Eigen::Index i;
     f.direction_W.cwiseAbs().maxCoeff(&i);
-    axis = std::string("the world ") + kAxes[i] + " axis";
+    axis = fmt::format("the world {} axis", kAxes[i]);
   } else {
-    axis = assembly.FeatureName(pairs[*j.pair].a) + "'s axis";
+    axis = fmt::format("{}'s axis", assembly.FeatureName(pairs[*j.pair].a));
   }
   switch (f.kind) {
     case Freedom::Kind::kRotation:
-      return "turns about " + axis;
+      return fmt::format("turns about {}", axis);
     case Freedom::Kind::kTranslation:
-      return "slides along " + axis;
+      return fmt::format("slides along {}", axis);
     case Freedom::Kind::kScrew:
-      return "screws along " + axis;
+      return fmt::format("screws along {}", axis);
   }
   return "";
 }
@@ -424,30 +427,23 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
       for (std::string& f : pair_features(pair)) faces.features.push_back(std::move(f));
       continue;
     }
-    // The features' names once, for the message and the list, and the message appended into
-    // one buffer (an over-constrained grid of 100,000 parts names 20,000 pairs).
+    // The features' names once, for the message and the list (an over-constrained grid of
+    // 100,000 parts names 20,000 pairs).
     std::vector<std::string> features = pair_features(pair);
-    constexpr std::string_view kImplied =
-        " implied by the other pairs (over-constrained: it must be made accurately)";
-    const std::string_view type = ToString(pairs[pair].type);
-    const std::string number = std::to_string(count);
-    std::string message;
-    message.reserve(type.size() + features[0].size() + features[1].size() + number.size() +
-                    kImplied.size() + 40);
-    message.append(type).append(" pair ").append(features[0]).append(" + ").append(features[1]);
-    message.append(": ").append(number);
-    message.append(count == 1 ? " of its constraints is" : " of its constraints are");
-    message.append(kImplied);
+    std::string message = fmt::format(
+        "{} pair {} + {}: {} of its constraints {} implied by the other pairs (over-constrained: "
+        "it must be made accurately)",
+        ToString(pairs[pair].type), features[0], features[1], count, count == 1 ? "is" : "are");
     result.diagnostics.push_back({Severity::kInfo, "redundant_constraints", std::move(message),
                                   pair_parts(pair), std::move(features)});
   }
   for (auto& [ranks, faces] : faces_of_parts) {
     const std::size_t contacts = faces.features.size() / 2;
-    std::string message =
-        "face contact" + std::string(contacts > 1 ? "s" : "") + " of " + faces.parts[0] + " and " +
-        faces.parts[1] + " (" + std::to_string(contacts) + "): " + std::to_string(faces.count) +
-        (faces.count == 1 ? " of their constraints is" : " of their constraints are") +
-        " implied by the other pairs (over-constrained: they must be made accurately)";
+    std::string message = fmt::format(
+        "face contact{} of {} and {} ({}): {} of their constraints {} implied by the other pairs "
+        "(over-constrained: they must be made accurately)",
+        contacts > 1 ? "s" : "", faces.parts[0], faces.parts[1], contacts, faces.count,
+        faces.count == 1 ? "is" : "are");
     result.diagnostics.push_back({Severity::kInfo, "redundant_constraints", std::move(message),
                                   std::move(faces.parts), std::move(faces.features)});
   }
@@ -519,16 +515,16 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     const std::size_t pair = *model.joints()[i].pair;
     result.diagnostics.push_back(
         {Severity::kWarning, "jam",
-         std::string(ToString(pairs[pair].type)) + " pair " + assembly.FeatureName(pairs[pair].a) +
-             " + " + assembly.FeatureName(pairs[pair].b) + " cannot move as it allows (" +
-             locked[i] + "): the other pairs lock it",
+         fmt::format("{} pair {} + {} cannot move as it allows ({}): the other pairs lock it",
+                     ToString(pairs[pair].type), assembly.FeatureName(pairs[pair].a),
+                     assembly.FeatureName(pairs[pair].b), locked[i]),
          pair_parts(pair), pair_features(pair)});
   }
 
   // Drivers: each alone at unit rate, then all at their rates.
   const std::vector<ImposedMotion> imposed = DriverMotions(assembly);
   std::vector<std::string> labels;
-  for (const Driver& d : assembly.drivers()) labels.push_back("driver " + d.id);
+  for (const Driver& d : assembly.drivers()) labels.push_back(fmt::format("driver {}", d.id));
   // The system with the drivers' rows, for the free motions (the structural one when there is
   // no driver; filled by the solve below otherwise, not copied first).
   LinearSystem driven_system(0, kTolerance);
@@ -599,9 +595,12 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     }
     std::sort(free.parts.begin(), free.parts.end(), by_id);
     if (motion_model.HasPair(child)) {
-      std::string message = std::string(assembly.PartId(free.part)) + " " + free.freedom;
-      if (free.pair) message += " (" + std::string(ToString(pairs[*free.pair].type)) + " pair)";
-      message += ": nothing drives or holds this motion";
+      const std::string message =
+          free.pair ? fmt::format("{} {} ({} pair): nothing drives or holds this motion",
+                                  assembly.PartId(free.part), free.freedom,
+                                  ToString(pairs[*free.pair].type))
+                    : fmt::format("{} {}: nothing drives or holds this motion",
+                                  assembly.PartId(free.part), free.freedom);
       result.diagnostics.push_back(
           {Severity::kWarning, "free_motion", message, part_ids(free.parts),
            free.pair ? pair_features(*free.pair) : std::vector<std::string>{}});

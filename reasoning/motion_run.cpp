@@ -1,5 +1,7 @@
 #include "reasoning/motion_run.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -17,7 +19,7 @@ MotionRun PlanRun(const Assembly& assembly, const Analysis& analysis,
   if (!driver && drivers.size() == 1) driver = 0;  // one driver: its own units
   run.driver = driver;
   if (driver && *driver >= drivers.size()) {
-    throw std::invalid_argument("PlanRun: no driver " + std::to_string(*driver));
+    throw std::invalid_argument(fmt::format("PlanRun: no driver {}", *driver));
   }
   if (amount && !(*amount >= 0.0 && std::isfinite(*amount))) {
     throw std::invalid_argument("PlanRun: the amount must be finite and >= 0");
@@ -45,7 +47,7 @@ MotionRun PlanRun(const Assembly& assembly, const Analysis& analysis,
   }
   if (driver && drivers[*driver].rate == 0.0) {
     run.possible = false;
-    run.reason = "driver " + drivers[*driver].id + " is held (rate 0): nothing runs";
+    run.reason = fmt::format("driver {} is held (rate 0): nothing runs", drivers[*driver].id);
     return run;
   }
   // driven: one entry per driver, then, with several, all together.
@@ -82,7 +84,7 @@ double FrameParameter(const MotionRun& run, std::size_t k, std::size_t n) {
 
 std::string DescribeParameter(const Assembly& assembly, const MotionRun& run, double s) {
   char text[64];
-  if (!run.possible) return "still: " + run.reason;
+  if (!run.possible) return fmt::format("still: {}", run.reason);
   if (!run.driver) {
     std::snprintf(text, sizeof text, "t = %.3f", s);
     return text;
@@ -90,12 +92,11 @@ std::string DescribeParameter(const Assembly& assembly, const MotionRun& run, do
   const Driver& d = assembly.drivers()[*run.driver];
   const std::string& part = assembly.part(d.feature.part).id;
   if (d.motion == Driver::Motion::kRotation) {
-    std::snprintf(text, sizeof text, " %.1f deg", 360.0 * s);
-  } else {
-    std::snprintf(text, sizeof text, " %.2f ", s);
-    return part + text + assembly.units().length;
+    std::snprintf(text, sizeof text, "%.1f", 360.0 * s);
+    return fmt::format("{} {} deg", part, text);
   }
-  return part + text;
+  std::snprintf(text, sizeof text, "%.2f", s);
+  return fmt::format("{} {} {}", part, text, assembly.units().length);
 }
 
 }  // namespace mechanist

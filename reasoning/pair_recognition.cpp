@@ -1,5 +1,7 @@
 #include "reasoning/pair_recognition.h"
 
+#include <fmt/format.h>
+
 #include "kernel/collision/grid_broad_phase.h"
 #include "reasoning/internal/recognizer.h"
 
@@ -197,8 +199,8 @@ void Recognizer::Near(const char* code, const WorldFeature& a, const WorldFeatur
   diagnostics_.push_back(
       {Severity::kWarning,
        code,
-       std::string(ToString(a.f.kind)) + " " + Name(a) + " and " + std::string(ToString(b.f.kind)) +
-           " " + Name(b) + ": " + message,
+       fmt::format("{} {} and {} {}: {}", ToString(a.f.kind), Name(a), ToString(b.f.kind), Name(b),
+                   message),
        {std::string(assembly_.PartId(a.ref.part)), std::string(assembly_.PartId(b.ref.part))},
        {Name(a), Name(b)}});
 }
@@ -240,8 +242,8 @@ Recognition Recognize(const Assembly& assembly, std::span<const RigidTransform> 
 
 Recognition RecognizePairs(const Assembly& assembly, const AssemblyState& state) {
   if (state.X_WP.size() != assembly.parts().size()) {
-    throw std::invalid_argument("RecognizePairs: " + std::to_string(state.X_WP.size()) +
-                                " poses for " + std::to_string(assembly.parts().size()) + " parts");
+    throw std::invalid_argument(fmt::format("RecognizePairs: {} poses for {} parts",
+                                            state.X_WP.size(), assembly.parts().size()));
   }
   return Recognize(assembly, state.X_WP);
 }

@@ -1,5 +1,7 @@
 #include "reasoning/placement.h"
 
+#include <fmt/format.h>
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -82,8 +84,8 @@ MeshGoal MeshTarget(const Part& part, const PlacementCondition& c, const Target&
                   (is(own, FeatureKind::kRack) && is(tf, FeatureKind::kGear)) ||
                   (is(own, FeatureKind::kGear) && is(tf, FeatureKind::kRack));
   if (!ok) {
-    throw std::invalid_argument("cannot mesh a " + std::string(ToString(own.kind)) + " with a " +
-                                std::string(ToString(tf.kind)));
+    throw std::invalid_argument(
+        fmt::format("cannot mesh a {} with a {}", ToString(own.kind), ToString(tf.kind)));
   }
   const double a = CentreDistance(own, tf);
   MeshGoal g;
@@ -197,9 +199,9 @@ RigidTransform Solve(const AssemblySpec& spec, std::size_t index) {
   const LeastSquaresSummary summary = SolveLeastSquares(problem, &x);
   const double residual = std::sqrt(2.0 * summary.final_cost);
   if (summary.status == LeastSquaresSummary::Status::kFailure || residual > spec.tolerance.length) {
-    throw PlacementError(index, "the placement conditions of part \"" + part.id +
-                                    "\" cannot all hold: " + FormatNumber(residual, 4) +
-                                    " mm left after least squares (" + summary.message + ")");
+    throw PlacementError(index, fmt::format("the placement conditions of part \"{}\" cannot all "
+                                            "hold: {} mm left after least squares ({})",
+                                            part.id, FormatNumber(residual, 4), summary.message));
   }
   return pose(x.data());
 }
@@ -219,7 +221,7 @@ void ResolvePlacements(AssemblySpec* spec) {
     } catch (const PlacementError&) {
       throw;
     } catch (const std::invalid_argument& e) {
-      throw PlacementError(i, "part \"" + part.id + "\" cannot be placed: " + e.what());
+      throw PlacementError(i, fmt::format("part \"{}\" cannot be placed: {}", part.id, e.what()));
     }
   };
   for (std::size_t i = 0; i < spec->parts.size(); ++i) place(i);

@@ -1,5 +1,7 @@
 #include "reasoning/rational.h"
 
+#include <fmt/format.h>
+
 #include <cassert>
 #include <numeric>
 #include <stdexcept>
@@ -52,7 +54,7 @@ Rational Rational::FromReduced(std::int64_t numerator, std::int64_t denominator)
 
 std::string Rational::ToString() const {
   return denominator_ == 1 ? std::to_string(numerator_)
-                           : std::to_string(numerator_) + "/" + std::to_string(denominator_);
+                           : fmt::format("{}/{}", numerator_, denominator_);
 }
 
 Rational Rational::operator-() const { return Rational(-numerator_, denominator_); }

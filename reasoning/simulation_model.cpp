@@ -1,5 +1,8 @@
 #include "reasoning/simulation_model.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>  // fmt::join
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -90,8 +93,8 @@ class Builder {
 
   std::string PairName(std::size_t pair) const {
     const Pair& p = analysis_.pairs[pair];
-    return std::string(ToString(p.type)) + " pair " + assembly_.FeatureName(p.a) + " + " +
-           assembly_.FeatureName(p.b);
+    return fmt::format("{} pair {} + {}", ToString(p.type), assembly_.FeatureName(p.a),
+                       assembly_.FeatureName(p.b));
   }
 
   void AddLinks() {
@@ -121,8 +124,9 @@ class Builder {
     }
     for (std::size_t p = 0; p < assembly_.parts().size(); ++p) {
       if (assembly_.IsCompliant(p) && !link_of_body_[km_.body_of_part(p)]) {
-        model_.notes.push_back("part " + assembly_.part(p).id +
-                               " is compliant (a spring, belt or hose): left out of the model");
+        model_.notes.push_back(
+            fmt::format("part {} is compliant (a spring, belt or hose): left out of the model",
+                        assembly_.part(p).id));
       }
     }
   }
@@ -195,7 +199,7 @@ class Builder {
     }
     if (stem.empty() || stem[0] == '.') stem = "_" + stem;
     std::string unique = stem;
-    for (int k = 2; !stems_.insert(unique).second; ++k) unique = stem + "_" + std::to_string(k);
+    for (int k = 2; !stems_.insert(unique).second; ++k) unique = fmt::format("{}_{}", stem, k);
     return unique;
   }
 
@@ -265,21 +269,21 @@ class Builder {
       }
     }
     if (!sketches.empty()) {
-      model_.notes.push_back(Listed("features-only part", sketches) +
-                             " no geometry and no mass: a link with no other part gets the "
-                             "default inertia (1 g, 1e-7 kg m^2)");
+      model_.notes.push_back(
+          fmt::format("{} no geometry and no mass: a link with no other part gets the default "
+                      "inertia (1 g, 1e-7 kg m^2)",
+                      Listed("features-only part", sketches)));
     }
     if (!open.empty()) {
-      model_.notes.push_back("warning: " + Listed("part", open) +
-                             " a mesh that is not closed: left out of its link's mass and "
-                             "inertia");
+      model_.notes.push_back(fmt::format(
+          "warning: {} a mesh that is not closed: left out of its link's mass and inertia",
+          Listed("part", open)));
     }
   }
 
   static std::string Listed(const std::string& what, const std::vector<std::string>& ids) {
-    std::string text = what + (ids.size() > 1 ? "s " : " ");
-    for (std::size_t k = 0; k < ids.size(); ++k) text += (k ? ", " : "") + ids[k];
-    return text + (ids.size() > 1 ? " have" : " has");
+    return fmt::format("{}{} {} {}", what, ids.size() > 1 ? "s" : "", fmt::join(ids, ", "),
+                       ids.size() > 1 ? "have" : "has");
   }
 
   void AddCouplings() {
@@ -309,8 +313,8 @@ class Builder {
         }
       }
       if (!expressible) {
-        model_.notes.push_back(PairName(pair) +
-                               ": a coupling through a ball or floating joint, left out");
+        model_.notes.push_back(fmt::format(
+            "{}: a coupling through a ball or floating joint, left out", PairName(pair)));
         continue;
       }
       if (!c.terms.empty()) model_.couplings.push_back(std::move(c));
@@ -360,11 +364,11 @@ class Builder {
         a.rate = (dot > 0 ? 1.0 : -1.0) * driver.rate * (rotation ? kTwoPi : kMetresPerMm);
       }
       if (!a.joint) {
-        a.reason = "driver " + driver.id + ": no joint of the tree " +
-                   (rotation ? "turns " : "slides ") + assembly_.part(driver.feature.part).id +
-                   " about its axis relative to " +
-                   (driver.relative_to ? assembly_.part(*driver.relative_to).id : "the ground");
-        model_.notes.push_back(a.reason + "; no actuator");
+        a.reason = fmt::format(
+            "driver {}: no joint of the tree {} {} about its axis relative to {}", driver.id,
+            rotation ? "turns" : "slides", assembly_.part(driver.feature.part).id,
+            driver.relative_to ? assembly_.part(*driver.relative_to).id : "the ground");
+        model_.notes.push_back(fmt::format("{}; no actuator", a.reason));
       }
       model_.actuators.push_back(std::move(a));
     }

@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake
-  libeigen3-dev libboost-graph-dev nlohmann-json3-dev libcli11-dev
+  libeigen3-dev libboost-graph-dev nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libcgal-dev libgmp-dev libmpfr-dev
   libfcl-dev libceres-dev

@@ -1,5 +1,7 @@
 #include "viz/animation_output.h"
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -55,7 +57,9 @@ AnimationOutcome WriteAnimation(const Assembly& assembly, const Analysis& analys
   const fs::path& out = request.out;
   std::error_code error;
   fs::create_directories(out, error);
-  if (error) throw InputError(out.string(), "", 0, 0, "cannot create: " + error.message());
+  if (error) {
+    throw InputError(out.string(), "", 0, 0, fmt::format("cannot create: {}", error.message()));
+  }
   if (formats.count("glb")) {
     WriteFileAtomically(out / "motion.glb",
                         GlbAnimation(assembly, analysis, animation, request.fps, gaps),

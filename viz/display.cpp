@@ -1,6 +1,7 @@
 #include "viz/display.h"
 
 #include <X11/Xlib.h>
+#include <fmt/format.h>
 
 #include <cstdlib>
 
@@ -20,9 +21,10 @@ bool DisplayAvailable(std::string* reason) {
   Display* display = XOpenDisplay(name);
   if (display == nullptr) {
     if (reason) {
-      *reason = std::string("no display: cannot open DISPLAY=") + name +
-                "; run under xvfb-run -a -s \"-screen 0 1920x1080x24\" (Debian package xvfb), "
-                "or write only --format pvd,glb";
+      *reason = fmt::format(
+          "no display: cannot open DISPLAY={}; run under xvfb-run -a -s \"-screen 0 "
+          "1920x1080x24\" (Debian package xvfb), or write only --format pvd,glb",
+          name);
     }
     return false;
   }

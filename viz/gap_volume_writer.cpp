@@ -1,5 +1,6 @@
 #include "viz/gap_volume_writer.h"
 
+#include <fmt/format.h>
 #include <vtkCellData.h>
 #include <vtkImageData.h>
 #include <vtkIntArray.h>
@@ -63,8 +64,9 @@ void WriteGapVolume(const std::filesystem::path& path, const GapSearch& search,
   const std::int64_t voxels = std::int64_t{n[0]} * n[1] * n[2];
   if (voxels > kMaxVolumeVoxels) {
     throw InputError(path.string(), "", 0, 0,
-                     "the volume would have " + std::to_string(voxels) + " voxels, more than " +
-                         std::to_string(kMaxVolumeVoxels) + "; choose a coarser --voxel");
+                     fmt::format("the volume would have {} voxels, more than {}; choose a coarser "
+                                 "--voxel",
+                                 voxels, kMaxVolumeVoxels));
   }
   vtkNew<vtkImageData> image;
   image->SetDimensions(n[0] + 1, n[1] + 1, n[2] + 1);  // points: one more than cells

@@ -1,5 +1,7 @@
 #include "viz/gltf_writer.h"
 
+#include <fmt/format.h>
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <bit>
@@ -203,8 +205,8 @@ std::string GlbAnimation(const Assembly& assembly, const Analysis& analysis,
     };
     if (!part.HasGeometry() && !part.features.empty()) {
       // A features-only part is drawn by its feature lines.
-      node["mesh"] =
-          b.AddLines(FeatureLines(part, true), material_of()->second, part.id + " features");
+      node["mesh"] = b.AddLines(FeatureLines(part, true), material_of()->second,
+                                fmt::format("{} features", part.id));
     } else if (part.HasGeometry()) {
       const auto material = material_of();
       auto mesh = mesh_of.find({part.mesh.get(), material->second});

@@ -1,6 +1,7 @@
 // The only translation unit of the renderer that includes VTK.
 #include "viz/motion_renderer.h"
 
+#include <fmt/format.h>
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
@@ -219,7 +220,7 @@ MotionRenderer::~MotionRenderer() = default;
 Image MotionRenderer::Render(std::size_t frame) {
   Impl& r = *impl_;
   if (frame >= r.animation->frame_count()) {
-    throw std::out_of_range("MotionRenderer::Render: no frame " + std::to_string(frame));
+    throw std::out_of_range(fmt::format("MotionRenderer::Render: no frame {}", frame));
   }
   const AssemblyState& state = r.animation->states[frame];
   for (std::size_t p = 0; p < r.parts.size(); ++p) {
@@ -230,8 +231,9 @@ Image MotionRenderer::Render(std::size_t frame) {
     }
     if (r.axes[p]) SetPose(r.axes[p], state.X_WP[p]);
   }
-  const std::string title =
-      r.title.empty() ? r.animation->labels[frame] : r.title + " | " + r.animation->labels[frame];
+  const std::string title = r.title.empty()
+                                ? r.animation->labels[frame]
+                                : fmt::format("{} | {}", r.title, r.animation->labels[frame]);
   r.text->SetInput(title.c_str());
   r.window->Render();
   r.grab->Modified();

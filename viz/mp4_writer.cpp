@@ -1,3 +1,4 @@
+#include <fmt/format.h>
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -36,12 +37,11 @@ class Mp4Writer final : public VideoWriter {
     if (!pipe_) {
       width_ = frame.width;
       height_ = frame.height;
-      const std::string command =
-          "ffmpeg -loglevel error -y -f rawvideo -pix_fmt rgb24 -s " + std::to_string(width_) +
-          "x" + std::to_string(height_) + " -framerate " + std::to_string(fps_) +
-          " -i - -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -pix_fmt yuv420p "
-          "-movflags +faststart -f mp4 " +
-          Quoted(output_.temporary().string());
+      const std::string command = fmt::format(
+          "ffmpeg -loglevel error -y -f rawvideo -pix_fmt rgb24 -s {}x{} -framerate {} -i - -vf "
+          "'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -pix_fmt yuv420p -movflags +faststart -f "
+          "mp4 {}",
+          width_, height_, std::to_string(fps_), Quoted(output_.temporary().string()));
       pipe_ = ::popen(command.c_str(), "w");
       if (!pipe_) throw InputError(output_.path().string(), "", 0, 0, "cannot start ffmpeg");
     }
@@ -59,8 +59,8 @@ class Mp4Writer final : public VideoWriter {
     pipe_ = nullptr;
     if (status != 0) {
       throw InputError(output_.path().string(), "", 0, 0,
-                       "ffmpeg failed (exit status " +
-                           std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : status) + ")");
+                       fmt::format("ffmpeg failed (exit status {})",
+                                   WIFEXITED(status) ? WEXITSTATUS(status) : status));
     }
     output_.Commit();
   }

@@ -1,5 +1,7 @@
 #include "viz/viewer_page.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -51,8 +53,8 @@ std::string Base64(const void* data, std::size_t size) {
 std::string ReadFile(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    throw std::runtime_error("three.js not found at " + path.string() +
-                             " (Debian package libjs-three)");
+    throw std::runtime_error(
+        fmt::format("three.js not found at {} (Debian package libjs-three)", path.string()));
   }
   std::stringstream s;
   s << in.rdbuf();
@@ -369,7 +371,9 @@ std::string ViewerHtml(const Assembly& assembly, const Analysis& analysis,
   std::string html = kViewerTemplate;
   auto put = [&](const std::string& marker, const std::string& text) {
     const std::size_t at = html.find(marker);
-    if (at == std::string::npos) throw std::logic_error("viewer template lacks " + marker);
+    if (at == std::string::npos) {
+      throw std::logic_error(fmt::format("viewer template lacks {}", marker));
+    }
     html.replace(at, marker.size(), text);
   };
   put("@TITLE@", HtmlEscape(title));

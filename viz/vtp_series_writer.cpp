@@ -1,5 +1,6 @@
 #include "viz/vtp_series_writer.h"
 
+#include <fmt/format.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkFloatArray.h>
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -134,7 +136,8 @@ void WriteVtpSeries(const std::filesystem::path& pvd, const Assembly& assembly,
   std::error_code error;
   std::filesystem::create_directories(folder, error);
   if (error) {
-    throw InputError(folder.string(), "", 0, 0, "cannot create the folder: " + error.message());
+    throw InputError(folder.string(), "", 0, 0,
+                     fmt::format("cannot create the folder: {}", error.message()));
   }
   const std::string relative = folder.filename().string();
   const bool gaps = gap_surface_W != nullptr;
@@ -152,11 +155,12 @@ void WriteVtpSeries(const std::filesystem::path& pvd, const Assembly& assembly,
     WriteFileAtomically(folder / name, PolyDataText(FrameData(assembly, analysis, animation, k)),
                         protect);
     const std::string time = FormatNumber(animation.s[k], 17);
-    collection += "    <DataSet timestep=\"" + time + "\" part=\"0\" file=\"" + relative + "/" +
-                  name + "\"/>\n";
+    auto out = std::back_inserter(collection);
+    fmt::format_to(out, "    <DataSet timestep=\"{}\" part=\"0\" file=\"{}/{}\"/>\n", time,
+                   relative, name);
     if (gaps) {
-      collection += "    <DataSet timestep=\"" + time + "\" part=\"1\" file=\"" + relative +
-                    "/gaps.vtp\"/>\n";
+      fmt::format_to(out, "    <DataSet timestep=\"{}\" part=\"1\" file=\"{}/gaps.vtp\"/>\n", time,
+                     relative);
     }
   }
   collection += "  </Collection>\n</VTKFile>\n";

@@ -1,3 +1,5 @@
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
@@ -64,7 +66,7 @@ Command AnimateCommand() {
     o->chosen = std::set<std::string>(o->formats.begin(), o->formats.end());
     for (const std::string& f : o->chosen) {
       if (!known.count(f)) {
-        throw usage("--format: expected png, ogv, mp4, pvd or glb, found \"" + f + "\"");
+        throw usage(fmt::format("--format: expected png, ogv, mp4, pvd or glb, found \"{}\"", f));
       }
     }
     if (o->chosen.empty()) {
@@ -76,11 +78,13 @@ Command AnimateCommand() {
     char tail = 0;
     if (std::sscanf(o->size.c_str(), "%dx%d%c", &o->width, &o->height, &tail) != 2 ||
         o->width < 16 || o->height < 16 || o->width > 8192 || o->height > 8192) {
-      throw usage("--size: expected WIDTHxHEIGHT, 16 to 8192 pixels each, found \"" + o->size +
-                  "\"");
+      throw usage(fmt::format("--size: expected WIDTHxHEIGHT, 16 to 8192 pixels each, found \"{}\"",
+                              o->size));
     }
     const auto view = ParseView(o->view);
-    if (!view) throw usage("--view: expected iso, front, top or side, found \"" + o->view + "\"");
+    if (!view) {
+      throw usage(fmt::format("--view: expected iso, front, top or side, found \"{}\"", o->view));
+    }
     o->parsed_view = *view;
     if (o->frames < 1 || o->frames > 100000) throw usage("--frames: expected 1 to 100000");
     if (!(o->fps > 0) || o->fps > 240) throw usage("--fps: expected a rate in (0, 240]");
@@ -89,8 +93,8 @@ Command AnimateCommand() {
     const bool render = o->chosen.count("png") || o->chosen.count("ogv") || o->chosen.count("mp4");
     std::string no_display;
     if (render && !DisplayAvailable(&no_display)) {
-      throw usage("--format " + std::string(o->chosen.count("png") ? "png" : "ogv/mp4") + ": " +
-                  no_display);
+      throw usage(
+          fmt::format("--format {}: {}", o->chosen.count("png") ? "png" : "ogv/mp4", no_display));
     }
   };
   c.run = [o](Session& s) {
@@ -120,7 +124,7 @@ Command AnimateCommand() {
     try {
       outcome = WriteAnimation(assembly, *s.analysis, request);
     } catch (const std::invalid_argument& e) {
-      throw InputError(s.file, "", 0, 0, std::string("--gaps: ") + e.what());
+      throw InputError(s.file, "", 0, 0, fmt::format("--gaps: {}", e.what()));
     }
     const MotionRun& run = outcome.run;
     if (!run.possible) std::cerr << "mechanist: note: nothing moves: " << run.reason << "\n";
@@ -134,7 +138,8 @@ Command AnimateCommand() {
                 << std::defaultfloat;
     }
     std::cout << "animation: " << outcome.frames << " frames, "
-              << (run.driver ? "driver " + assembly.drivers()[*run.driver].id : "all drivers")
+              << (run.driver ? fmt::format("driver {}", assembly.drivers()[*run.driver].id)
+                             : "all drivers")
               << " over " << run.amount << "\n";
     if (outcome.clashing_parts > 0) {
       std::cout << "parts in a clash (red): " << outcome.clashing_parts << "\n";

@@ -1,5 +1,7 @@
 #include "reasoning/drag.h"
 
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <memory>
@@ -32,17 +34,18 @@ Command DragCommand() {
     const Assembly& assembly = *s.assembly;
     const auto index = assembly.FindPart(o->part);
     if (!index) {
-      throw InputError(s.file, "", 0, 0, "--part: expected a part id, found \"" + o->part + "\"");
+      throw InputError(s.file, "", 0, 0,
+                       fmt::format("--part: expected a part id, found \"{}\"", o->part));
     }
     DragRequest request;
     request.part = *index;
     request.rotate = !o->translate;
     if (!o->feature.empty()) {
-      const auto f = assembly.FindFeature(o->part + "/" + o->feature);
+      const auto f = assembly.FindFeature(fmt::format("{}/{}", o->part, o->feature));
       if (!f) {
-        throw InputError(
-            s.file, "", 0, 0,
-            "--feature: expected a feature of part " + o->part + ", found \"" + o->feature + "\"");
+        throw InputError(s.file, "", 0, 0,
+                         fmt::format("--feature: expected a feature of part {}, found \"{}\"",
+                                     o->part, o->feature));
       }
       request.feature = f->feature;
     }

@@ -1,3 +1,5 @@
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <filesystem>
@@ -58,19 +60,19 @@ Command ExportCommand() {
     std::vector<std::string> written;
     std::set<std::filesystem::path> mesh_folders;  // written already (URDF and MJCF side by side)
     auto write_meshes = [&](const std::filesystem::path& out) {
-      const std::string folder = out.stem().string() + "_meshes";
+      const std::string folder = fmt::format("{}_meshes", out.stem().string());
       const std::filesystem::path path = out.parent_path() / folder;
       if (!mesh_folders.insert(path).second) return folder;
       std::error_code error;
       std::filesystem::create_directories(path, error);
       if (error) {
         throw InputError(path.string(), "", 0, 0,
-                         "cannot create the mesh folder: " + error.message());
+                         fmt::format("cannot create the mesh folder: {}", error.message()));
       }
       for (const SimMesh& m : model.meshes) {
-        WriteFileAtomically(path / (m.name + ".stl"), BinaryStl(*m.mesh, 1e-3), s.file);
+        WriteFileAtomically(path / fmt::format("{}.stl", m.name), BinaryStl(*m.mesh, 1e-3), s.file);
       }
-      written.push_back(path.string() + "/ (" + std::to_string(model.meshes.size()) + " meshes)");
+      written.push_back(fmt::format("{}/ ({} meshes)", path.string(), model.meshes.size()));
       return folder;
     };
     if (!o->urdf.empty()) {
@@ -93,7 +95,7 @@ Command ExportCommand() {
     for (const auto& l : model.loops) closed += !l.anchors_W.empty();
     std::cout << "links: " << model.links.size() << " (root " << model.links.front().name << ")\n"
               << "joints: " << model.joints.size() << " ("
-              << (limits ? std::to_string(limited) + " stopped by a contact in the swept check"
+              << (limits ? fmt::format("{} stopped by a contact in the swept check", limited)
                          : std::string("movable ranges not searched: --no-limits"))
               << ")\n"
               << "couplings: " << model.couplings.size() << "\n"

@@ -1,3 +1,5 @@
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <iostream>
@@ -38,7 +40,7 @@ Command GapsCommand() {
     try {
       search = FindGaps(assembly, options);
     } catch (const std::invalid_argument& e) {
-      throw InputError(s.file, "", 0, 0, std::string("--voxel: ") + e.what());
+      throw InputError(s.file, "", 0, 0, fmt::format("--voxel: {}", e.what()));
     }
     WriteGapSummary(assembly, search, std::cout);
     // The volume may be too large to hold as text: it streams into its file here.

@@ -1,3 +1,5 @@
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
@@ -39,7 +41,8 @@ Command ViewCommand() {
   };
   c.run = [o](Session& s) {
     const std::string path =
-        o->out.empty() ? std::filesystem::path(s.file).stem().string() + ".html" : o->out;
+        o->out.empty() ? fmt::format("{}.html", std::filesystem::path(s.file).stem().string())
+                       : o->out;
     // The swept checks of every drag and of every insertion take minutes on a large real
     // file (the Onshape robot hand, 279,525 triangles: 43 s for one finger's drag): above
     // kMaxSweptTriangles they run only when asked.
@@ -63,7 +66,7 @@ Command ViewCommand() {
     try {
       s.Report(path, ViewerHtml(*s.assembly, *s.analysis, options));
     } catch (const std::invalid_argument& e) {  // the gap search refuses the voxel
-      throw InputError(s.file, "", 0, 0, std::string("--gaps: ") + e.what());
+      throw InputError(s.file, "", 0, 0, fmt::format("--gaps: {}", e.what()));
     }
     std::cout << "viewer: " << std::filesystem::absolute(path).string()
               << " (open it in a browser)\n";

@@ -1,5 +1,7 @@
 #include "io/internal/json_source.h"
 
+#include <fmt/format.h>
+
 #include <cctype>
 #include <cerrno>
 #include <cstdlib>
@@ -20,19 +22,21 @@ class Parser {
     SkipSpace();
     out_.root = ParseValue("", 0);
     SkipSpace();
-    if (pos_ < text_.size()) Fail("expected the end of the document, found " + Describe());
+    if (pos_ < text_.size()) {
+      Fail(fmt::format("expected the end of the document, found {}", Describe()));
+    }
   }
 
  private:
   [[noreturn]] void Fail(const std::string& message) const {
-    throw InputError(out_.file, "", line_, column_, "invalid JSON: " + message);
+    throw InputError(out_.file, "", line_, column_, fmt::format("invalid JSON: {}", message));
   }
 
   std::string Describe() const {
     if (pos_ >= text_.size()) return "the end of the file";
     const char c = text_[pos_];
     if (static_cast<unsigned char>(c) < 0x20) return "a control character";
-    return std::string("'") + c + "'";
+    return fmt::format("'{}'", c);
   }
 
   void Advance() {
@@ -77,7 +81,7 @@ class Parser {
   }
 
   nlohmann::ordered_json ParseValue(const std::string& pointer, int depth) {
-    if (depth > kMaxDepth) Fail("nesting deeper than " + std::to_string(kMaxDepth) + " levels");
+    if (depth > kMaxDepth) Fail(fmt::format("nesting deeper than {} levels", kMaxDepth));
     out_.positions[pointer] = {line_, column_};
     if (pos_ >= text_.size()) Fail("expected a value, found the end of the file");
     const char c = text_[pos_];
@@ -88,7 +92,7 @@ class Parser {
     if (Consume("true")) return true;
     if (Consume("false")) return false;
     if (Consume("null")) return nullptr;
-    Fail("expected a value, found " + Describe());
+    Fail(fmt::format("expected a value, found {}", Describe()));
   }
 
   nlohmann::ordered_json ParseObject(const std::string& pointer, int depth) {
@@ -102,16 +106,18 @@ class Parser {
     while (true) {
       SkipSpace();
       if (pos_ >= text_.size() || text_[pos_] != '"') {
-        Fail("expected a key in double quotes, found " + Describe());
+        Fail(fmt::format("expected a key in double quotes, found {}", Describe()));
       }
       const int key_line = line_, key_column = column_;
       const std::string key = ParseString();
       if (object.contains(key)) {
         throw InputError(out_.file, JoinPointer(pointer, key), key_line, key_column,
-                         "invalid JSON: duplicate key \"" + key + "\"");
+                         fmt::format("invalid JSON: duplicate key \"{}\"", key));
       }
       SkipSpace();
-      if (pos_ >= text_.size() || text_[pos_] != ':') Fail("expected ':', found " + Describe());
+      if (pos_ >= text_.size() || text_[pos_] != ':') {
+        Fail(fmt::format("expected ':', found {}", Describe()));
+      }
       Advance();
       SkipSpace();
       object[key] = ParseValue(JoinPointer(pointer, key), depth + 1);
@@ -124,7 +130,7 @@ class Parser {
         Advance();
         return object;
       }
-      Fail("expected ',' or '}', found " + Describe());
+      Fail(fmt::format("expected ',' or '}}', found {}", Describe()));
     }
   }
 
@@ -148,7 +154,7 @@ class Parser {
         Advance();
         return array;
       }
-      Fail("expected ',' or ']', found " + Describe());
+      Fail(fmt::format("expected ',' or ']', found {}", Describe()));
     }
   }
 
@@ -156,7 +162,7 @@ class Parser {
     unsigned code = 0;
     for (int i = 0; i < 4; ++i) {
       if (pos_ >= text_.size() || !std::isxdigit(static_cast<unsigned char>(text_[pos_]))) {
-        Fail("expected 4 hexadecimal digits after \\u, found " + Describe());
+        Fail(fmt::format("expected 4 hexadecimal digits after \\u, found {}", Describe()));
       }
       const char h = text_[pos_];
       code = code * 16 + (h <= '9' ? h - '0' : (h | 0x20) - 'a' + 10);
@@ -242,7 +248,7 @@ class Parser {
           break;
         }
         default:
-          Fail(std::string("invalid escape '\\") + e + "' in a string");
+          Fail(fmt::format("invalid escape '\\{}' in a string", e));
       }
     }
   }
@@ -262,18 +268,18 @@ class Parser {
     if (pos_ < text_.size() && text_[pos_] == '0') {
       Advance();
     } else if (digits() == 0) {
-      Fail("expected digits in a number, found " + Describe());
+      Fail(fmt::format("expected digits in a number, found {}", Describe()));
     }
     if (pos_ < text_.size() && text_[pos_] == '.') {
       integral = false;
       Advance();
-      if (digits() == 0) Fail("expected digits after '.', found " + Describe());
+      if (digits() == 0) Fail(fmt::format("expected digits after '.', found {}", Describe()));
     }
     if (pos_ < text_.size() && (text_[pos_] == 'e' || text_[pos_] == 'E')) {
       integral = false;
       Advance();
       if (pos_ < text_.size() && (text_[pos_] == '+' || text_[pos_] == '-')) Advance();
-      if (digits() == 0) Fail("expected digits in an exponent, found " + Describe());
+      if (digits() == 0) Fail(fmt::format("expected digits in an exponent, found {}", Describe()));
     }
     const std::string literal(text_.substr(start, pos_ - start));
     if (integral) {

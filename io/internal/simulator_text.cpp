@@ -1,17 +1,23 @@
 #include "io/internal/simulator_text.h"
 
+#include <fmt/format.h>
+
+#include <iterator>
+
 #include "kernel/support/number_format.h"
 
 namespace mechanist::internal {
 
 std::string PairLabel(const Assembly& assembly, const Analysis& analysis, std::size_t pair) {
   const Pair& p = analysis.pairs[pair];
-  std::string text = std::string(ToString(p.type)) + " pair " + assembly.FeatureName(p.a) + " + " +
-                     assembly.FeatureName(p.b);
-  if (p.ratio) text += ", ratio " + p.ratio->ToString();
+  std::string text = fmt::format("{} pair {} + {}", ToString(p.type), assembly.FeatureName(p.a),
+                                 assembly.FeatureName(p.b));
+  auto out = std::back_inserter(text);
+  if (p.ratio) fmt::format_to(out, ", ratio {}", p.ratio->ToString());
   if (p.travel_per_revolution) {
-    text += ", " + FormatNumber(*p.travel_per_revolution / assembly.units().mm_per_length, 9) +
-            " " + assembly.units().length + " per revolution";
+    fmt::format_to(out, ", {} {} per revolution",
+                   FormatNumber(*p.travel_per_revolution / assembly.units().mm_per_length, 9),
+                   assembly.units().length);
   }
   return text;
 }
@@ -31,8 +37,8 @@ std::string LimitLabel(const Assembly& assembly, const SimJoint& joint) {
   auto add = [&](const char* end, const auto& contact) {
     if (!contact) return;
     if (!text.empty()) text += "; ";
-    text += std::string(end) + " stop: " + assembly.part(contact->first).id + " meets " +
-            assembly.part(contact->second).id;
+    fmt::format_to(std::back_inserter(text), "{} stop: {} meets {}", end,
+                   assembly.part(contact->first).id, assembly.part(contact->second).id);
   };
   add("lower", joint.lower_contact);
   add("upper", joint.upper_contact);
@@ -40,9 +46,10 @@ std::string LimitLabel(const Assembly& assembly, const SimJoint& joint) {
 }
 
 std::string Provenance(const Assembly& assembly) {
-  return "Written by mechanist from the assembly \"" + assembly.name() +
-         "\": links are its rigid subassemblies, joints and couplings the pairs it inferred. "
-         "Units: metres, kilograms, radians.";
+  return fmt::format(
+      "Written by mechanist from the assembly \"{}\": links are its rigid subassemblies, joints "
+      "and couplings the pairs it inferred. Units: metres, kilograms, radians.",
+      assembly.name());
 }
 
 }  // namespace mechanist::internal

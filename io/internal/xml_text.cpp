@@ -1,5 +1,7 @@
 #include "io/internal/xml_text.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdio>
 
@@ -37,7 +39,7 @@ std::string XmlComment(std::string_view text) {
   for (std::size_t at = body.find("--"); at != std::string::npos; at = body.find("--", at)) {
     body.insert(at + 1, " ");
   }
-  return "<!-- " + body + " -->";
+  return fmt::format("<!-- {} -->", body);
 }
 
 std::string Number(double value) {
@@ -48,7 +50,7 @@ std::string Number(double value) {
 }
 
 std::string Numbers(const Eigen::Vector3d& v) {
-  return Number(v.x()) + " " + Number(v.y()) + " " + Number(v.z());
+  return fmt::format("{} {} {}", Number(v.x()), Number(v.y()), Number(v.z()));
 }
 
 }  // namespace mechanist::internal

@@ -4,6 +4,8 @@
 #define OCC_CONVERT_SIGNALS
 #include "io/step_reader.h"
 
+#include <fmt/format.h>
+
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepGProp.hxx>
@@ -123,7 +125,7 @@ struct Cone {
   double r_min = 1e300, r_max = -1e300;
 };
 
-std::string Mm(double x) { return FormatNumber(x) + " mm"; }
+std::string Mm(double x) { return fmt::format("{} mm", FormatNumber(x)); }
 
 // A free-form face (B-spline, Bezier, extrusion, revolution, offset) that is a plane or a
 // cylinder within `tolerance` mm: some exporters and healing steps write every surface so.
@@ -222,8 +224,8 @@ AnalyticFit FitAnalytic(const TopoDS_Face& face, const BRepAdaptor_Surface& surf
 // (a chamfer or a point) of a shaft, a flare widening out of a shaft, or a cone of its own.
 std::string DescribeCone(const Cone& c, const std::vector<Feature>& features) {
   const double included = 2 * c.semi_angle * 180 / kPi;
-  const std::string size = FormatNumber(included) + " deg, diameter " + FormatNumber(2 * c.r_min) +
-                           " to " + Mm(2 * c.r_max);
+  const std::string size = fmt::format("{} deg, diameter {} to {}", FormatNumber(included),
+                                       FormatNumber(2 * c.r_min), Mm(2 * c.r_max));
   for (const Feature& f : features) {
     if (f.kind != (c.convex ? FeatureKind::kShaft : FeatureKind::kHole)) continue;
     const Eigen::Vector3d d = c.apex - f.origin;
@@ -231,13 +233,17 @@ std::string DescribeCone(const Cone& c, const std::vector<Feature>& features) {
     const bool coaxial = std::abs(std::abs(f.axis.dot(c.direction)) - 1) < 1e-9 &&
                          (d - d.dot(f.axis) * f.axis).norm() < tol;
     if (!coaxial) continue;
-    if (!c.convex && std::abs(c.r_min - r) < tol) return "countersink of " + f.id + ": " + size;
-    if (c.convex && std::abs(c.r_max - r) < tol) return "conical end of " + f.id + ": " + size;
+    if (!c.convex && std::abs(c.r_min - r) < tol) {
+      return fmt::format("countersink of {}: {}", f.id, size);
+    }
+    if (c.convex && std::abs(c.r_max - r) < tol) {
+      return fmt::format("conical end of {}: {}", f.id, size);
+    }
     if (c.convex && std::abs(c.r_min - r) < tol) {
-      return "conical flare of " + f.id + " (a countersunk head's underside?): " + size;
+      return fmt::format("conical flare of {} (a countersunk head's underside?): {}", f.id, size);
     }
   }
-  return std::string(c.convex ? "convex" : "concave") + " cone: " + size;
+  return fmt::format("{} cone: {}", c.convex ? "convex" : "concave", size);
 }
 
 // The mesh and features of one solid in its product's frame, and notes on the faces that give
@@ -406,7 +412,7 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
         yl = std::min(yl, (p - centre).dot(y)), yh = std::max(yh, (p - centre).dot(y));
       }
       Feature f;
-      f.id = "face_" + std::to_string(++planes);
+      f.id = fmt::format("face_{}", ++planes);
       f.kind = FeatureKind::kFace;
       f.origin = centre + 0.5 * (xl + xh) * x + 0.5 * (yl + yh) * y;
       f.axis = n.normalized();
@@ -421,7 +427,7 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
       if (s.coverage < 1.5 * kPi) continue;  // a fillet or a partial cylinder
       Feature f;
       f.kind = c.convex ? FeatureKind::kShaft : FeatureKind::kHole;
-      f.id = c.convex ? "shaft_" + std::to_string(++shafts) : "hole_" + std::to_string(++holes);
+      f.id = c.convex ? fmt::format("shaft_{}", ++shafts) : fmt::format("hole_{}", ++holes);
       f.origin = c.point + s.lo * c.direction;
       f.axis = c.direction;
       f.length = s.hi - s.lo;
@@ -440,8 +446,7 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
     }
     Feature f;
     f.kind = sphere.convex ? FeatureKind::kBall : FeatureKind::kSocket;
-    f.id =
-        sphere.convex ? "ball_" + std::to_string(++balls) : "socket_" + std::to_string(++sockets);
+    f.id = sphere.convex ? fmt::format("ball_{}", ++balls) : fmt::format("socket_{}", ++sockets);
     f.origin = sphere.center;
     f.axis = Eigen::Vector3d::UnitZ();  // a sphere has none; the format's default direction
     f.diameter = 2 * sphere.radius;
@@ -457,15 +462,14 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
   }
   auto count = [&](int n, const std::string& what) {
     if (n > 0) {
-      notes->push_back(std::to_string(n) + " " + what + (n == 1 ? " face" : " faces") +
-                       ": no feature (the format has no such kind)");
+      notes->push_back(fmt::format("{} {} {}: no feature (the format has no such kind)", n, what,
+                                   n == 1 ? "face" : "faces"));
     }
   };
   if (fitted_planes + fitted_cylinders > 0) {
-    notes->push_back(std::to_string(fitted_planes + fitted_cylinders) +
-                     " free-form faces taken as exact surfaces: " + std::to_string(fitted_planes) +
-                     " planes, " + std::to_string(fitted_cylinders) + " cylinders (within " +
-                     Mm(fit_error) + ")");
+    notes->push_back(fmt::format(
+        "{} free-form faces taken as exact surfaces: {} planes, {} cylinders (within {})",
+        fitted_planes + fitted_cylinders, fitted_planes, fitted_cylinders, Mm(fit_error)));
   }
   count(partial_cones, "partial conical");
   count(partial_spheres, "partial spherical");
@@ -488,11 +492,11 @@ class Walker {
         std::string name = NameOf(components(i));
         if (name.rfind("=>", 0) == 0) name.clear();  // an unnamed instance
         name = Sanitised(name);
-        if (!name.empty() && ++seen[name] > 1) name += "_" + std::to_string(seen[name]);
+        if (!name.empty() && ++seen[name] > 1) name += fmt::format("_{}", seen[name]);
         Walk(referred,
              name.empty()   ? path
              : path.empty() ? name
-                            : path + "." + name,
+                            : fmt::format("{}.{}", path, name),
              location * tool_->GetLocation(components(i)));
       }
       return;
@@ -510,7 +514,7 @@ class Walker {
         cached = cache_.emplace(key, std::move(definition)).first;
       }
       StepSolid s;
-      s.path = index == 0 ? path : path + "_solid" + std::to_string(index + 1);
+      s.path = index == 0 ? path : fmt::format("{}_solid{}", path, index + 1);
       s.product = NameOf(label);
       s.X_WP = ToRigid(location.Transformation());
       s.mesh = cached->second.mesh;
@@ -624,7 +628,7 @@ class SignalsAsExceptions {
 // The first error report of Open CASCADE's reader, which usually names the entity at fault.
 std::string FirstError(const std::vector<StepMessage>& messages) {
   for (const StepMessage& m : messages) {
-    if (m.error) return "; the reader reported: " + m.text;
+    if (m.error) return fmt::format("; the reader reported: {}", m.text);
   }
   return "";
 }
@@ -652,7 +656,7 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file) {
   // Unique paths (two solids named alike at the top level).
   std::map<std::string, int> count;
   for (StepSolid& s : solids) {
-    if (++count[s.path] > 1) s.path += "_" + std::to_string(count[s.path]);
+    if (++count[s.path] > 1) s.path += fmt::format("_{}", count[s.path]);
   }
   return solids;
 }
@@ -674,8 +678,8 @@ std::vector<StepSolid> ReadStep(const std::filesystem::path& file,
     // exceptions: the file cannot be read, and the process goes on.
     const char* what = failure.GetMessageString();
     throw std::runtime_error(
-        std::string("Open CASCADE failed reading it (") + failure.DynamicType()->Name() +
-        (what && *what ? std::string(": ") + what : std::string()) + ")" + FirstError(kept));
+        fmt::format("Open CASCADE failed reading it ({}{}){}", failure.DynamicType()->Name(),
+                    what && *what ? fmt::format(": {}", what) : std::string(), FirstError(kept)));
   }
 }
 

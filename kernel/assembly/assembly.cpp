@@ -1,5 +1,7 @@
 #include "kernel/assembly/assembly.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <numeric>
 #include <stdexcept>
@@ -26,7 +28,7 @@ Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
     compliant_.push_back(part.compliant);
     has_compliant_ = has_compliant_ || part.compliant;
     if (part.features.size() > UINT32_MAX) {
-      throw std::length_error("part '" + part.id + "' has too many features");
+      throw std::length_error(fmt::format("part '{}' has too many features", part.id));
     }
     for (std::size_t f = 0; f < part.features.size(); ++f) {
       features_of_kind_[part.features[f].kind].push_back({i, f});
@@ -34,7 +36,7 @@ Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
       feature_origin_.push_back(part.features[f].origin);
     }
     if (!part_index_.emplace(part.id, i).second) {
-      throw std::invalid_argument("duplicate part id '" + part.id + "'");
+      throw std::invalid_argument(fmt::format("duplicate part id '{}'", part.id));
     }
     if (!part.mesh) {
       static const auto kNoMesh = std::make_shared<const TriangleMesh>();
@@ -56,14 +58,15 @@ Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
     feature_rank_.resize(feature_rank_.size() + by_id.size());
     for (std::uint32_t r = 0; r < by_id.size(); ++r) {
       if (r > 0 && part.features[by_id[r]].id == part.features[by_id[r - 1]].id) {
-        throw std::invalid_argument("duplicate feature id '" + part.features[by_id[r]].id +
-                                    "' in part '" + part.id + "'");
+        throw std::invalid_argument(fmt::format("duplicate feature id '{}' in part '{}'",
+                                                part.features[by_id[r]].id, part.id));
       }
       feature_rank_[first_feature_.back() + by_id[r]] = r;
     }
     for (const PlacementCondition& c : part.placement) {
       if (c.feature >= part.features.size()) {
-        throw std::invalid_argument("placement of part '" + part.id + "' names no feature");
+        throw std::invalid_argument(
+            fmt::format("placement of part '{}' names no feature", part.id));
       }
       CheckRef(c.target, "placement target");
     }
@@ -124,15 +127,15 @@ Assembly::Assembly(AssemblySpec spec) : spec_(std::move(spec)) {
 
 void Assembly::CheckPart(std::size_t part, const char* what) const {
   if (part >= spec_.parts.size()) {
-    throw std::invalid_argument(std::string(what) + " refers to no part");
+    throw std::invalid_argument(fmt::format("{} refers to no part", what));
   }
 }
 
 void Assembly::CheckRef(FeatureRef ref, const char* what) const {
   CheckPart(ref.part, what);
   if (ref.feature >= spec_.parts[ref.part].features.size()) {
-    throw std::invalid_argument(std::string(what) + " refers to no feature of part '" +
-                                spec_.parts[ref.part].id + "'");
+    throw std::invalid_argument(
+        fmt::format("{} refers to no feature of part '{}'", what, spec_.parts[ref.part].id));
   }
 }
 
@@ -160,8 +163,8 @@ const std::vector<FeatureRef>& Assembly::FeaturesOfKind(FeatureKind kind) const 
 
 std::string Assembly::FeatureName(FeatureRef ref) const {
   if (ref.feature >= FeatureCount(ref.part)) {
-    throw std::out_of_range("FeatureName: part " + std::to_string(ref.part) + " has no feature " +
-                            std::to_string(ref.feature));
+    throw std::out_of_range(
+        fmt::format("FeatureName: part {} has no feature {}", ref.part, ref.feature));
   }
   const NameSpan name = feature_name_[FeatureIndex(ref)];
   return names_.substr(name.offset, name.size);

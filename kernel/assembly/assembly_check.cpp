@@ -1,5 +1,7 @@
 #include "kernel/assembly/assembly_check.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <map>
 #include <string>
@@ -17,27 +19,27 @@ namespace {
 std::vector<std::pair<const char*, std::string>> MeshProblems(const MeshCheck& check) {
   std::vector<std::pair<const char*, std::string>> problems;
   if (check.non_finite_vertices > 0 || check.out_of_range_faces > 0 || check.face_count == 0) {
-    problems.emplace_back("mesh_invalid", "mesh has invalid elements: " + check.Problems().front());
+    problems.emplace_back("mesh_invalid",
+                          fmt::format("mesh has invalid elements: {}", check.Problems().front()));
   }
   if (!check.closed()) {
     problems.emplace_back("mesh_not_closed",
-                          "mesh is not closed (" + std::to_string(check.boundary_edges) +
-                              " boundary edges, " + std::to_string(check.non_manifold_edges) +
-                              " edges shared by more than two faces)");
+                          fmt::format("mesh is not closed ({} boundary edges, {} edges shared by "
+                                      "more than two faces)",
+                                      check.boundary_edges, check.non_manifold_edges));
   }
   if (!check.consistently_oriented()) {
-    problems.emplace_back("mesh_misoriented", "mesh faces are not consistently oriented (" +
-                                                  std::to_string(check.misoriented_edges) +
-                                                  " edges)");
+    problems.emplace_back("mesh_misoriented",
+                          fmt::format("mesh faces are not consistently oriented ({} edges)",
+                                      check.misoriented_edges));
   }
   if (check.closed() && check.consistently_oriented() && check.face_count > 0 &&
       !(check.signed_volume > 0)) {
     problems.emplace_back("mesh_inward", "mesh faces point inward (negative volume)");
   }
   if (check.degenerate_faces > 0) {
-    problems.emplace_back(
-        "mesh_degenerate_faces",
-        "mesh has " + std::to_string(check.degenerate_faces) + " degenerate faces");
+    problems.emplace_back("mesh_degenerate_faces",
+                          fmt::format("mesh has {} degenerate faces", check.degenerate_faces));
   }
   return problems;
 }
@@ -73,7 +75,8 @@ std::vector<Diagnostic> CheckAssembly(const Assembly& assembly) {
   for (const auto& [code, message] : order) {
     std::vector<std::string>& parts = parts_with[{code, message}];
     std::sort(parts.begin(), parts.end());
-    out.push_back({Severity::kWarning, code, PartNames(parts) + ": " + message, parts, {}});
+    out.push_back(
+        {Severity::kWarning, code, fmt::format("{}: {}", PartNames(parts), message), parts, {}});
   }
   for (std::size_t i = 0; i < assembly.parts().size(); ++i) {
     const Part& part = assembly.part(i);
@@ -87,11 +90,11 @@ std::vector<Diagnostic> CheckAssembly(const Assembly& assembly) {
         const Feature& f = part.features[k];
         out.push_back({Severity::kWarning,
                        "feature_outside_part",
-                       "feature '" + part.id + "/" + f.id + "' has its origin " +
-                           FormatNumber(outside.norm()) +
-                           " mm outside the part's mesh box (unit or frame mistake?)",
+                       fmt::format("feature '{}/{}' has its origin {} mm outside the part's mesh "
+                                   "box (unit or frame mistake?)",
+                                   part.id, f.id, FormatNumber(outside.norm())),
                        {part.id},
-                       {part.id + "/" + f.id}});
+                       {fmt::format("{}/{}", part.id, f.id)}});
       }
     }
   }

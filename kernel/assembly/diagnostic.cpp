@@ -1,5 +1,7 @@
 #include "kernel/assembly/diagnostic.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <stdexcept>
 #include <tuple>
@@ -29,8 +31,8 @@ void SortDiagnosticRuns(std::vector<Diagnostic>* diagnostics,
   if ((run_starts.empty() ? !d.empty() : run_starts.front() != 0) ||
       !std::is_sorted(run_starts.begin(), run_starts.end()) ||
       (!run_starts.empty() && run_starts.back() > d.size())) {
-    throw std::invalid_argument("SortDiagnosticRuns: run starts must ascend from 0 within the " +
-                                std::to_string(d.size()) + " diagnostics");
+    throw std::invalid_argument(fmt::format(
+        "SortDiagnosticRuns: run starts must ascend from 0 within the {} diagnostics", d.size()));
   }
   const auto at = [&](std::size_t i) { return d.begin() + static_cast<std::ptrdiff_t>(i); };
   for (std::size_t r = 0; r < run_starts.size(); ++r) {

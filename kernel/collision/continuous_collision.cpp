@@ -1,5 +1,6 @@
 #include "kernel/collision/continuous_collision.h"
 
+#include <fmt/format.h>
 #include <gmpxx.h>
 
 #include <algorithm>
@@ -487,15 +488,15 @@ double ExactRationalToDouble(std::string_view numerator, std::string_view denomi
   try {
     q = mpq_class(mpz_class(std::string(numerator)), mpz_class(std::string(denominator)));
   } catch (const std::invalid_argument&) {
-    throw std::invalid_argument("expected an integer pair, found \"" + std::string(numerator) +
-                                "/" + std::string(denominator) + "\"");
+    throw std::invalid_argument(
+        fmt::format("expected an integer pair, found \"{}/{}\"", numerator, denominator));
   }
   if (sgn(q.get_den()) == 0) throw std::invalid_argument("zero denominator");
   q.canonicalize();
   const double d = q.get_d();
   if (mpq_class(d) != q) {
-    throw std::invalid_argument("the rational " + std::string(numerator) + "/" +
-                                std::string(denominator) + " is not exactly a double");
+    throw std::invalid_argument(
+        fmt::format("the rational {}/{} is not exactly a double", numerator, denominator));
   }
   return d;
 }

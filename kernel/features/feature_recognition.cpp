@@ -1,5 +1,7 @@
 #include "kernel/features/feature_recognition.h"
 
+#include <fmt/format.h>
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
@@ -235,7 +237,7 @@ std::vector<Vector3d> CylinderPatchAxes(const TriangleMesh& mesh,
   return axes;
 }
 
-std::string Mm(double x) { return FormatNumber(x, 6) + " mm"; }
+std::string Mm(double x) { return fmt::format("{} mm", FormatNumber(x, 6)); }
 
 }  // namespace
 
@@ -296,8 +298,9 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
     out.axis = axis;
   } else {
     out.notes.push_back(
-        "not prismatic: no axis along or across which 95% of the area faces (best " +
-        FormatNumber(100 * best_score, 3) + "%); only cylinders are looked for");
+        fmt::format("not prismatic: no axis along or across which 95% of the area faces (best "
+                    "{}%); only cylinders are looked for",
+                    FormatNumber(100 * best_score, 3)));
   }
   std::vector<Vector3d> candidates;
   if (prismatic) candidates.push_back(axis);
@@ -389,7 +392,7 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
                      [&](const Outline& a, const Outline& b) { return extent(a) > extent(b); });
 
     auto id = [&](const std::string& base, int n) {
-      return n == 0 ? base : base + "_" + std::to_string(n + 1);
+      return n == 0 ? base : fmt::format("{}_{}", base, n + 1);
     };
     for (const Outline& o : outlines) {
       if (o.vertices.size() < 3) continue;
@@ -415,9 +418,9 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
         f.diameter = 2 * circle.radius;
         f.through = !convex;
         r.fit_error = circle.rms;
-        r.detail = std::string(convex ? "convex" : "concave") + " cylinder, diameter " +
-                   Mm(f.diameter) + " from " + std::to_string(o.vertices.size()) +
-                   " outline vertices (rms " + Mm(circle.rms) + ")";
+        r.detail = fmt::format("{} cylinder, diameter {} from {} outline vertices (rms {})",
+                               convex ? "convex" : "concave", Mm(f.diameter), o.vertices.size(),
+                               Mm(circle.rms));
         out.features.push_back(r);
         continue;
       }
@@ -455,11 +458,11 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
           f.module = *m;
           f.internal = !convex;
           g.fit_error = std::abs(m_raw - *m) * z / 2;
-          g.detail = std::string(convex ? "spur gear" : "internal gear") + ", " +
-                     std::to_string(z) + " teeth (the radius repeats " + std::to_string(z) +
-                     " times around), tooth depth " + Mm(depth) + " = 2.25 x " +
-                     FormatNumber(m_raw, 5) + ", module " + FormatNumber(*m) +
-                     " (ISO 54), profile shift about " + FormatNumber(shift, 2);
+          g.detail = fmt::format(
+              "{}, {} teeth (the radius repeats {} times around), tooth depth {} = 2.25 x {}, "
+              "module {} (ISO 54), profile shift about {}",
+              convex ? "spur gear" : "internal gear", z, z, Mm(depth), FormatNumber(m_raw, 5),
+              FormatNumber(*m), FormatNumber(shift, 2));
           out.features.push_back(g);
         }
       }
@@ -515,8 +518,9 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
       const double h_depth = variation(h);
       const double length = s_hi - s_lo;
       if (h_depth < 1e-3 * length || length < 3 * h_depth) {
-        out.notes.push_back("an outline of " + std::to_string(o.vertices.size()) +
-                            " vertices is neither a circle, nor gear teeth, nor a rack");
+        out.notes.push_back(
+            fmt::format("an outline of {} vertices is neither a circle, nor gear teeth, nor a rack",
+                        o.vertices.size()));
         continue;
       }
       const std::vector<double> spectrum = Spectrum(h);
@@ -529,8 +533,10 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
       const double m_pitch = pitch / kPi, m_depth = h_depth / 2.25;
       const std::optional<double> m = Standard(m_pitch);
       if (!m || std::abs(m_depth - *m) > 0.05 * *m) {
-        out.notes.push_back("an outline repeats along its length every " + Mm(pitch) +
-                            " but its pitch and depth give no one standard module");
+        out.notes.push_back(fmt::format(
+            "an outline repeats along its length every {} but its pitch and depth give no one "
+            "standard module",
+            Mm(pitch)));
         continue;
       }
       const double tip = *std::max_element(h.begin() + kRackBins / 20, h.end() - kRackBins / 20);
@@ -546,9 +552,9 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
       f.width = width;
       f.module = *m;
       rack.fit_error = std::abs(m_pitch - *m) * kPi;
-      rack.detail = "rack, pitch " + Mm(pitch) + " = pi x " + FormatNumber(m_pitch, 5) +
-                    ", tooth depth " + Mm(h_depth) + ", module " + FormatNumber(*m) +
-                    " (ISO 54), about " + std::to_string(std::lround(length / pitch)) + " teeth";
+      rack.detail = fmt::format(
+          "rack, pitch {} = pi x {}, tooth depth {}, module {} (ISO 54), about {} teeth", Mm(pitch),
+          FormatNumber(m_pitch, 5), Mm(h_depth), FormatNumber(*m), std::lround(length / pitch));
       out.features.push_back(rack);
       has_teeth = true;
     }

@@ -1,5 +1,7 @@
 #include "kernel/features/involute_gear.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -42,13 +44,13 @@ Ring2d InvoluteOutline(const InvoluteOutlineSpec& spec) {
   const double r_tip = r_pitch + spec.addendum;
   const double r_root = r_pitch - spec.dedendum;
   if (!(r_root > 0.0)) {
-    throw std::invalid_argument("the dedendum " + FormatNumber(spec.dedendum) +
-                                " leaves no root circle inside the pitch radius " +
-                                FormatNumber(r_pitch));
+    throw std::invalid_argument(
+        fmt::format("the dedendum {} leaves no root circle inside the pitch radius {}",
+                    FormatNumber(spec.dedendum), FormatNumber(r_pitch)));
   }
   if (!(r_tip > r_base)) {
-    throw std::invalid_argument("the tip radius " + FormatNumber(r_tip) +
-                                " does not exceed the base radius " + FormatNumber(r_base));
+    throw std::invalid_argument(fmt::format("the tip radius {} does not exceed the base radius {}",
+                                            FormatNumber(r_tip), FormatNumber(r_base)));
   }
   // theta(r) is base_half_angle - inv(acos(r_b / r)), and with the involute's roll angle t
   // (r = r_b sqrt(1 + t^2)) inv(acos(r_b / r)) = t - atan(t).
@@ -61,12 +63,12 @@ Ring2d InvoluteOutline(const InvoluteOutlineSpec& spec) {
   const double theta_root = base_half_angle - (t_start - std::atan(t_start));
   const double theta_tip = base_half_angle - (t_tip - std::atan(t_tip));
   if (!(theta_tip > 0.0)) {
-    throw std::invalid_argument("the involute flanks meet below the tip radius " +
-                                FormatNumber(r_tip) + " (pointed teeth)");
+    throw std::invalid_argument(fmt::format(
+        "the involute flanks meet below the tip radius {} (pointed teeth)", FormatNumber(r_tip)));
   }
   if (!(theta_root < pi / z)) {
-    throw std::invalid_argument("neighbouring teeth overlap at the root radius " +
-                                FormatNumber(r_root));
+    throw std::invalid_argument(
+        fmt::format("neighbouring teeth overlap at the root radius {}", FormatNumber(r_root)));
   }
 
   struct FlankPoint {

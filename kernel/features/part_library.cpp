@@ -1,5 +1,7 @@
 #include "kernel/features/part_library.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -27,30 +29,31 @@ std::invalid_argument Error(const std::string& message) { return std::invalid_ar
 
 void RequirePositive(double value, std::string_view name) {
   if (!(value > 0.0) || !std::isfinite(value)) {
-    throw Error(std::string(name) + " " + FormatNumber(value) + " must be positive");
+    throw Error(fmt::format("{} {} must be positive", name, FormatNumber(value)));
   }
 }
 
 // Sizes where 0 selects a default.
 void RequireNonNegative(double value, std::string_view name) {
   if (!(value >= 0.0) || !std::isfinite(value)) {
-    throw Error(std::string(name) + " " + FormatNumber(value) + " must not be negative");
+    throw Error(fmt::format("{} {} must not be negative", name, FormatNumber(value)));
   }
 }
 
 void RequireTeeth(int teeth) {
-  if (teeth < 6) throw Error("teeth " + std::to_string(teeth) + " must be at least 6");
+  if (teeth < 6) throw Error(fmt::format("teeth {} must be at least 6", teeth));
 }
 
 void RequirePressureAngle(double angle) {
   if (!(angle > 0.0 && angle < kPi / 2)) {
-    throw Error("pressure_angle " + FormatNumber(angle) + " must be between 0 and pi/2 radians");
+    throw Error(
+        fmt::format("pressure_angle {} must be between 0 and pi/2 radians", FormatNumber(angle)));
   }
 }
 
 void RequireSegments(int segments) {
   if (segments < 0 || segments == 1 || segments == 2) {
-    throw Error("segments " + std::to_string(segments) + " must be 0 or at least 3");
+    throw Error(fmt::format("segments {} must be 0 or at least 3", segments));
   }
 }
 
@@ -65,14 +68,14 @@ int CircleSegments(int requested, double diameter) {
 // circle, whose chords come as close to the axis as root_radius cos(pi / segments).
 void RequireBoreInsideRoot(double bore_diameter, double root_diameter, int segments) {
   if (!(bore_diameter < root_diameter)) {
-    throw Error("bore_diameter " + FormatNumber(bore_diameter) +
-                " must be smaller than the root diameter " + FormatNumber(root_diameter));
+    throw Error(fmt::format("bore_diameter {} must be smaller than the root diameter {}",
+                            FormatNumber(bore_diameter), FormatNumber(root_diameter)));
   }
   const double faceted = root_diameter * std::cos(kPi / segments);
   if (!(bore_diameter < faceted)) {
-    throw Error("bore_diameter " + FormatNumber(bore_diameter) +
-                " must be smaller than the faceted root diameter " + FormatNumber(faceted) + " (" +
-                std::to_string(segments) + " segments)");
+    throw Error(fmt::format(
+        "bore_diameter {} must be smaller than the faceted root diameter {} ({} segments)",
+        FormatNumber(bore_diameter), FormatNumber(faceted), segments));
   }
 }
 
@@ -185,20 +188,21 @@ std::vector<PlacedHole> PlaceHoles(const std::vector<LibraryHole>& holes, const 
   std::vector<PlacedHole> placed;
   for (std::size_t i = 0; i < holes.size(); ++i) {
     const LibraryHole& hole = holes[i];
-    PlacedHole p{hole.id.empty() ? prefix + std::to_string(i + 1) : hole.id, hole.center,
+    PlacedHole p{hole.id.empty() ? fmt::format("{}{}", prefix, i + 1) : hole.id, hole.center,
                  hole.diameter, 0};
-    RequirePositive(p.diameter, p.id + " diameter");
-    const std::string what = p.id + " (diameter " + FormatNumber(p.diameter) + " at (" +
-                             FormatNumber(p.center.x()) + ", " + FormatNumber(p.center.y()) + "))";
+    RequirePositive(p.diameter, fmt::format("{} diameter", p.id));
+    const std::string what =
+        fmt::format("{} (diameter {} at ({}, {}))", p.id, FormatNumber(p.diameter),
+                    FormatNumber(p.center.x()), FormatNumber(p.center.y()));
     const double r = p.diameter / 2.0;
     // Strict inequalities: a polygon inscribed in the circle then stays off the face's edges.
     if (!p.center.allFinite() ||
         !((p.center.array() - r > lo.array()).all() && (p.center.array() + r < hi.array()).all())) {
-      throw Error(what + " does not fit inside " + face);
+      throw Error(fmt::format("{} does not fit inside {}", what, face));
     }
     for (const PlacedHole& other : placed) {
       if (!((p.center - other.center).norm() > r + other.diameter / 2.0)) {
-        throw Error(what + " overlaps " + other.id);
+        throw Error(fmt::format("{} overlaps {}", what, other.id));
       }
     }
     p.segments = CircleSegments(segments, p.diameter);
@@ -215,14 +219,9 @@ Region2d RegionWithHoles(Ring2d outer, const std::vector<PlacedHole>& holes) {
   return region;
 }
 
-// "[a, b]". Appended piecewise: GCC 12 warns falsely (-Wrestrict) about "[" + std::string.
+// "[a, b]".
 std::string Range(double a, double b) {
-  std::string range = "[";
-  range += FormatNumber(a);
-  range += ", ";
-  range += FormatNumber(b);
-  range += "]";
-  return range;
+  return fmt::format("[{}, {}]", FormatNumber(a), FormatNumber(b));
 }
 
 LibraryPart Make(const PlateSpec& spec) {
@@ -254,18 +253,21 @@ LibraryPart Make(const LBracketSpec& spec) {
   RequireSegments(spec.segments);
   const double L = spec.length, H = spec.height, hw = spec.width / 2.0, t = spec.thickness;
   if (!(L > t)) {
-    throw Error("length " + FormatNumber(L) + " must exceed the thickness " + FormatNumber(t));
+    throw Error(
+        fmt::format("length {} must exceed the thickness {}", FormatNumber(L), FormatNumber(t)));
   }
   if (!(H > t)) {
-    throw Error("height " + FormatNumber(H) + " must exceed the thickness " + FormatNumber(t));
+    throw Error(
+        fmt::format("height {} must exceed the thickness {}", FormatNumber(H), FormatNumber(t)));
   }
-  const auto base_holes = PlaceHoles(
-      spec.base_holes, "base_hole", {t, -hw}, {L, hw},
-      "the base leg beside the upright (x in " + Range(t, L) + ", y in " + Range(-hw, hw) + ")",
-      spec.segments);
+  const auto base_holes =
+      PlaceHoles(spec.base_holes, "base_hole", {t, -hw}, {L, hw},
+                 fmt::format("the base leg beside the upright (x in {}, y in {})", Range(t, L),
+                             Range(-hw, hw)),
+                 spec.segments);
   const auto upright_holes = PlaceHoles(
       spec.upright_holes, "upright_hole", {-hw, t}, {hw, H},
-      "the upright leg above the base (y in " + Range(-hw, hw) + ", z in " + Range(t, H) + ")",
+      fmt::format("the upright leg above the base (y in {}, z in {})", Range(-hw, hw), Range(t, H)),
       spec.segments);
 
   // Two closed shells touching along z = t: the base leg with the corner, and the upright
@@ -306,8 +308,8 @@ double ThreadPitch(double pitch, double diameter) {
 
 void RequireHexAroundBore(double across_flats, double diameter) {
   if (!(across_flats > diameter)) {
-    throw Error("across_flats " + FormatNumber(across_flats) +
-                " must be larger than the diameter " + FormatNumber(diameter));
+    throw Error(fmt::format("across_flats {} must be larger than the diameter {}",
+                            FormatNumber(across_flats), FormatNumber(diameter)));
   }
 }
 
@@ -320,8 +322,8 @@ LibraryPart Make(const HexBoltSpec& spec) {
   RequireSegments(spec.segments);
   const double d = spec.diameter, L = spec.length;
   if (spec.thread_length > L) {
-    throw Error("thread_length " + FormatNumber(spec.thread_length) +
-                " must not exceed the length " + FormatNumber(L));
+    throw Error(fmt::format("thread_length {} must not exceed the length {}",
+                            FormatNumber(spec.thread_length), FormatNumber(L)));
   }
   const double pitch = ThreadPitch(spec.pitch, d);
   const HexSize iso = IsoHexSize(d);
@@ -401,8 +403,8 @@ LibraryPart Make(const WasherSpec& spec) {
   RequireSegments(spec.segments);
   const double di = spec.inner_diameter, dout = spec.outer_diameter, t = spec.thickness;
   if (!(di < dout)) {
-    throw Error("inner_diameter " + FormatNumber(di) + " must be smaller than the outer_diameter " +
-                FormatNumber(dout));
+    throw Error(fmt::format("inner_diameter {} must be smaller than the outer_diameter {}",
+                            FormatNumber(di), FormatNumber(dout)));
   }
   // The same facet count on both circles keeps the inner polygon inside the outer one.
   const int segments = CircleSegments(spec.segments, dout);
@@ -508,13 +510,15 @@ LibraryPart Make(const RingGearSpec& spec) {
   // (the internal gear's root) and the internal teeth's tips lie 1 m inside it.
   const double root_diameter = m * (spec.teeth + 2.5);
   if (!(D > root_diameter)) {
-    throw Error("outer_diameter " + FormatNumber(D) + " must be larger than the root diameter " +
-                FormatNumber(root_diameter));
+    throw Error(fmt::format("outer_diameter {} must be larger than the root diameter {}",
+                            FormatNumber(D), FormatNumber(root_diameter)));
   }
   if (!(D * std::cos(kPi / segments) > root_diameter)) {
-    throw Error("outer_diameter " + FormatNumber(D) + " faceted with " + std::to_string(segments) +
-                " segments reaches in to " + FormatNumber(D * std::cos(kPi / segments)) +
-                ", not clear of the root diameter " + FormatNumber(root_diameter));
+    throw Error(fmt::format(
+        "outer_diameter {} faceted with {} segments reaches in to {}, not clear of the root "
+        "diameter {}",
+        FormatNumber(D), segments, FormatNumber(D * std::cos(kPi / segments)),
+        FormatNumber(root_diameter)));
   }
   const Ring2d spaces = InvoluteOutline(
       {spec.teeth, m, spec.pressure_angle, 1.25 * m, m, 2.0 * kPi / segments, kFlankPoints});
@@ -528,7 +532,7 @@ LibraryPart Make(const RingGearSpec& spec) {
 }
 
 LibraryPart Make(const WormSpec& spec) {
-  if (spec.starts < 1) throw Error("starts " + std::to_string(spec.starts) + " must be at least 1");
+  if (spec.starts < 1) throw Error(fmt::format("starts {} must be at least 1", spec.starts));
   RequirePositive(spec.module, "module");
   RequirePositive(spec.pitch_diameter, "pitch_diameter");
   RequirePositive(spec.length, "length");
@@ -538,9 +542,9 @@ LibraryPart Make(const WormSpec& spec) {
   const double r_pitch = spec.pitch_diameter / 2.0;
   const double r_root = r_pitch - 1.25 * m, r_tip = r_pitch + m;
   if (!(r_root > 0.0)) {
-    throw Error("pitch_diameter " + FormatNumber(spec.pitch_diameter) +
-                " must exceed the thread depth below the pitch line, 2.5 modules (" +
-                FormatNumber(2.5 * m) + ")");
+    throw Error(fmt::format(
+        "pitch_diameter {} must exceed the thread depth below the pitch line, 2.5 modules ({})",
+        FormatNumber(spec.pitch_diameter), FormatNumber(2.5 * m)));
   }
   // At least 16 facets per start, so that every thread turn gets 16 samples of its profile
   // per axial pitch (see below).
@@ -600,8 +604,8 @@ LibraryPart Make(const RackSpec& spec) {
   const double m = spec.module, L = spec.length;
   const double depth = spec.height > 0.0 ? spec.height : 4.25 * m;
   if (!(depth > 1.25 * m)) {
-    throw Error("height " + FormatNumber(depth) + " must exceed the dedendum 1.25 modules (" +
-                FormatNumber(1.25 * m) + ")");
+    throw Error(fmt::format("height {} must exceed the dedendum 1.25 modules ({})",
+                            FormatNumber(depth), FormatNumber(1.25 * m)));
   }
   // Distances from a tooth's centre line to its tip corners and root corners.
   const double pitch = kPi * m;
@@ -609,11 +613,12 @@ LibraryPart Make(const RackSpec& spec) {
   const double tip_half = pitch / 4.0 - m * tan_flank;
   const double root_half = pitch / 4.0 + 1.25 * m * tan_flank;
   if (!(tip_half > 0.0)) {
-    throw Error("pressure_angle " + FormatNumber(spec.pressure_angle) + " gives pointed teeth");
+    throw Error(
+        fmt::format("pressure_angle {} gives pointed teeth", FormatNumber(spec.pressure_angle)));
   }
   if (!(root_half < pitch / 2.0)) {
-    throw Error("pressure_angle " + FormatNumber(spec.pressure_angle) +
-                " leaves no root between the teeth");
+    throw Error(fmt::format("pressure_angle {} leaves no root between the teeth",
+                            FormatNumber(spec.pressure_angle)));
   }
   // Tooth k is centred on x = (k + 1/2) pitch; a tooth space is centred on x = 0. Heights
   // within a hair of the tip or root line are put exactly on it: the ear clipping must see
@@ -664,11 +669,11 @@ LibraryPart MakeLibraryPart(const LibrarySpec& spec) {
     LibraryPart part = std::visit([](const auto& s) { return Make(s); }, spec);
     std::set<std::string> ids;
     for (const Feature& f : part.features) {
-      if (!ids.insert(f.id).second) throw Error("duplicate feature id " + f.id);
+      if (!ids.insert(f.id).second) throw Error(fmt::format("duplicate feature id {}", f.id));
     }
     return part;
   } catch (const std::invalid_argument& e) {
-    throw std::invalid_argument(kind + ": " + e.what());
+    throw std::invalid_argument(fmt::format("{}: {}", kind, e.what()));
   }
 }
 

@@ -1,5 +1,7 @@
 #include "kernel/geometry/polygon_triangulation.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -231,11 +233,11 @@ class EarClipper {
 
 void CheckRing(const Ring2d& ring, const std::string& name) {
   if (ring.size() < 3) {
-    throw std::invalid_argument("TriangulatePolygon: " + name + " has " +
-                                std::to_string(ring.size()) + " vertices, fewer than 3");
+    throw std::invalid_argument(
+        fmt::format("TriangulatePolygon: {} has {} vertices, fewer than 3", name, ring.size()));
   }
   if (!(std::abs(SignedArea(ring)) > 0.0)) {
-    throw std::invalid_argument("TriangulatePolygon: " + name + " has no area");
+    throw std::invalid_argument(fmt::format("TriangulatePolygon: {} has no area", name));
   }
 }
 
@@ -263,7 +265,7 @@ std::vector<std::array<std::int32_t, 3>> TriangulatePolygon(const Ring2d& outer,
   };
   std::vector<Hole> queue;
   for (std::size_t h = 0; h < holes.size(); ++h) {
-    CheckRing(holes[h], "hole " + std::to_string(h + 1));
+    CheckRing(holes[h], fmt::format("hole {}", h + 1));
     const std::int32_t node = clipper.LinkRing(holes[h], vertex_count, /*counter_clockwise=*/false);
     vertex_count += static_cast<std::int32_t>(holes[h].size());
     queue.push_back({clipper.Leftmost(node), h});
@@ -275,8 +277,8 @@ std::vector<std::array<std::int32_t, 3>> TriangulatePolygon(const Ring2d& outer,
   });
   for (const Hole& hole : queue) {
     if (!clipper.EliminateHole(hole.leftmost, outer_node)) {
-      throw std::invalid_argument("TriangulatePolygon: hole " + std::to_string(hole.number + 1) +
-                                  " is not inside the outer ring");
+      throw std::invalid_argument(
+          fmt::format("TriangulatePolygon: hole {} is not inside the outer ring", hole.number + 1));
     }
   }
 

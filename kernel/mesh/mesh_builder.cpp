@@ -1,5 +1,7 @@
 #include "kernel/mesh/mesh_builder.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -49,9 +51,10 @@ void MeshBuilder::AddTriangle(std::int32_t a, std::int32_t b, std::int32_t c) {
 
 void MeshBuilder::AddWall(const Indices& lower, const Indices& upper, Diagonal diagonal) {
   if (lower.size() != upper.size() || lower.size() < 3) {
-    throw std::invalid_argument("MeshBuilder::AddWall: rings of " + std::to_string(lower.size()) +
-                                " and " + std::to_string(upper.size()) +
-                                " vertices; need equal sizes of at least 3");
+    throw std::invalid_argument(
+        fmt::format("MeshBuilder::AddWall: rings of {} and {} vertices; need equal sizes of at "
+                    "least 3",
+                    lower.size(), upper.size()));
   }
   const std::size_t n = lower.size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -93,8 +96,8 @@ void MeshBuilder::AddCap(const Indices& outer, const std::vector<Indices>& holes
 
 TriangleMesh ExtrudeRegion(const Region2d& region, double z0, double z1) {
   if (!(z0 < z1)) {
-    throw std::invalid_argument("ExtrudeRegion: z0 " + std::to_string(z0) + " must be below z1 " +
-                                std::to_string(z1));
+    throw std::invalid_argument(fmt::format("ExtrudeRegion: z0 {} must be below z1 {}",
+                                            std::to_string(z0), std::to_string(z1)));
   }
   MeshBuilder builder;
   // Counter-clockwise outer ring and clockwise holes make every wall face away from the
@@ -121,14 +124,15 @@ TriangleMesh ExtrudeRegion(const Region2d& region, double z0, double z1) {
 TriangleMesh MakeRadialGridSolid(const RadialGrid& grid) {
   const int n = grid.angular_segments, m = grid.axial_segments;
   if (n < 3 || m < 1 || !(grid.z0 < grid.z1)) {
-    throw std::invalid_argument("MakeRadialGridSolid: need at least 3 angular segments (" +
-                                std::to_string(n) + "), 1 axial segment (" + std::to_string(m) +
-                                ") and z0 < z1");
+    throw std::invalid_argument(
+        fmt::format("MakeRadialGridSolid: need at least 3 angular segments ({}), 1 axial segment "
+                    "({}) and z0 < z1",
+                    n, m));
   }
   const bool bored = grid.bore_radius > 0.0;
   if (bored && grid.bore_segments < 3) {
-    throw std::invalid_argument("MakeRadialGridSolid: a bore needs at least 3 segments, not " +
-                                std::to_string(grid.bore_segments));
+    throw std::invalid_argument(fmt::format(
+        "MakeRadialGridSolid: a bore needs at least 3 segments, not {}", grid.bore_segments));
   }
   MeshBuilder builder;
   MeshBuilder::Indices below;

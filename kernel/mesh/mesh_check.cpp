@@ -1,5 +1,7 @@
 #include "kernel/mesh/mesh_check.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <tuple>
@@ -70,7 +72,7 @@ MeshCheck CheckMesh(const TriangleMesh& mesh) {
 std::vector<std::string> MeshCheck::Problems() const {
   std::vector<std::string> problems;
   auto add = [&problems](std::size_t count, const char* what) {
-    if (count > 0) problems.push_back(std::to_string(count) + " " + what);
+    if (count > 0) problems.push_back(fmt::format("{} {}", count, what));
   };
   add(non_finite_vertices, "vertices with non-finite coordinates");
   add(out_of_range_faces, "faces referring to missing vertices");

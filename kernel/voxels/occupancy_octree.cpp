@@ -1,5 +1,7 @@
 #include "kernel/voxels/occupancy_octree.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -407,8 +409,8 @@ class OctreeBuilder {
 
   void Run(double voxel) {
     if (!(voxel > 0.0) || !std::isfinite(voxel)) {
-      throw std::invalid_argument("voxel size must be positive and finite, got " +
-                                  std::to_string(voxel));
+      throw std::invalid_argument(
+          fmt::format("voxel size must be positive and finite, got {}", std::to_string(voxel)));
     }
     tree_.voxel_ = voxel;
     GatherTriangles();
@@ -423,9 +425,9 @@ class OctreeBuilder {
     for (int i = 0; i < 3; ++i) {
       const double span = std::floor(bounds.size()[i] / voxel) + 5;
       if (!(span <= double{1 << kMaxDepth})) {
-        throw std::invalid_argument("voxel size " + std::to_string(voxel) + " mm needs " +
-                                    std::to_string(span) + " voxels along an axis; at most " +
-                                    std::to_string(1 << kMaxDepth) + " are supported");
+        throw std::invalid_argument(
+            fmt::format("voxel size {} mm needs {} voxels along an axis; at most {} are supported",
+                        std::to_string(voxel), std::to_string(span), 1 << kMaxDepth));
       }
       tree_.extent_[i] = static_cast<std::int32_t>(span);
       longest = std::max(longest, tree_.extent_[i]);

@@ -1,5 +1,8 @@
 // Axial fits: a shaft, thread or pin seated in a hole, a clearance hole or a tapped hole.
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>  // fmt::join
+
 #include "reasoning/internal/recognizer.h"
 
 namespace mechanist::internal {
@@ -13,16 +16,17 @@ bool Recognizer::Seated(const WorldFeature& c, const WorldFeature& h) {
   if (angle > A_ || offset > L_) {
     if (angle <= near_A_ && offset <= near_L_) {
       Near("axes_not_collinear", c, h,
-           "axes are almost but not quite collinear: angle " + Deg(angle) + ", offset " +
-               Mm(offset) + " (required within " + Deg(A_) + " and " + Mm(L_) + ")");
+           fmt::format("axes are almost but not quite collinear: angle {}, offset {} (required "
+                       "within {} and {})",
+                       Deg(angle), Mm(offset), Deg(A_), Mm(L_)));
     }
     return false;
   }
   if (c.axis.direction.dot(h.axis.direction) < 0 && !h.f.through) {
     Near("feature_sense_reversed", c, h,
-         "collinear and overlapping, but the convex feature points out of the blind " +
-             std::string(ToString(h.f.kind)) +
-             " (a convex axis points toward its free end, a concave one into the material)");
+         fmt::format("collinear and overlapping, but the convex feature points out of the blind {} "
+                     "(a convex axis points toward its free end, a concave one into the material)",
+                     ToString(h.f.kind)));
     return false;
   }
   return true;
@@ -36,9 +40,9 @@ void Recognizer::ShaftHole(const WorldFeature& s, const WorldFeature& h) {
     AddPair(s.f.retained || h.f.retained ? PairType::kRevolute : PairType::kCylindrical, s, h);
   } else if (h.f.retained) {
     Near("shaft_larger_than_hole", s, h,
-         "shaft diameter " + Mm(s.f.diameter) + " is larger than the retained hole's " +
-             Mm(h.f.diameter) + " (required at most hole + " + Mm(L_) +
-             " for a part meant to turn)");
+         fmt::format("shaft diameter {} is larger than the retained hole's {} (required at most "
+                     "hole + {} for a part meant to turn)",
+                     Mm(s.f.diameter), Mm(h.f.diameter), Mm(L_)));
   } else {
     AddPair(PairType::kFixed, s, h, PairFastening::kPressFit);
   }
@@ -51,8 +55,9 @@ void Recognizer::ThreadHole(const WorldFeature& t, const WorldFeature& h) {
     AddPair(PairType::kCylindrical, t, h);
   } else {
     Near("hole_smaller_than_thread", t, h,
-         "hole diameter " + Mm(h.f.diameter) + " is smaller than the thread's " + Mm(t.f.diameter) +
-             " (required at least the thread's major diameter)");
+         fmt::format("hole diameter {} is smaller than the thread's {} (required at least the "
+                     "thread's major diameter)",
+                     Mm(h.f.diameter), Mm(t.f.diameter)));
   }
 }
 
@@ -66,25 +71,24 @@ void Recognizer::ThreadTapped(const WorldFeature& t, const WorldFeature& h) {
   if (!Seated(t, h)) return;
   std::vector<std::string> mismatches;
   if (std::abs(t.f.diameter - h.f.diameter) > L_) {
-    mismatches.push_back("diameter: thread M" + FormatNumber(t.f.diameter) + ", tapped hole M" +
-                         FormatNumber(h.f.diameter));
+    mismatches.push_back(fmt::format("diameter: thread M{}, tapped hole M{}",
+                                     FormatNumber(t.f.diameter), FormatNumber(h.f.diameter)));
   }
   if (std::abs(t.f.pitch - h.f.pitch) > 1e-6 * std::max(t.f.pitch, h.f.pitch)) {
-    mismatches.push_back("pitch: thread " + Mm(t.f.pitch) + ", tapped hole " + Mm(h.f.pitch));
+    mismatches.push_back(
+        fmt::format("pitch: thread {}, tapped hole {}", Mm(t.f.pitch), Mm(h.f.pitch)));
   }
   if (t.f.starts != h.f.starts) {
-    mismatches.push_back("starts: thread " + std::to_string(t.f.starts) + ", tapped hole " +
-                         std::to_string(h.f.starts));
+    mismatches.push_back(fmt::format("starts: thread {}, tapped hole {}", t.f.starts, h.f.starts));
   }
   if (t.f.hand != h.f.hand) {
-    mismatches.push_back(std::string("hand: thread ") +
-                         (t.f.hand == Hand::kRight ? "right" : "left") + ", tapped hole " +
-                         (h.f.hand == Hand::kRight ? "right" : "left"));
+    mismatches.push_back(fmt::format("hand: thread {}, tapped hole {}",
+                                     t.f.hand == Hand::kRight ? "right" : "left",
+                                     h.f.hand == Hand::kRight ? "right" : "left"));
   }
   if (!mismatches.empty()) {
-    std::string message = "threads do not match (required equal)";
-    for (const std::string& m : mismatches) message += "; " + m;
-    Near("thread_mismatch", t, h, message);
+    Near("thread_mismatch", t, h,
+         fmt::format("threads do not match (required equal); {}", fmt::join(mismatches, "; ")));
     return;
   }
   if (t.f.fastening == Fastening::kTight) {

@@ -1,6 +1,8 @@
 // Gearing: spur, internal and helical gear pairs, cycloid discs in pin rings, worms and worm
 // wheels, racks.
 
+#include <fmt/format.h>
+
 #include "reasoning/internal/recognizer.h"
 
 namespace mechanist::internal {
@@ -37,7 +39,7 @@ void Recognizer::GearGear(const WorldFeature& x, const WorldFeature& y) {
     if (angle <= near_A_ && (std::abs(d - required(f1.module)) < f1.module ||
                              std::abs(d - required(f2.module)) < f2.module)) {
       Near("gear_module_mismatch", g1, g2,
-           "modules differ: " + Mm(f1.module) + " and " + Mm(f2.module) + " (required equal)");
+           fmt::format("modules differ: {} and {} (required equal)", Mm(f1.module), Mm(f2.module)));
     }
     return;
   }
@@ -46,8 +48,8 @@ void Recognizer::GearGear(const WorldFeature& x, const WorldFeature& y) {
   const double helix_error = std::abs(helix2 - (internal ? helix1 : -helix1));
   if (angle <= A_ && error <= L_ && helix_error > A_) {
     Near("gear_helix_mismatch", g1, g2,
-         "helix angles " + Deg(helix1) + " and " + Deg(helix2) + " (required equal, " +
-             (internal ? "of the same hand for an internal pair)" : "of opposite hands)"));
+         fmt::format("helix angles {} and {} (required equal, {})", Deg(helix1), Deg(helix2),
+                     internal ? "of the same hand for an internal pair" : "of opposite hands"));
     return;
   }
   if (angle <= A_ && error <= L_) {
@@ -57,18 +59,17 @@ void Recognizer::GearGear(const WorldFeature& x, const WorldFeature& y) {
   if (error >= m) return;
   // The module across the teeth: m, or m / cos(helix) for helical gears.
   const std::string module =
-      helix1 == 0.0 ? FormatNumber(m) : FormatNumber(m) + " / cos(" + Deg(helix1) + ")";
-  const std::string formula =
-      internal
-          ? module + " x |" + std::to_string(f2.teeth) + " - " + std::to_string(f1.teeth) + "| / 2"
-          : module + " x (" + std::to_string(f1.teeth) + " + " + std::to_string(f2.teeth) + ") / 2";
+      helix1 == 0.0 ? FormatNumber(m) : fmt::format("{} / cos({})", FormatNumber(m), Deg(helix1));
+  const std::string formula = internal
+                                  ? fmt::format("{} x |{} - {}| / 2", module, f2.teeth, f1.teeth)
+                                  : fmt::format("{} x ({} + {}) / 2", module, f1.teeth, f2.teeth);
   if (angle > A_ && angle <= near_A_) {
     Near("gear_axes_not_parallel", g1, g2,
-         "axes are " + Deg(angle) + " apart (required parallel within " + Deg(A_) + ")");
+         fmt::format("axes are {} apart (required parallel within {})", Deg(angle), Deg(A_)));
   } else if (angle <= A_) {
     Near("gear_center_distance", g1, g2,
-         "centre distance " + Mm(d) + ", required " + Mm(a) + " = " + formula + " (off by " +
-             Mm(d - a) + ", tolerance " + Mm(L_) + ")");
+         fmt::format("centre distance {}, required {} = {} (off by {}, tolerance {})", Mm(d), Mm(a),
+                     formula, Mm(d - a), Mm(L_)));
   }
 }
 
@@ -81,17 +82,18 @@ void Recognizer::CycloidPins(const WorldFeature& disc, const WorldFeature& ring)
   if (std::abs(offset - e) > near_L_) return;
   if (ring.f.teeth != disc.f.teeth + 1) {
     Near("cycloid_pin_count", disc, ring,
-         std::to_string(ring.f.teeth) + " pins for " + std::to_string(disc.f.teeth) +
-             " lobes (required one pin more than lobes)");
+         fmt::format("{} pins for {} lobes (required one pin more than lobes)", ring.f.teeth,
+                     disc.f.teeth));
     return;
   }
   if (angle > A_) {
     Near("cycloid_axes_not_parallel", disc, ring,
-         "axes are " + Deg(angle) + " apart (required parallel within " + Deg(A_) + ")");
+         fmt::format("axes are {} apart (required parallel within {})", Deg(angle), Deg(A_)));
   } else if (std::abs(offset - e) > L_) {
     Near("cycloid_eccentricity", disc, ring,
-         "the disc's axis is " + Mm(offset) + " from the ring's, required its eccentricity " +
-             Mm(e) + " (off by " + Mm(offset - e) + ", tolerance " + Mm(L_) + ")");
+         fmt::format("the disc's axis is {} from the ring's, required its eccentricity {} (off "
+                     "by {}, tolerance {})",
+                     Mm(offset), Mm(e), Mm(offset - e), Mm(L_)));
   } else {
     AddPair(PairType::kCycloidal, disc, ring);
   }
@@ -110,7 +112,7 @@ void Recognizer::WormWheel(const WorldFeature& w, const WorldFeature& g) {
     if (angle >= kPi / 2 - near_A_ &&
         (std::abs(c.distance - a_worm) < fw.module || std::abs(c.distance - a_wheel) < fg.module)) {
       Near("worm_module_mismatch", w, g,
-           "modules differ: " + Mm(fw.module) + " and " + Mm(fg.module) + " (required equal)");
+           fmt::format("modules differ: {} and {} (required equal)", Mm(fw.module), Mm(fg.module)));
     }
     return;
   }
@@ -123,13 +125,13 @@ void Recognizer::WormWheel(const WorldFeature& w, const WorldFeature& g) {
   if (error >= fg.module) return;
   if (angle < kPi / 2 - A_ && angle >= kPi / 2 - near_A_) {
     Near("worm_axes_not_perpendicular", w, g,
-         "axes are " + Deg(angle) + " apart (required 90 deg within " + Deg(A_) + ")");
+         fmt::format("axes are {} apart (required 90 deg within {})", Deg(angle), Deg(A_)));
   } else if (angle >= kPi / 2 - A_) {
     Near("worm_center_distance", w, g,
-         "centre distance " + Mm(c.distance) + ", required " + Mm(a) + " = (" +
-             FormatNumber(fw.pitch_diameter) + " + " + FormatNumber(fw.module) + " x " +
-             std::to_string(fg.teeth) + ") / 2 (off by " + Mm(c.distance - a) + ", tolerance " +
-             Mm(L_) + ")");
+         fmt::format("centre distance {}, required {} = ({} + {} x {}) / 2 (off by {}, "
+                     "tolerance {})",
+                     Mm(c.distance), Mm(a), FormatNumber(fw.pitch_diameter),
+                     FormatNumber(fw.module), fg.teeth, Mm(c.distance - a), Mm(L_)));
   }
 }
 
@@ -147,7 +149,8 @@ void Recognizer::GearRack(const WorldFeature& g, const WorldFeature& r) {
     if (std::abs(c.distance - g.f.module * g.f.teeth / 2) < g.f.module ||
         std::abs(c.distance - r.f.module * g.f.teeth / 2) < r.f.module) {
       Near("rack_module_mismatch", g, r,
-           "modules differ: " + Mm(g.f.module) + " and " + Mm(r.f.module) + " (required equal)");
+           fmt::format("modules differ: {} and {} (required equal)", Mm(g.f.module),
+                       Mm(r.f.module)));
     }
     return;
   }
@@ -158,9 +161,10 @@ void Recognizer::GearRack(const WorldFeature& g, const WorldFeature& r) {
     AddPair(PairType::kRackPinion, g, r);
   } else if (square && error < g.f.module) {
     Near("rack_pitch_line_distance", g, r,
-         "pitch line at " + Mm(c.distance) + " from the pinion's axis, required " + Mm(a) + " = " +
-             FormatNumber(g.f.module) + " x " + std::to_string(g.f.teeth) + " / 2 (off by " +
-             Mm(c.distance - a) + ", tolerance " + Mm(L_) + ")");
+         fmt::format("pitch line at {} from the pinion's axis, required {} = {} x {} / 2 (off by "
+                     "{}, tolerance {})",
+                     Mm(c.distance), Mm(a), FormatNumber(g.f.module), g.f.teeth, Mm(c.distance - a),
+                     Mm(L_)));
   }
 }
 

@@ -1,6 +1,9 @@
 // What recognition does after the fits: the file's overrides, implied pins, compliant parts, tight
 // threads, clamps, setscrews and unconnected parts.
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>  // fmt::join
+
 #include "reasoning/internal/recognizer.h"
 
 namespace mechanist::internal {
@@ -75,8 +78,10 @@ void Recognizer::SetCompliantPartsApart() {
     diagnostics_.push_back(
         {Severity::kInfo,
          "compliant_part",
-         "part '" + parts.front() + "' is compliant (a spring, belt or hose): not a rigid link; " +
-             (names.empty() ? "it touches no part by its features" : "it connects " + names),
+         fmt::format("part '{}' is compliant (a spring, belt or hose): not a rigid link; {}",
+                     parts.front(),
+                     names.empty() ? "it touches no part by its features"
+                                   : fmt::format("it connects {}", names)),
          parts,
          {}});
   }
@@ -99,15 +104,15 @@ void Recognizer::ReportImpliedPins() {
         pin = std::min(pin, At(f).f.diameter);
       }
     }
-    std::string names;
-    for (const std::string& h : holes) names += (names.empty() ? "" : ", ") + h;
-    diagnostics_.push_back({Severity::kInfo,
-                            "implied_pin",
-                            parts.first + " and " + parts.second + " turn on a pin of about " +
-                                Mm(pin) + " that the file does not model, in holes " + names +
-                                " (a revolute pair; an override of type none forbids it)",
-                            {parts.first, parts.second},
-                            {holes.begin(), holes.end()}});
+    diagnostics_.push_back(
+        {Severity::kInfo,
+         "implied_pin",
+         fmt::format("{} and {} turn on a pin of about {} that the file does not "
+                     "model, in holes {} (a revolute pair; an override of type "
+                     "none forbids it)",
+                     parts.first, parts.second, Mm(pin), fmt::join(holes, ", ")),
+         {parts.first, parts.second},
+         {holes.begin(), holes.end()}});
   }
 }
 
@@ -175,15 +180,12 @@ void Recognizer::ReportUnconnected() {
   }
   if (parts.empty()) return;
   std::sort(parts.begin(), parts.end());
-  std::string names;
-  for (const std::string& p : parts) names += (names.empty() ? "'" : ", '") + p + "'";
+  const bool one = parts.size() == 1;
+  std::string message =
+      fmt::format("{} '{}' {} in no pair: nothing holds or guides {}", one ? "part" : "parts",
+                  fmt::join(parts, "', '"), one ? "is" : "are", one ? "it" : "them");
   diagnostics_.push_back(
-      {Severity::kWarning,
-       "part_unconnected",
-       (parts.size() == 1 ? "part " + names + " is" : "parts " + names + " are") +
-           " in no pair: nothing holds or guides " + (parts.size() == 1 ? "it" : "them"),
-       std::move(parts),
-       {}});
+      {Severity::kWarning, "part_unconnected", std::move(message), std::move(parts), {}});
 }
 
 }  // namespace mechanist::internal

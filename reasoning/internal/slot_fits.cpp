@@ -1,5 +1,7 @@
 // Slot fits: a pin in a slot, a key in a keyway.
 
+#include <fmt/format.h>
+
 #include "reasoning/internal/recognizer.h"
 
 namespace mechanist::internal {
@@ -15,8 +17,9 @@ void Recognizer::PinSlot(const WorldFeature& s, const WorldFeature& sl) {
     AddPair(PairType::kPinSlot, s, sl);
   } else {
     Near("pin_wider_than_slot", s, sl,
-         "pin diameter " + Mm(s.f.diameter) + " is wider than the slot's " + Mm(sl.f.width) +
-             " (required at most the slot width)");
+         fmt::format("pin diameter {} is wider than the slot's {} (required at most the slot "
+                     "width)",
+                     Mm(s.f.diameter), Mm(sl.f.width)));
   }
 }
 
@@ -33,8 +36,8 @@ void Recognizer::KeySlot(const WorldFeature& k, const WorldFeature& sl) {
     AddPair(PairType::kPrismatic, k, sl);
   } else {
     Near("key_wider_than_slot", k, sl,
-         "key width " + Mm(k.f.width) + " is wider than the slot's " + Mm(sl.f.width) +
-             " (required at most the slot width)");
+         fmt::format("key width {} is wider than the slot's {} (required at most the slot width)",
+                     Mm(k.f.width), Mm(sl.f.width)));
   }
 }
 

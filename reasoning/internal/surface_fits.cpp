@@ -1,5 +1,7 @@
 // Spheres and faces: a ball in its socket, planar face contacts.
 
+#include <fmt/format.h>
+
 #include "reasoning/internal/recognizer.h"
 
 namespace mechanist::internal {
@@ -11,8 +13,9 @@ void Recognizer::BallSocket(const WorldFeature& b, const WorldFeature& s) {
     AddPair(PairType::kSpherical, b, s);
   } else if (offset < std::min(b.f.diameter, s.f.diameter) / 2) {
     Near("ball_socket_mismatch", b, s,
-         "centres " + Mm(offset) + " apart and diameters " + Mm(b.f.diameter) + " and " +
-             Mm(s.f.diameter) + " (required same centre and diameter within " + Mm(L_) + ")");
+         fmt::format("centres {} apart and diameters {} and {} (required same centre and diameter "
+                     "within {})",
+                     Mm(offset), Mm(b.f.diameter), Mm(s.f.diameter), Mm(L_)));
   }
 }
 
