@@ -23,6 +23,7 @@
 #include "reasoning/interference.h"
 #include "reasoning/motion_run.h"
 #include "reasoning/movable_range.h"
+#include "reasoning/operation_check.h"
 #include "viz/display_colors.h"
 #include "viz/feature_lines.h"
 #include "viz/viewer_template.h"
@@ -159,10 +160,11 @@ json Sequence(const AssemblyPlan& plan) {
           {"steps", steps}};
 }
 
-json Contact(const std::optional<OperationClash>& c) {
-  if (!c) return nullptr;
-  return {{"at", c->at}, {"parts", json::array({c->part_a, c->part_b})}, {"point", Vector(c->p_W)}};
+json Contact(const OperationClash& c) {
+  return {{"at", c.at}, {"parts", json::array({c.part_a, c.part_b})}, {"point", Vector(c.p_W)}};
 }
+
+json Contact(const std::optional<OperationClash>& c) { return c ? Contact(*c) : json(nullptr); }
 
 json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOptions& options) {
   json data;
@@ -252,12 +254,19 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
     const Driver& driver = assembly.drivers()[d];
     const MotionRun run = PlanRun(assembly, analysis, d, std::nullopt);
     const bool rotation = driver.motion == Driver::Motion::kRotation;
-    drivers.push_back({{"id", driver.id},
-                       {"rotation", rotation},
-                       {"amount", run.amount},
-                       {"possible", run.possible},
-                       {"reason", run.reason},
-                       {"paths", Paths(run.paths)}});
+    json entry = {{"id", driver.id},          {"rotation", rotation}, {"amount", run.amount},
+                  {"possible", run.possible}, {"reason", run.reason}, {"paths", Paths(run.paths)}};
+    // The swept check of the run (as `mechanist sweep` along these paths): the first contact
+    // of each pair of parts that meet on the way.
+    if (options.ranges && collision && run.possible) {
+      json clashes = json::array();
+      for (const OperationClash& c :
+           SweepPaths(assembly, analysis, *collision, run.paths, run.amount).clashes) {
+        clashes.push_back(Contact(c));
+      }
+      entry["clashes"] = clashes;
+    }
+    drivers.push_back(entry);
   }
   data["drivers"] = drivers;
 

@@ -294,6 +294,37 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       depthWrite: false, clippingPlanes: clipping })));
   });
 
+  // A driver's run at s: the parts on its paths, and the clashes the swept check found on the
+  // way (contacts reached by s) red with a dot where they meet. Returns those clashes.
+  const runDots = new THREE.Group();
+  scene.add(runDots);
+  // Back to the colours at rest, without the run's dots.
+  const clearRun = () => {
+    while (runDots.children.length) runDots.remove(runDots.children[0]);
+    for (const part of parts) part.material.color.copy(part.color);
+    changed();
+  };
+  const runDriver = (i, s) => {
+    const d = data.drivers[i];
+    state.driver = i;
+    leaveSteps();
+    show(d.paths, s);
+    const met = (d.clashes || []).filter((c) => c.at <= s);
+    clearRun();
+    const red = new Set();
+    for (const c of met) {
+      c.parts.forEach((p) => red.add(p));
+      const dot = new THREE.Mesh(new THREE.SphereGeometry(1, 12, 8),
+        new THREE.MeshBasicMaterial({ color: 0xdd1111, depthTest: false }));
+      dot.position.set(c.point[0], c.point[1], c.point[2]);
+      dot.scale.setScalar(dotSize);
+      dot.renderOrder = 1;
+      runDots.add(dot);
+    }
+    for (const p of red) parts[p].material.color.setRGB(0.85, 0.05, 0.05);
+    return met.map((c) => ({ parts: c.parts.map((p) => data.parts[p].id), at: c.at }));
+  };
+
   // ---- panel ----
   $("title").textContent = data.name || "assembly";
   const unit = (driver) => (driver.rotation ? "rev" : data.length_unit);
@@ -309,15 +340,13 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     Object.assign(slider, { type: "range", min: 0, max: 1000, value: 0, id: "driver-" + i });
     const label = text("span", "");
     const play = text("button", "play");
-    // Amounts in the file's units; the paths count mm for a slide, revolutions for a turn.
-    const scale = d.rotation ? 1 : data.mm_per_length;
+    // The run's parameter counts revolutions, or the file's length units, as its paths do.
     const set = () => {
       const s = (slider.value / 1000) * d.amount;
+      const met = runDriver(i, s);
       label.textContent = " " + (d.rotation ? (360 * s).toFixed(1) + " deg" :
-        s.toFixed(2) + " " + unit(d));
-      state.driver = i;
-      leaveSteps();
-      show(d.paths, s * scale);
+        s.toFixed(2) + " " + unit(d)) + (met.length ? ": " + met[0].parts.join(" meets ") : "");
+      label.className = met.length ? "error" : "";
     };
     slider.addEventListener("input", set);
     let timer = null;
@@ -330,6 +359,14 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     $("drivers").appendChild(row);
   });
   if (!data.drivers.length) $("drivers").textContent = "no driver";
+  data.drivers.forEach((d) => {
+    if (d.clashes && d.clashes.length) {
+      $("drivers").appendChild(text("div", d.id + " runs into a clash: " + d.clashes.map((c) =>
+        data.parts[c.parts[0]].id + " meets " + data.parts[c.parts[1]].id + " at " +
+        (d.rotation ? (360 * c.at).toFixed(1) + " deg" : c.at.toFixed(2) + " " + unit(d)))
+        .join("; "), "error"));
+    }
+  });
 
   const mobility = data.mobility;
   $("mobility").appendChild(text("div", "mobility " + mobility.dof + ", " + mobility.redundant +
@@ -497,6 +534,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     if (motion.behind && s < -motion.behind.at) { s = -motion.behind.at; stop = motion.behind; }
     state.driver = null;
     leaveSteps();
+    clearRun();
     show(motion.paths, s);
     stopMarker.visible = stop !== null;
     if (stop) {
@@ -628,6 +666,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     });
   };
   const stepTo = (k, u) => {
+    clearRun();
     const st = plan.steps[k];
     step = k;
     const later = new Set();
@@ -774,14 +813,15 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     data,
     /** Milliseconds from the start of navigation to the first frame drawn. */
     loadedMs: performance.now(),
-    /** Runs driver `index` to `s` (revolutions, or the file's length units). */
+    /** Runs driver `index` to `s` (revolutions, or the file's length units): the clashes of
+     *  its run reached by then, {parts: [two ids], at}. */
     setDriver(index, s) {
       const d = data.drivers[index];
       const slider = $("driver-" + index);
       if (slider) slider.value = Math.round((1000 * s) / d.amount);
-      state.driver = index;
-      show(d.paths, s * (d.rotation ? 1 : data.mm_per_length));
+      const met = runDriver(index, s);
       draw();
+      return met;
     },
     /** Drags part `id` by `s` revolutions ("turn") or length units ("slide"): true, or
      *  {stop: [the two parts that meet], at} when its movable range ends first; false when

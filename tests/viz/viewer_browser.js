@@ -7,7 +7,8 @@
 //                        "follower": ID, "axis": [x,y,z], "degrees": D},
 //               "graph": {"nodes": N, "edges": E},
 //               "step": {"part": ID, "obstacle": ID},
-//               "cache": {"part": ID, "turns": T}}, every entry optional
+//               "cache": {"part": ID, "turns": T},
+//               "run": {"driver": 0, "s": S, "meets": [ID, ID]}}, every entry optional
 // Prints one line per check and exits 1 at the first failure.
 "use strict";
 const fs = require("fs");
@@ -136,6 +137,18 @@ function fail(message) {
     console.log("ok dragging " + t.part + " stops at " + (360 * result.at).toFixed(1) +
                 " deg where " + result.stop.join(" and ") + " meet");
     await shot("viewer_stop.png");
+  }
+  if (checks.run) {
+    const r = checks.run;
+    const met = await page.evaluate((r) => window.mechanist.setDriver(r.driver, r.s), r);
+    const want = JSON.stringify(r.meets.slice().sort());
+    if (!met.some((c) => JSON.stringify(c.parts.slice().sort()) === want)) {
+      fail("running driver " + r.driver + " to " + r.s + " meets " + JSON.stringify(met) +
+           ", not " + r.meets);
+    }
+    console.log("ok running driver " + r.driver + " to " + r.s + " shows its clash: " +
+                met.map((c) => c.parts.join(" meets ") + " at " + c.at.toFixed(3)).join("; "));
+    await shot("viewer_run.png");
   }
   if (checks.held) {
     const info = await page.evaluate((id) => {

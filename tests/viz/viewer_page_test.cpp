@@ -18,9 +18,11 @@
 
 #include "io/load_assembly.h"
 #include "io/text_edit.h"
+#include "kernel/collision/collision_model.h"
 #include "reasoning/analysis.h"
 #include "reasoning/assembly_plan.h"
 #include "reasoning/motion_run.h"
+#include "reasoning/operation_check.h"
 #include "run_command.h"
 
 namespace mechanist {
@@ -194,6 +196,35 @@ TEST(ViewerPage, CarriesTheAssemblySequence) {
   EXPECT_TRUE(PageData(ViewerHtml(assembly, analysis, options))["assembly"].is_null());
 }
 
+// pushed_by_contact with shaft a fixed to the ground: the motor's arm runs its lug into b.
+Assembly PushedWithAFixed() {
+  const std::string pushed =
+      std::string(MECHANIST_SOURCE_DIR) + "/examples/pushed_by_contact/assembly.json";
+  return LoadAssemblyText(testing::Replace(testing::ReadText(pushed), R"({"id": "a", "library")",
+                                           R"({"id": "a", "ground": true, "library")"),
+                          pushed);
+}
+
+TEST(ViewerPage, CarriesTheClashesOfEachDriversRun) {
+  const Assembly assembly = PushedWithAFixed();
+  const Analysis analysis = Analyze(assembly);
+  const json driver = PageData(ViewerHtml(assembly, analysis))["drivers"][0];
+  const MotionRun run = PlanRun(assembly, analysis, 0, std::nullopt);
+  const OperationCheck sweep =
+      SweepPaths(assembly, analysis, CollisionModel(assembly), run.paths, run.amount);
+  ASSERT_FALSE(sweep.clashes.empty());
+  ASSERT_EQ(driver["clashes"].size(), sweep.clashes.size());
+  for (std::size_t k = 0; k < sweep.clashes.size(); ++k) {
+    EXPECT_EQ(driver["clashes"][k]["at"], sweep.clashes[k].at);
+    EXPECT_EQ(driver["clashes"][k]["parts"],
+              json({sweep.clashes[k].part_a, sweep.clashes[k].part_b}));
+  }
+  // Without the swept checks, no clashes of runs.
+  ViewerOptions options;
+  options.ranges = false;
+  EXPECT_FALSE(PageData(ViewerHtml(assembly, analysis, options))["drivers"][0].contains("clashes"));
+}
+
 TEST(ViewerPage, SaysWhereThreeJsIsMissing) {
   const Assembly assembly = LoadAssembly(kWorm);
   ViewerOptions options;
@@ -264,20 +295,44 @@ TEST(ViewerPage, WorksInABrowser) {
                          {"degrees", 4.5}}}};
   EXPECT_EQ(RunBrowser(dir, "page.html", checks), "") << "worm drive";
 
-  // A drag that stops: with shaft a fixed to the ground, the arm's lug meets block b.
-  const std::string pushed =
-      std::string(MECHANIST_SOURCE_DIR) + "/examples/pushed_by_contact/assembly.json";
-  const Assembly stopped =
-      LoadAssemblyText(testing::Replace(testing::ReadText(pushed), R"({"id": "a", "library")",
-                                        R"({"id": "a", "ground": true, "library")"),
-                       pushed);
+  // A drag that stops, and a run into a clash: with shaft a fixed to the ground, the arm's
+  // lug meets block b.
+  const Assembly stopped = PushedWithAFixed();
   std::ofstream(dir / "stop.html") << ViewerHtml(stopped, Analyze(stopped));
-  const json stop = {{"stop", {{"part", "d"}, {"turns", 0.5}, {"meets", {"b", "lug"}}}}};
+  const json stop = {{"stop", {{"part", "d"}, {"turns", 0.5}, {"meets", {"b", "lug"}}}},
+                     {"run", {{"driver", 0}, {"s", 0.5}, {"meets", {"b", "lug"}}}}};
   EXPECT_EQ(RunBrowser(dir, "stop.html", stop), "") << "a drag that stops";
+
+  // A slide in inches: the page's poses are StateAt's in the file's length units.
+  const Assembly slider = LoadAssemblyText(R"({"mechanist": 1, "units": {"length": "in"},
+    "parts": [
+      {"id": "frame", "ground": true,
+       "library": {"kind": "plate", "length": 5, "width": 2, "thickness": 0.2},
+       "pose": {"position": [-2, -0.4, -0.2]}, "features": [{"id": "guide", "kind": "slot",
+        "origin": [0, 1.0, 0.2], "axis": [1, 0, 0], "width": 0.16, "length": 5, "depth": 0.08,
+        "normal": [0, 0, 1]}]},
+      {"id": "block", "library": {"kind": "plate", "length": 0.8, "width": 0.5, "thickness": 0.3},
+       "pose": {"position": [-0.4, 0.35, 0]}, "features": [{"id": "key", "kind": "key", "origin": [0, 0.25, 0],
+        "axis": [1, 0, 0], "width": 0.157, "length": 0.8, "normal": [0, 0, 1]}]}],
+    "drivers": [{"id": "push", "part": "block", "feature": "key", "motion": "translation",
+                 "rate": 1, "amount": 2}]})",
+                                           dir / "slider.json");
+  const Analysis slid = Analyze(slider);
+  std::ofstream(dir / "slider.html") << ViewerHtml(slider, slid);
+  const AssemblyState at = StateAt(slider, PlanRun(slider, slid, 0, std::nullopt), 0.5);
+  ASSERT_NEAR((at.X_WP[1].translation() - slider.part(1).X_WP.translation()).norm(), 12.7,
+              1e-9);  // half an inch
+  const json slide = {
+      {"poses",
+       {{"driver", 0},
+        {"s", 0.5},
+        {"parts", {{"frame", Matrix(at.X_WP[0])}, {"block", Matrix(at.X_WP[1])}}}}}};
+  EXPECT_EQ(RunBrowser(dir, "slider.html", slide), "") << "a slide in inches";
 
   // The assembly stepper: as the file stands, part c cannot go in; its step stops where it
   // meets the top.
-  const Assembly blocked = LoadAssembly(pushed);
+  const Assembly blocked =
+      LoadAssembly(std::string(MECHANIST_SOURCE_DIR) + "/examples/pushed_by_contact/assembly.json");
   std::ofstream(dir / "steps.html") << ViewerHtml(blocked, Analyze(blocked));
   const json step = {{"step", {{"part", "c"}, {"obstacle", "top"}}}};
   EXPECT_EQ(RunBrowser(dir, "steps.html", step), "") << "a blocked insertion";
