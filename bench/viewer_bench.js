@@ -2,7 +2,8 @@
 // and measures what a person waits for and sees: the time from navigation to the first frame
 // drawn (best and median of RUNS loads), the frame rate while the view is orbited with the
 // mouse (everything redrawn each frame), and the frame rate while a part is dragged with the
-// mouse (its train following; the still parts come from the page's cache).
+// mouse (its train following; the still parts come from the page's cache), against the same
+// drag with the cache off.
 // Usage: NODE_PATH=.../node_modules node viewer_bench.js CHROMIUM PAGE.html PART [RUNS = 3]
 "use strict";
 const path = require("path");
@@ -60,6 +61,11 @@ async function sweepMouse(page, x, y, until) {
   const turned = await page.evaluate((id) => window.mechanist.turned(id, [0, 0, 1]), part);
   console.log("frame rate, dragging " + part + ": " + dragging.toFixed(1) + " fps (it turned " +
               turned.toFixed(1) + " deg)");
+  // The same drag with every part redrawn each frame (the page without its cache).
+  await page.evaluate(() => window.mechanist.setCache(false));
+  const uncached = await frameRate(page, 5000, (until) => sweepMouse(page, x, y, until));
+  console.log("frame rate, dragging " + part + " without the cache: " + uncached.toFixed(1) +
+              " fps (the cache draws " + (dragging / uncached).toFixed(1) + " times as many)");
   // Orbiting: pressing on empty space near the view's top edge turns the camera.
   const orbiting = await frameRate(page, 5000, (until) => sweepMouse(page, 500, 30, until));
   console.log("frame rate, orbiting: " + orbiting.toFixed(1) + " fps");

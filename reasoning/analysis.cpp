@@ -19,12 +19,9 @@ Analysis Analyze(const Assembly& assembly, const std::vector<Pair>& extra) {
   analysis.pairs.insert(analysis.pairs.end(), extra.begin(), extra.end());
   analysis.graph = std::make_shared<const PairGraph>(assembly, analysis.pairs);
   analysis.subassemblies = analysis.graph->Subassemblies();
-  analysis.subassembly_of.assign(assembly.parts().size(), 0);
-  for (std::size_t s = 0; s < analysis.subassemblies.size(); ++s) {
-    for (std::size_t part : analysis.subassemblies[s].parts) analysis.subassembly_of[part] = s;
-  }
-  analysis.motion = AnalyzeMotion(assembly, analysis.pairs, analysis.subassemblies,
-                                  analysis.subassembly_of, std::move(recognition.axes_W));
+  analysis.subassembly_of = analysis.graph->SubassemblyOf();
+  analysis.motion =
+      AnalyzeMotion(assembly, analysis.pairs, analysis.graph, std::move(recognition.axes_W));
   analysis.diagnostics = CheckAssembly(assembly);
   std::vector<Diagnostic> fasteners = CheckFasteners(assembly, analysis.pairs);
   std::vector<std::size_t> run_starts = {0};

@@ -5,7 +5,6 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <map>
 #include <memory>
 #include <span>
@@ -36,10 +35,11 @@ constexpr EnumNames<MotionKind, 4> kMotionKindNames{{
 class MotionModel {
  public:
   MotionModel(const Assembly& assembly, const std::vector<Pair>& pairs,
-              const std::vector<Subassembly>& subassemblies,
-              const std::vector<std::size_t>& subassembly_of, std::vector<AxisSegment> axes_W = {})
+              std::shared_ptr<const PairGraph> graph, std::vector<AxisSegment> axes_W = {})
       : assembly_(assembly),
-        model_(assembly, pairs, subassemblies, subassembly_of, std::move(axes_W)),
+        graph_(std::move(graph)),
+        model_(assembly, pairs, graph_->Subassemblies(), graph_->SubassemblyOf(),
+               std::move(axes_W)),
         structural_(model_.freedoms().size(), kTolerance),
         mm_per_length_(ExactReal::FromDecimal(assembly.units().mm_per_length)) {
     std::vector<std::pair<std::size_t, std::size_t>> parts;  // (body, part)
@@ -51,7 +51,6 @@ class MotionModel {
     for (const ConstraintRow& row : model_.rows()) {
       outcomes_.push_back(structural_.AddRow(row.terms));
     }
-    std::vector<std::pair<std::size_t, std::pair<std::size_t, std::size_t>>> edges;
     has_pair_.assign(model_.body_count(), false);
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       if (pairs[i].type == PairType::kWormGear) {
@@ -61,11 +60,7 @@ class MotionModel {
       const std::size_t a = model_.body_of_part(pairs[i].a.part);
       const std::size_t b = model_.body_of_part(pairs[i].b.part);
       has_pair_[a] = has_pair_[b] = true;
-      if (a == b) continue;
-      edges.push_back({a, {b, i}});
-      edges.push_back({b, {a, i}});
     }
-    edges_ = CompressedRows<std::pair<std::size_t, std::size_t>>(model_.body_count(), edges);
   }
 
   const KinematicModel& model() const { return model_; }
@@ -182,33 +177,31 @@ class MotionModel {
   }
 
   /// Self-locking worm gears that the imposed motions would reach from the wheel's side first:
-  /// breadth-first from the driven bodies over joints and couplings, not through the ground.
+  /// breadth-first from the driven parts over the pair graph, a body at a time (a body reached
+  /// through one of its parts is reached), not out of the ground.
   std::vector<std::size_t> BackDrivenWorms(const std::vector<ImposedMotion>& imposed) const {
     if (!self_locking_worms_) return {};
-    const std::size_t bodies = model_.body_count();
-    std::vector<bool> seen(bodies, false);
-    std::deque<std::size_t> queue;
+    std::vector<bool> reached(model_.body_count(), false);
+    std::vector<std::size_t> from, locked;
     for (const ImposedMotion& m : imposed) {
-      const std::size_t body = model_.body_of_part(m.feature.part);
-      if (!seen[body]) seen[body] = true, queue.push_back(body);
+      from.push_back(m.feature.part);
+      reached[model_.body_of_part(m.feature.part)] = true;
     }
-    std::vector<std::size_t> locked;
-    while (!queue.empty()) {
-      const std::size_t body = queue.front();
-      queue.pop_front();
-      if (body == model_.ground()) continue;
-      for (const auto& [other, pair] : edges_[body]) {
-        const auto worm = worms_.find(pair);
-        const Pair* p = worm == worms_.end() ? nullptr : &worm->second;
-        const bool into_worm = p && p->self_locking && body == model_.body_of_part(p->b.part) &&
-                               other == model_.body_of_part(p->a.part);
-        if (into_worm && !seen[other] && model_.CommonCarrier(p->a, p->b)) {
-          locked.push_back(pair);
-          continue;
-        }
-        if (!seen[other]) seen[other] = true, queue.push_back(other);
+    graph_->Reachable(from, [&](std::size_t pair, std::size_t at, std::size_t to) {
+      const std::size_t body = model_.body_of_part(at), other = model_.body_of_part(to);
+      if (body == other) return true;
+      if (body == model_.ground()) return false;
+      const auto worm = worms_.find(pair);
+      const Pair* p = worm == worms_.end() ? nullptr : &worm->second;
+      const bool into_worm = p && p->self_locking && body == model_.body_of_part(p->b.part) &&
+                             other == model_.body_of_part(p->a.part);
+      if (into_worm && !reached[other] && model_.CommonCarrier(p->a, p->b)) {
+        locked.push_back(pair);
+        return false;
       }
-    }
+      reached[other] = true;
+      return true;
+    });
     std::sort(locked.begin(), locked.end());
     return locked;
   }
@@ -279,13 +272,13 @@ class MotionModel {
   }
 
   const Assembly& assembly_;
+  std::shared_ptr<const PairGraph> graph_;
   std::map<std::size_t, Pair> worms_;  // the worm gear pairs, by index: the model keeps no
                                        // reference to its analysis' pairs, which may move
   KinematicModel model_;
   LinearSystem structural_;
   std::vector<LinearSystem::Outcome> outcomes_;
   CompressedRows<std::size_t> parts_of_body_;
-  CompressedRows<std::pair<std::size_t, std::size_t>> edges_;  // body: (body, pair)
   ExactReal mm_per_length_;          // reports give lengths in the file's units
   bool self_locking_worms_ = false;  // whether any worm gear pair is self-locking
   std::vector<bool> has_pair_;       // per body: HasPair
@@ -367,12 +360,11 @@ DrivenMotion SolveImposed(const MotionAnalysis& motion, const std::vector<Impose
 }
 
 MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& pairs,
-                             const std::vector<Subassembly>& subassemblies,
-                             const std::vector<std::size_t>& subassembly_of,
+                             std::shared_ptr<const PairGraph> graph,
                              std::vector<AxisSegment> axes_W) {
   MotionAnalysis result;
-  result.model = std::make_shared<const MotionModel>(assembly, pairs, subassemblies, subassembly_of,
-                                                     std::move(axes_W));
+  result.model =
+      std::make_shared<const MotionModel>(assembly, pairs, std::move(graph), std::move(axes_W));
   const MotionModel& motion_model = *result.model;
   const KinematicModel& model = motion_model.model();
   result.diagnostics = model.diagnostics();

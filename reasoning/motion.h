@@ -122,11 +122,12 @@ struct ImposedMotion {
 
 /// Velocity analysis (joint space, see KinematicModel) of the recognised `pairs`: mobility,
 /// redundant constraints, jams, free motions and each driver's motion, exact where the
-/// mechanism's ratios are rational (tooth counts, thread leads). `axes_W`: the features' world
-/// axes at the file's poses when recognition gave them (see KinematicModel); empty: computed.
+/// mechanism's ratios are rational (tooth counts, thread leads). `graph`: the pair graph of
+/// `pairs` (its subassemblies are the bodies; the model keeps it for the walks of later
+/// scenarios). `axes_W`: the features' world axes at the file's poses when recognition gave
+/// them (see KinematicModel); empty: computed.
 MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& pairs,
-                             const std::vector<Subassembly>& subassemblies,
-                             const std::vector<std::size_t>& subassembly_of,
+                             std::shared_ptr<const PairGraph> graph,
                              std::vector<AxisSegment> axes_W = {});
 
 /// The motion when `imposed` run together (the first at its rate, the others as given) and

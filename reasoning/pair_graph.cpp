@@ -22,12 +22,38 @@ using Graph = boost::compressed_sparse_row_graph<boost::directedS, boost::no_pro
 
 struct PairGraph::Impl {
   Graph all;
-  /// Per part: its subassembly's representative among the parts joined by fixed pairs
-  /// (Boost's disjoint sets), ground parts joined to the world (vertex part_count()).
-  std::vector<std::size_t> group_of;
-  std::vector<std::size_t> by_id;  ///< the parts ordered by id (inverse of Assembly::PartRank)
-  std::vector<bool> ground;
+  std::vector<Subassembly> subassemblies;
+  std::vector<std::size_t> subassembly_of;  ///< per part
 };
+
+namespace {
+
+/// The subassemblies from each part's representative among the parts joined by fixed pairs
+/// (`group_of`, ground parts joined to the world), visiting the parts in id order (`by_id`):
+/// each group's parts come in order and the groups in the order of their first parts, with no
+/// sort (the ground group of a large assembly holds most of its parts).
+std::vector<Subassembly> GroupParts(const std::vector<std::size_t>& group_of,
+                                    const std::vector<std::size_t>& by_id,
+                                    const std::vector<bool>& ground) {
+  std::vector<long> group_index(group_of.size() + 1, -1);  // per representative
+  std::vector<Subassembly> groups;
+  for (std::size_t part : by_id) {
+    long& g = group_index[group_of[part]];
+    if (g < 0) {
+      g = static_cast<long>(groups.size());
+      groups.emplace_back();
+    }
+    groups[static_cast<std::size_t>(g)].parts.push_back(part);
+    groups[static_cast<std::size_t>(g)].ground |= ground[part];
+  }
+  // All ground parts are one group: it goes first, the others keep their order.
+  const auto first_ground =
+      std::find_if(groups.begin(), groups.end(), [](const Subassembly& g) { return g.ground; });
+  if (first_ground != groups.end()) std::rotate(groups.begin(), first_ground, first_ground + 1);
+  return groups;
+}
+
+}  // namespace
 
 PairGraph::PairGraph(const Assembly& assembly, const std::vector<Pair>& pairs)
     : impl_(std::make_unique<Impl>()) {
@@ -52,15 +78,21 @@ PairGraph::PairGraph(const Assembly& assembly, const std::vector<Pair>& pairs)
   impl_->all =
       Graph(boost::edges_are_unsorted_multi_pass, edges.begin(), edges.end(), index.begin(), n);
 
-  impl_->by_id.resize(n);
-  impl_->ground.reserve(n);
+  std::vector<std::size_t> by_id(n);  // the parts ordered by id (inverse of Assembly::PartRank)
+  std::vector<bool> ground;
+  ground.reserve(n);
   for (std::size_t part = 0; part < n; ++part) {
-    impl_->by_id.at(assembly.PartRank(part)) = part;
-    impl_->ground.push_back(assembly.IsGround(part));
+    by_id.at(assembly.PartRank(part)) = part;
+    ground.push_back(assembly.IsGround(part));
     if (assembly.IsGround(part)) sets.union_set(part, n);
   }
-  impl_->group_of.resize(n);
-  for (std::size_t part = 0; part < n; ++part) impl_->group_of[part] = sets.find_set(part);
+  std::vector<std::size_t> group_of(n);
+  for (std::size_t part = 0; part < n; ++part) group_of[part] = sets.find_set(part);
+  impl_->subassemblies = GroupParts(group_of, by_id, ground);
+  impl_->subassembly_of.resize(n);
+  for (std::size_t g = 0; g < impl_->subassemblies.size(); ++g) {
+    for (const std::size_t part : impl_->subassemblies[g].parts) impl_->subassembly_of[part] = g;
+  }
 }
 
 PairGraph::~PairGraph() = default;
@@ -102,26 +134,8 @@ std::vector<std::size_t> PairGraph::Reachable(
   return reached;
 }
 
-std::vector<Subassembly> PairGraph::Subassemblies() const {
-  const std::size_t n = part_count();
-  std::vector<long> group_index(n + 1, -1);  // per representative
-  std::vector<Subassembly> groups;
-  // Parts in id order: each group's parts come in order and the groups in the order of their
-  // first parts, with no sort (the ground group of a large assembly holds most of its parts).
-  for (std::size_t part : impl_->by_id) {
-    long& g = group_index[impl_->group_of[part]];
-    if (g < 0) {
-      g = static_cast<long>(groups.size());
-      groups.emplace_back();
-    }
-    groups[static_cast<std::size_t>(g)].parts.push_back(part);
-    groups[static_cast<std::size_t>(g)].ground |= impl_->ground[part];
-  }
-  // All ground parts are one group: it goes first, the others keep their order.
-  const auto ground =
-      std::find_if(groups.begin(), groups.end(), [](const Subassembly& g) { return g.ground; });
-  if (ground != groups.end()) std::rotate(groups.begin(), ground, ground + 1);
-  return groups;
-}
+const std::vector<Subassembly>& PairGraph::Subassemblies() const { return impl_->subassemblies; }
+
+const std::vector<std::size_t>& PairGraph::SubassemblyOf() const { return impl_->subassembly_of; }
 
 }  // namespace mechanist

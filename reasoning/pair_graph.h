@@ -39,7 +39,9 @@ class PairGraph {
       const std::function<bool(std::size_t pair, std::size_t at, std::size_t to)>& cross) const;
   /// The subassemblies: connected components over fixed pairs, with every ground part joined
   /// to the world. Ordered by their first part's id; the ground one first when it exists.
-  std::vector<Subassembly> Subassemblies() const;
+  const std::vector<Subassembly>& Subassemblies() const;
+  /// Per part: the index of its subassembly in Subassemblies().
+  const std::vector<std::size_t>& SubassemblyOf() const;
 
  private:
   struct Impl;

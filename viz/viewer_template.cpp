@@ -298,10 +298,13 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   // way (contacts reached by s) red with a dot where they meet. Returns those clashes.
   const runDots = new THREE.Group();
   scene.add(runDots);
-  // Back to the colours at rest, without the run's dots.
+  // Back to the colours at rest, without the run's dots (when a run marked any).
+  let runMarked = false;
   const clearRun = () => {
+    if (!runMarked) return;
     while (runDots.children.length) runDots.remove(runDots.children[0]);
     for (const part of parts) part.material.color.copy(part.color);
+    runMarked = false;
     changed();
   };
   const runDriver = (i, s) => {
@@ -322,6 +325,8 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       runDots.add(dot);
     }
     for (const p of red) parts[p].material.color.setRGB(0.85, 0.05, 0.05);
+    runMarked = met.length > 0;
+    if (runMarked) changed();
     return met.map((c) => ({ parts: c.parts.map((p) => data.parts[p].id), at: c.at }));
   };
 

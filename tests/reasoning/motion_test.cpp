@@ -327,16 +327,12 @@ TEST(Motion, StackedPlanetaryStagesMultiply) {
 TEST(Motion, AxesFromRecognitionGiveTheSameMotionAsComputedOnes) {
   const Assembly a = TwoStagePlanetary();
   Recognition r = RecognizePairs(a, InitialState(a));
-  const std::vector<Subassembly> groups = PairGraph(a, r.pairs).Subassemblies();
-  std::vector<std::size_t> group_of(a.parts().size());
-  for (std::size_t g = 0; g < groups.size(); ++g) {
-    for (std::size_t p : groups[g].parts) group_of[p] = g;
-  }
+  const auto graph = std::make_shared<const PairGraph>(a, r.pairs);
   ASSERT_EQ(r.axes_W.size(), a.feature_count());
-  EXPECT_THROW(AnalyzeMotion(a, r.pairs, groups, group_of, std::vector<AxisSegment>(3)),
+  EXPECT_THROW(AnalyzeMotion(a, r.pairs, graph, std::vector<AxisSegment>(3)),
                std::invalid_argument);
-  const MotionAnalysis given = AnalyzeMotion(a, r.pairs, groups, group_of, r.axes_W);
-  const MotionAnalysis computed = AnalyzeMotion(a, r.pairs, groups, group_of);
+  const MotionAnalysis given = AnalyzeMotion(a, r.pairs, graph, r.axes_W);
+  const MotionAnalysis computed = AnalyzeMotion(a, r.pairs, graph);
   EXPECT_EQ(given.mobility.dof, computed.mobility.dof);
   EXPECT_EQ(given.mobility.redundant, computed.mobility.redundant);
   ASSERT_EQ(given.driven.size(), computed.driven.size());
