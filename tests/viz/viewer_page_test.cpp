@@ -336,6 +336,14 @@ TEST(ViewerPage, WorksInABrowser) {
   std::ofstream(dir / "steps.html") << ViewerHtml(blocked, Analyze(blocked));
   const json step = {{"step", {{"part", "c"}, {"obstacle", "top"}}}};
   EXPECT_EQ(RunBrowser(dir, "steps.html", step), "") << "a blocked insertion";
+
+  // A real export (build123d's print-in-place hinge, ../shared/data/real): printed in place,
+  // its lid cannot go in; the stepper shows where it meets the base.
+  const Assembly hinge = LoadAssembly(std::string(MECHANIST_SHARED_DATA) +
+                                      "/real/hinge_clamshell_build123d/clamshell_full.step");
+  std::ofstream(dir / "hinge.html") << ViewerHtml(hinge, Analyze(hinge));
+  const json printed = {{"step", {{"part", "COMPOUND"}, {"obstacle", "COMPOUND_solid2"}}}};
+  EXPECT_EQ(RunBrowser(dir, "hinge.html", printed), "") << "a real STEP export";
 }
 
 }  // namespace
