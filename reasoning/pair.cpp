@@ -9,13 +9,14 @@ static_assert(sizeof(Pair) <= 88, "Pair has grown: the analysis reads every pair
 
 namespace {
 
-constexpr EnumNames<PairSource, 6> kSources = {{
+constexpr EnumNames<PairSource, 7> kSources = {{
     {PairSource::kRecognised, "recognised"},
     {PairSource::kOverride, "override"},
     {PairSource::kClamp, "clamp"},
     {PairSource::kSetscrew, "setscrew"},
     {PairSource::kImpliedPin, "implied_pin"},
     {PairSource::kInferred, "inferred_from_interference"},
+    {PairSource::kBearing, "bearing"},
 }};
 
 constexpr EnumNames<PairFastening, 6> kFastenings = {{

@@ -19,6 +19,7 @@ enum class PairSource : std::uint8_t {
   kSetscrew,    ///< a tight setscrew's tip bears on a shaft
   kInferred,    ///< the running mechanism's sweep found one part pushing the other along
   kImpliedPin,  ///< two coaxial holes with nothing in them: a pin the CAD file left out
+  kBearing,     ///< a rolling bearing's rings, or a rolling element held with its outer ring
 };
 
 /// How a pair is held, where that matters to the user.

@@ -48,6 +48,7 @@ Recognition Recognizer::Run() {
     parts[i] = static_cast<std::uint32_t>(features_[i].ref.part);
   }
   for (const auto& [i, j] : OverlappingBoxPairs(reach_, parts)) Test(features_[i], features_[j]);
+  AddBearings();
   AddImpliedPins();
   SetCompliantPartsApart();
   ApplyOverrides();

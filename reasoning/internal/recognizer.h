@@ -2,7 +2,8 @@
 
 // The pair recogniser shared by the files of pair recognition (not installed): the features at
 // their world poses, the fit rules' thresholds, and the Recognizer, whose rules live one file
-// per kind of fit (axial_fits.cpp, slot_fits.cpp, gear_fits.cpp, surface_fits.cpp), its side
+// per kind of fit (axial_fits.cpp, slot_fits.cpp, gear_fits.cpp, surface_fits.cpp,
+// bearing_fits.cpp), its side
 // effects (overrides, implied pins, clamps, setscrews) in recognition_side_effects.cpp and its
 // core (broad phase, dispatch, output) in reasoning/pair_recognition.cpp.
 
@@ -142,6 +143,22 @@ class Recognizer {
 
   void FaceFace(const WorldFeature& x, const WorldFeature& y);
 
+  // ---- rolling bearings (bearing_fits.cpp) ----
+
+  /// Ball bearings as they are sold (README, "Real CAD exports"): three or more parts that are
+  /// each one ball of one diameter (within the length tolerance), their centres on a circle
+  /// (the pitch circle, fitted in the plane of the centres by Kasa's algebraic fit, every
+  /// centre within the length tolerance of it), neighbours at most four ball diameters
+  /// apart; the inner ring is the part with a shaft coaxial with the circle between the
+  /// raceway's bottom and the pitch circle (its land), the outer ring the part with such a
+  /// hole between the pitch circle and the outer raceway's bottom, both within a ball radius
+  /// of the balls' plane. The rings make a revolute pair (source bearing) and no other pair
+  /// between them (a land is never a press fit); each ball is held with the outer ring (a
+  /// fixed pair, source bearing: its spin and orbit are not modelled, and it adds no freedom),
+  /// and makes no other pair. One info diagnostic `bearing` per bearing gives its balls and
+  /// size (bore x outside diameter x width, mm). Before the implied pins and the overrides.
+  void AddBearings();
+
   // ---- overrides and side effects (recognition_side_effects.cpp; the order of the
   // pairs in pair_recognition.cpp) ----
 
@@ -195,6 +212,7 @@ class Recognizer {
   static constexpr int kSourceBits = 3;
   static_assert(static_cast<int>(PairSource::kInferred) < (1 << kSourceBits));
   static_assert(static_cast<int>(PairSource::kImpliedPin) < (1 << kSourceBits));
+  static_assert(static_cast<int>(PairSource::kBearing) < (1 << kSourceBits));
 
   /// Pairs order by feature names, then source, then as found, not by indices, so that
   /// reordering the file changes nothing: the name ranks and the source packed in one key.

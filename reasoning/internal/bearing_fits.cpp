@@ -1,0 +1,188 @@
+// Rolling bearings modelled as they are sold: rings and balls (Recognizer::AddBearings).
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+
+#include "reasoning/internal/recognizer.h"
+
+namespace mechanist::internal {
+namespace {
+
+/// A circle in space through points: its centre, unit normal and radius, and the largest
+/// distance of a point from it.
+struct SpaceCircle {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  double radius = 0.0;
+  double worst = 0.0;
+};
+
+/// The plane of the points (their centroid and the direction of least spread), then Kasa's
+/// algebraic circle fit in it: x^2 + y^2 + a x + b y + c = 0 by least squares. Nothing for
+/// fewer than three points or points on a line.
+std::optional<SpaceCircle> FitCircle(const std::vector<Eigen::Vector3d>& points) {
+  if (points.size() < 3) return std::nullopt;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : points) centroid += p;
+  centroid /= static_cast<double>(points.size());
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3d& p : points) scatter += (p - centroid) * (p - centroid).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
+  // Eigenvalues ascend: the plane's normal first, the in-plane directions after.
+  if (!(eigen.eigenvalues()[1] > 1e-12 * eigen.eigenvalues()[2])) return std::nullopt;
+  const Eigen::Vector3d n = eigen.eigenvectors().col(0);
+  const Eigen::Vector3d u = eigen.eigenvectors().col(2), v = n.cross(u);
+  Eigen::MatrixXd A(points.size(), 3);
+  Eigen::VectorXd rhs(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double x = (points[i] - centroid).dot(u), y = (points[i] - centroid).dot(v);
+    A.row(static_cast<Eigen::Index>(i)) << x, y, 1.0;
+    rhs[static_cast<Eigen::Index>(i)] = -(x * x + y * y);
+  }
+  const Eigen::Vector3d abc = A.colPivHouseholderQr().solve(rhs);
+  const double cx = -abc[0] / 2, cy = -abc[1] / 2;
+  const double r2 = cx * cx + cy * cy - abc[2];
+  if (!(r2 > 0)) return std::nullopt;
+  SpaceCircle c;
+  c.center = centroid + cx * u + cy * v;
+  c.normal = n;
+  c.radius = std::sqrt(r2);
+  for (const Eigen::Vector3d& p : points) {
+    const double off_plane = (p - c.center).dot(n);
+    const double in_plane = ((p - c.center) - off_plane * n).norm() - c.radius;
+    c.worst = std::max(c.worst, std::hypot(off_plane, in_plane));
+  }
+  return c;
+}
+
+}  // namespace
+
+void Recognizer::AddBearings() {
+  // The balls: parts that are one ball and nothing else, by diameter.
+  std::vector<const WorldFeature*> balls;
+  for (std::size_t part = 0; part < assembly_.parts().size(); ++part) {
+    if (assembly_.FeatureCount(part) != 1) continue;
+    const WorldFeature& w = At({part, 0});
+    if (w.f.kind == FeatureKind::kBall) balls.push_back(&w);
+  }
+  if (balls.size() < 3) return;
+  std::sort(balls.begin(), balls.end(), [&](const WorldFeature* x, const WorldFeature* y) {
+    return x->f.diameter != y->f.diameter ? x->f.diameter < y->f.diameter : NameLess(*x, *y);
+  });
+  // Sets of balls of one diameter whose neighbours lie at most four diameters apart (single
+  // linkage): the rolling elements of one bearing each.
+  std::vector<std::vector<const WorldFeature*>> sets;
+  std::vector<bool> taken(balls.size(), false);
+  for (std::size_t first = 0; first < balls.size(); ++first) {
+    if (taken[first]) continue;
+    std::vector<const WorldFeature*> set{balls[first]};
+    taken[first] = true;
+    for (std::size_t k = 0; k < set.size(); ++k) {
+      for (std::size_t j = first + 1; j < balls.size(); ++j) {
+        const WorldFeature& b = *balls[j];
+        if (taken[j] || std::abs(b.f.diameter - set[k]->f.diameter) > L_) continue;
+        if ((b.axis.origin - set[k]->axis.origin).norm() > 4 * b.f.diameter) continue;
+        taken[j] = true;
+        set.push_back(&b);
+      }
+    }
+    if (set.size() >= 3) sets.push_back(std::move(set));
+  }
+  for (std::vector<const WorldFeature*>& set : sets) {
+    std::vector<Eigen::Vector3d> centers;
+    for (const WorldFeature* b : set) centers.push_back(b->axis.origin);
+    const std::optional<SpaceCircle> pitch = FitCircle(centers);
+    if (!pitch || pitch->worst > L_) continue;
+    const double ball_r = set.front()->f.diameter / 2;
+    std::set<std::size_t> in_set;
+    for (const WorldFeature* b : set) in_set.insert(b->ref.part);
+    // The rings' lands: coaxial with the pitch circle, between a raceway's bottom and the
+    // pitch circle, within a ball radius of the balls' plane along the axis.
+    const WorldFeature* inner = nullptr;
+    const WorldFeature* outer = nullptr;
+    for (const WorldFeature& w : features_) {
+      const bool shaft = w.f.kind == FeatureKind::kShaft, hole = w.f.kind == FeatureKind::kHole;
+      if ((!shaft && !hole) || in_set.count(w.ref.part)) continue;
+      if (AngleBetweenLines(w.axis.direction, pitch->normal) > A_ ||
+          DistanceToLine(pitch->center, w.axis.origin, w.axis.direction) > L_) {
+        continue;
+      }
+      const double r = w.f.diameter / 2;
+      const double along = (pitch->center - w.axis.origin).dot(w.axis.direction);
+      const double outside = std::max({0.0, -along, along - w.axis.length});
+      if (outside > ball_r + L_) continue;
+      if (shaft && r > pitch->radius - ball_r - L_ && r < pitch->radius &&
+          (!inner || r > inner->f.diameter / 2 ||
+           (r == inner->f.diameter / 2 && NameLess(w, *inner)))) {
+        inner = &w;
+      }
+      if (hole && r < pitch->radius + ball_r + L_ && r > pitch->radius &&
+          (!outer || r < outer->f.diameter / 2 ||
+           (r == outer->f.diameter / 2 && NameLess(w, *outer)))) {
+        outer = &w;
+      }
+    }
+    if (!inner || !outer || inner->ref.part == outer->ref.part) continue;
+    // The rings' pairs go; the balls' too: a bearing's parts touch in many places.
+    std::erase_if(pairs_, [&](const Pair& p) {
+      const std::size_t a = p.a.part, b = p.b.part;
+      return in_set.count(a) || in_set.count(b) ||
+             (std::min(a, b) == std::min(inner->ref.part, outer->ref.part) &&
+              std::max(a, b) == std::max(inner->ref.part, outer->ref.part));
+    });
+    AddPair(PairType::kRevolute, *inner, *outer);
+    pairs_.back().source = PairSource::kBearing;
+    for (const WorldFeature* b : set) {
+      AddPair(PairType::kFixed, *b, *outer);
+      pairs_.back().source = PairSource::kBearing;
+    }
+    // Its size as a catalogue gives it: the inner ring's bore, the outer ring's outside
+    // diameter and width (between its end faces, which chamfers do not shorten as they do
+    // its outside cylinder).
+    double bore = 0.0, outside = 0.0, width = 0.0;
+    for (std::size_t f = 0; f < assembly_.FeatureCount(inner->ref.part); ++f) {
+      const WorldFeature& w = At({inner->ref.part, f});
+      if (w.f.kind != FeatureKind::kHole || AngleBetweenLines(w.axis.direction, pitch->normal) > A_)
+        continue;
+      if (bore == 0.0 || w.f.diameter < bore) bore = w.f.diameter;
+    }
+    for (std::size_t f = 0; f < assembly_.FeatureCount(outer->ref.part); ++f) {
+      const WorldFeature& w = At({outer->ref.part, f});
+      if (w.f.kind != FeatureKind::kShaft ||
+          AngleBetweenLines(w.axis.direction, pitch->normal) > A_) {
+        continue;
+      }
+      if (w.f.diameter > outside) outside = w.f.diameter, width = w.axis.length;
+    }
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::size_t f = 0; f < assembly_.FeatureCount(outer->ref.part); ++f) {
+      const WorldFeature& w = At({outer->ref.part, f});
+      if (w.f.kind != FeatureKind::kFace || AngleBetweenLines(w.normal_W, pitch->normal) > A_) {
+        continue;
+      }
+      const double at = (w.axis.origin - pitch->center).dot(pitch->normal);
+      lo = std::min(lo, at), hi = std::max(hi, at);
+    }
+    if (hi > lo) width = hi - lo;
+    const std::string size = bore > 0 && outside > 0
+                                 ? fmt::format(", {} x {} x {} mm", FormatNumber(bore),
+                                               FormatNumber(outside), FormatNumber(width))
+                                 : "";
+    std::vector<std::string> parts{std::string(assembly_.PartId(inner->ref.part)),
+                                   std::string(assembly_.PartId(outer->ref.part))};
+    for (const WorldFeature* b : set) parts.emplace_back(assembly_.PartId(b->ref.part));
+    diagnostics_.push_back(
+        {Severity::kInfo,
+         "bearing",
+         fmt::format("a ball bearing{}: {} turns in {} on {} balls of {} on a {} pitch circle "
+                     "(a revolute pair; the balls are held with the outer ring, their spin and "
+                     "orbit not modelled)",
+                     size, assembly_.PartId(inner->ref.part), assembly_.PartId(outer->ref.part),
+                     set.size(), Mm(2 * ball_r), Mm(2 * pitch->radius)),
+         parts,
+         {Name(*inner), Name(*outer)}});
+  }
+}
+
+}  // namespace mechanist::internal

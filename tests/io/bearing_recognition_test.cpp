@@ -1,0 +1,137 @@
+// Rolling bearings as they are sold (rings and balls): recognised as a revolute pair between
+// the rings, the balls held with the outer ring; on a sketch with a 6002's dimensions and on
+// the Fusion 360 rotary pendulum of ../shared/data/real, whose SKF 6002 has 9 separate balls.
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/load_assembly.h"
+#include "reasoning/analysis.h"
+
+namespace mechanist {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A 6002 (15 x 32 x 9) drawn by its features, axis z: the inner ring's bore and its two lands
+// beside the raceway, the outer ring's outside and its two lands, and `balls` balls of 4.762
+// mm on a 23.5 mm pitch circle in z = 0, the first moved by `off` mm across the circle.
+std::string Sketch(int balls, double off = 0.0) {
+  std::string elements;
+  for (int k = 0; k < balls; ++k) {
+    const double a = 2 * kPi * k / balls, r = 11.75 + (k == 0 ? off : 0.0);
+    elements += fmt::format(
+        R"(, {{"id": "ball{}", "features": [{{"id": "ball", "kind": "ball",
+          "origin": [{}, {}, 0], "diameter": 4.762}}]}})",
+        k + 1, r * std::cos(a), r * std::sin(a));
+  }
+  return fmt::format(R"({{"mechanist": 1, "parts": [
+    {{"id": "outer", "ground": true, "features": [
+      {{"id": "outside", "kind": "shaft", "origin": [0, 0, -4.5], "axis": [0, 0, 1],
+       "diameter": 32, "length": 9}},
+      {{"id": "land_a", "kind": "hole", "origin": [0, 0, -4.5], "axis": [0, 0, 1],
+       "diameter": 26.7, "length": 2.6, "through": true}},
+      {{"id": "land_b", "kind": "hole", "origin": [0, 0, 1.9], "axis": [0, 0, 1],
+       "diameter": 26.7, "length": 2.6, "through": true}}]}},
+    {{"id": "inner", "features": [
+      {{"id": "bore", "kind": "hole", "origin": [0, 0, -4.5], "axis": [0, 0, 1],
+       "diameter": 15, "length": 9, "through": true}},
+      {{"id": "land_a", "kind": "shaft", "origin": [0, 0, -4.5], "axis": [0, 0, 1],
+       "diameter": 20.5, "length": 2.6}},
+      {{"id": "land_b", "kind": "shaft", "origin": [0, 0, 1.9], "axis": [0, 0, 1],
+       "diameter": 20.5, "length": 2.6}}]}}{}]}})",
+                     elements);
+}
+
+int CountSource(const Analysis& an, PairSource source) {
+  int n = 0;
+  for (const Pair& p : an.pairs) n += p.source == source;
+  return n;
+}
+
+const Diagnostic* Find(const Analysis& an, const std::string& code) {
+  for (const Diagnostic& d : an.diagnostics) {
+    if (d.code == code) return &d;
+  }
+  return nullptr;
+}
+
+TEST(Bearing, RingsAndBallsAreOneRevoluteBearing) {
+  const Assembly a = LoadAssemblyText(Sketch(9), "bearing.json");
+  const Analysis an = Analyze(a);
+  // The rings turn on each other; each ball is held with the outer ring and adds no freedom.
+  ASSERT_EQ(CountSource(an, PairSource::kBearing), 10);
+  int revolute = 0;
+  for (const Pair& p : an.pairs) {
+    EXPECT_EQ(p.source, PairSource::kBearing) << a.FeatureName(p.a) << " " << a.FeatureName(p.b);
+    if (p.type == PairType::kRevolute) {
+      ++revolute;
+      EXPECT_EQ(a.FeatureName(p.a), "inner/land_a");  // the lands, closest to the balls
+      EXPECT_EQ(a.FeatureName(p.b), "outer/land_a");
+    } else {
+      EXPECT_EQ(p.type, PairType::kFixed);
+      EXPECT_EQ(a.PartId(p.b.part), "outer");
+    }
+  }
+  EXPECT_EQ(revolute, 1);
+  EXPECT_EQ(an.motion.mobility.dof, 1);  // the inner ring's turn
+  const Diagnostic* bearing = Find(an, "bearing");
+  ASSERT_NE(bearing, nullptr);
+  EXPECT_NE(bearing->message.find("15 x 32 x 9 mm"), std::string::npos) << bearing->message;
+  EXPECT_NE(bearing->message.find("9 balls of 4.762 mm on a 23.5 mm pitch circle"),
+            std::string::npos)
+      << bearing->message;
+  EXPECT_EQ(Find(an, "part_unconnected"), nullptr);
+}
+
+TEST(Bearing, BallsOffTheirCircleOrTooFewAreNoBearing) {
+  // A ball 0.5 mm off the pitch circle (ten times the length tolerance): no circle, no bearing.
+  const Analysis off = Analyze(LoadAssemblyText(Sketch(9, 0.5), "off.json"));
+  EXPECT_EQ(CountSource(off, PairSource::kBearing), 0);
+  EXPECT_EQ(Find(off, "bearing"), nullptr);
+  // Two balls are no pitch circle.
+  const Analysis two = Analyze(LoadAssemblyText(Sketch(2), "two.json"));
+  EXPECT_EQ(CountSource(two, PairSource::kBearing), 0);
+  // Four balls, 16.6 mm apart (3.5 diameters), are.
+  const Analysis four = Analyze(LoadAssemblyText(Sketch(4), "four.json"));
+  EXPECT_EQ(CountSource(four, PairSource::kBearing), 5);
+}
+
+TEST(Bearing, TheFusionPendulumsSkf6002IsFoundWithItsNineBalls) {
+  // Truth: a deep-groove ball bearing, 9 balls of r about 2.36 on a pitch circle of r about
+  // 11.7, races of bore r 7.5 and outside r 16 (an SKF 6002: 15 x 32 x 9).
+  const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) / "real" /
+                                  "rotary_pendulum_ball_bearing_fusion" / "Assembly.step");
+  const Analysis an = Analyze(a);
+  const Diagnostic* bearing = Find(an, "bearing");
+  ASSERT_NE(bearing, nullptr);
+  EXPECT_NE(bearing->message.find("15 x 32 x 9 mm"), std::string::npos) << bearing->message;
+  EXPECT_NE(bearing->message.find("9 balls of 4.762 mm"), std::string::npos) << bearing->message;
+  EXPECT_EQ(bearing->parts.size(), 11u);  // two rings and nine balls
+  const Pair* rings = nullptr;
+  for (const Pair& p : an.pairs) {
+    if (p.source == PairSource::kBearing && p.type == PairType::kRevolute) rings = &p;
+  }
+  ASSERT_NE(rings, nullptr);
+  EXPECT_NE(std::string(a.PartId(rings->a.part)).find("SKF_6002_or_1_solid10"), std::string::npos);
+  EXPECT_NE(std::string(a.PartId(rings->b.part)).find("SKF_6002_or_1_solid11"), std::string::npos);
+  // The truth's axis: x, with the arm's small yaw (y component 0.006).
+  const AxisSegment axis = a.feature(rings->a).WorldAxis(a.part(rings->a.part).X_WP);
+  EXPECT_NEAR(std::abs(axis.direction.x()), 1.0, 1e-3);
+  EXPECT_NEAR(std::abs(axis.direction.y()), 0.006, 1e-3);
+  // No ball is left unconnected.
+  const Diagnostic* unconnected = Find(an, "part_unconnected");
+  if (unconnected) {
+    for (const std::string& part : unconnected->parts) {
+      EXPECT_EQ(part.find("SKF_6002"), std::string::npos) << part;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace mechanist
