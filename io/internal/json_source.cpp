@@ -34,9 +34,12 @@ class Parser {
 
   std::string Describe() const {
     if (pos_ >= text_.size()) return "the end of the file";
-    const char c = text_[pos_];
-    if (static_cast<unsigned char>(c) < 0x20) return "a control character";
-    return fmt::format("'{}'", c);
+    const auto c = static_cast<unsigned char>(text_[pos_]);
+    if (c < 0x20) return "a control character";
+    // A byte outside ASCII (a binary file, another encoding) as its code: the terminal
+    // would show it as garbage or not at all.
+    if (c > 0x7e) return fmt::format("the byte 0x{:02x}", c);
+    return fmt::format("'{}'", static_cast<char>(c));
   }
 
   void Advance() {
