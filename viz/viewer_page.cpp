@@ -248,14 +248,22 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
   }
   data["expectations"] = expectations;
 
-  // Each driver's run, on the same paths as animate and sweep.
+  // Each driver's run, on the same paths as animate and sweep, then, with several, all of
+  // them together at their rates (the run's parameter counts time units).
   json drivers = json::array();
-  for (std::size_t d = 0; d < assembly.drivers().size(); ++d) {
-    const Driver& driver = assembly.drivers()[d];
-    const MotionRun run = PlanRun(assembly, analysis, d, std::nullopt);
-    const bool rotation = driver.motion == Driver::Motion::kRotation;
-    json entry = {{"id", driver.id},          {"rotation", rotation}, {"amount", run.amount},
-                  {"possible", run.possible}, {"reason", run.reason}, {"paths", Paths(run.paths)}};
+  const std::size_t runs = assembly.drivers().size() + (assembly.drivers().size() > 1 ? 1 : 0);
+  for (std::size_t d = 0; d < runs; ++d) {
+    const bool together = d == assembly.drivers().size();
+    const std::optional<std::size_t> driver = together ? std::nullopt : std::optional(d);
+    const MotionRun run = PlanRun(assembly, analysis, driver, std::nullopt);
+    json entry = {
+        {"id", together ? "all together" : assembly.drivers()[d].id},
+        {"together", together},
+        {"rotation", !together && assembly.drivers()[d].motion == Driver::Motion::kRotation},
+        {"amount", run.amount},
+        {"possible", run.possible},
+        {"reason", run.reason},
+        {"paths", Paths(run.paths)}};
     // The swept check of the run (as `mechanist sweep` along these paths): the first contact
     // of each pair of parts that meet on the way.
     if (options.ranges && collision && run.possible) {

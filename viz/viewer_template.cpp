@@ -269,15 +269,18 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   // Parts in a clash at rest: red, with a dot where they meet.
   const clashing = new Set();
   const dotSize = Math.max(data.reach_mm, 1) / 150;
-  for (const c of data.clashes) {
-    c.parts.forEach((p) => clashing.add(p));
+  // A red dot at a contact point, drawn over everything.
+  const contactDot = (point) => {
     const dot = new THREE.Mesh(new THREE.SphereGeometry(1, 12, 8),
       new THREE.MeshBasicMaterial({ color: 0xdd1111, depthTest: false }));
-    dot.position.set(c.point[0], c.point[1], c.point[2]);
+    dot.position.set(point[0], point[1], point[2]);
     dot.scale.setScalar(dotSize);
     dot.renderOrder = 1;
-    dot.userData.clash = true;
-    scene.add(dot);
+    return dot;
+  };
+  for (const c of data.clashes) {
+    c.parts.forEach((p) => clashing.add(p));
+    scene.add(contactDot(c.point));
   }
   for (const p of clashing) {
     parts[p].color.setRGB(0.85, 0.05, 0.05);
@@ -317,12 +320,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     const red = new Set();
     for (const c of met) {
       c.parts.forEach((p) => red.add(p));
-      const dot = new THREE.Mesh(new THREE.SphereGeometry(1, 12, 8),
-        new THREE.MeshBasicMaterial({ color: 0xdd1111, depthTest: false }));
-      dot.position.set(c.point[0], c.point[1], c.point[2]);
-      dot.scale.setScalar(dotSize);
-      dot.renderOrder = 1;
-      runDots.add(dot);
+      runDots.add(contactDot(c.point));
     }
     for (const p of red) parts[p].material.color.setRGB(0.85, 0.05, 0.05);
     runMarked = met.length > 0;
@@ -332,7 +330,11 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
 
   // ---- panel ----
   $("title").textContent = data.name || "assembly";
-  const unit = (driver) => (driver.rotation ? "rev" : data.length_unit);
+  const unit = (driver) => (driver.together ? "s" : driver.rotation ? "rev" : data.length_unit);
+  // A run's parameter in words: degrees of a turn, length units of a slide, time of all
+  // drivers together.
+  const runWords = (d, s) => (d.rotation ? (360 * s).toFixed(1) + " deg" :
+    s.toFixed(2) + " " + unit(d));
   data.drivers.forEach((d, i) => {
     const row = document.createElement("div");
     row.appendChild(text("span", d.id + " "));
@@ -349,8 +351,8 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     const set = () => {
       const s = (slider.value / 1000) * d.amount;
       const met = runDriver(i, s);
-      label.textContent = " " + (d.rotation ? (360 * s).toFixed(1) + " deg" :
-        s.toFixed(2) + " " + unit(d)) + (met.length ? ": " + met[0].parts.join(" meets ") : "");
+      label.textContent = " " + runWords(d, s) +
+        (met.length ? ": " + met[0].parts.join(" meets ") : "");
       label.className = met.length ? "error" : "";
     };
     slider.addEventListener("input", set);
@@ -368,8 +370,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     if (d.clashes && d.clashes.length) {
       $("drivers").appendChild(text("div", d.id + " runs into a clash: " + d.clashes.map((c) =>
         data.parts[c.parts[0]].id + " meets " + data.parts[c.parts[1]].id + " at " +
-        (d.rotation ? (360 * c.at).toFixed(1) + " deg" : c.at.toFixed(2) + " " + unit(d)))
-        .join("; "), "error"));
+        runWords(d, c.at)).join("; "), "error"));
     }
   });
 
@@ -525,10 +526,8 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   const dragSlider = $("drag"), dragMode = $("drag-mode");
   const dragMotion = () => data.drags[selected][dragMode.value];
   // A red dot where two parts meet at the end of a drag's movable range.
-  const stopMarker = new THREE.Mesh(new THREE.SphereGeometry(1, 16, 12),
-    new THREE.MeshBasicMaterial({ color: 0xdd1111, depthTest: false }));
+  const stopMarker = contactDot([0, 0, 0]);
   stopMarker.visible = false;
-  stopMarker.renderOrder = 1;
   scene.add(stopMarker);
   // Drags part `selected` to s (revolutions, or mm for a slide), stopped by its movable range;
   // returns the contact it stops at, or null.
@@ -544,7 +543,6 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     stopMarker.visible = stop !== null;
     if (stop) {
       stopMarker.position.set(stop.point[0], stop.point[1], stop.point[2]);
-      stopMarker.scale.setScalar(data.reach_mm / 150);
       highlight([selected].concat(stop.parts));
     }
     $("drag-value").textContent = (mode === "turn" ? (360 * s).toFixed(1) + " deg" :
@@ -642,10 +640,8 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   // up to its first contact, the obstacle marked), and hides the parts of later steps.
   const plan = data.assembly;
   let step = null, stepTimer = null;
-  const stepMarker = new THREE.Mesh(new THREE.SphereGeometry(1, 16, 12),
-    new THREE.MeshBasicMaterial({ color: 0xdd1111, depthTest: false }));
+  const stepMarker = contactDot([0, 0, 0]);
   stepMarker.visible = false;
-  stepMarker.renderOrder = 1;
   scene.add(stepMarker);
   const stepWords = (st) => {
     const moving = [st.part].concat(st.carried).map((p) => data.parts[p].id).join(" + ");
@@ -691,7 +687,6 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     stepMarker.visible = reached;
     if (reached) {
       stepMarker.position.set(first.point[0], first.point[1], first.point[2]);
-      stepMarker.scale.setScalar(dotSize);
     }
     highlight([st.part]);
     seeThrough(reached ? first.part : null);
@@ -818,7 +813,8 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     data,
     /** Milliseconds from the start of navigation to the first frame drawn. */
     loadedMs: performance.now(),
-    /** Runs driver `index` to `s` (revolutions, or the file's length units): the clashes of
+    /** Runs driver `index` to `s` (revolutions, or the file's length units; with several
+     *  drivers, the last index runs them all together, `s` in time units): the clashes of
      *  its run reached by then, {parts: [two ids], at}. */
     setDriver(index, s) {
       const d = data.drivers[index];

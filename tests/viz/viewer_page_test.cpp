@@ -95,6 +95,30 @@ TEST(ViewerPage, CarriesTheDriversPathsThatStateAtUses) {
   for (const json& e : data["expectations"]) EXPECT_TRUE(e["passed"]) << e.dump();
 }
 
+TEST(ViewerPage, RunsSeveralDriversAlsoAllTogether) {
+  // The planetary differential sketch: two drivers, then both at their rates.
+  const Assembly assembly = LoadAssembly(std::string(MECHANIST_SOURCE_DIR) +
+                                         "/examples/planetary_differential_sketch/assembly.json");
+  const Analysis analysis = Analyze(assembly);
+  ASSERT_EQ(assembly.drivers().size(), 2u);
+  const json drivers = PageData(ViewerHtml(assembly, analysis))["drivers"];
+  ASSERT_EQ(drivers.size(), 3u);
+  EXPECT_FALSE(drivers[0]["together"]);
+  EXPECT_TRUE(drivers[2]["together"]);
+  EXPECT_EQ(drivers[2]["id"], "all together");
+  const MotionRun run = PlanRun(assembly, analysis, std::nullopt, std::nullopt);
+  EXPECT_EQ(drivers[2]["amount"], run.amount);
+  const double s = 0.4 * run.amount;
+  const AssemblyState state = StateAt(assembly, run, s);
+  for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
+    const json& paths = drivers[2]["paths"];
+    const std::string key = std::to_string(p);
+    const RigidTransform X = paths.contains(key) ? PathOf(paths[key]).At(s) * assembly.part(p).X_WP
+                                                 : assembly.part(p).X_WP;
+    EXPECT_LT((X.matrix() - state.X_WP[p].matrix()).norm(), 1e-12) << p;
+  }
+}
+
 TEST(ViewerPage, ShowsClashesAtRestAndEnclosedGaps) {
   // Two plates overlapping by 3 mm: a clash, its parts and a point inside both.
   const Assembly clash = LoadAssemblyText(R"({"mechanist": 1, "parts": [
@@ -328,6 +352,20 @@ TEST(ViewerPage, WorksInABrowser) {
         {"s", 0.5},
         {"parts", {{"frame", Matrix(at.X_WP[0])}, {"block", Matrix(at.X_WP[1])}}}}}};
   EXPECT_EQ(RunBrowser(dir, "slider.html", slide), "") << "a slide in inches";
+
+  // All drivers together: the planetary differential's two drivers at their rates.
+  const Assembly differential = LoadAssembly(
+      std::string(MECHANIST_SOURCE_DIR) + "/examples/planetary_differential_sketch/assembly.json");
+  const Analysis both = Analyze(differential);
+  std::ofstream(dir / "differential.html") << ViewerHtml(differential, both);
+  const AssemblyState together =
+      StateAt(differential, PlanRun(differential, both, std::nullopt, std::nullopt), 0.3);
+  json together_poses = json::object();
+  for (std::size_t p = 0; p < differential.parts().size(); ++p) {
+    together_poses[differential.part(p).id] = Matrix(together.X_WP[p]);
+  }
+  const json all = {{"poses", {{"driver", 2}, {"s", 0.3}, {"parts", together_poses}}}};
+  EXPECT_EQ(RunBrowser(dir, "differential.html", all), "") << "all drivers together";
 
   // The assembly stepper: as the file stands, part c cannot go in; its step stops where it
   // meets the top.
