@@ -112,8 +112,9 @@ struct AssemblySpec {
   std::vector<AssemblyStep> steps;
   std::vector<PairOverride> overrides;
   std::vector<Expectation> expectations;
-  /// What reading inferred and says so (the heuristics of a STEP import), reported with the
-  /// description checks.
+  /// What loading did beyond reading the file's words, and says so (features recognised,
+  /// the nut-on-bolt heuristic, adjustments locked, the STEP reader's messages; see
+  /// LoadAssembly), reported with the description checks.
   std::vector<Diagnostic> findings;
 };
 
