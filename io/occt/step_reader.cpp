@@ -42,6 +42,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <tuple>
 
 #include "kernel/support/number_format.h"
@@ -628,20 +629,48 @@ class SignalsAsExceptions {
 // The first error report of Open CASCADE's reader, which usually names the entity at fault.
 std::string FirstError(const std::vector<StepMessage>& messages) {
   for (const StepMessage& m : messages) {
-    if (m.error) return fmt::format("; the reader reported: {}", m.text);
+    if (!m.error) continue;
+    // Its parser frames a report in stars ("* ERR StepFile : ... *").
+    std::string_view text = m.text;
+    while (!text.empty() && (text.front() == '*' || text.front() == ' ')) text.remove_prefix(1);
+    while (!text.empty() && (text.back() == '*' || text.back() == ' ')) text.remove_suffix(1);
+    return fmt::format("; the reader reported: {}", text);
   }
   return "";
 }
 
-std::vector<StepSolid> ReadSolids(const std::filesystem::path& file) {
+// What a status of the reader's ReadFile says about the file.
+std::string ReadFailure(IFSelect_ReturnStatus status) {
+  switch (status) {
+    case IFSelect_RetVoid:
+      return "it holds no STEP data";
+    case IFSelect_RetError:
+      return "it is not valid STEP (a syntax error, or a header without a known schema)";
+    default:
+      return "the reader failed";
+  }
+}
+
+// The solids of `file`; `messages` (Open CASCADE's, collected while reading) name the entity
+// at fault when it cannot be read.
+std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
+                                  const std::vector<StepMessage>& messages) {
   Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
   Handle(TDocStd_Document) document;
   app->NewDocument("MDTV-XCAF", document);
   STEPCAFControl_Reader reader;
   reader.SetNameMode(true);
-  if (reader.ReadFile(file.string().c_str()) != IFSelect_RetDone || !reader.Transfer(document)) {
+  const IFSelect_ReturnStatus status = reader.ReadFile(file.string().c_str());
+  if (status != IFSelect_RetDone) {
     app->Close(document);
-    throw std::runtime_error("cannot read it as STEP (AP203/AP214)");
+    throw std::runtime_error(fmt::format("cannot read it as STEP (AP203/AP214): {}{}",
+                                         ReadFailure(status), FirstError(messages)));
+  }
+  if (!reader.Transfer(document)) {
+    app->Close(document);
+    throw std::runtime_error(
+        fmt::format("cannot read it as STEP (AP203/AP214): its entities give no shape{}",
+                    FirstError(messages)));
   }
   const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(document->Main());
   TDF_LabelSequence roots;
@@ -666,13 +695,16 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file) {
 std::vector<StepSolid> ReadStep(const std::filesystem::path& file,
                                 std::vector<StepMessage>* messages) {
   if (!std::filesystem::exists(file)) throw std::runtime_error("no such file");
+  if (std::filesystem::is_regular_file(file) && std::filesystem::file_size(file) == 0) {
+    throw std::runtime_error("the file is empty");
+  }
   std::vector<StepMessage> ignored;
   std::vector<StepMessage>& kept = messages ? *messages : ignored;
   const MessageCapture capture(&kept);
   const SignalsAsExceptions signals;
   try {
     OCC_CATCH_SIGNALS
-    return ReadSolids(file);
+    return ReadSolids(file, kept);
   } catch (const Standard_Failure& failure) {
     // A crash inside Open CASCADE (a null entity of a damaged file dereferenced) or one of its
     // exceptions: the file cannot be read, and the process goes on.
