@@ -15,31 +15,49 @@ namespace mechanist {
 
 namespace {
 
-// A mesh's problems as (code, message) findings, without the part.
-std::vector<std::pair<const char*, std::string>> MeshProblems(const MeshCheck& check) {
-  std::vector<std::pair<const char*, std::string>> problems;
+// A mesh's problem as a finding, without the part.
+struct MeshProblem {
+  Severity severity = Severity::kWarning;
+  const char* code = "";
+  std::string message;
+};
+
+std::vector<MeshProblem> MeshProblems(const MeshCheck& check) {
+  std::vector<MeshProblem> problems;
   if (check.non_finite_vertices > 0 || check.out_of_range_faces > 0 || check.face_count == 0) {
-    problems.emplace_back("mesh_invalid",
-                          fmt::format("mesh has invalid elements: {}", check.Problems().front()));
+    problems.push_back({Severity::kWarning, "mesh_invalid",
+                        fmt::format("mesh has invalid elements: {}", check.Problems().front())});
   }
-  if (!check.closed()) {
-    problems.emplace_back("mesh_not_closed",
-                          fmt::format("mesh is not closed ({} boundary edges, {} edges shared by "
-                                      "more than two faces)",
-                                      check.boundary_edges, check.non_manifold_edges));
+  if (!check.closed() && check.boundary_edges == 0) {
+    // Watertight all the same: nothing for the designer to do. Tessellators leave such edges
+    // at a sphere's poles, and shells exported as one mesh share them; interference decides
+    // inside and outside by winding number.
+    problems.push_back({Severity::kInfo, "mesh_non_manifold",
+                        fmt::format("mesh is watertight, but {} edges are shared by more than "
+                                    "two faces (inside and outside are decided by winding number)",
+                                    check.non_manifold_edges)});
+  } else if (!check.closed()) {
+    problems.push_back({Severity::kWarning, "mesh_not_closed",
+                        fmt::format("mesh is not closed ({} boundary edges, {} edges shared by "
+                                    "more than two faces)",
+                                    check.boundary_edges, check.non_manifold_edges)});
   }
   if (!check.consistently_oriented()) {
-    problems.emplace_back("mesh_misoriented",
-                          fmt::format("mesh faces are not consistently oriented ({} edges)",
-                                      check.misoriented_edges));
+    problems.push_back({Severity::kWarning, "mesh_misoriented",
+                        fmt::format("mesh faces are not consistently oriented ({} edges)",
+                                    check.misoriented_edges)});
   }
   if (check.closed() && check.consistently_oriented() && check.face_count > 0 &&
       !(check.signed_volume > 0)) {
-    problems.emplace_back("mesh_inward", "mesh faces point inward (negative volume)");
+    problems.push_back(
+        {Severity::kWarning, "mesh_inward", "mesh faces point inward (negative volume)"});
   }
   if (check.degenerate_faces > 0) {
-    problems.emplace_back("mesh_degenerate_faces",
-                          fmt::format("mesh has {} degenerate faces", check.degenerate_faces));
+    // Zero-area faces (a tessellator's at a sphere's poles) bound nothing and touch nothing:
+    // said, not warned.
+    problems.push_back({Severity::kInfo, "mesh_degenerate_faces",
+                        fmt::format("mesh has {} degenerate (zero-area) faces, which bound nothing",
+                                    check.degenerate_faces)});
   }
   return problems;
 }
@@ -59,24 +77,27 @@ std::vector<Diagnostic> CheckAssembly(const Assembly& assembly) {
   std::vector<Diagnostic> out = assembly.findings();
   // Each distinct mesh checked once (instances share one; a features-only part has none), and
   // each problem said once for all the parts that have it alike (the nine balls of a bearing).
-  std::map<const TriangleMesh*, std::vector<std::pair<const char*, std::string>>> problems;
-  std::vector<std::pair<const char*, std::string>> order;  // as first found, parts in order
+  std::map<const TriangleMesh*, std::vector<MeshProblem>> problems;
+  std::vector<MeshProblem> order;  // as first found, parts in order
   std::map<std::pair<std::string, std::string>, std::vector<std::string>> parts_with;
   for (const Part& part : assembly.parts()) {
     if (!part.HasGeometry()) continue;
     auto [found, added] = problems.try_emplace(part.mesh.get());
     if (added) found->second = MeshProblems(CheckMesh(*part.mesh));
-    for (const auto& [code, message] : found->second) {
-      std::vector<std::string>& parts = parts_with[{code, message}];
-      if (parts.empty()) order.emplace_back(code, message);
+    for (const MeshProblem& problem : found->second) {
+      std::vector<std::string>& parts = parts_with[{problem.code, problem.message}];
+      if (parts.empty()) order.push_back(problem);
       parts.push_back(part.id);
     }
   }
-  for (const auto& [code, message] : order) {
-    std::vector<std::string>& parts = parts_with[{code, message}];
+  for (const MeshProblem& problem : order) {
+    std::vector<std::string>& parts = parts_with[{problem.code, problem.message}];
     std::sort(parts.begin(), parts.end());
-    out.push_back(
-        {Severity::kWarning, code, fmt::format("{}: {}", PartNames(parts), message), parts, {}});
+    out.push_back({problem.severity,
+                   problem.code,
+                   fmt::format("{}: {}", PartNames(parts), problem.message),
+                   parts,
+                   {}});
   }
   for (std::size_t i = 0; i < assembly.parts().size(); ++i) {
     const Part& part = assembly.part(i);

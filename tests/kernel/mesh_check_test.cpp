@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -60,6 +61,40 @@ TEST(CheckAssembly, LikeProblemsOfSeveralPartsAreOneFinding) {
   EXPECT_EQ(found[0].message.rfind("parts 'ball_a', 'ball_b' and 'ball_c': mesh is not closed", 0),
             0u)
       << found[0].message;
+}
+
+TEST(CheckAssembly, AWatertightMeshWithEdgesOfFourFacesIsOnlyNoted) {
+  // Two unit cubes in one mesh sharing the vertical edge at (1, 1): watertight, but that edge
+  // belongs to four faces, as a sphere's poles do in a tessellator's output. Nothing for the
+  // designer to act on: an info, not the warning of an open mesh.
+  TriangleMesh two = UnitCube();
+  const TriangleMesh second = UnitCube();
+  std::vector<std::int32_t> index(8);
+  for (int i = 0; i < 8; ++i) {
+    const Eigen::Vector3d v = second.vertices[i] + Eigen::Vector3d(1, 1, 0);
+    const auto shared = std::find(two.vertices.begin(), two.vertices.begin() + 8, v);
+    if (shared != two.vertices.begin() + 8) {
+      index[i] = static_cast<std::int32_t>(shared - two.vertices.begin());
+    } else {
+      index[i] = static_cast<std::int32_t>(two.vertices.size());
+      two.vertices.push_back(v);
+    }
+  }
+  for (const TriangleMesh::Face& f : second.faces)
+    two.faces.push_back({index[f[0]], index[f[1]], index[f[2]]});
+  const MeshCheck check = CheckMesh(two);
+  ASSERT_EQ(check.boundary_edges, 0u);
+  ASSERT_GT(check.non_manifold_edges, 0u);
+  AssemblySpec spec;
+  Part part;
+  part.id = "pair_of_cubes";
+  part.mesh = std::make_shared<TriangleMesh>(two);
+  spec.parts.push_back(part);
+  const std::vector<Diagnostic> found = CheckAssembly(Assembly(std::move(spec)));
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].code, "mesh_non_manifold");
+  EXPECT_EQ(found[0].severity, Severity::kInfo);
+  EXPECT_NE(found[0].message.find("watertight"), std::string::npos) << found[0].message;
 }
 
 TEST(MeshCheck, CubeIsOk) {
