@@ -264,14 +264,24 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
         {"possible", run.possible},
         {"reason", run.reason},
         {"paths", Paths(run.paths)}};
-    // The swept check of the run (as `mechanist sweep` along these paths): the first contact
-    // of each pair of parts that meet on the way.
+    // The swept check of the run, as `mechanist sweep` makes it: the first contact of each
+    // pair of parts that meet on the way, and the jams where a part that nothing holds cannot
+    // yield (one that yields is pushed along: no clash).
     if (options.ranges && collision && run.possible) {
-      json clashes = json::array();
-      for (const OperationClash& c :
-           SweepPaths(assembly, analysis, *collision, run.paths, run.amount).clashes) {
-        clashes.push_back(Contact(c));
+      const OperationCheck check =
+          CheckOperation(assembly, analysis, *collision, driver, std::nullopt);
+      std::vector<OperationClash> stops = check.clashes;
+      for (const InferredCoupling& c : check.inferred) {
+        if (c.carried) continue;
+        const bool in_order = assembly.PartRank(c.pusher) < assembly.PartRank(c.pushed);
+        stops.push_back(
+            {in_order ? c.pusher : c.pushed, in_order ? c.pushed : c.pusher, c.at, 0.0, c.p_W});
       }
+      std::stable_sort(
+          stops.begin(), stops.end(),
+          [](const OperationClash& x, const OperationClash& y) { return x.at < y.at; });
+      json clashes = json::array();
+      for (const OperationClash& c : stops) clashes.push_back(Contact(c));
       entry["clashes"] = clashes;
     }
     drivers.push_back(entry);

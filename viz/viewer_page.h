@@ -14,7 +14,8 @@ struct ViewerOptions {
   std::filesystem::path three_dir = "/usr/share/javascript/three";
   /// Search every drag's movable range with the swept check (FindMovableRange): the page
   /// stops a drag at the first contact each way and shows it; and sweep every driver's run
-  /// (SweepPaths): the page shows its clashes as the run reaches them. Slow on large real files.
+  /// (CheckOperation): the page shows its clashes and jams as the run reaches them. Slow on large
+  /// real files.
   bool ranges = true;
   /// Plan the assembly sequence (PlanAssembly, a swept check of every part) for the page's
   /// stepper. Slow on large real files.

@@ -255,7 +255,13 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   };
 
   // ---- highlight ----
+  // Unchanged highlights change nothing, so that a drag or a step animating frame after frame
+  // keeps the cache of the still parts.
+  let highlighted = null;
   const highlight = (indices) => {
+    const key = indices.join(",");
+    if (key === highlighted) return;
+    highlighted = key;
     changed();
     const on = new Set(indices);
     parts.forEach((part, p) => {
@@ -656,15 +662,23 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   };
   // The obstacle of a blocked step is drawn see-through in red, so that the part it stops
   // and the contact point show.
+  let obstacleShown = null;  // the obstacle drawn see-through
   const seeThrough = (obstacle) => {
-    changed();
-    parts.forEach((part, p) => {
-      const on = p === obstacle;
-      part.material.transparent = on;
-      part.material.opacity = on ? 0.45 : 1;
-      part.material.depthWrite = !on;
-      if (on) part.material.emissive.setHex(0xaa0000), part.material.emissiveIntensity = 0.5;
-    });
+    let differs = false;
+    for (const p of new Set([obstacleShown, obstacle])) {
+      if (p === null) continue;
+      const material = parts[p].material, on = p === obstacle;
+      // Drawn again only when something differs: a step animating keeps the cache.
+      differs = differs || material.transparent !== on ||
+        material.emissive.getHex() !== (on ? 0xaa0000 : 0);
+      material.transparent = on;
+      material.opacity = on ? 0.45 : 1;
+      material.depthWrite = !on;
+      material.emissive.setHex(on ? 0xaa0000 : 0x000000);
+      material.emissiveIntensity = on ? 0.5 : 0;
+    }
+    obstacleShown = obstacle;
+    if (differs) changed();
   };
   const stepTo = (k, u) => {
     clearRun();

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <numeric>
 
+#include "kernel/geometry/circle_fit.h"
 #include "kernel/support/number_format.h"
 
 namespace mechanist {
@@ -48,30 +49,6 @@ struct Outline {
   std::vector<std::pair<Vector2d, Vector2d>> edges;    // projected wall edges
   std::vector<std::pair<Vector2d, Vector2d>> normals;  // (face centroid, normal), projected
 };
-
-struct Circle {
-  Vector2d center = Vector2d::Zero();
-  double radius = 0.0;
-  double rms = 0.0;
-};
-
-// Kasa's algebraic circle fit: x^2 + y^2 + D x + E y + F = 0 by least squares.
-Circle FitCircle(const std::vector<Vector2d>& p) {
-  Eigen::MatrixXd A(p.size(), 3);
-  Eigen::VectorXd b(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    A.row(i) << p[i].x(), p[i].y(), 1.0;
-    b[i] = -(p[i].squaredNorm());
-  }
-  const Eigen::Vector3d s = A.colPivHouseholderQr().solve(b);
-  Circle c;
-  c.center = Vector2d(-s[0] / 2, -s[1] / 2);
-  c.radius = std::sqrt(std::max(0.0, c.center.squaredNorm() - s[2]));
-  double sum = 0.0;
-  for (const Vector2d& q : p) sum += std::pow((q - c.center).norm() - c.radius, 2);
-  c.rms = std::sqrt(sum / p.size());
-  return c;
-}
 
 // Largest angular gap between the vertices seen from `center`, radians.
 double LargestGap(const std::vector<Vector2d>& p, const Vector2d& center) {
@@ -396,7 +373,7 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
     };
     for (const Outline& o : outlines) {
       if (o.vertices.size() < 3) continue;
-      const Circle circle = FitCircle(o.vertices);
+      const FittedCircle circle = FitCircle(o.vertices);
       // Convex when the walls face away from the centre.
       double facing = 0.0;
       for (const auto& [c, n] : o.normals) facing += n.dot((c - circle.center).normalized());

@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 
+#include "kernel/geometry/circle_fit.h"
 #include "reasoning/internal/recognizer.h"
 
 namespace mechanist::internal {
@@ -19,9 +20,8 @@ struct SpaceCircle {
 };
 
 /// The plane of the points (their centroid and the direction of least spread), then Kasa's
-/// algebraic circle fit in it: x^2 + y^2 + a x + b y + c = 0 by least squares. Nothing for
-/// fewer than three points or points on a line.
-std::optional<SpaceCircle> FitCircle(const std::vector<Eigen::Vector3d>& points) {
+/// circle fit (FitCircle) in it. Nothing for fewer than three points or points on a line.
+std::optional<SpaceCircle> FitSpaceCircle(const std::vector<Eigen::Vector3d>& points) {
   if (points.size() < 3) return std::nullopt;
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3d& p : points) centroid += p;
@@ -33,25 +33,19 @@ std::optional<SpaceCircle> FitCircle(const std::vector<Eigen::Vector3d>& points)
   if (!(eigen.eigenvalues()[1] > 1e-12 * eigen.eigenvalues()[2])) return std::nullopt;
   const Eigen::Vector3d n = eigen.eigenvectors().col(0);
   const Eigen::Vector3d u = eigen.eigenvectors().col(2), v = n.cross(u);
-  Eigen::MatrixXd A(points.size(), 3);
-  Eigen::VectorXd rhs(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const double x = (points[i] - centroid).dot(u), y = (points[i] - centroid).dot(v);
-    A.row(static_cast<Eigen::Index>(i)) << x, y, 1.0;
-    rhs[static_cast<Eigen::Index>(i)] = -(x * x + y * y);
-  }
-  const Eigen::Vector3d abc = A.colPivHouseholderQr().solve(rhs);
-  const double cx = -abc[0] / 2, cy = -abc[1] / 2;
-  const double r2 = cx * cx + cy * cy - abc[2];
-  if (!(r2 > 0)) return std::nullopt;
+  std::vector<Eigen::Vector2d> in_plane;
+  for (const Eigen::Vector3d& p : points)
+    in_plane.emplace_back((p - centroid).dot(u), (p - centroid).dot(v));
+  const FittedCircle fit = FitCircle(in_plane);
+  if (!(fit.radius > 0)) return std::nullopt;
   SpaceCircle c;
-  c.center = centroid + cx * u + cy * v;
+  c.center = centroid + fit.center.x() * u + fit.center.y() * v;
   c.normal = n;
-  c.radius = std::sqrt(r2);
+  c.radius = fit.radius;
   for (const Eigen::Vector3d& p : points) {
     const double off_plane = (p - c.center).dot(n);
-    const double in_plane = ((p - c.center) - off_plane * n).norm() - c.radius;
-    c.worst = std::max(c.worst, std::hypot(off_plane, in_plane));
+    const double across = ((p - c.center) - off_plane * n).norm() - c.radius;
+    c.worst = std::max(c.worst, std::hypot(off_plane, across));
   }
   return c;
 }
@@ -92,7 +86,7 @@ void Recognizer::AddBearings() {
   for (std::vector<const WorldFeature*>& set : sets) {
     std::vector<Eigen::Vector3d> centers;
     for (const WorldFeature* b : set) centers.push_back(b->axis.origin);
-    const std::optional<SpaceCircle> pitch = FitCircle(centers);
+    const std::optional<SpaceCircle> pitch = FitSpaceCircle(centers);
     if (!pitch || pitch->worst > L_) continue;
     const double ball_r = set.front()->f.diameter / 2;
     std::set<std::size_t> in_set;

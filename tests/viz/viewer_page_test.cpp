@@ -233,9 +233,9 @@ TEST(ViewerPage, CarriesTheClashesOfEachDriversRun) {
   const Assembly assembly = PushedWithAFixed();
   const Analysis analysis = Analyze(assembly);
   const json driver = PageData(ViewerHtml(assembly, analysis))["drivers"][0];
-  const MotionRun run = PlanRun(assembly, analysis, 0, std::nullopt);
+  // As `mechanist sweep` finds them: the lug runs into b, which the ground holds.
   const OperationCheck sweep =
-      SweepPaths(assembly, analysis, CollisionModel(assembly), run.paths, run.amount);
+      CheckOperation(assembly, analysis, CollisionModel(assembly), 0, std::nullopt);
   ASSERT_FALSE(sweep.clashes.empty());
   ASSERT_EQ(driver["clashes"].size(), sweep.clashes.size());
   for (std::size_t k = 0; k < sweep.clashes.size(); ++k) {
@@ -243,6 +243,10 @@ TEST(ViewerPage, CarriesTheClashesOfEachDriversRun) {
     EXPECT_EQ(driver["clashes"][k]["parts"],
               json({sweep.clashes[k].part_a, sweep.clashes[k].part_b}));
   }
+  // As the file stands, b is free and the lug pushes it along: no clash.
+  const Assembly free =
+      LoadAssembly(std::string(MECHANIST_SOURCE_DIR) + "/examples/pushed_by_contact/assembly.json");
+  EXPECT_TRUE(PageData(ViewerHtml(free, Analyze(free)))["drivers"][0]["clashes"].empty());
   // Without the swept checks, no clashes of runs.
   ViewerOptions options;
   options.ranges = false;
