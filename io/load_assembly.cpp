@@ -8,6 +8,7 @@
 #include "io/input_error.h"
 #include "reasoning/fastener_inference.h"
 #include "reasoning/feature_completion.h"
+#include "reasoning/ground_choice.h"
 #include "reasoning/placement.h"
 
 namespace mechanist {
@@ -33,6 +34,7 @@ Assembly Load(AssemblyFileReader reader, const std::string& file, const LoadOpti
   };
   Append(InferNutsOnBolts(&spec.parts, spec.tolerance.length, spec.tolerance.angle, inferred),
          &spec);
+  Append(ChooseGround(&spec.parts), &spec);
   std::optional<Assembly> assembly;
   try {
     assembly.emplace(std::move(spec));

@@ -26,9 +26,10 @@ struct LoadOptions {
 /// 4. place the parts placed by features (ResolvePlacements);
 /// 5. infer fasteners: nuts on bolts among the parts whose features were not written
 ///    (InferNutsOnBolts), after placing because it needs the parts' poses;
-/// 6. adjust, when `options.adjust` says so (Adjusted).
-/// What steps 2, 5 and 6 did is in Assembly::findings (`features_recognised`,
-/// `tessellation_gears`, `nut_on_bolt`, `adjustment_locked`), after the reader's own
+/// 6. choose a ground part when the file fixes none (ChooseGround);
+/// 7. adjust, when `options.adjust` says so (Adjusted).
+/// What steps 2, 5, 6 and 7 did is in Assembly::findings (`features_recognised`,
+/// `tessellation_gears`, `nut_on_bolt`, `ground_chosen`, `adjustment_locked`), after the reader's own
 /// (`step_reader`). Throws InputError as AssemblyFileReader does, and for placements that
 /// cannot be solved (at the part's `place`). Never modifies the file.
 Assembly LoadAssembly(const std::filesystem::path& file, const LoadOptions& options = {});

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <set>
 
 #include "kernel/geometry/line_geometry.h"
 #include "kernel/support/compressed_rows.h"
@@ -31,8 +32,15 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
   auto world = [&](FeatureRef r) {
     return assembly.feature(r).WorldAxis(assembly.part(r.part).X_WP);
   };
+  // A nut the nut-on-bolt heuristic guessed (a collar or a block on a plain shaft may be
+  // taken for one) is not measured: the shaft's end says nothing about its engagement.
+  std::set<std::string> guessed_nuts;
+  for (const Diagnostic& d : assembly.findings()) {
+    if (d.code == "nut_on_bolt" && !d.features.empty()) guessed_nuts.insert(d.features.front());
+  }
   auto too_short = [&](FeatureRef thread, FeatureRef nut, double shortfall,
                        const std::string& how) {
+    if (guessed_nuts.count(assembly.FeatureName(nut)) > 0) return;
     out.push_back(
         {Severity::kWarning,
          "bolt_too_short",

@@ -174,6 +174,14 @@ std::vector<ExactReal> LinearSystem::Solve() const {
   return x;
 }
 
+std::vector<std::size_t> LinearSystem::FreeVariables() const {
+  std::vector<std::size_t> free;
+  for (std::size_t v = 0; v < variable_count(); ++v) {
+    if (parent_[v] == v && pivot_of_[v] < 0) free.push_back(v);
+  }
+  return free;
+}
+
 std::vector<LinearSystem::Row> LinearSystem::NullSpace() const {
   const std::size_t n = variable_count();
   // Components of the eliminated rows, so that each basis vector back-substitutes only the
@@ -196,8 +204,7 @@ std::vector<LinearSystem::Row> LinearSystem::NullSpace() const {
 
   std::vector<Row> basis;
   std::vector<ExactReal> x(n);
-  for (std::size_t f = 0; f < n; ++f) {
-    if (parent_[f] != f || pivot_of_[f] >= 0) continue;
+  for (std::size_t f : FreeVariables()) {
     x[f] = ExactReal(Rational(1));
     const auto it = pivots_in.find(top(f));
     static const std::vector<std::size_t> kNone;

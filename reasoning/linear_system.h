@@ -44,6 +44,9 @@ class LinearSystem {
   /// A basis of the homogeneous solutions: one sparse vector per free variable, that variable
   /// at 1 and the other free variables at 0.
   std::vector<Row> NullSpace() const;
+  /// The free variables, in the order of NullSpace's basis vectors: the freedom each of them
+  /// sets at 1 (the others follow it).
+  std::vector<std::size_t> FreeVariables() const;
 
  private:
   struct Pivot {

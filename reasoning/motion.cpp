@@ -559,19 +559,32 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
                                   {}});
   }
 
-  // Free motions: what the drivers leave undetermined. A floating body is one free motion
+  // Free motions: what the drivers leave undetermined, one per free variable (the freedom
+  // that basis motion sets at 1, the others following it). A floating body is one free motion
   // with all its freedoms; a body with no pair at all is reported as unconnected already.
   std::vector<bool> reported(model.joints().size(), false);
   const LinearSystem& free_system = imposed.empty() ? motion_model.structural() : driven_system;
-  for (const LinearSystem::Row& n : free_system.NullSpace()) {
+  const std::vector<LinearSystem::Row> basis = free_system.NullSpace();
+  const std::vector<std::size_t> free_variables = free_system.FreeVariables();
+  // The warnings, said once per part with all its free motions, and once for all the parts
+  // whose free motions read alike (five servos resting on one face).
+  struct Unheld {
+    std::size_t part = 0;
+    std::vector<std::string> motions;  // distinct, in the order found
+    std::vector<std::size_t> moved;    // the parts that move with it
+    std::vector<std::string> features;
+  };
+  std::map<std::size_t, Unheld> unheld;  // by part rank
+  for (std::size_t k = 0; k < basis.size(); ++k) {
+    const LinearSystem::Row& n = basis[k];
     if (n.empty()) continue;
-    const Freedom& f = model.freedoms()[n.front().variable];
+    const Freedom& f = model.freedoms()[free_variables[k]];
     const Joint& j = model.joints()[f.joint];
     if (!j.pair && reported[f.joint]) continue;
     reported[f.joint] = true;
     FreeMotion free;
     free.pair = j.pair;
-    free.freedom = j.pair ? FreedomWords(assembly, pairs, model, n.front().variable)
+    free.freedom = j.pair ? FreedomWords(assembly, pairs, model, free_variables[k])
                           : "floats: no pair holds it";
     const std::size_t child =
         model.parent_joint(j.body_a) && *model.parent_joint(j.body_a) == f.joint ? j.body_a
@@ -587,17 +600,63 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     }
     std::sort(free.parts.begin(), free.parts.end(), by_id);
     if (motion_model.HasPair(child)) {
-      const std::string message =
-          free.pair ? fmt::format("{} {} ({} pair): nothing drives or holds this motion",
-                                  assembly.PartId(free.part), free.freedom,
-                                  ToString(pairs[*free.pair].type))
-                    : fmt::format("{} {}: nothing drives or holds this motion",
-                                  assembly.PartId(free.part), free.freedom);
-      result.diagnostics.push_back(
-          {Severity::kWarning, "free_motion", message, part_ids(free.parts),
-           free.pair ? pair_features(*free.pair) : std::vector<std::string>{}});
+      Unheld& u = unheld[assembly.PartRank(free.part)];
+      u.part = free.part;
+      u.moved.insert(u.moved.end(), free.parts.begin(), free.parts.end());
+      const std::string motion =
+          free.pair ? fmt::format("{} ({} pair)", free.freedom, ToString(pairs[*free.pair].type))
+                    : free.freedom;
+      if (std::find(u.motions.begin(), u.motions.end(), motion) == u.motions.end()) {
+        u.motions.push_back(motion);
+      }
+      if (free.pair) {
+        for (std::string& name : pair_features(*free.pair)) {
+          if (std::find(u.features.begin(), u.features.end(), name) == u.features.end()) {
+            u.features.push_back(std::move(name));
+          }
+        }
+      }
     }
     mobility.free_motions.push_back(std::move(free));
+  }
+  std::map<std::vector<std::string>, std::vector<std::size_t>> alike;  // motions -> part ranks
+  for (const auto& [rank, u] : unheld) alike[u.motions].push_back(rank);
+  for (const auto& [motions, ranks] : alike) {
+    std::vector<std::string> named, features;
+    std::vector<std::size_t> moved;
+    for (std::size_t rank : ranks) {
+      const Unheld& u = unheld.at(rank);
+      named.emplace_back(assembly.PartId(u.part));
+      moved.insert(moved.end(), u.moved.begin(), u.moved.end());
+      features.insert(features.end(), u.features.begin(), u.features.end());
+    }
+    std::sort(moved.begin(), moved.end(), [&](std::size_t x, std::size_t y) {
+      return assembly.PartRank(x) < assembly.PartRank(y);
+    });
+    moved.erase(std::unique(moved.begin(), moved.end()), moved.end());
+    std::string what;
+    for (std::size_t i = 0; i < motions.size(); ++i) {
+      what += fmt::format("{}{}", i == 0 ? "" : i + 1 == motions.size() ? " and " : ", ",
+                          motions[i]);
+    }
+    std::string who;
+    for (std::size_t i = 0; i < named.size(); ++i) {
+      who += fmt::format("{}{}", i == 0 ? "" : i + 1 == named.size() ? " and " : ", ", named[i]);
+    }
+    const bool several = named.size() > 1;
+    // A body nothing holds to the ground is missing something whatever the drivers. A pair's
+    // freedom is a motion the mechanism allows: a finding only when the file says what drives
+    // it (a CAD export has no drivers, and its joints' motions are what it is for).
+    const bool floats = features.empty();
+    const bool finding = floats || !imposed.empty();
+    std::string message = fmt::format(
+        "{}{} {}: {}", several ? fmt::format("{} parts, ", named.size()) : "", who,
+        several ? fmt::format("each {}", what) : what,
+        finding ? fmt::format("nothing drives or holds {}",
+                              motions.size() > 1 || several ? "these motions" : "this motion")
+                : "a motion the mechanism allows (the file has no driver)");
+    result.diagnostics.push_back({finding ? Severity::kWarning : Severity::kInfo, "free_motion",
+                                  std::move(message), part_ids(moved), std::move(features)});
   }
   return result;
 }

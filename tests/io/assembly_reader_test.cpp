@@ -62,7 +62,10 @@ TEST_F(AssemblyReaderTest, ReadsMinimalFileWithDefaults) {
   EXPECT_EQ(p.id, "p");
   EXPECT_EQ(p.mesh->faces.size(), 12u);
   EXPECT_NEAR(p.mesh->SignedVolume(), 1.0, 1e-12);
-  EXPECT_FALSE(p.ground);
+  // No part is ground: the largest (the only one) is taken as ground, and the load says so.
+  EXPECT_TRUE(p.ground);
+  ASSERT_EQ(a.findings().size(), 1u);
+  EXPECT_EQ(a.findings()[0].code, "ground_chosen");
   EXPECT_TRUE(p.X_WP.IsNearlyEqualTo(RigidTransform(), 0, 0));
   EXPECT_EQ(a.units().length, "mm");
   EXPECT_DOUBLE_EQ(a.tolerance().length, 0.05);

@@ -517,11 +517,13 @@ TEST(NutOnBolt, MeshPartsAloneAreANutOnItsBolt) {
     {"id": "bolt", "mesh": "bolt.stl"},
     {"id": "nut", "mesh": "nut.stl", "pose": {"position": [0, 0, 10]}}]})";
   const Assembly a = LoadAssemblyText(text, dir / "a.json");
-  // What each step of the load did: recognition, then the heuristic.
-  ASSERT_EQ(a.findings().size(), 2u);
+  // What each step of the load did: recognition, the heuristic, then the ground chosen.
+  ASSERT_EQ(a.findings().size(), 3u);
   EXPECT_EQ(a.findings()[0].code, "features_recognised");
   EXPECT_EQ(a.findings()[0].parts, (std::vector<std::string>{"bolt", "nut"}));
   EXPECT_EQ(a.findings()[1].code, "nut_on_bolt");
+  EXPECT_EQ(a.findings()[2].code, "ground_chosen");
+  EXPECT_EQ(a.findings()[2].parts, std::vector<std::string>{"bolt"});
   const Analysis an = Analyze(a);
   ASSERT_EQ(an.pairs.size(), 1u);
   EXPECT_EQ(an.pairs[0].type, PairType::kFixed);
@@ -531,9 +533,10 @@ TEST(NutOnBolt, MeshPartsAloneAreANutOnItsBolt) {
       "axis": [0, 0, 1], "diameter": 6, "length": 20}]},
     {"id": "nut", "mesh": "nut.stl", "pose": {"position": [0, 0, 10]}}]})";
   const Assembly w = LoadAssemblyText(written, dir / "b.json");
-  ASSERT_EQ(w.findings().size(), 1u);
+  ASSERT_EQ(w.findings().size(), 2u);
   EXPECT_EQ(w.findings()[0].code, "features_recognised");
   EXPECT_EQ(w.findings()[0].parts, std::vector<std::string>{"nut"});
+  EXPECT_EQ(w.findings()[1].code, "ground_chosen");
 }
 
 }  // namespace

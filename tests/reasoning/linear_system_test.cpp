@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <Eigen/Dense>
 #include <random>
 
@@ -56,6 +58,21 @@ TEST(LinearSystem, RankAndSolutionsMatchDenseOracleExactly) {
     EXPECT_EQ(redundant, m - static_cast<int>(lu.rank()));
     const std::vector<Row> basis = system.NullSpace();
     ASSERT_EQ(basis.size(), system.nullity());
+    // Each basis vector sets its own free variable at 1 and every other free variable at 0.
+    const std::vector<std::size_t> free = system.FreeVariables();
+    ASSERT_EQ(free.size(), basis.size());
+    for (std::size_t k = 0; k < basis.size(); ++k) {
+      for (std::size_t j = 0; j < free.size(); ++j) {
+        const auto term = std::find_if(basis[k].begin(), basis[k].end(),
+                                       [&](const auto& t) { return t.variable == free[j]; });
+        if (j == k) {
+          ASSERT_NE(term, basis[k].end());
+          EXPECT_EQ(*term->coefficient.exact(), Rational(1));
+        } else {
+          EXPECT_TRUE(term == basis[k].end() || term->coefficient.exact()->is_zero());
+        }
+      }
+    }
     for (const Row& b : basis) {
       std::vector<ExactReal> x(static_cast<std::size_t>(n));
       for (const auto& t : b) x[t.variable] = t.coefficient;
