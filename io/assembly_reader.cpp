@@ -379,6 +379,7 @@ class Reader {
         for (char& c : extension)
           c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
         if (extension == ".step" || extension == ".stp") {
+          part.tessellated = true;
           part.mesh = LoadStepPart(part.mesh_source, p + "/mesh", &step_features, &part.notes,
                                    &origin.step_solids);
         } else {
@@ -435,6 +436,7 @@ class Reader {
       part.id = s.path;
       part.mesh_source = fmt::format("{}#{}", relative, s.product);
       part.mesh = s.mesh;
+      part.tessellated = true;
       part.X_WP = s.X_WP;
       part.group = s.path;
       part.features = std::move(s.features);

@@ -486,14 +486,30 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
     mobility.part_freedoms.push_back(body_freedoms[model.body_of_part(p)]);
   }
-  // Jams: per pair, the freedoms every undriven motion leaves at zero, in one warning. A face
-  // contact's slides and turns, and a cylindrical fit's slide, held by the other pairs are how
-  // thrust faces and shoulders work: no jam.
+  // Jams: per pair, the freedoms every undriven motion leaves at zero while the contacts
+  // alone (the pairs without the couplings) let them move: three gears meshing in a ring. A
+  // freedom the contacts lock is a part located, not jammed (two dowels, a thrust face, a
+  // shoulder). A face contact's slides and turns, and a cylindrical fit's slide, held by the
+  // other pairs are how thrust faces and shoulders work: no jam either.
+  std::vector<bool> contacts_move(model.freedoms().size(), false);
+  const bool coupled = std::any_of(model.rows().begin(), model.rows().end(),
+                                   [&](const ConstraintRow& r) {
+                                     return IsCoupling(pairs[r.pair].type);
+                                   });
+  if (coupled) {
+    LinearSystem contacts(model.freedoms().size(), kTolerance);
+    for (const ConstraintRow& row : model.rows()) {
+      if (!IsCoupling(pairs[row.pair].type)) contacts.AddRow(row.terms);
+    }
+    for (const LinearSystem::Row& n : contacts.NullSpace()) {
+      for (const LinearSystem::Term& t : n) contacts_move[t.variable] = true;
+    }
+  }
   std::vector<std::string> locked(model.joints().size());
   for (std::size_t k = 0; k < model.freedoms().size(); ++k) {
     const Freedom& f = model.freedoms()[k];
     const Joint& j = model.joints()[f.joint];
-    if (moves[k] || !j.pair) continue;
+    if (moves[k] || !contacts_move[k] || !j.pair) continue;
     const PairType type = pairs[*j.pair].type;
     if (type == PairType::kPlanar ||
         (type == PairType::kCylindrical && f.kind == Freedom::Kind::kTranslation)) {

@@ -23,11 +23,6 @@ namespace {
 constexpr double kTwoPi = 6.283185307179586;
 constexpr double kMetresPerMm = 1e-3;
 
-bool IsCoupling(PairType type) {
-  return type == PairType::kGear || type == PairType::kWormGear || type == PairType::kRackPinion ||
-         type == PairType::kCycloidal;
-}
-
 // The pairs ordered by their freedoms (fewest first, couplings last), stably: the kinematic
 // model's breadth-first tree takes the first pair that reaches a new body, so it prefers a
 // screw to the cylindrical fit beside it and leaves the looser pair to close the loop.

@@ -22,7 +22,7 @@ struct MeshProblem {
   std::string message;
 };
 
-std::vector<MeshProblem> MeshProblems(const MeshCheck& check) {
+std::vector<MeshProblem> MeshProblems(const MeshCheck& check, bool tessellated) {
   std::vector<MeshProblem> problems;
   if (check.non_finite_vertices > 0 || check.out_of_range_faces > 0 || check.face_count == 0) {
     problems.push_back({Severity::kWarning, "mesh_invalid",
@@ -36,6 +36,15 @@ std::vector<MeshProblem> MeshProblems(const MeshCheck& check) {
                         fmt::format("mesh is watertight, but {} edges are shared by more than "
                                     "two faces (inside and outside are decided by winding number)",
                                     check.non_manifold_edges)});
+  } else if (!check.closed() && tessellated) {
+    // Open CASCADE meshed a STEP solid's faces so that they do not meet along every edge:
+    // nothing for the designer to do.
+    problems.push_back({Severity::kInfo, "tessellation_open",
+                        fmt::format("the tessellation of the STEP solid leaves {} boundary edges "
+                                    "and {} edges shared by more than two faces (its faces' "
+                                    "meshes do not meet along every edge; inside and outside are "
+                                    "decided by winding number)",
+                                    check.boundary_edges, check.non_manifold_edges)});
   } else if (!check.closed()) {
     problems.push_back({Severity::kWarning, "mesh_not_closed",
                         fmt::format("mesh is not closed ({} boundary edges, {} edges shared by "
@@ -83,7 +92,7 @@ std::vector<Diagnostic> CheckAssembly(const Assembly& assembly) {
   for (const Part& part : assembly.parts()) {
     if (!part.HasGeometry()) continue;
     auto [found, added] = problems.try_emplace(part.mesh.get());
-    if (added) found->second = MeshProblems(CheckMesh(*part.mesh));
+    if (added) found->second = MeshProblems(CheckMesh(*part.mesh), part.tessellated);
     for (const MeshProblem& problem : found->second) {
       std::vector<std::string>& parts = parts_with[{problem.code, problem.message}];
       if (parts.empty()) order.push_back(problem);

@@ -23,6 +23,13 @@ enum class PairType : std::uint8_t {
   kCycloidal,  ///< a cycloid disc rolling in its pin ring: couples like an internal gear pair
 };
 
+/// A coupling of two turning or sliding axes (gear, worm gear, rack and pinion, cycloidal):
+/// it relates the rates of its parts' joints instead of guiding a part.
+constexpr bool IsCoupling(PairType type) {
+  return type == PairType::kGear || type == PairType::kWormGear || type == PairType::kRackPinion ||
+         type == PairType::kCycloidal;
+}
+
 /// The format's spelling ("worm_gear").
 std::string_view ToString(PairType type);
 /// The type spelled `name`, or nothing.

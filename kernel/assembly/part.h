@@ -34,6 +34,9 @@ struct Part {
   /// Where the mesh came from: a file path as written in the file, or "library:<kind>"; empty
   /// for a features-only part.
   std::string mesh_source;
+  /// The mesh is Open CASCADE's tessellation of a STEP solid: a gap in it is the mesher's, not
+  /// the designer's (the mesh checks say so as info).
+  bool tessellated = false;
   /// X_WP, the pose in the file (identity when the file gives none or places the part).
   RigidTransform X_WP;
   /// Placement by features instead of a pose (resolved by the placement solver); empty when

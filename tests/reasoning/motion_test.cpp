@@ -212,6 +212,27 @@ TEST(Motion, ThrustFacesDoingTheirJobAreNoJam) {
   EXPECT_EQ(Exact(Rate(a, an, "g1/teeth")), "1");
 }
 
+TEST(Motion, APartLocatedByTwoPinsIsNoJam) {
+  // A plate on two dowel pins in the frame: each pin's fit would let it turn, the other pin
+  // holds it. Contacts alone lock it: the plate is located, not jammed (the Fusion 360
+  // pendulum's motor had such a warning). Three gears meshing in a ring still jam (below).
+  const auto pin = [](const std::string& id, double x, K kind) {
+    return MakeFeature(id, kind, {x, 0, -20}, kZ, [](Feature& f) {
+      f.diameter = 4;
+      f.length = 10;
+      f.through = true;
+    });
+  };
+  Builder b;
+  b.Part(MakePart("plate", {pin("pin_1", 0, K::kShaft), pin("pin_2", 20, K::kShaft)}))
+      .FrameFeature(pin("dowel_1", 0, K::kHole))
+      .FrameFeature(pin("dowel_2", 20, K::kHole));
+  const Analysis an = Analyze(b.Build());
+  ASSERT_EQ(an.pairs.size(), 2u);
+  EXPECT_EQ(an.motion.mobility.dof, 1);  // the slide along the pins
+  EXPECT_FALSE(HasCode(an, "jam"));
+}
+
 TEST(Motion, RedundantFaceContactsAreSaidOncePerTwoParts) {
   // A block standing on the frame with three feet: the second and third contacts repeat what
   // the first one constrains; one finding for the block and the frame, not one per foot.
