@@ -29,7 +29,8 @@ struct LoadOptions {
 /// 6. choose a ground part when the file fixes none (ChooseGround);
 /// 7. adjust, when `options.adjust` says so (Adjusted).
 /// What steps 2, 5, 6 and 7 did is in Assembly::findings (`features_recognised`,
-/// `tessellation_gears`, `nut_on_bolt`, `ground_chosen`, `adjustment_locked`), after the reader's own
+/// `tessellation_gears`, `nut_on_bolt`, `ground_chosen`, `adjustment_locked`), after the reader's
+/// own
 /// (`step_reader`). Throws InputError as AssemblyFileReader does, and for placements that
 /// cannot be solved (at the part's `place`). Never modifies the file.
 Assembly LoadAssembly(const std::filesystem::path& file, const LoadOptions& options = {});

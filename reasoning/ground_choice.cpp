@@ -1,10 +1,10 @@
 #include "reasoning/ground_choice.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
-
-#include <fmt/format.h>
 
 namespace mechanist {
 
@@ -26,13 +26,14 @@ std::vector<Diagnostic> ChooseGround(std::vector<Part>* parts) {
   if (!chosen) return {};
   Part& ground = (*parts)[*chosen];
   ground.ground = true;
-  return {{Severity::kInfo,
-           "ground_chosen",
-           fmt::format("no part is ground: '{}', the largest, is taken as fixed to the world "
-                       "(mobility counts from it; set \"ground\": true on a part to choose another)",
-                       ground.id),
-           {ground.id},
-           {}}};
+  return {
+      {Severity::kInfo,
+       "ground_chosen",
+       fmt::format("no part is ground: '{}', the largest, is taken as fixed to the world "
+                   "(mobility counts from it; set \"ground\": true on a part to choose another)",
+                   ground.id),
+       {ground.id},
+       {}}};
 }
 
 }  // namespace mechanist

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <stdexcept>
 
@@ -319,8 +320,21 @@ std::vector<std::size_t> MovedBodies(const KinematicModel& model,
   return bodies;
 }
 
+// "a", "a and b", "a, b and c".
+std::string Enumeration(const std::vector<std::string>& items) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    out += i == 0 ? "" : i + 1 == items.size() ? " and " : ", ";
+    out += items[i];
+  }
+  return out;
+}
+
+// The freedom `variable` in words, its axis named by the pair's first feature, or, given the
+// body that makes the motion, by the feature it moves against (the seat, not the foot).
 std::string FreedomWords(const Assembly& assembly, const std::vector<Pair>& pairs,
-                         const KinematicModel& model, std::size_t variable) {
+                         const KinematicModel& model, std::size_t variable,
+                         std::optional<std::size_t> moving_body = std::nullopt) {
   const Freedom& f = model.freedoms()[variable];
   const Joint& j = model.joints()[f.joint];
   static const char* kAxes[] = {"x", "y", "z"};
@@ -330,7 +344,9 @@ std::string FreedomWords(const Assembly& assembly, const std::vector<Pair>& pair
     f.direction_W.cwiseAbs().maxCoeff(&i);
     axis = fmt::format("the world {} axis", kAxes[i]);
   } else {
-    axis = fmt::format("{}'s axis", assembly.FeatureName(pairs[*j.pair].a));
+    const Pair& pair = pairs[*j.pair];
+    const bool a_moves = moving_body && model.body_of_part(pair.a.part) == *moving_body;
+    axis = fmt::format("{}'s axis", assembly.FeatureName(a_moves ? pair.b : pair.a));
   }
   switch (f.kind) {
     case Freedom::Kind::kRotation:
@@ -492,10 +508,9 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   // shoulder). A face contact's slides and turns, and a cylindrical fit's slide, held by the
   // other pairs are how thrust faces and shoulders work: no jam either.
   std::vector<bool> contacts_move(model.freedoms().size(), false);
-  const bool coupled = std::any_of(model.rows().begin(), model.rows().end(),
-                                   [&](const ConstraintRow& r) {
-                                     return IsCoupling(pairs[r.pair].type);
-                                   });
+  const bool coupled =
+      std::any_of(model.rows().begin(), model.rows().end(),
+                  [&](const ConstraintRow& r) { return IsCoupling(pairs[r.pair].type); });
   if (coupled) {
     LinearSystem contacts(model.freedoms().size(), kTolerance);
     for (const ConstraintRow& row : model.rows()) {
@@ -600,11 +615,11 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     reported[f.joint] = true;
     FreeMotion free;
     free.pair = j.pair;
-    free.freedom = j.pair ? FreedomWords(assembly, pairs, model, free_variables[k])
-                          : "floats: no pair holds it";
     const std::size_t child =
         model.parent_joint(j.body_a) && *model.parent_joint(j.body_a) == f.joint ? j.body_a
                                                                                  : j.body_b;
+    free.freedom = j.pair ? FreedomWords(assembly, pairs, model, free_variables[k], child)
+                          : "floats: no pair holds it";
     const std::span<const std::size_t> own = motion_model.PartsOf(child);
     // Named by part ids, so that the file's order of parts changes nothing.
     const auto by_id = [&](std::size_t x, std::size_t y) {
@@ -650,15 +665,7 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
       return assembly.PartRank(x) < assembly.PartRank(y);
     });
     moved.erase(std::unique(moved.begin(), moved.end()), moved.end());
-    std::string what;
-    for (std::size_t i = 0; i < motions.size(); ++i) {
-      what += fmt::format("{}{}", i == 0 ? "" : i + 1 == motions.size() ? " and " : ", ",
-                          motions[i]);
-    }
-    std::string who;
-    for (std::size_t i = 0; i < named.size(); ++i) {
-      who += fmt::format("{}{}", i == 0 ? "" : i + 1 == named.size() ? " and " : ", ", named[i]);
-    }
+    const std::string what = Enumeration(motions), who = Enumeration(named);
     const bool several = named.size() > 1;
     // A body nothing holds to the ground is missing something whatever the drivers. A pair's
     // freedom is a motion the mechanism allows: a finding only when the file says what drives
@@ -666,8 +673,8 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     const bool floats = features.empty();
     const bool finding = floats || !imposed.empty();
     std::string message = fmt::format(
-        "{}{} {}: {}", several ? fmt::format("{} parts, ", named.size()) : "", who,
-        several ? fmt::format("each {}", what) : what,
+        "{}{}{}{}: {}", several ? fmt::format("{} parts, ", named.size()) : "", who,
+        several ? ", each " : " ", what,
         finding ? fmt::format("nothing drives or holds {}",
                               motions.size() > 1 || several ? "these motions" : "this motion")
                 : "a motion the mechanism allows (the file has no driver)");

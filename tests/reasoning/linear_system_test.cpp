@@ -2,9 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-
 #include <Eigen/Dense>
+#include <algorithm>
 #include <random>
 
 namespace mechanist {

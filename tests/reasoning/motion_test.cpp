@@ -517,6 +517,44 @@ TEST(Motion, ScaleAndNamesChangeNoRatio) {
   EXPECT_EQ(aa.motion.mobility.dof, ab.motion.mobility.dof);
 }
 
+TEST(Motion, FreeMotionsAreSaidOncePerPartAndOnceForPartsAlike) {
+  // Two blocks resting on one seat of the frame slide and turn on it alike: one finding for
+  // both, with all three freedoms. With a driver it is a warning; without (a CAD export), the
+  // mechanism's own motions, an info.
+  const auto foot = [](const std::string& id, double x) {
+    return MakePart(id,
+                    {MakeFeature("foot", K::kFace, {0, 0, 0}, -kZ,
+                                 [](Feature& f) {
+                                   f.width = 4;
+                                   f.height = 4;
+                                 })},
+                    RigidTransform::Translation({x, 0, 0}));
+  };
+  const Feature seat = MakeFeature("seat", K::kFace, {0, 0, 0}, kZ, [](Feature& f) {
+    f.width = 100;
+    f.height = 100;
+  });
+  for (const bool driven : {false, true}) {
+    Builder b;
+    b.Part(foot("block_1", 10)).Part(foot("block_2", 20)).FrameFeature(seat);
+    if (driven) b.Gear("g1", -40, 0, {{20, 0}}).Drive("g1", "teeth");
+    const Analysis an = Analyze(b.Build());
+    EXPECT_EQ(an.motion.mobility.free_motions.size(), 6u);
+    std::vector<const Diagnostic*> found;
+    for (const Diagnostic& d : an.diagnostics) {
+      if (d.code == "free_motion") found.push_back(&d);
+    }
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0]->severity, driven ? Severity::kWarning : Severity::kInfo);
+    EXPECT_EQ(found[0]->parts, (std::vector<std::string>{"block_1", "block_2"}));
+    const std::string& m = found[0]->message;
+    EXPECT_NE(m.find("2 parts, block_1 and block_2, each turns about frame/seat's axis (planar "
+                     "pair) and slides along frame/seat's axis (planar pair)"),
+              std::string::npos)
+        << m;
+  }
+}
+
 TEST(Motion, GearFreeToSlideOnItsShaftIsAFreeMotion) {
   const Assembly a = Builder()
                          .Gear("g1", 0, 0, {{20, 0}})
