@@ -254,7 +254,7 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
   Bnd_Box box;
   BRepBndLib::Add(solid, box);
   const double size = box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());
-  BRepMesh_IncrementalMesh(solid, std::max(0.01, 1e-3 * size), false, 0.3, true);
+  BRepMesh_IncrementalMesh(solid, std::max(0.01, 1e-3 * size), false, 0.3, false);
   std::vector<Cylinder> cylinders;
   std::vector<Cone> cones;
   std::vector<Sphere> spheres;
