@@ -26,7 +26,7 @@ struct Expected {
 
 std::vector<Expected> Cases() {
   return {
-      // Truth: body1 (the bracket) is ground, body2 turns on its pin: mobility 1.
+      // Truth: the bracket is ground and the arm turns on its pin: mobility 1 (tested below).
       {"revolute_pin_solidedge_chrono/assembly.stp", "Assem1", {}},
       // Truth: the housing with its 7 integral ring pins. No warning: the disc, the output
       // ring, the shaft and the placeholder ring turn freely (the file has no driver; the
