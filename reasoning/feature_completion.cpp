@@ -12,7 +12,8 @@
 namespace mechanist {
 namespace {
 
-/// The gears and racks found on one solid's tessellation, in the solid's frame.
+/// The gears, racks and cycloidal discs found on one solid's tessellation, in the solid's
+/// frame.
 struct TessellationGears {
   std::vector<Feature> features;
   std::vector<std::string> notes;
@@ -21,7 +22,10 @@ struct TessellationGears {
 TessellationGears FindTessellationGears(const TriangleMesh& mesh) {
   TessellationGears gears;
   for (RecognizedFeature& r : RecognizeFeatures(mesh).features) {
-    if (r.feature.kind != FeatureKind::kGear && r.feature.kind != FeatureKind::kRack) continue;
+    if (r.feature.kind != FeatureKind::kGear && r.feature.kind != FeatureKind::kRack &&
+        r.feature.kind != FeatureKind::kCycloidDisc) {
+      continue;
+    }
     gears.notes.push_back(
         fmt::format("{}: {} (found on the solid's tessellation)", r.feature.id, r.detail));
     gears.features.push_back(std::move(r.feature));
@@ -107,7 +111,7 @@ std::vector<Diagnostic> CompleteFeatures(std::vector<Part>* parts,
     done.push_back(
         {Severity::kInfo,
          "tessellation_gears",
-         fmt::format("gears or racks of {} {} were found on the tessellation of "
+         fmt::format("gears, racks or cycloidal discs of {} {} were found on the tessellation of "
                      "their free-form faces (the part's notes say which): {}",
                      with_gears.size(), with_gears.size() == 1 ? "STEP solid" : "STEP solids",
                      FewNames(with_gears)),

@@ -507,9 +507,11 @@ void KinematicModel::BuildRows(const std::vector<Pair>& pairs) {
            {assembly_.FeatureName(p.a), assembly_.FeatureName(p.b)}});
       continue;
     }
-    // No common carrier: the pitch points of both members move together along the tangent.
+    // No common carrier: the pitch points of both members move together along the tangent. A
+    // cycloidal disc's pitch circle has the radius lobes x e (its ring's: pins x e, e apart).
     const Feature& fa = assembly_.feature(p.a);
-    const double r = fa.module * fa.teeth / 2.0;
+    const bool cycloidal = p.type == PairType::kCycloidal;
+    const double r = cycloidal ? fa.teeth * fa.eccentricity : fa.module * fa.teeth / 2.0;
     Eigen::Vector3d n, tangent;
     if (rack) {
       const Eigen::Vector3d normal_W =
@@ -519,8 +521,9 @@ void KinematicModel::BuildRows(const std::vector<Pair>& pairs) {
     } else {
       const LineLineClosest c = ClosestPointsOfLines(a.origin, a.direction, b.origin, b.direction);
       n = ((b.origin + c.t * b.direction) - (a.origin + c.s * a.direction)).normalized();
-      // A pinion inside a ring touches it on the side away from the ring's centre.
-      if (assembly_.feature(p.b).internal) n = -n;
+      // A pinion inside a ring (a disc inside its pins) touches it on the side away from the
+      // ring's centre.
+      if (assembly_.feature(p.b).internal || cycloidal) n = -n;
       tangent = a.direction.cross(n);
     }
     rows_.push_back({Linear(A, B, a.origin + r * n, tangent), i});

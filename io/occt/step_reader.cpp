@@ -45,6 +45,7 @@
 #include <string_view>
 #include <tuple>
 
+#include "kernel/geometry/circle_fit.h"
 #include "kernel/support/number_format.h"
 
 namespace mechanist {
@@ -247,6 +248,77 @@ std::string DescribeCone(const Cone& c, const std::vector<Feature>& features) {
   return fmt::format("{} cone: {}", c.convex ? "convex" : "concave", size);
 }
 
+// A pin standing out of a wall: a convex cylinder face covering from half a turn to the 270
+// degrees that make a shaft. `base` is its axis' start, `length` along `direction`.
+struct Pin {
+  Eigen::Vector3d base, direction;
+  double radius = 0.0, length = 0.0;
+};
+
+// Integral pin rings (a cycloidal reducer's housing with its pins cut in one piece): three or
+// more pins of one radius, parallel and side by side along their axes, whose axes stand evenly
+// around a circle (Kasa's fit within `tolerance` mm; every gap one pitch within `tolerance`
+// along the circle), each ring a `pin_ring` feature (`teeth` pins, `diameter` the pin circle's).
+std::vector<Feature> PinRings(std::vector<Pin> pins, double tolerance) {
+  std::vector<Feature> rings;
+  std::vector<bool> used(pins.size(), false);
+  for (std::size_t i = 0; i < pins.size(); ++i) {
+    if (used[i]) continue;
+    const Eigen::Vector3d d = pins[i].direction;
+    std::vector<Pin> ring;
+    for (std::size_t j = i; j < pins.size(); ++j) {
+      Pin p = pins[j];
+      if (used[j] || std::abs(p.radius - pins[i].radius) > tolerance ||
+          std::abs(std::abs(p.direction.dot(d)) - 1) > 1e-9) {
+        continue;
+      }
+      if (p.direction.dot(d) < 0) {  // the same pin seen from its other end
+        p.base += p.length * p.direction;
+        p.direction = d;
+      }
+      const double a = p.base.dot(d) - pins[i].base.dot(d);
+      if (a > pins[i].length - tolerance || a + p.length < tolerance) continue;  // not side by side
+      ring.push_back(p);
+      used[j] = true;
+    }
+    if (ring.size() < 3) continue;
+    const Eigen::Vector3d u = d.unitOrthogonal(), v = d.cross(u);
+    std::vector<Eigen::Vector2d> centres;
+    for (const Pin& p : ring) centres.emplace_back(p.base.dot(u), p.base.dot(v));
+    const FittedCircle circle = FitCircle(centres);
+    if (circle.rms > tolerance || circle.radius <= ring.front().radius) continue;
+    std::vector<double> angles;
+    for (const Eigen::Vector2d& q : centres) {
+      angles.push_back(std::atan2(q.y() - circle.center.y(), q.x() - circle.center.x()));
+    }
+    std::sort(angles.begin(), angles.end());
+    const int n = static_cast<int>(angles.size());
+    const double pitch = 2 * kPi / n;
+    bool even = true;
+    for (int k = 0; k < n; ++k) {
+      const double gap = k + 1 < n ? angles[k + 1] - angles[k] : angles[0] + 2 * kPi - angles[k];
+      even = even && std::abs(gap - pitch) * circle.radius <= tolerance;
+    }
+    if (!even) continue;
+    double lo = 1e300, hi = -1e300;
+    for (const Pin& p : ring) {
+      lo = std::min(lo, p.base.dot(d));
+      hi = std::max(hi, p.base.dot(d) + p.length);
+    }
+    Feature f;
+    f.kind = FeatureKind::kPinRing;
+    f.id = fmt::format("pins_{}", rings.size() + 1);
+    f.origin = circle.center.x() * u + circle.center.y() * v + lo * d;
+    f.axis = d;
+    f.length = hi - lo;
+    f.teeth = n;
+    f.diameter = 2 * circle.radius;
+    f.pin_diameter = 2 * ring.front().radius;
+    rings.push_back(f);
+  }
+  return rings;
+}
+
 // The mesh and features of one solid in its product's frame, and notes on the faces that give
 // no feature.
 void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>* features,
@@ -423,8 +495,12 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
     }
   }
   int shafts = 0, holes = 0;
+  std::vector<Pin> pins;
   for (const Cylinder& c : cylinders) {
     for (const Cylinder::Span& s : Stretches(c.spans, fit_tolerance)) {
+      if (c.convex && s.coverage >= kPi && s.coverage < 1.5 * kPi) {
+        pins.push_back({c.point + s.lo * c.direction, c.direction, c.radius, s.hi - s.lo});
+      }
       if (s.coverage < 1.5 * kPi) continue;  // a fillet or a partial cylinder
       Feature f;
       f.kind = c.convex ? FeatureKind::kShaft : FeatureKind::kHole;
@@ -437,6 +513,7 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
       features->push_back(f);
     }
   }
+  for (Feature& ring : PinRings(pins, fit_tolerance)) features->push_back(std::move(ring));
   // A sphere whose faces cover at least half of it is a ball (convex) or a socket (concave);
   // smaller caps (a rounded end, a dome) are counted in the notes.
   int balls = 0, sockets = 0;

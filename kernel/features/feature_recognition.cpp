@@ -9,6 +9,7 @@
 #include <complex>
 #include <cstdint>
 #include <numeric>
+#include <optional>
 
 #include "kernel/geometry/circle_fit.h"
 #include "kernel/support/number_format.h"
@@ -159,6 +160,88 @@ double SelfMismatch(const std::vector<double>& s, int shift) {
   const int n = static_cast<int>(s.size());
   for (int i = 0; i < n; ++i) sum += std::abs(s[i] - s[(i + shift) % n]);
   return sum / n / std::max(*hi - *lo, 1e-12);
+}
+
+// The radius of a cycloidal disc of `lobes` lobes about its centre, as the largest radius in
+// each of `bins` angle bins over [-pi, pi), turned by `turn` (radians; empty bins are -1). The
+// disc rolls in a ring of N = lobes + 1 pins of radius r_p on a circle of radius R, on an
+// eccentric e; its outline is the pins' circles' envelope (Shin and Kwon, Mech. Mach. Theory
+// 41 (2006)): x = R cos t - r_p cos(t + psi) - e cos(N t), y = -R sin t + r_p sin(t + psi)
+// + e sin(N t), psi = atan2(sin((1 - N) t), R / (e N) - cos((1 - N) t)). Its radius runs from
+// R - r_p - e (at a pin) to R - r_p + e.
+std::vector<double> CycloidRadius(int lobes, double R, double r_p, double e, double turn,
+                                  int bins) {
+  std::vector<double> radius(bins, -1.0);
+  const int n = lobes + 1, samples = 8 * bins;
+  for (int i = 0; i < samples; ++i) {
+    const double t = 2 * kPi * i / samples;
+    const double psi = std::atan2(std::sin((1 - n) * t), R / (e * n) - std::cos((1 - n) * t));
+    const double x = R * std::cos(t) - r_p * std::cos(t + psi) - e * std::cos(n * t);
+    const double y = -R * std::sin(t) + r_p * std::sin(t + psi) + e * std::sin(n * t);
+    const double angle = std::remainder(std::atan2(y, x) + turn, 2 * kPi);
+    const int bin = std::clamp(static_cast<int>((angle + kPi) / (2 * kPi) * bins), 0, bins - 1);
+    radius[bin] = std::max(radius[bin], std::hypot(x, y));
+  }
+  return radius;
+}
+
+// The phase of the `k`-th harmonic of a radius sampled over [-pi, pi) (bins of -1 skipped).
+double HarmonicPhase(const std::vector<double>& radius, int k) {
+  std::complex<double> sum = 0.0;
+  const int bins = static_cast<int>(radius.size());
+  for (int i = 0; i < bins; ++i) {
+    if (radius[i] < 0) continue;
+    const double angle = -kPi + 2 * kPi * (i + 0.5) / bins;
+    sum += radius[i] * std::polar(1.0, -k * angle);
+  }
+  return std::arg(sum);
+}
+
+struct CycloidFit {
+  double eccentricity = 0.0, rim = 0.0, pin_circle = 0.0, pin_radius = 0.0;
+  double rms = 0.0;  // mm: the outline's radius against the fitted disc's
+};
+
+// The cycloidal disc of `lobes` lobes that fits a convex outline's radius profile best (over
+// [-pi, pi)), or nothing when even the best is off by more than 3% of its eccentricity (a
+// rounded polygon, a cam, a knob). Its extremes give e and R - r_p (see CycloidRadius); r_p,
+// the one unknown left, is searched over (0, R - r_p) and the lobes' phase matched.
+std::optional<CycloidFit> FitCycloid(const std::vector<double>& radius, int lobes) {
+  const auto [lo, hi] = std::minmax_element(radius.begin(), radius.end());
+  const double e = (*hi - *lo) / 2, rim = (*hi + *lo) / 2;  // rim = R - r_p
+  if (lobes < 3 || e <= 0.01 * rim || e * (lobes + 1) >= rim) return std::nullopt;
+  const int bins = static_cast<int>(radius.size());
+  const double phase = HarmonicPhase(radius, lobes);
+  auto fit = [&](double r_p) -> std::optional<CycloidFit> {
+    const double R = rim + r_p;
+    if (e * (lobes + 1) >= R) return std::nullopt;
+    const std::vector<double> untuned = CycloidRadius(lobes, R, r_p, e, 0.0, bins);
+    // A profile turned by `turn` has its harmonic's phase lowered by lobes x turn.
+    const double turn = (HarmonicPhase(untuned, lobes) - phase) / lobes;
+    const std::vector<double> model = CycloidRadius(lobes, R, r_p, e, turn, bins);
+    double sum = 0.0;
+    int count = 0;
+    for (int i = 0; i < bins; ++i) {
+      if (model[i] < 0) continue;
+      sum += (radius[i] - model[i]) * (radius[i] - model[i]);
+      ++count;
+    }
+    return CycloidFit{e, rim, 2 * R, r_p, std::sqrt(sum / std::max(count, 1))};
+  };
+  // r_p over (0, rim) in 48 steps, then the best step's neighbourhood in eighths.
+  constexpr int kSteps = 48;
+  std::optional<CycloidFit> best;
+  auto keep = [&](const std::optional<CycloidFit>& f) {
+    if (f && (!best || f->rms < best->rms)) best = f;
+  };
+  for (int step = 1; step < kSteps; ++step) keep(fit(rim * step / kSteps));
+  if (!best) return std::nullopt;
+  const double coarse = best->pin_radius, h = rim / kSteps;
+  for (int k = -8; k <= 8; ++k) {
+    if (coarse + k * h / 8 > 0) keep(fit(coarse + k * h / 8));
+  }
+  if (best->rms > 0.03 * e) return std::nullopt;
+  return best;
 }
 
 // Axes of the mesh's cylindrical patches, whatever their direction: faces joined across
@@ -444,6 +527,41 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
         }
       }
       if (gear || !convex) continue;
+      // A cycloidal disc: lobes that follow the envelope of a ring of one pin more. Its centre
+      // is that of the outline's vertices, corrected by the radius' first harmonic (a centre
+      // off by d adds d cos(angle - direction) to the radius).
+      std::complex<double> first = 0.0;
+      for (int i = 0; i < kBins; ++i) {
+        first += r[i] * std::polar(2.0 / kBins, -kPi + 2 * kPi * (i + 0.5) / kBins);
+      }
+      const Vector2d centre = c + Vector2d(first.real(), first.imag());
+      const std::vector<double> about_centre =
+          Sample(
+              o, kBins, -kPi, kPi,
+              [&](const Vector2d& q) { return std::atan2(q.y() - centre.y(), q.x() - centre.x()); },
+              [&](const Vector2d& q) { return (q - centre).norm(); }, true)
+              .high;
+      const int lobes = Dominant(Spectrum(about_centre), 3, 512);
+      if (const std::optional<CycloidFit> disc = FitCycloid(about_centre, lobes)) {
+        RecognizedFeature d;
+        Feature& f = d.feature;
+        f.kind = FeatureKind::kCycloidDisc;
+        f.id = "lobes";
+        f.origin = lift(centre, t_min);
+        f.axis = axis;
+        f.length = width;
+        f.teeth = lobes;
+        f.eccentricity = disc->eccentricity;
+        d.fit_error = disc->rms;
+        d.detail = fmt::format(
+            "cycloidal disc, {} lobes (the radius repeats {} times around, from {} to {}): "
+            "eccentricity {}, for a ring of {} pins of diameter {} on a {} circle (rms {})",
+            lobes, lobes, Mm(disc->rim - disc->eccentricity), Mm(disc->rim + disc->eccentricity),
+            Mm(disc->eccentricity), lobes + 1, Mm(2 * disc->pin_radius), Mm(disc->pin_circle),
+            Mm(disc->rms));
+        out.features.push_back(d);
+        continue;
+      }
       // A polygon (a nut's outside): 3 to 8 corners, every one turning the same way.
       if (o.vertices.size() >= 3 && o.vertices.size() <= 8) {
         std::vector<Vector2d> corners = o.vertices;
@@ -547,6 +665,7 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
     }
     f.diameter = snap(f.diameter, 1e-6);
     f.length = snap(f.length, 1e-6);
+    f.eccentricity = snap(f.eccentricity, 1e-6);
   }
   return out;
 }

@@ -88,6 +88,37 @@ TEST(RealExports, TheSolidEdgePinGivesItsTruthsMobility) {
   EXPECT_EQ(Analyze(a).motion.mobility.dof, 1);
 }
 
+TEST(RealExports, TheOnshapeReducersDiscRollsInItsPinRing) {
+  // Truth: a 6-lobe disc centred at (0, 2) on the input's eccentric (e = 2 mm) inside the
+  // housing's 7 integral pins (r 3 on R 25): the disc turns -1/6 per turn of the input.
+  const std::filesystem::path file = std::filesystem::path(MECHANIST_SHARED_DATA) /
+                                     "real/cycloid_7pin_6lobe_onshape/Full Assembly.step";
+  const Assembly a = LoadAssemblyText(
+      R"({"mechanist": 1, "import": ")" + file.string() +
+          R"(", "drivers": [{"id": "in", "part": "Full_Assembly.Input_Shaft", "feature": "shaft_1"}]})",
+      file.parent_path() / "reducer.json");
+  const auto disc = a.FindFeature("Full_Assembly.Cycloidal_Disk/lobes");
+  const auto pins = a.FindFeature("Full_Assembly.Outer_Pin_Shell/pins_1");
+  ASSERT_TRUE(disc && pins);
+  const Feature& d = a.feature(*disc);
+  EXPECT_EQ(d.kind, FeatureKind::kCycloidDisc);
+  EXPECT_EQ(d.teeth, 6);
+  EXPECT_NEAR(d.eccentricity, 2.0, 0.005);
+  EXPECT_NEAR((d.origin.head<2>() - Eigen::Vector2d(0, 2)).norm(), 0.0, 0.005);
+  const Feature& p = a.feature(*pins);
+  EXPECT_EQ(p.kind, FeatureKind::kPinRing);
+  EXPECT_EQ(p.teeth, 7);
+  EXPECT_NEAR(p.diameter, 50.0, 1e-6);
+  EXPECT_NEAR(p.pin_diameter, 6.0, 1e-6);
+  const Analysis an = Analyze(a);
+  int cycloidal = 0;
+  for (const Pair& pair : an.pairs) cycloidal += pair.type == PairType::kCycloidal;
+  EXPECT_EQ(cycloidal, 1);
+  // The input's shaft_1 points down (-z): one turn of it is -1 about z, the disc's +1/6.
+  const FeatureRate& in = an.motion.driven.front().features[disc->part][disc->feature];
+  EXPECT_NEAR(in.rotation.value(), 1.0 / 6.0, 1e-3);
+}
+
 INSTANTIATE_TEST_SUITE_P(Files, RealExports, ::testing::ValuesIn(Cases()),
                          [](const ::testing::TestParamInfo<Expected>& info) {
                            const std::string& f = info.param.file;

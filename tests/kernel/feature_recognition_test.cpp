@@ -225,3 +225,67 @@ TEST(FeatureRecognition, ABallHasNoFeatures) {
 
 }  // namespace
 }  // namespace mechanist
+
+namespace mechanist {
+namespace {
+
+// A cycloidal disc's outline for `pins` pins of radius r_p on a circle of radius R and an
+// eccentricity e, from the textbook parametric form (the pins' envelope), as a ring of points.
+Ring2d CycloidOutline(int pins, double R, double r_p, double e, int samples) {
+  Ring2d ring;
+  for (int i = 0; i < samples; ++i) {
+    const double t = 2 * 3.14159265358979323846 * i / samples;
+    const double psi =
+        std::atan2(std::sin((1 - pins) * t), R / (e * pins) - std::cos((1 - pins) * t));
+    ring.emplace_back(R * std::cos(t) - r_p * std::cos(t + psi) - e * std::cos(pins * t),
+                      -R * std::sin(t) + r_p * std::sin(t + psi) + e * std::sin(pins * t));
+  }
+  return ring;
+}
+
+TEST(FeatureRecognition, CycloidalDiscsGiveTheirLobesAndEccentricity) {
+  struct Disc {
+    int pins;
+    double R, r_p, e;
+  };
+  for (const Disc d : {Disc{7, 25, 3, 2}, Disc{11, 40, 4, 1.5}, Disc{16, 30, 2.5, 0.8}}) {
+    Region2d region{CycloidOutline(d.pins, d.R, d.r_p, d.e, 720), {}};
+    region.holes.push_back(CircleRing(Eigen::Vector2d::Zero(), 5, 64));
+    const RigidTransform X(
+        Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix(),
+        Eigen::Vector3d(10, -20, 5));
+    const MeshFeatures found = RecognizeFeatures(Moved(ExtrudeRegion(region, 0, 6), X));
+    const RecognizedFeature* disc = Find(found, FeatureKind::kCycloidDisc);
+    std::string what;
+    for (const RecognizedFeature& r : found.features) what += r.detail + "\n";
+    for (const std::string& n : found.notes) what += n + "\n";
+    ASSERT_NE(disc, nullptr) << d.pins << "\n" << what;
+    EXPECT_EQ(disc->feature.teeth, d.pins - 1);
+    EXPECT_NEAR(disc->feature.eccentricity, d.e, 1e-3 * d.e) << disc->detail;
+    EXPECT_NEAR(DistanceToAxis(disc->feature, X * Eigen::Vector3d::Zero()), 0.0, 1e-3);
+    EXPECT_NEAR(std::abs(disc->feature.axis.dot(X.RotateDirection(Eigen::Vector3d::UnitZ()))), 1.0,
+                1e-9);
+    EXPECT_EQ(Find(found, FeatureKind::kGear), nullptr);
+  }
+}
+
+TEST(FeatureRecognition, RoundedPolygonsAndLobedKnobsAreNoCycloidalDisc) {
+  // A hexagon with rounded corners (a nut's outside, chamfered) and a star knob: lobed
+  // outlines whose shape is not a ring of pins' envelope.
+  Ring2d hexagon, knob;
+  for (int i = 0; i < 360; ++i) {
+    const double a = 2 * 3.14159265358979323846 * i / 360;
+    const double sector = std::fmod(a, 3.14159265358979323846 / 3) - 3.14159265358979323846 / 6;
+    const double r = std::min(10.0 / std::cos(sector), 11.0);
+    hexagon.emplace_back(r * std::cos(a), r * std::sin(a));
+    const double k = 20 + 2 * std::abs(std::sin(3 * a));
+    knob.emplace_back(k * std::cos(a), k * std::sin(a));
+  }
+  for (const Ring2d& outline : {hexagon, knob}) {
+    const MeshFeatures found = RecognizeFeatures(ExtrudeRegion(Region2d{outline, {}}, 0, 5));
+    EXPECT_EQ(Find(found, FeatureKind::kCycloidDisc), nullptr);
+  }
+}
+
+}  // namespace
+}  // namespace mechanist
