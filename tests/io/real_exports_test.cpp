@@ -28,9 +28,9 @@ std::vector<Expected> Cases() {
   return {
       // Truth: the bracket is ground and the arm turns on its pin: mobility 1 (tested below).
       {"revolute_pin_solidedge_chrono/assembly.stp", "Assem1", {}},
-      // Truth: the housing with its 7 integral ring pins. No warning: the disc, the output
-      // ring, the shaft and the placeholder ring turn freely (the file has no driver; the
-      // cycloidal coupling is not yet recognised, so they are independent motions).
+      // Truth: the housing with its 7 integral ring pins. No warning: the input with its disc,
+      // the output ring (its pin mechanism is not recognised) and the placeholder ring turn
+      // freely (the file has no driver).
       {"cycloid_7pin_6lobe_onshape/Full Assembly.step", "Full_Assembly.Outer_Pin_Shell", {}},
       // Recognition miss: the lid's integral pins are cones (r 4.8 at the root) in the
       // base's r 5.1 bores, 0.3 mm clear, which make no pair, so the lid is unconnected.
