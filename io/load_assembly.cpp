@@ -34,6 +34,9 @@ Assembly Load(AssemblyFileReader reader, const std::string& file, const LoadOpti
   };
   Append(InferNutsOnBolts(&spec.parts, spec.tolerance.length, spec.tolerance.angle, inferred),
          &spec);
+  Append(
+      InferScrewsInPlainHoles(&spec.parts, spec.tolerance.length, spec.tolerance.angle, inferred),
+      &spec);
   Append(ChooseGround(&spec.parts), &spec);
   std::optional<Assembly> assembly;
   try {

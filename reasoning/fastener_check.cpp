@@ -32,11 +32,14 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
   auto world = [&](FeatureRef r) {
     return assembly.feature(r).WorldAxis(assembly.part(r.part).X_WP);
   };
-  // A nut the nut-on-bolt heuristic guessed (a collar or a block on a plain shaft may be
-  // taken for one) is not measured: the shaft's end says nothing about its engagement.
+  // A tapped hole the heuristics guessed is not measured: a collar or a block on a plain shaft
+  // may be taken for a nut, and a screw in a housing's plain hole need not reach its end.
   std::set<std::string> guessed_nuts;
   for (const Diagnostic& d : assembly.findings()) {
     if (d.code == "nut_on_bolt" && !d.features.empty()) guessed_nuts.insert(d.features.front());
+    if (d.code == "screw_in_plain_hole" && d.features.size() == 2) {
+      guessed_nuts.insert(d.features.back());
+    }
   }
   auto too_short = [&](FeatureRef thread, FeatureRef nut, double shortfall,
                        const std::string& how) {

@@ -11,8 +11,8 @@ namespace mechanist {
 /// The seeds' fastening semantics as checks on recognised pairs, at the file's poses:
 /// - `bolt_too_short` (warning): a thread engages less of a through tapped hole (a nut) than
 ///   its length, or stops short of a collinear nut of its size within one nut length plus one
-///   diameter; the message gives the shortfall in mm. Not for a nut the nut-on-bolt heuristic
-///   guessed (named by a `nut_on_bolt` finding of the assembly).
+///   diameter; the message gives the shortfall in mm. Not for a tapped hole a heuristic
+///   guessed (named by a `nut_on_bolt` or `screw_in_plain_hole` finding of the assembly).
 /// - `nut_without_bolt` (warning): a part whose only feature besides faces is a through tapped
 ///   hole, with no thread in it.
 /// - `loose_fastening_only` (warning): a part whose fastening pairs are all loose threads (it

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <utility>
 
 #include "kernel/features/feature_recognition.h"
@@ -84,6 +85,111 @@ std::vector<Diagnostic> InferNutsOnBolts(
         break;
       }
       if (hole.kind == FeatureKind::kTappedHole) break;
+    }
+  }
+  return found;
+}
+
+std::vector<Diagnostic> InferScrewsInPlainHoles(
+    std::vector<Part>* parts, double length_tolerance, double angle_tolerance,
+    const std::function<bool(std::size_t part, std::size_t feature)>& inferred) {
+  std::vector<Diagnostic> found;
+  for (std::size_t s = 0; s < parts->size(); ++s) {
+    Part& screw = (*parts)[s];
+    if (!screw.HasGeometry()) continue;
+    bool all_inferred = true;
+    std::optional<std::size_t> shank;
+    for (std::size_t f = 0; f < screw.features.size(); ++f) {
+      all_inferred = all_inferred && inferred(s, f);
+      const Feature& x = screw.features[f];
+      if (x.kind == FeatureKind::kShaft && (!shank || x.length > screw.features[*shank].length)) {
+        shank = f;
+      }
+    }
+    if (!all_inferred || !shank) continue;
+    Feature& thread = screw.features[*shank];
+    if (thread.length < 1.5 * thread.diameter) continue;
+    // The head: a shorter, wider coaxial shaft at one end of the shank.
+    const AxisSegment a = thread.LocalAxis();
+    std::optional<Eigen::Vector3d> head_side;  // from the shank's middle toward the head
+    double head_diameter = 0.0;
+    for (const Feature& x : screw.features) {
+      if (x.kind != FeatureKind::kShaft || &x == &thread) continue;
+      if (x.diameter < 1.3 * thread.diameter || x.diameter > 2.5 * thread.diameter ||
+          x.length > x.diameter || AngleBetweenLines(x.axis, a.direction) > angle_tolerance ||
+          DistanceToLine(x.origin, a.origin, a.direction) > length_tolerance) {
+        continue;
+      }
+      const double t0 = (x.origin - a.origin).dot(a.direction);
+      const double t1 = t0 + x.length * x.axis.dot(a.direction);
+      // Beside the shank, up to a quarter of its diameter away (a fillet under the head).
+      const double near = std::min(t0, t1), far = std::max(t0, t1);
+      const double gap = 0.25 * thread.diameter + length_tolerance;
+      if (far <= length_tolerance && far >= -gap) {
+        head_side = -a.direction;
+      } else if (near >= a.length - length_tolerance && near <= a.length + gap) {
+        head_side = a.direction;
+      } else {
+        continue;
+      }
+      head_diameter = x.diameter;
+      break;
+    }
+    if (!head_side) continue;
+    // A screw is no wider than its head (a motor with a shaft is).
+    bool slender = true;
+    for (const Eigen::Vector3d& v : screw.mesh->vertices) {
+      const Eigen::Vector3d d = v - a.origin;
+      slender =
+          slender && (d - d.dot(a.direction) * a.direction).norm() <= 0.5 * head_diameter * 1.05;
+    }
+    if (!slender) continue;
+    const Eigen::Vector3d tip_P = head_side->dot(a.direction) > 0
+                                      ? a.origin
+                                      : Eigen::Vector3d(a.origin + a.length * a.direction);
+    const AxisSegment t = thread.WorldAxis(screw.X_WP);
+    const Eigen::Vector3d tip = screw.X_WP * tip_P;
+    const Eigen::Vector3d inward = screw.X_WP.RotateDirection(-*head_side);  // toward the tip
+    for (std::size_t p = 0; p < parts->size(); ++p) {
+      if (p == s) continue;
+      Part& part = (*parts)[p];
+      bool screwed = false;
+      for (std::size_t f = 0; f < part.features.size() && !screwed; ++f) {
+        Feature& hole = part.features[f];
+        if (hole.kind != FeatureKind::kHole || !inferred(p, f)) continue;
+        const AxisSegment h = hole.WorldAxis(part.X_WP);
+        if (AngleBetweenLines(h.direction, t.direction) > angle_tolerance ||
+            DistanceToLine(h.origin, t.origin, t.direction) > length_tolerance ||
+            std::abs(hole.diameter - thread.diameter) > 0.1 * thread.diameter ||
+            AxialOverlap(h, t) <= length_tolerance) {
+          continue;
+        }
+        // The tip inside the hole: not before its start nor past its end.
+        const double s0 = (h.origin - tip).dot(inward);
+        const double s1 = (h.origin + h.length * h.direction - tip).dot(inward);
+        if (std::min(s0, s1) > length_tolerance || std::max(s0, s1) < -length_tolerance) continue;
+        const double pitch = CoarsePitch(thread.diameter);
+        const double drilled = hole.diameter;
+        hole.kind = FeatureKind::kTappedHole;
+        hole.fastening = Fastening::kTight;
+        hole.pitch = pitch;
+        hole.diameter = thread.diameter;
+        thread.kind = FeatureKind::kThread;
+        thread.fastening = Fastening::kTight;
+        thread.pitch = pitch;
+        found.push_back(
+            {Severity::kInfo,
+             "screw_in_plain_hole",
+             fmt::format("part '{}' (a head and a {} mm shank) ends in '{}/{}' ({} mm): taken "
+                         "as screwed into it, a tight thread of pitch {} mm (heuristic: the "
+                         "file models no thread)",
+                         screw.id, FormatNumber(thread.diameter), part.id, hole.id,
+                         FormatNumber(drilled), FormatNumber(pitch)),
+             {screw.id, part.id},
+             {fmt::format("{}/{}", screw.id, thread.id), fmt::format("{}/{}", part.id, hole.id)}});
+        screwed = true;
+      }
+      if (screwed) break;
     }
   }
   return found;

@@ -23,6 +23,22 @@ std::vector<Diagnostic> InferNutsOnBolts(
     std::vector<Part>* parts, double length_tolerance, double angle_tolerance,
     const std::function<bool(std::size_t part, std::size_t feature)>& inferred);
 
+/// The screws of a CAD import whose threads are not modelled, screwed into a plain hole: a part
+/// that is a head and a shank (two coaxial shafts, the head 1.3 to 2.5 times the shank's
+/// diameter and no longer than its diameter, the shank at least 1.5 diameters long, the whole
+/// part within the head's cylinder), whose shank's tip ends inside a coaxial hole of another
+/// part (diameter within 10% of the shank's, engaged, the tip not past the hole's end) and
+/// which no nut holds (its shank is still a shaft). That hole becomes a tight tapped hole of
+/// the shank's diameter (the modelled hole is the tap or clearance drill) and the shank a
+/// tight thread (ISO coarse pitch), so that recognition fixes the screw there and clamps the
+/// parts whose holes it passes (a cover and its spacers on a housing). Returns one info
+/// `screw_in_plain_hole` per screw. Only features for which `inferred(part, feature)` holds
+/// are reinterpreted, and a screw's part must have no written feature. Run after
+/// InferNutsOnBolts.
+std::vector<Diagnostic> InferScrewsInPlainHoles(
+    std::vector<Part>* parts, double length_tolerance, double angle_tolerance,
+    const std::function<bool(std::size_t part, std::size_t feature)>& inferred);
+
 /// ISO 261 coarse pitch (mm) for a nominal diameter (mm): the table's nearest diameter.
 double CoarsePitch(double diameter);
 

@@ -1,0 +1,97 @@
+// The screw-in-a-plain-hole heuristic of CAD imports without modelled threads: a head and a
+// shank whose tip ends inside another part's hole is screwed there and clamps what it passes;
+// a motor with its shaft, a stepped shaft and a screw whose tip comes out of the last hole are
+// not.
+
+#include "reasoning/fastener_inference.h"
+
+#include <gtest/gtest.h>
+
+#include "kernel/mesh/mesh_builder.h"
+#include "reasoning/analysis.h"
+#include "test_assembly.h"
+
+namespace mechanist {
+namespace {
+
+using testing::MakeFeature;
+using testing::MakePart;
+const Eigen::Vector3d kDown(0, 0, -1);
+
+// The closed cylinders (radius, z0, z1) about the z axis, as one mesh.
+std::shared_ptr<const TriangleMesh> Cylinders(const std::vector<std::array<double, 3>>& cylinders) {
+  auto mesh = std::make_shared<TriangleMesh>();
+  for (const auto& [r, z0, z1] : cylinders) {
+    const TriangleMesh c =
+        ExtrudeRegion(Region2d{CircleRing(Eigen::Vector2d::Zero(), r, 32), {}}, z0, z1);
+    const auto base = static_cast<std::int32_t>(mesh->vertices.size());
+    mesh->vertices.insert(mesh->vertices.end(), c.vertices.begin(), c.vertices.end());
+    for (const auto& f : c.faces) mesh->faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+  }
+  return mesh;
+}
+
+Feature Cylinder(const std::string& id, FeatureKind kind, double z_top, double diameter,
+                 double length) {
+  return MakeFeature(id, kind, {0, 0, z_top}, kDown, [&](Feature& f) {
+    f.diameter = diameter;
+    f.length = length;
+    f.through = kind == FeatureKind::kHole;
+  });
+}
+
+// A screw (head 8 x 3 above z = 10, shank 4 down to z = 10 - shank), a cover (clearance hole
+// 4.4, z 5 to 10) and a housing, ground, with a plain hole of 4.2 from z = 5 down to
+// z = 5 - depth.
+std::vector<Part> Parts(double shank, double depth, double head_length = 3,
+                        double head_diameter = 8) {
+  Part screw = MakePart(
+      "screw", {Cylinder("head", FeatureKind::kShaft, 10 + head_length, head_diameter, head_length),
+                Cylinder("shank", FeatureKind::kShaft, 10, 4, shank)});
+  screw.mesh = Cylinders({{head_diameter / 2, 10, 10 + head_length}, {2, 10 - shank, 10}});
+  return {screw, MakePart("cover", {Cylinder("bore", FeatureKind::kHole, 10, 4.4, 5)}),
+          MakePart("housing", {Cylinder("hole", FeatureKind::kHole, 5, 4.2, depth)},
+                   RigidTransform(), true)};
+}
+
+std::vector<Diagnostic> Infer(std::vector<Part>* parts) {
+  return InferScrewsInPlainHoles(parts, 0.05, 0.5 * 3.14159265358979 / 180,
+                                 [](std::size_t, std::size_t) { return true; });
+}
+
+TEST(ScrewsInPlainHoles, AScrewEndingInAHousingsHoleIsScrewedThereAndClampsTheCover) {
+  std::vector<Part> parts = Parts(16, 15);
+  const std::vector<Diagnostic> found = Infer(&parts);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].code, "screw_in_plain_hole");
+  EXPECT_EQ(found[0].parts, (std::vector<std::string>{"screw", "housing"}));
+  const Feature& hole = parts[2].features[0];
+  EXPECT_EQ(hole.kind, FeatureKind::kTappedHole);
+  EXPECT_DOUBLE_EQ(hole.diameter, 4.0);
+  EXPECT_EQ(hole.fastening, Fastening::kTight);
+  EXPECT_EQ(parts[0].features[1].kind, FeatureKind::kThread);
+  EXPECT_DOUBLE_EQ(parts[0].features[1].pitch, 0.7);         // M4 coarse
+  EXPECT_EQ(parts[1].features[0].kind, FeatureKind::kHole);  // the cover's clearance hole
+  // Screw and cover are fastened to the housing: one rigid body.
+  const Analysis an = Analyze(testing::MakeAssembly(parts));
+  EXPECT_EQ(an.motion.mobility.dof, 0);
+}
+
+TEST(ScrewsInPlainHoles, OnlyScrewsThatEndInsideTheirLastHole) {
+  // The tip comes out of the housing's hole (z -6 below its end at -1): a pin, not a screw.
+  std::vector<Part> through = Parts(16, 6);
+  EXPECT_TRUE(Infer(&through).empty());
+  // A stepped shaft: its wide part longer than its diameter.
+  std::vector<Part> stepped = Parts(16, 15, 12);
+  EXPECT_TRUE(Infer(&stepped).empty());
+  // A motor: a body far wider than its shaft.
+  std::vector<Part> motor = Parts(16, 15, 3, 40);
+  EXPECT_TRUE(Infer(&motor).empty());
+  // A head, but the body around it wider still (the part is not within the head's cylinder).
+  std::vector<Part> flanged = Parts(16, 15);
+  flanged[0].mesh = Cylinders({{4, 10, 13}, {2, -6, 10}, {9, 13, 14}});
+  EXPECT_TRUE(Infer(&flanged).empty());
+}
+
+}  // namespace
+}  // namespace mechanist
