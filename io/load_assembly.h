@@ -24,15 +24,16 @@ struct LoadOptions {
 /// 2. recognise the features the file does not write (CompleteFeatures);
 /// 3. read the relations (placements, drivers, ..., expectations) against those features;
 /// 4. place the parts placed by features (ResolvePlacements);
-/// 5. infer fasteners: nuts on bolts among the parts whose features were not written
-///    (InferNutsOnBolts), after placing because it needs the parts' poses;
+/// 5. infer fasteners among the parts whose features were not written: nuts on bolts
+///    (InferNutsOnBolts), then screws in plain holes (InferScrewsInPlainHoles), after placing
+///    because they need the parts' poses;
 /// 6. choose a ground part when the file fixes none (ChooseGround);
 /// 7. adjust, when `options.adjust` says so (Adjusted).
 /// What steps 2, 5, 6 and 7 did is in Assembly::findings (`features_recognised`,
-/// `tessellation_gears`, `nut_on_bolt`, `ground_chosen`, `adjustment_locked`), after the reader's
-/// own
-/// (`step_reader`). Throws InputError as AssemblyFileReader does, and for placements that
-/// cannot be solved (at the part's `place`). Never modifies the file.
+/// `tessellation_gears`, `nut_on_bolt`, `screw_in_plain_hole`, `ground_chosen`,
+/// `adjustment_locked`), after the reader's own (`step_reader`). Throws InputError as
+/// AssemblyFileReader does, and for placements that cannot be solved (at the part's `place`).
+/// Never modifies the file.
 Assembly LoadAssembly(const std::filesystem::path& file, const LoadOptions& options = {});
 
 /// As LoadAssembly, for `text` that stands for the file `file` (mesh paths and messages).
