@@ -9,7 +9,7 @@ static_assert(sizeof(Pair) <= 88, "Pair has grown: the analysis reads every pair
 
 namespace {
 
-constexpr EnumNames<PairSource, 7> kSources = {{
+constexpr EnumNames<PairSource, 8> kSources = {{
     {PairSource::kRecognised, "recognised"},
     {PairSource::kOverride, "override"},
     {PairSource::kClamp, "clamp"},
@@ -17,6 +17,7 @@ constexpr EnumNames<PairSource, 7> kSources = {{
     {PairSource::kImpliedPin, "implied_pin"},
     {PairSource::kInferred, "inferred_from_interference"},
     {PairSource::kBearing, "bearing"},
+    {PairSource::kLooseFit, "loose_fit"},
 }};
 
 constexpr EnumNames<PairFastening, 6> kFastenings = {{

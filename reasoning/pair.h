@@ -20,6 +20,7 @@ enum class PairSource : std::uint8_t {
   kInferred,    ///< the running mechanism's sweep found one part pushing the other along
   kImpliedPin,  ///< two coaxial holes with nothing in them: a pin the CAD file left out
   kBearing,     ///< a rolling bearing's rings, or a rolling element held with its outer ring
+  kLooseFit,    ///< a shaft loose in its hole guiding a part that nothing else holds
 };
 
 /// How a pair is held, where that matters to the user.

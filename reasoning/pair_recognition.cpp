@@ -50,9 +50,11 @@ Recognition Recognizer::Run() {
   for (const auto& [i, j] : OverlappingBoxPairs(reach_, parts)) Test(features_[i], features_[j]);
   AddBearings();
   AddImpliedPins();
+  AddLooseFits();
   SetCompliantPartsApart();
   ApplyOverrides();
   ReportImpliedPins();
+  ReportLooseFits();
   const std::vector<Screwed> screwed = TightThreads();
   ApplySetscrews(screwed);
   if (2 * rank_bits_ + kSourceBits > 64) {

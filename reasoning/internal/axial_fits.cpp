@@ -32,9 +32,23 @@ bool Recognizer::Seated(const WorldFeature& c, const WorldFeature& h) {
   return true;
 }
 
+bool Recognizer::Collinear(const WorldFeature& c, const WorldFeature& h) const {
+  return AxialOverlap(c.axis, h.axis) > L_ &&
+         AngleBetweenLines(c.axis.direction, h.axis.direction) <= A_ &&
+         DistanceToLine(c.axis.origin, h.axis.origin, h.axis.direction) <= L_ &&
+         DistanceToLine(h.axis.origin, c.axis.origin, c.axis.direction) <= L_ &&
+         (c.axis.direction.dot(h.axis.direction) >= 0 || h.f.through);
+}
+
 void Recognizer::ShaftHole(const WorldFeature& s, const WorldFeature& h) {
-  // Far thinner or thicker than the hole, the shaft does not touch it (kMaxShaftClearance).
-  if (std::abs(h.f.diameter - s.f.diameter) > kMaxShaftClearance * h.f.diameter + L_) return;
+  // Far thinner or thicker than the hole, the shaft does not touch it (kMaxShaftClearance);
+  // a little thinner, it may still guide a part nothing else holds (AddLooseFits).
+  const double clearance = h.f.diameter - s.f.diameter;
+  if (clearance > kMaxShaftClearance * h.f.diameter + L_) {
+    if (clearance <= kMaxLooseClearance * h.f.diameter + L_) loose_candidates_.emplace_back(&s, &h);
+    return;
+  }
+  if (-clearance > kMaxShaftClearance * h.f.diameter + L_) return;
   if (!Seated(s, h)) return;
   if (s.f.diameter <= h.f.diameter + L_) {
     AddPair(s.f.retained || h.f.retained ? PairType::kRevolute : PairType::kCylindrical, s, h);

@@ -4,6 +4,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>  // fmt::join
 
+#include <array>
+#include <map>
+
 #include "reasoning/internal/recognizer.h"
 
 namespace mechanist::internal {
@@ -52,6 +55,60 @@ void Recognizer::AddImpliedPins() {
     const bool x_first = NameLess(*x, *y);
     AddPair(PairType::kRevolute, x_first ? *x : *y, x_first ? *y : *x);
     pairs_.back().source = PairSource::kImpliedPin;
+  }
+}
+
+void Recognizer::AddLooseFits() {
+  if (loose_candidates_.empty()) return;
+  std::vector<bool> paired(assembly_.parts().size(), false);
+  for (const Pair& p : pairs_) paired[p.a.part] = paired[p.b.part] = true;
+  std::vector<std::pair<const WorldFeature*, const WorldFeature*>> fits;
+  for (const auto& [s, h] : loose_candidates_) {
+    if (!(paired[s->ref.part] && paired[h->ref.part]) && Collinear(*s, *h)) fits.emplace_back(s, h);
+  }
+  // A hole that shafts of one part enter from both of its ends (a knuckle between two pin
+  // stubs) cannot slide off them: retained.
+  std::map<std::pair<std::size_t, std::size_t>, std::array<bool, 2>> ends;  // (hole, part)
+  for (const auto& [s, h] : fits) {
+    const double a = (s->axis.origin - h->axis.origin).dot(h->axis.direction);
+    const double b = a + s->axis.length * s->axis.direction.dot(h->axis.direction);
+    const bool at_start = std::min(a, b) <= L_, at_end = std::max(a, b) >= h->axis.length - L_;
+    if (at_start == at_end) continue;  // through the whole hole, or inside it
+    ends[{Index(h->ref), s->ref.part}][at_start ? 0 : 1] = true;
+  }
+  for (const auto& [s, h] : fits) {
+    const std::array<bool, 2> at = ends[{Index(h->ref), s->ref.part}];
+    const bool retained = s->f.retained || h->f.retained || (at[0] && at[1]);
+    AddPair(retained ? PairType::kRevolute : PairType::kCylindrical, *s, *h);
+    pairs_.back().source = PairSource::kLooseFit;
+  }
+}
+
+void Recognizer::ReportLooseFits() {
+  std::map<std::pair<std::string, std::string>, std::vector<const Pair*>> by_parts;
+  for (const Pair& p : pairs_) {
+    if (p.source != PairSource::kLooseFit) continue;
+    by_parts[{std::string(assembly_.PartId(p.a.part)), std::string(assembly_.PartId(p.b.part))}]
+        .push_back(&p);
+  }
+  for (const auto& [parts, pairs] : by_parts) {
+    std::set<std::string> features;
+    double clearance = std::numeric_limits<double>::infinity();
+    for (const Pair* p : pairs) {
+      features.insert(assembly_.FeatureName(p->a));
+      features.insert(assembly_.FeatureName(p->b));
+      clearance = std::min(clearance, (At(p->b).f.diameter - At(p->a).f.diameter) / 2);
+    }
+    diagnostics_.push_back(
+        {Severity::kInfo,
+         "loose_fit",
+         fmt::format("{} and {} are held by nothing but {} with at least {} of radial clearance "
+                     "({}; taken as their {} pair; an override of type none forbids it)",
+                     parts.first, parts.second,
+                     pairs.size() == 1 ? "a loose fit" : fmt::format("{} loose fits", pairs.size()),
+                     Mm(clearance), fmt::join(features, ", "), ToString(pairs.front()->type)),
+         {parts.first, parts.second},
+         {features.begin(), features.end()}});
   }
 }
 

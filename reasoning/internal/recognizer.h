@@ -37,6 +37,9 @@ inline constexpr double kPi = 3.14159265358979323846;
 /// thread (ISO 273's coarse series is at most 1.25), a thread under 0.6 times a tapped hole
 /// (M3 in M4 is a near miss, M10 in M30 passes through).
 inline constexpr double kMaxShaftClearance = 0.05;
+/// A shaft up to this fraction of its hole's diameter smaller still guides a part that nothing
+/// else holds (a print-in-place hinge's pins, printed with clearance): AddLooseFits.
+inline constexpr double kMaxLooseClearance = 0.1;
 inline constexpr double kMaxClearanceHoleRatio = 1.3;
 // Two coaxial empty holes of two parts are a pivot whose pin the file leaves out when their
 // diameters differ by at most this fraction of the larger (a press-fit bore and a running one)
@@ -107,6 +110,8 @@ class Recognizer {
   /// feature `h` (collinear, engaged, inserted with the right sense); reports the near
   /// misses otherwise.
   bool Seated(const WorldFeature& c, const WorldFeature& h);
+  /// Seated's geometry alone (collinear, engaged, the right sense), reporting nothing.
+  bool Collinear(const WorldFeature& c, const WorldFeature& h) const;
 
   void ShaftHole(const WorldFeature& s, const WorldFeature& h);
 
@@ -178,6 +183,18 @@ class Recognizer {
   /// that an override forbids or replaces one as any pair.
   void AddImpliedPins();
 
+  /// Loose fits: a shaft more than kMaxShaftClearance but at most kMaxLooseClearance of the
+  /// hole's diameter smaller, collinear and engaged, makes its pair (source `loose_fit`) when
+  /// one of the two parts is in no other pair: nothing else guides it, so the fit does (a
+  /// print-in-place hinge). Revolute when shafts of one part enter the hole from both ends (a
+  /// knuckle between two pin stubs cannot slide off them). After the implied pins, before the
+  /// overrides.
+  void AddLooseFits();
+
+  /// One info diagnostic `loose_fit` per two parts that loose fits join, naming the features
+  /// and the radial clearance.
+  void ReportLooseFits();
+
   /// Compliant parts (springs, belts, hoses) join no pair: the pairs their features would make
   /// are dropped, and one info diagnostic `compliant_part` per such part names the parts it
   /// touches (those pairs' other parts). Before the overrides, which may still force a pair.
@@ -213,6 +230,7 @@ class Recognizer {
   static_assert(static_cast<int>(PairSource::kInferred) < (1 << kSourceBits));
   static_assert(static_cast<int>(PairSource::kImpliedPin) < (1 << kSourceBits));
   static_assert(static_cast<int>(PairSource::kBearing) < (1 << kSourceBits));
+  static_assert(static_cast<int>(PairSource::kLooseFit) < (1 << kSourceBits));
 
   /// Pairs order by feature names, then source, then as found, not by indices, so that
   /// reordering the file changes nothing: the name ranks and the source packed in one key.
@@ -237,6 +255,8 @@ class Recognizer {
   std::vector<std::pair<const WorldFeature*, const WorldFeature*>> setscrew_candidates_;
   /// Hole pairs whose reach boxes overlap: possible implied pins.
   std::vector<std::pair<const WorldFeature*, const WorldFeature*>> hole_candidates_;
+  /// (shaft, hole) pairs too loose to touch: possible loose fits.
+  std::vector<std::pair<const WorldFeature*, const WorldFeature*>> loose_candidates_;
 };
 
 }  // namespace mechanist::internal

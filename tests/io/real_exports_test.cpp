@@ -32,11 +32,9 @@ std::vector<Expected> Cases() {
       // the output ring (its pin mechanism is not recognised) and the placeholder ring turn
       // freely (the file has no driver).
       {"cycloid_7pin_6lobe_onshape/Full Assembly.step", "Full_Assembly.Outer_Pin_Shell", {}},
-      // Recognition miss: the lid's integral pins are cones (r 4.8 at the root) in the
-      // base's r 5.1 bores, 0.3 mm clear, which make no pair, so the lid is unconnected.
-      {"hinge_clamshell_build123d/clamshell_full.step",
-       "COMPOUND_solid2",
-       {"part_unconnected: COMPOUND"}},
+      // The print-in-place hinge: its pin stubs, 0.3 mm clear of the bores, are the lid's
+      // only guide (loose fits), so no warning.
+      {"hinge_clamshell_build123d/clamshell_full.step", "COMPOUND_solid2", {}},
       // A near miss a designer checks (a shaft 0.07 mm off its hole's axis), and a part that
       // nothing holds to the frame.
       {"lead_screw_linear_actuator_onshape/Assembly.step",
@@ -91,6 +89,24 @@ TEST(RealExports, TheSolidEdgePinGivesItsTruthsMobility) {
   const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) /
                                   "real/revolute_pin_solidedge_chrono/assembly.stp");
   EXPECT_EQ(Analyze(a).motion.mobility.dof, 1);
+}
+
+TEST(RealExports, TheClamshellsLidTurnsOnItsPrintedPins) {
+  // Truth: a revolute about y through x = 0, z = 10.2; mobility 1. The pins are stubs
+  // (r 4.8) 0.3 mm clear of the knuckles' bores (r 5.1), entering each bore from both ends.
+  const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) /
+                                  "real/hinge_clamshell_build123d/clamshell_full.step");
+  const Analysis an = Analyze(a);
+  EXPECT_EQ(an.motion.mobility.dof, 1);
+  ASSERT_FALSE(an.pairs.empty());
+  for (const Pair& p : an.pairs) {
+    EXPECT_EQ(p.type, PairType::kRevolute);
+    EXPECT_EQ(p.source, PairSource::kLooseFit);
+    const AxisSegment axis = a.feature(p.a).WorldAxis(a.part(p.a.part).X_WP);
+    EXPECT_NEAR(std::abs(axis.direction.y()), 1.0, 1e-9);
+    EXPECT_NEAR(axis.origin.x(), 0.0, 1e-6);
+    EXPECT_NEAR(axis.origin.z(), 10.2, 1e-6);
+  }
 }
 
 TEST(RealExports, TheOnshapeReducersDiscRollsInItsPinRing) {

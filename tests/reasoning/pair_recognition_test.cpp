@@ -602,6 +602,45 @@ TEST(PairRecognition, CoaxialEmptyHolesOfTwoPartsAreAnImpliedPin) {
   EXPECT_FALSE(HasDiagnostic(forbidden, "implied_pin"));
 }
 
+TEST(PairRecognition, ALooseShaftGuidesOnlyAPartNothingElseHolds) {
+  // 4.6 in 5 (8% of the hole): too loose to touch, but the pin is in no other pair, so the fit
+  // guides it (a print-in-place hinge's pins are printed so).
+  const Recognition loose = Recognize(ShaftInHole(4.6, 5.0));
+  const Pair p = Only(loose);
+  EXPECT_EQ(p.type, PairType::kCylindrical);
+  EXPECT_EQ(p.source, PairSource::kLooseFit);
+  const Diagnostic* d = FindDiagnostic(loose, "loose_fit");
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->severity, Severity::kInfo);
+  EXPECT_NE(d->message.find("0.2 mm of radial clearance"), std::string::npos) << d->message;
+  EXPECT_FALSE(HasDiagnostic(loose, "part_unconnected"));
+  // Beyond 10% it passes through.
+  EXPECT_TRUE(Recognize(ShaftInHole(4.4, 5.0)).pairs.empty());
+  // A pin held by a fit of its own: the loose one makes no pair.
+  Feature held = Shaft(5.0, 20, V(20, 0, 15), -V::UnitZ());
+  held.id = "s2";
+  Feature seat = Hole(5.02, 10, V(20, 0, 10));
+  seat.id = "h2";
+  Feature loose_shaft = Shaft(4.6, 20, V(0, 0, 15), -V::UnitZ());
+  const Recognition both =
+      Recognize(MakeAssembly({MakePart("block", {Hole(5.0, 10), seat}, RigidTransform(), true),
+                              MakePart("pin", {loose_shaft, held})}));
+  ASSERT_EQ(both.pairs.size(), 1u);
+  EXPECT_EQ(both.pairs[0].source, PairSource::kRecognised);
+  // A knuckle between two stubs entering its bore from both ends cannot slide off: revolute.
+  Feature low = Shaft(4.6, 1, V(0, 0, -0.5), V::UnitZ());
+  Feature high = Shaft(4.6, 1, V(0, 0, 10.5), -V::UnitZ());
+  high.id = "s2";
+  Feature bore = Hole(5.0, 10);
+  bore.through = true;
+  const Assembly knuckle = MakeAssembly(
+      {MakePart("frame", {low, high}, RigidTransform(), true), MakePart("leaf", {bore})});
+  const Recognition hinge = Recognize(knuckle);
+  ASSERT_EQ(hinge.pairs.size(), 2u);
+  for (const Pair& q : hinge.pairs) EXPECT_EQ(q.type, PairType::kRevolute);
+  EXPECT_EQ(Analyze(knuckle).motion.mobility.dof, 1);
+}
+
 TEST(PairRecognition, ACompliantPartJoinsNoPairAndSaysWhatItConnects) {
   // A spring whose end coils sit on the spigots of a frame and of a plunger whose rod runs in
   // the frame's bore: compliant, it joins nothing and moves with nothing, and the plunger keeps
