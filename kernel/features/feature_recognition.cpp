@@ -172,7 +172,7 @@ double SelfMismatch(const std::vector<double>& s, int shift) {
 std::vector<double> CycloidRadius(int lobes, double R, double r_p, double e, double turn,
                                   int bins) {
   std::vector<double> radius(bins, -1.0);
-  const int n = lobes + 1, samples = 8 * bins;
+  const int n = lobes + 1, samples = 4 * bins;
   for (int i = 0; i < samples; ++i) {
     const double t = 2 * kPi * i / samples;
     const double psi = std::atan2(std::sin((1 - n) * t), R / (e * n) - std::cos((1 - n) * t));
@@ -203,27 +203,48 @@ struct CycloidFit {
 };
 
 // The cycloidal disc of `lobes` lobes that fits a convex outline's radius profile best (over
-// [-pi, pi)), or nothing when even the best is off by more than 3% of its eccentricity (a
-// rounded polygon, a cam, a knob). Its extremes give e and R - r_p (see CycloidRadius); r_p,
-// the one unknown left, is searched over (0, R - r_p) and the lobes' phase matched.
+// [-pi, pi)), or nothing when the profile does not repeat lobe by lobe or even the best disc is
+// off by more than 3% of its eccentricity (a rounded polygon, a cam, a knob). Its extremes give
+// e and R - r_p (see CycloidRadius); r_p, the one unknown left, is searched over (0, R - r_p)
+// and the lobes' phase matched.
+// Whether a radius profile may be a cycloidal disc's of `lobes` lobes: an eccentricity (half
+// the radius' range) of 1% of the mean radius or more that leaves the pins room (e (lobes + 1)
+// below it), and the profile matching itself turned by one lobe (as a gear's teeth do).
+bool MayBeCycloid(const std::vector<double>& radius, int lobes) {
+  const auto [lo, hi] = std::minmax_element(radius.begin(), radius.end());
+  const double e = (*hi - *lo) / 2, rim = (*hi + *lo) / 2;
+  if (lobes < 3 || e <= 0.01 * rim || e * (lobes + 1) >= rim) return false;
+  const int bins = static_cast<int>(radius.size());
+  return SelfMismatch(radius, static_cast<int>(std::lround(bins / double(lobes)))) < 0.05;
+}
+
 std::optional<CycloidFit> FitCycloid(const std::vector<double>& radius, int lobes) {
+  if (!MayBeCycloid(radius, lobes)) return std::nullopt;
   const auto [lo, hi] = std::minmax_element(radius.begin(), radius.end());
   const double e = (*hi - *lo) / 2, rim = (*hi + *lo) / 2;  // rim = R - r_p
-  if (lobes < 3 || e <= 0.01 * rim || e * (lobes + 1) >= rim) return std::nullopt;
   const int bins = static_cast<int>(radius.size());
-  const double phase = HarmonicPhase(radius, lobes);
-  auto fit = [&](double r_p) -> std::optional<CycloidFit> {
+  // The search runs on the profile in 512 bins (the largest radius of each group), the best
+  // disc is then measured on the whole profile.
+  constexpr int kCoarse = 512;
+  const int group = std::max(1, bins / kCoarse);
+  std::vector<double> coarse(bins / group, -1e300);
+  for (int i = 0; i < bins; ++i) {
+    const int k = std::min(i / group, static_cast<int>(coarse.size()) - 1);
+    coarse[k] = std::max(coarse[k], radius[i]);
+  }
+  auto fit = [&](double r_p, const std::vector<double>& profile) -> std::optional<CycloidFit> {
     const double R = rim + r_p;
-    if (e * (lobes + 1) >= R) return std::nullopt;
-    const std::vector<double> untuned = CycloidRadius(lobes, R, r_p, e, 0.0, bins);
-    // A profile turned by `turn` has its harmonic's phase lowered by lobes x turn.
-    const double turn = (HarmonicPhase(untuned, lobes) - phase) / lobes;
-    const std::vector<double> model = CycloidRadius(lobes, R, r_p, e, turn, bins);
+    if (r_p <= 0 || e * (lobes + 1) >= R) return std::nullopt;
+    const int n = static_cast<int>(profile.size());
+    // Unturned, the disc's radius is even about angle 0, where it is least (a pin): the
+    // lobes' harmonic has phase pi. Turned by `turn`, its phase is lowered by lobes x turn.
+    const double turn = (kPi - HarmonicPhase(profile, lobes)) / lobes;
+    const std::vector<double> model = CycloidRadius(lobes, R, r_p, e, turn, n);
     double sum = 0.0;
     int count = 0;
-    for (int i = 0; i < bins; ++i) {
+    for (int i = 0; i < n; ++i) {
       if (model[i] < 0) continue;
-      sum += (radius[i] - model[i]) * (radius[i] - model[i]);
+      sum += (profile[i] - model[i]) * (profile[i] - model[i]);
       ++count;
     }
     return CycloidFit{e, rim, 2 * R, r_p, std::sqrt(sum / std::max(count, 1))};
@@ -234,13 +255,12 @@ std::optional<CycloidFit> FitCycloid(const std::vector<double>& radius, int lobe
   auto keep = [&](const std::optional<CycloidFit>& f) {
     if (f && (!best || f->rms < best->rms)) best = f;
   };
-  for (int step = 1; step < kSteps; ++step) keep(fit(rim * step / kSteps));
+  for (int step = 1; step < kSteps; ++step) keep(fit(rim * step / kSteps, coarse));
   if (!best) return std::nullopt;
-  const double coarse = best->pin_radius, h = rim / kSteps;
-  for (int k = -8; k <= 8; ++k) {
-    if (coarse + k * h / 8 > 0) keep(fit(coarse + k * h / 8));
-  }
-  if (best->rms > 0.03 * e) return std::nullopt;
+  const double found = best->pin_radius, h = rim / kSteps;
+  for (int k = -8; k <= 8; ++k) keep(fit(found + k * h / 8, coarse));
+  best = fit(best->pin_radius, radius);
+  if (!best || best->rms > 0.03 * e) return std::nullopt;
   return best;
 }
 
@@ -529,20 +549,26 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
       if (gear || !convex) continue;
       // A cycloidal disc: lobes that follow the envelope of a ring of one pin more. Its centre
       // is that of the outline's vertices, corrected by the radius' first harmonic (a centre
-      // off by d adds d cos(angle - direction) to the radius).
-      std::complex<double> first = 0.0;
-      for (int i = 0; i < kBins; ++i) {
-        first += r[i] * std::polar(2.0 / kBins, -kPi + 2 * kPi * (i + 0.5) / kBins);
-      }
-      const Vector2d centre = c + Vector2d(first.real(), first.imag());
-      const std::vector<double> about_centre =
-          Sample(
-              o, kBins, -kPi, kPi,
-              [&](const Vector2d& q) { return std::atan2(q.y() - centre.y(), q.x() - centre.x()); },
-              [&](const Vector2d& q) { return (q - centre).norm(); }, true)
-              .high;
-      const int lobes = Dominant(Spectrum(about_centre), 3, 512);
-      if (const std::optional<CycloidFit> disc = FitCycloid(about_centre, lobes)) {
+      // off by d adds d cos(angle - direction) to the radius): the outline is sampled again
+      // about it when it may be one.
+      const auto disc = [&]() -> std::optional<RecognizedFeature> {
+        if (!MayBeCycloid(r, Dominant(Spectrum(r), 3, 512))) return std::nullopt;
+        std::complex<double> first = 0.0;
+        for (int i = 0; i < kBins; ++i) {
+          first += r[i] * std::polar(2.0 / kBins, -kPi + 2 * kPi * (i + 0.5) / kBins);
+        }
+        const Vector2d centre = c + Vector2d(first.real(), first.imag());
+        const std::vector<double> about_centre =
+            Sample(
+                o, kBins, -kPi, kPi,
+                [&](const Vector2d& q) {
+                  return std::atan2(q.y() - centre.y(), q.x() - centre.x());
+                },
+                [&](const Vector2d& q) { return (q - centre).norm(); }, true)
+                .high;
+        const int lobes = Dominant(Spectrum(about_centre), 3, 512);
+        const std::optional<CycloidFit> fit = FitCycloid(about_centre, lobes);
+        if (!fit) return std::nullopt;
         RecognizedFeature d;
         Feature& f = d.feature;
         f.kind = FeatureKind::kCycloidDisc;
@@ -551,15 +577,18 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
         f.axis = axis;
         f.length = width;
         f.teeth = lobes;
-        f.eccentricity = disc->eccentricity;
-        d.fit_error = disc->rms;
+        f.eccentricity = fit->eccentricity;
+        d.fit_error = fit->rms;
         d.detail = fmt::format(
             "cycloidal disc, {} lobes (the radius repeats {} times around, from {} to {}): "
             "eccentricity {}, for a ring of {} pins of diameter {} on a {} circle (rms {})",
-            lobes, lobes, Mm(disc->rim - disc->eccentricity), Mm(disc->rim + disc->eccentricity),
-            Mm(disc->eccentricity), lobes + 1, Mm(2 * disc->pin_radius), Mm(disc->pin_circle),
-            Mm(disc->rms));
-        out.features.push_back(d);
+            lobes, lobes, Mm(fit->rim - fit->eccentricity), Mm(fit->rim + fit->eccentricity),
+            Mm(fit->eccentricity), lobes + 1, Mm(2 * fit->pin_radius), Mm(fit->pin_circle),
+            Mm(fit->rms));
+        return d;
+      }();
+      if (disc) {
+        out.features.push_back(*disc);
         continue;
       }
       // A polygon (a nut's outside): 3 to 8 corners, every one turning the same way.
