@@ -8,6 +8,8 @@
 #include <utility>
 
 #include "kernel/features/feature_recognition.h"
+#include "kernel/features/spring_recognition.h"
+#include "kernel/support/number_format.h"
 
 namespace mechanist {
 namespace {
@@ -33,6 +35,8 @@ TessellationGears FindTessellationGears(const TriangleMesh& mesh) {
   return gears;
 }
 
+std::string Mm(double x) { return fmt::format("{} mm", FormatNumber(x, 4)); }
+
 /// "a, b and 3 more": the first few names of a list for a one-line message.
 std::string FewNames(const std::vector<std::string>& names) {
   constexpr std::size_t kShown = 8;
@@ -56,6 +60,8 @@ bool PartOrigin::Inferred(const Part& part, std::size_t feature) const {
 std::vector<Diagnostic> CompleteFeatures(std::vector<Part>* parts,
                                          const std::vector<PartOrigin>& origins) {
   std::map<const TriangleMesh*, TessellationGears> gears_of;  // instances share their mesh
+  std::map<const TriangleMesh*, std::optional<HelicalSpring>> springs_of;
+  std::vector<Diagnostic> springs;
   std::vector<std::string> recognised;
   std::vector<std::string> with_gears;
   for (std::size_t p = 0; p < parts->size(); ++p) {
@@ -88,6 +94,26 @@ std::vector<Diagnostic> CompleteFeatures(std::vector<Part>* parts,
       part.notes.insert(part.notes.begin() + solid->notes_end, notes.begin(), notes.end());
     }
     if (found_gears) with_gears.push_back(part.id);
+    // A helical spring is no rigid link (spec: `compliant`), whichever way its mesh came.
+    if (!part.compliant && part.HasGeometry()) {
+      auto coil = springs_of.find(part.mesh.get());
+      if (coil == springs_of.end()) {
+        coil = springs_of.emplace(part.mesh.get(), RecognizeHelicalSpring(*part.mesh)).first;
+      }
+      if (const std::optional<HelicalSpring>& spring = coil->second) {
+        part.compliant = true;
+        springs.push_back(
+            {Severity::kInfo,
+             "spring_recognised",
+             fmt::format("part '{}' is a helical spring (coil {}, wire {}, {} turns of pitch {}, "
+                         "{} hand): compliant, not a rigid link",
+                         part.id, Mm(spring->mean_diameter), Mm(spring->wire_diameter),
+                         FormatNumber(spring->turns, 3), Mm(spring->pitch),
+                         spring->hand == Hand::kRight ? "right" : "left"),
+             {part.id},
+             {}});
+      }
+    }
     const bool only_tessellation_gears = origin.imported || !part.features.empty();
     if (!origin.step_solids.empty() && only_tessellation_gears) continue;
     if (!part.HasGeometry()) continue;
@@ -118,6 +144,7 @@ std::vector<Diagnostic> CompleteFeatures(std::vector<Part>* parts,
          with_gears,
          {}});
   }
+  done.insert(done.end(), springs.begin(), springs.end());
   return done;
 }
 

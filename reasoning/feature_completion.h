@@ -46,9 +46,10 @@ struct PartOrigin {
 ///   faces or as many small cylinder patches, which give no exact feature), after its exact-face
 ///   features, with a note each; once per shared mesh;
 /// - a part whose mesh is not a STEP solid, or a STEP mesh file with no exact feature, gets
-///   every feature RecognizeFeatures finds on its mesh.
+///   every feature RecognizeFeatures finds on its mesh;
+/// - a part whose mesh is a helical spring (RecognizeHelicalSpring) becomes compliant.
 /// Returns one info diagnostic per kind of step that did something (`features_recognised`,
-/// `tessellation_gears`), naming the parts. Deterministic.
+/// `tessellation_gears`), naming the parts, and one `spring_recognised` per spring. Deterministic.
 std::vector<Diagnostic> CompleteFeatures(std::vector<Part>* parts,
                                          const std::vector<PartOrigin>& origins);
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -15,6 +16,8 @@
 #include "io/occt/step_fixtures.h"
 #include "io/stl_writer.h"
 #include "kernel/features/part_library.h"
+#include "reasoning/analysis.h"
+#include "spring_mesh.h"
 
 namespace mechanist {
 namespace {
@@ -137,6 +140,41 @@ TEST_F(LoadAssemblyTest, AdjustingIsTheLastStepAndOnlyWhenAsked) {
   EXPECT_GT(
       (adjusted.part(motor).X_WP.translation() - as_written.part(motor).X_WP.translation()).norm(),
       0.1);
+}
+
+TEST_F(LoadAssemblyTest, AHelicalSpringMeshIsCompliantAndAddsNoFreedom) {
+  // A coil of 12 mm, wire 1.5 mm, 7 turns of pitch 4, between a frame's seat and a plunger
+  // whose rod slides in the frame's bore: recognised from its mesh alone, it is compliant, so
+  // the plunger keeps the two freedoms of its rod and the spring adds none.
+  std::ofstream(dir_ / "spring.stl", std::ios::binary)
+      << BinaryStl(testing::SpringMesh(6, 1.5, 4, 7));
+  const std::string frame_and_plunger = R"(
+    {"id": "frame", "ground": true, "features": [
+      {"id": "bore", "kind": "hole", "origin": [0, 0, 0], "axis": [0, 0, 1], "diameter": 4,
+       "length": 10, "through": true}]},
+    {"id": "plunger", "pose": {"position": [0, 0, 30]}, "features": [
+      {"id": "rod", "kind": "shaft", "origin": [0, 0, 0], "axis": [0, 0, -1], "diameter": 4,
+       "length": 35}]})";
+  const Assembly with = LoadAssemblyText(R"({"mechanist": 1, "parts": [)" + frame_and_plunger +
+                                             R"(, {"id": "spring", "mesh": "spring.stl"}]})",
+                                         dir_ / "a.json");
+  const Part& spring = with.part(*with.FindPart("spring"));
+  EXPECT_TRUE(spring.compliant);
+  const auto found =
+      std::find_if(with.findings().begin(), with.findings().end(),
+                   [](const Diagnostic& d) { return d.code == "spring_recognised"; });
+  ASSERT_NE(found, with.findings().end());
+  EXPECT_EQ(found->parts, std::vector<std::string>{"spring"});
+  // Measured on the mesh (its wire a 12-gon): the coil and pitch to 4 digits, 7 turns within
+  // a hundredth.
+  EXPECT_NE(found->message.find("coil 12 mm, wire 1.529 mm, 6.99 turns of pitch 4 mm, right "
+                                "hand"),
+            std::string::npos)
+      << found->message;
+  const Assembly without = LoadAssemblyText(
+      R"({"mechanist": 1, "parts": [)" + frame_and_plunger + "]}", dir_ / "b.json");
+  EXPECT_EQ(Analyze(with).motion.mobility.dof, 2);
+  EXPECT_EQ(Analyze(without).motion.mobility.dof, 2);
 }
 
 }  // namespace
