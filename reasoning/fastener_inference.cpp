@@ -27,6 +27,32 @@ double CoarsePitch(double diameter) {
   return best->second;
 }
 
+namespace {
+
+// Makes `shaft` a tight thread screwed into `hole`, a tight tapped hole, both of the ISO coarse
+// pitch for the shaft's diameter, which it returns.
+double ScrewTight(Feature* shaft, Feature* hole) {
+  const double pitch = CoarsePitch(shaft->diameter);
+  hole->kind = FeatureKind::kTappedHole;
+  hole->fastening = Fastening::kTight;
+  hole->pitch = pitch;
+  shaft->kind = FeatureKind::kThread;
+  shaft->fastening = Fastening::kTight;
+  shaft->pitch = pitch;
+  return pitch;
+}
+
+// Whether the shaft's axis `s` runs along the hole's `h` (within the tolerances) and the two
+// overlap along it.
+bool Engaged(const AxisSegment& s, const AxisSegment& h, double length_tolerance,
+             double angle_tolerance) {
+  return AngleBetweenLines(s.direction, h.direction) <= angle_tolerance &&
+         DistanceToLine(h.origin, s.origin, s.direction) <= length_tolerance &&
+         AxialOverlap(s, h) > length_tolerance;
+}
+
+}  // namespace
+
 std::vector<Diagnostic> InferNutsOnBolts(
     std::vector<Part>* parts, double length_tolerance, double angle_tolerance,
     const std::function<bool(std::size_t part, std::size_t feature)>& inferred) {
@@ -59,19 +85,11 @@ std::vector<Diagnostic> InferNutsOnBolts(
         if (shaft.kind != FeatureKind::kShaft && shaft.kind != FeatureKind::kThread) continue;
         if (!inferred(b, f)) continue;
         const AxisSegment s = shaft.WorldAxis(bolt.X_WP);
-        if (AngleBetweenLines(s.direction, h.direction) > angle_tolerance ||
-            DistanceToLine(h.origin, s.origin, s.direction) > length_tolerance ||
-            std::abs(shaft.diameter - hole.diameter) > 0.02 * hole.diameter ||
-            AxialOverlap(s, h) <= length_tolerance) {
+        if (std::abs(shaft.diameter - hole.diameter) > 0.02 * hole.diameter ||
+            !Engaged(s, h, length_tolerance, angle_tolerance)) {
           continue;
         }
-        const double pitch = CoarsePitch(shaft.diameter);
-        hole.kind = FeatureKind::kTappedHole;
-        hole.fastening = Fastening::kTight;
-        hole.pitch = pitch;
-        shaft.kind = FeatureKind::kThread;
-        shaft.fastening = Fastening::kTight;
-        shaft.pitch = pitch;
+        const double pitch = ScrewTight(&shaft, &hole);
         found.push_back(
             {Severity::kInfo,
              "nut_on_bolt",
@@ -158,25 +176,17 @@ std::vector<Diagnostic> InferScrewsInPlainHoles(
         Feature& hole = part.features[f];
         if (hole.kind != FeatureKind::kHole || !inferred(p, f)) continue;
         const AxisSegment h = hole.WorldAxis(part.X_WP);
-        if (AngleBetweenLines(h.direction, t.direction) > angle_tolerance ||
-            DistanceToLine(h.origin, t.origin, t.direction) > length_tolerance ||
-            std::abs(hole.diameter - thread.diameter) > 0.1 * thread.diameter ||
-            AxialOverlap(h, t) <= length_tolerance) {
+        if (std::abs(hole.diameter - thread.diameter) > 0.1 * thread.diameter ||
+            !Engaged(t, h, length_tolerance, angle_tolerance)) {
           continue;
         }
         // The tip inside the hole: not before its start nor past its end.
         const double s0 = (h.origin - tip).dot(inward);
         const double s1 = (h.origin + h.length * h.direction - tip).dot(inward);
         if (std::min(s0, s1) > length_tolerance || std::max(s0, s1) < -length_tolerance) continue;
-        const double pitch = CoarsePitch(thread.diameter);
         const double drilled = hole.diameter;
-        hole.kind = FeatureKind::kTappedHole;
-        hole.fastening = Fastening::kTight;
-        hole.pitch = pitch;
         hole.diameter = thread.diameter;
-        thread.kind = FeatureKind::kThread;
-        thread.fastening = Fastening::kTight;
-        thread.pitch = pitch;
+        const double pitch = ScrewTight(&thread, &hole);
         found.push_back(
             {Severity::kInfo,
              "screw_in_plain_hole",

@@ -29,8 +29,8 @@ struct HelicalSpring {
 /// of the vertices on the annulus' rims, which lie on the wire's helix (Fisher's mean
 /// resultant length at least 0.5); at least 2.5 turns; and the mesh's volume and area within
 /// 30% of the wire's (pi d^2 / 4 and pi d times the helix' length, turns x sqrt((pi D)^2 +
-/// p^2)), which a threaded rod, a tube (its vertices in an annulus too) or a box is far from. Deterministic (vertices
-/// subsampled to at most 4096, evenly).
+/// p^2)), which a threaded rod, a tube (its vertices in an annulus too) or a box is far from.
+/// Deterministic (vertices subsampled to at most 4096, evenly).
 std::optional<HelicalSpring> RecognizeHelicalSpring(const TriangleMesh& mesh);
 
 }  // namespace mechanist
