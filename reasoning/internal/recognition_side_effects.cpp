@@ -93,20 +93,23 @@ void Recognizer::ReportLooseFits() {
   }
   for (const auto& [parts, pairs] : by_parts) {
     std::set<std::string> features;
+    std::set<std::string_view> types;
     double clearance = std::numeric_limits<double>::infinity();
     for (const Pair* p : pairs) {
       features.insert(assembly_.FeatureName(p->a));
       features.insert(assembly_.FeatureName(p->b));
+      types.insert(ToString(p->type));
       clearance = std::min(clearance, (At(p->b).f.diameter - At(p->a).f.diameter) / 2);
     }
     diagnostics_.push_back(
         {Severity::kInfo,
          "loose_fit",
          fmt::format("{} and {} are held by nothing but {} with at least {} of radial clearance "
-                     "({}; taken as their {} pair; an override of type none forbids it)",
+                     "({}; taken as their {} {}; an override of type none forbids one)",
                      parts.first, parts.second,
                      pairs.size() == 1 ? "a loose fit" : fmt::format("{} loose fits", pairs.size()),
-                     Mm(clearance), fmt::join(features, ", "), ToString(pairs.front()->type)),
+                     Mm(clearance), fmt::join(features, ", "), fmt::join(types, " and "),
+                     pairs.size() == 1 ? "pair" : "pairs"),
          {parts.first, parts.second},
          {features.begin(), features.end()}});
   }
