@@ -414,6 +414,16 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
     auto lift = [&](const Vector2d& q, double t) {
       return Vector3d(q.x() * u + q.y() * v + t * axis);
     };
+    // A feature of the whole extrusion (teeth, lobes) about the centre `q` of an outline.
+    auto through_part = [&](FeatureKind kind, const char* id, const Vector2d& q) {
+      RecognizedFeature r;
+      r.feature.kind = kind;
+      r.feature.id = id;
+      r.feature.origin = lift(q, t_min);
+      r.feature.axis = axis;
+      r.feature.length = width;
+      return r;
+    };
 
     // Walls grouped into outlines by shared vertices.
     Union groups(mesh.vertices.size());
@@ -527,13 +537,8 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
             shift < 1.2 && mismatch < 0.05) {
           gear = true;
           has_teeth = true;
-          RecognizedFeature g;
+          RecognizedFeature g = through_part(FeatureKind::kGear, "teeth", c);
           Feature& f = g.feature;
-          f.kind = FeatureKind::kGear;
-          f.id = "teeth";
-          f.origin = lift(c, t_min);
-          f.axis = axis;
-          f.length = width;
           f.teeth = z;
           f.module = *m;
           f.internal = !convex;
@@ -569,13 +574,8 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
         const int lobes = Dominant(Spectrum(about_centre), 3, 512);
         const std::optional<CycloidFit> fit = FitCycloid(about_centre, lobes);
         if (!fit) return std::nullopt;
-        RecognizedFeature d;
+        RecognizedFeature d = through_part(FeatureKind::kCycloidDisc, "lobes", centre);
         Feature& f = d.feature;
-        f.kind = FeatureKind::kCycloidDisc;
-        f.id = "lobes";
-        f.origin = lift(centre, t_min);
-        f.axis = axis;
-        f.length = width;
         f.teeth = lobes;
         f.eccentricity = fit->eccentricity;
         d.fit_error = fit->rms;

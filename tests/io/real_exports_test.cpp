@@ -22,6 +22,10 @@ struct Expected {
   std::string ground;
   // "code: the first part it names", sorted.
   std::vector<std::string> warnings;
+  // What the recognisers added this session find on this file, and on no other: cycloidal
+  // discs and pin rings, screws taken as screwed into plain holes, loose-fit pairs. No file
+  // has a spring.
+  int cycloid_features = 0, plain_hole_screws = 0, loose_fits = 0;
 };
 
 std::vector<Expected> Cases() {
@@ -31,10 +35,10 @@ std::vector<Expected> Cases() {
       // Truth: the housing with its 7 integral ring pins. No warning: the input with its disc,
       // the output ring (its pin mechanism is not recognised) and the placeholder ring turn
       // freely (the file has no driver).
-      {"cycloid_7pin_6lobe_onshape/Full Assembly.step", "Full_Assembly.Outer_Pin_Shell", {}},
+      {"cycloid_7pin_6lobe_onshape/Full Assembly.step", "Full_Assembly.Outer_Pin_Shell", {}, 2, 2},
       // The print-in-place hinge: its pin stubs, 0.3 mm clear of the bores, are the lid's
       // only guide (loose fits), so no warning.
-      {"hinge_clamshell_build123d/clamshell_full.step", "COMPOUND_solid2", {}},
+      {"hinge_clamshell_build123d/clamshell_full.step", "COMPOUND_solid2", {}, 0, 0, 6},
       // A near miss a designer checks (a shaft 0.07 mm off its hole's axis), and a part that
       // nothing holds to the frame.
       {"lead_screw_linear_actuator_onshape/Assembly.step",
@@ -83,6 +87,18 @@ TEST_P(RealExports, GroundAndWarningsAreTheOnesADesignerActsOn) {
   }
   std::sort(warnings.begin(), warnings.end());
   EXPECT_EQ(warnings, e.warnings);
+  int cycloid_features = 0, loose_fits = 0;
+  for (const Part& p : a.parts()) {
+    EXPECT_FALSE(p.compliant) << p.id;
+    for (const Feature& f : p.features) {
+      cycloid_features +=
+          f.kind == FeatureKind::kCycloidDisc || f.kind == FeatureKind::kPinRing ? 1 : 0;
+    }
+  }
+  for (const Pair& p : an.pairs) loose_fits += p.source == PairSource::kLooseFit ? 1 : 0;
+  EXPECT_EQ(cycloid_features, e.cycloid_features);
+  EXPECT_EQ(CountCode(a, "screw_in_plain_hole"), e.plain_hole_screws);
+  EXPECT_EQ(loose_fits, e.loose_fits);
 }
 
 TEST(RealExports, TheSolidEdgePinGivesItsTruthsMobility) {
