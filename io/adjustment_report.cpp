@@ -42,7 +42,8 @@ std::string Mm(double mm) { return fmt::format("{} mm", Fixed(mm)); }
 
 std::string Describe(const GoalError& e) {
   std::string s =
-      fmt::format("centre distance off by {}, axes off by {}", Mm(e.distance), Degrees(e.angle));
+      fmt::format("{} {}, axes off by {}", e.apexes ? "apexes apart by" : "centre distance off by",
+                  Mm(e.distance), Degrees(e.angle));
   if (std::abs(e.axial) >= 5e-5) {
     fmt::format_to(std::back_inserter(s), ", axial offset {}", Mm(e.axial));
   }

@@ -23,6 +23,7 @@
 #include "io/mesh_reader.h"
 #include "io/step_reader.h"
 #include "kernel/features/part_library.h"
+#include "kernel/support/number_format.h"
 
 namespace mechanist {
 namespace {
@@ -681,8 +682,9 @@ class Reader {
     const auto parsed = ParseFeatureKind(kind.is_string() ? kind.get<std::string>() : "");
     if (!parsed) {
       Fail(p + "/kind",
-           fmt::format("expected one of shaft, hole, thread, tapped_hole, slot, key, gear, worm, "
-                       "worm_wheel, rack, ball, socket, face, cycloid_disc, pin_ring, found {}",
+           fmt::format("expected one of shaft, hole, thread, tapped_hole, slot, key, gear, "
+                       "bevel_gear, worm, worm_wheel, rack, ball, socket, face, cycloid_disc, "
+                       "pin_ring, found {}",
                        Describe(kind)));
     }
     f.kind = *parsed;
@@ -778,6 +780,38 @@ class Reader {
           }
         }
         break;
+      case FeatureKind::kBevelGear: {
+        CheckKeys(v, p,
+                  {"id", "kind", "origin", "axis", "teeth", "module", "pitch_angle", "length",
+                   "spiral_angle"});
+        f.teeth = count("teeth");
+        f.module = length("module");
+        const Json& pitch_angle = Require(v, p, "pitch_angle", "an angle");
+        f.pitch_angle = Angle(pitch_angle, p + "/pitch_angle");
+        if (!(f.pitch_angle > 0 && f.pitch_angle <= kPi / 2)) {
+          Fail(p + "/pitch_angle",
+               fmt::format("expected a pitch cone half-angle above 0 and at most 90 degrees, "
+                           "found {}",
+                           Describe(pitch_angle)));
+        }
+        f.length = length("length");
+        if (!(f.length < f.OuterConeDistance())) {
+          Fail(p + "/length",
+               fmt::format("expected a face width shorter than the outer cone distance {} = "
+                           "module x teeth / (2 sin(pitch_angle)), found {}",
+                           FormatNumber(f.OuterConeDistance() / spec_.units.mm_per_length),
+                           Describe(*Find(v, "length"))));
+        }
+        if (const Json* s = opt("spiral_angle")) {
+          f.spiral_angle = Angle(*s, p + "/spiral_angle");
+          if (!(std::abs(f.spiral_angle) < kPi / 2)) {
+            Fail(p + "/spiral_angle",
+                 fmt::format("expected an angle between -90 and 90 degrees, found {}",
+                             Describe(*s)));
+          }
+        }
+        break;
+      }
       case FeatureKind::kWorm:
         CheckKeys(v, p,
                   {"id", "kind", "origin", "axis", "starts", "module", "pitch_diameter", "length",
@@ -1187,12 +1221,12 @@ class Reader {
       return (k0 == x && k1 == y) || (k0 == y && k1 == x);
     };
     if (g.kind == Goal::Kind::kMesh && !(either(FeatureKind::kGear, FeatureKind::kGear) ||
+                                         either(FeatureKind::kBevelGear, FeatureKind::kBevelGear) ||
                                          either(FeatureKind::kWorm, FeatureKind::kWormWheel) ||
                                          either(FeatureKind::kGear, FeatureKind::kRack))) {
-      Fail(fp,
-           fmt::format("expected two features that mesh (gear and gear, worm and worm_wheel, gear "
-                       "and rack), found {} and {}",
-                       ToString(k0), ToString(k1)));
+      Fail(fp, fmt::format("expected two features that mesh (gear and gear, bevel_gear and "
+                           "bevel_gear, worm and worm_wheel, gear and rack), found {} and {}",
+                           ToString(k0), ToString(k1)));
     }
     if (g.kind == Goal::Kind::kCoaxial && (k0 == FeatureKind::kFace || k1 == FeatureKind::kFace)) {
       Fail(fp, "expected two features with axes, found a face");

@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "io/info_report.h"
 #include "kernel/support/number_format.h"
@@ -87,7 +88,14 @@ std::string FeatureJson(const std::vector<FeatureReportEntry>& entries) {
         j["teeth"] = f.teeth;
         j["internal"] = f.internal;
       }
-      if (f.kind == FeatureKind::kGear || f.kind == FeatureKind::kRack) j["module"] = Num(f.module);
+      if (f.kind == FeatureKind::kBevelGear) {
+        j["teeth"] = f.teeth;
+        j["pitch_angle"] = Num(f.pitch_angle * 180.0 / std::numbers::pi);
+      }
+      if (f.kind == FeatureKind::kGear || f.kind == FeatureKind::kBevelGear ||
+          f.kind == FeatureKind::kRack) {
+        j["module"] = Num(f.module);
+      }
       if (f.kind == FeatureKind::kRack) j["normal"] = Vec(e.X_WP.RotateDirection(f.normal));
       j["fit_error"] = Num(r.fit_error);
       j["detail"] = r.detail;

@@ -84,6 +84,13 @@ std::string Parameters(const Feature& f) {
       add("eccentricity {} mm", FormatNumber(f.eccentricity));
       add("length {} mm", FormatNumber(f.length));
       break;
+    case FeatureKind::kBevelGear:
+      add("{} teeth", f.teeth);
+      add("module {} mm", FormatNumber(f.module));
+      add("pitch angle {} deg", FormatNumber(f.pitch_angle * 180.0 / M_PI));
+      add("face width {} mm", FormatNumber(f.length));
+      if (f.spiral_angle != 0.0) add("spiral {} deg", FormatNumber(f.spiral_angle * 180.0 / M_PI));
+      break;
     case FeatureKind::kPinRing:
       add("{} pins", f.teeth);
       add("pin circle {} mm", FormatNumber(f.diameter));

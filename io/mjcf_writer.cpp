@@ -123,6 +123,8 @@ class MjcfWriter {
     out_ << "/>\n";
   }
 
+  static std::string DriveTendon(const Driver& d) { return d.id + "_drive"; }
+
   void WriteCouplingsAndLoops() {
     std::ostringstream tendons, equality;
     for (std::size_t k = 0; k < model_.couplings.size(); ++k) {
@@ -151,14 +153,29 @@ class MjcfWriter {
       tendons << "    </fixed>\n";
     }
     for (const SimActuator& a : model_.actuators) {
-      if (!a.joint || a.rate != 0.0) continue;
-      // A held driver is a brake: an equality holds its joint at the file pose.
       const Driver& d = assembly_.drivers()[a.driver];
+      // A driver across several joints acts on their sum: a fixed tendon.
+      if (a.terms.size() > 1) {
+        tendons << "    <fixed name=\"" << XmlEscape(DriveTendon(d)) << "\">\n";
+        for (const auto& [j, coefficient] : a.terms) {
+          tendons << "      <joint joint=\"" << XmlEscape(model_.joints[j].name) << "\" coef=\""
+                  << Number(coefficient) << "\"/>\n";
+        }
+        tendons << "    </fixed>\n";
+      }
+      if (a.terms.empty() || a.rate != 0.0) continue;
+      // A held driver is a brake: an equality holds its joint (or sum) at the file pose.
       equality << "    "
                << XmlComment(fmt::format("driver {} held (rate 0): deactivate to release", d.id))
-               << "\n    <joint name=\"" << XmlEscape(d.id) << "\" joint1=\""
-               << XmlEscape(model_.joints[*a.joint].name) << "\" polycoef=\"0 0 0 0 0\" solimp=\""
-               << kStiff << "\"/>\n";
+               << "\n    ";
+      if (a.terms.size() == 1) {
+        equality << "<joint name=\"" << XmlEscape(d.id) << "\" joint1=\""
+                 << XmlEscape(model_.joints[a.terms[0].first].name) << "\"";
+      } else {
+        equality << "<tendon name=\"" << XmlEscape(d.id) << "\" tendon1=\""
+                 << XmlEscape(DriveTendon(d)) << "\"";
+      }
+      equality << " polycoef=\"0 0 0 0 0\" solimp=\"" << kStiff << "\"/>\n";
     }
     for (const SimLoop& loop : model_.loops) {
       const std::string label = internal::PairLabel(assembly_, analysis_, loop.pair);
@@ -204,20 +221,27 @@ class MjcfWriter {
     std::ostringstream actuators;
     for (const SimActuator& a : model_.actuators) {
       const Driver& d = assembly_.drivers()[a.driver];
-      if (!a.joint) {
+      if (a.terms.empty()) {
         actuators << "    " << XmlComment(a.reason) << "\n";
         continue;
       }
       if (a.rate == 0.0) continue;  // held: an equality, above
-      const SimJoint& j = model_.joints[*a.joint];
+      // The joint nearest the driver's part sets the gain; a single joint is driven in its own
+      // sense, a sum through its tendon.
+      const SimJoint& j = model_.joints[a.terms.front().first];
       const double kv = InertiaAbout(j) / kDriveTimeConstant;
+      const bool single = a.terms.size() == 1;
+      const double rate = single ? a.terms.front().second * a.rate : a.rate;
       actuators << "    "
-                << XmlComment(fmt::format("driver {}: {} {}", d.id, Number(a.rate),
-                                          j.kind == SimJoint::Kind::kSlide ? "m/s" : "rad/s"))
+                << XmlComment(fmt::format("driver {}: {} {}{}", d.id, Number(rate),
+                                          j.kind == SimJoint::Kind::kSlide ? "m/s" : "rad/s",
+                                          single ? "" : " (the sum of its tendon's joints)"))
                 << "\n";
-      actuators << "    <velocity name=\"" << XmlEscape(d.id) << "\" joint=\"" << XmlEscape(j.name)
-                << "\" kv=\"" << Number(kv) << "\"/>\n";
-      controls += (controls.empty() ? "" : " ") + Number(a.rate);
+      actuators << "    <velocity name=\"" << XmlEscape(d.id) << "\" "
+                << (single ? "joint" : "tendon") << "=\""
+                << XmlEscape(single ? j.name : DriveTendon(d)) << "\" kv=\"" << Number(kv)
+                << "\"/>\n";
+      controls += (controls.empty() ? "" : " ") + Number(rate);
     }
     if (!actuators.str().empty()) out_ << "  <actuator>\n" << actuators.str() << "  </actuator>\n";
     if (options_.drive && !controls.empty()) {

@@ -50,12 +50,21 @@ class UrdfWriter {
     }
     for (const SimActuator& a : model_.actuators) {
       const Driver& d = assembly_.drivers()[a.driver];
-      if (a.joint) {
-        out_ << XmlComment(fmt::format(
-                    "driver {}: joint {} at {} {}{}", d.id, model_.joints[*a.joint].name,
-                    Number(a.rate),
-                    model_.joints[*a.joint].kind == SimJoint::Kind::kSlide ? "m/s" : "rad/s",
-                    a.rate == 0.0 ? " (held)" : ""))
+      if (!a.terms.empty()) {
+        // One joint at its own rate; several as their signed sum (URDF cannot drive a sum).
+        const bool single = a.terms.size() == 1;
+        std::string joints;
+        for (const auto& [j, coefficient] : a.terms) {
+          const std::string sign = single || coefficient > 0 ? "" : "-";
+          fmt::format_to(std::back_inserter(joints), "{}{}{}", joints.empty() ? "" : " + ", sign,
+                         model_.joints[j].name);
+        }
+        const SimJoint& first = model_.joints[a.terms.front().first];
+        out_ << XmlComment(fmt::format("driver {}: {} {} at {} {}{}", d.id,
+                                       single ? "joint" : "the sum of joints", joints,
+                                       Number(single ? a.terms.front().second * a.rate : a.rate),
+                                       first.kind == SimJoint::Kind::kSlide ? "m/s" : "rad/s",
+                                       a.rate == 0.0 ? " (held)" : ""))
              << "\n";
       } else {
         out_ << XmlComment(a.reason) << "\n";

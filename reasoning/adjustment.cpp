@@ -16,11 +16,6 @@
 namespace mechanist {
 namespace {
 
-bool Meshes(PairType type) {
-  return type == PairType::kGear || type == PairType::kWormGear || type == PairType::kRackPinion ||
-         type == PairType::kCycloidal;
-}
-
 // The goal's features as the pair type wants them: the worm or the pinion first.
 struct GoalFeatures {
   FeatureRef first, second;
@@ -37,8 +32,10 @@ GoalFeatures Ordered(const Assembly& assembly, const Goal& goal) {
 double RequiredDistance(const Feature& a, const Feature& b) {
   if (a.kind == FeatureKind::kWorm) return (a.pitch_diameter + a.module * b.teeth) / 2;
   if (b.kind == FeatureKind::kRack) return a.module * a.teeth / 2;
-  if (a.internal || b.internal) return a.module * std::abs(a.teeth - b.teeth) / 2;
-  return a.module * (a.teeth + b.teeth) / 2;
+  // Helical gears mesh at the transverse module's distance.
+  const double m = a.module / std::cos(a.helix_angle);
+  if (a.internal || b.internal) return m * std::abs(a.teeth - b.teeth) / 2;
+  return m * (a.teeth + b.teeth) / 2;
 }
 
 // Appends the goal's residuals (mm) at `state` to `r`.
@@ -55,6 +52,15 @@ void GoalResiduals(const Assembly& assembly, const AssemblyState& state, const G
     const Eigen::Vector3d d = b.origin - a.origin;
     const Eigen::Vector3d off = d - d.dot(a.direction) * a.direction;
     r->insert(r->end(), {cross.x(), cross.y(), cross.z(), off.x(), off.y(), off.z()});
+    return;
+  }
+  if (fa.kind == FeatureKind::kBevelGear) {
+    // Common apex, and the angle between the axes the sum of the pitch angles (as an arc at
+    // the outer cone distance).
+    const Eigen::Vector3d apart = b.origin - a.origin;
+    const double angle = std::acos(std::clamp(a.direction.dot(b.direction), -1.0, 1.0));
+    r->insert(r->end(), {apart.x(), apart.y(), apart.z()});
+    r->push_back(fa.OuterConeDistance() * (angle - fa.pitch_angle - fb.pitch_angle));
     return;
   }
   const double required = RequiredDistance(fa, fb);
@@ -133,7 +139,7 @@ std::vector<std::size_t> CarriedParts(const Assembly& assembly, const PairGraph&
   const std::size_t start = assembly.adjustments().at(adjustment).moves;
   // Across every pair but meshing teeth, and into no ground part.
   return graph.Reachable({&start, 1}, [&](std::size_t pair, std::size_t, std::size_t to) {
-    return !Meshes(pairs[pair].type) && !assembly.part(to).ground;
+    return !IsCoupling(pairs[pair].type) && !assembly.part(to).ground;
   });
 }
 
@@ -150,6 +156,14 @@ GoalError MeasureGoal(const Assembly& assembly, const AssemblyState& state, std:
   if (gl.kind == Goal::Kind::kCoaxial) {
     e.angle = angle;
     e.distance = DistanceToLine(b.origin, a.origin, a.direction);
+  } else if (fa.kind == FeatureKind::kBevelGear) {
+    // The apexes' distance, and the axes' angle from the sum of the pitch angles.
+    e.apexes = true;
+    e.distance = (b.origin - a.origin).norm();
+    e.angle = std::abs(std::acos(std::clamp(a.direction.dot(b.direction), -1.0, 1.0)) -
+                       fa.pitch_angle - fb.pitch_angle);
+    const double La = fa.OuterConeDistance(), Lb = fb.OuterConeDistance();
+    e.engaged = std::min(La, Lb) - std::max(La - fa.length, Lb - fb.length) > L;
   } else if (fa.kind == FeatureKind::kWorm || fb.kind == FeatureKind::kRack) {
     const LineLineClosest c = ClosestPointsOfLines(a.origin, a.direction, b.origin, b.direction);
     e.distance = c.distance - RequiredDistance(fa, fb);
@@ -274,9 +288,14 @@ Assembly Adjusted(const Assembly& assembly, AdjustmentSummary* summary) {
 void SuggestAdjustments(const Assembly& assembly, const PairGraph& graph,
                         const std::vector<Pair>& pairs, std::vector<Diagnostic>* diagnostics) {
   if (assembly.adjustments().empty()) return;  // nothing to suggest: no finding is read
-  static const std::set<std::string> kNearMisses = {
-      "gear_center_distance",        "gear_axes_not_parallel",   "worm_center_distance",
-      "worm_axes_not_perpendicular", "rack_pitch_line_distance", "axes_not_collinear"};
+  static const std::set<std::string> kNearMisses = {"gear_center_distance",
+                                                    "gear_axes_not_parallel",
+                                                    "worm_center_distance",
+                                                    "worm_axes_not_perpendicular",
+                                                    "rack_pitch_line_distance",
+                                                    "axes_not_collinear",
+                                                    "bevel_apex",
+                                                    "bevel_pitch_angles"};
   std::vector<std::set<std::string>> carried;
   for (std::size_t k = 0; k < assembly.adjustments().size(); ++k) {
     std::set<std::string> ids;

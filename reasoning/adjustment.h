@@ -22,16 +22,21 @@ std::vector<std::size_t> CarriedParts(const Assembly& assembly, const PairGraph&
 
 /// How far a goal is from being met, at some poses.
 struct GoalError {
-  /// mm: found minus required centre distance (mesh), or the distance of the second axis'
-  /// origin from the first axis (coaxial).
+  /// mm: found minus required centre distance (mesh), the distance between the pitch cones'
+  /// apexes (bevel gears), or the distance of the second axis' origin from the first axis
+  /// (coaxial).
   double distance = 0.0;
-  double angle = 0.0;  ///< radians from the required axis angle (parallel, perpendicular)
+  /// Radians from the required axis angle (parallel, perpendicular, or for bevel gears the
+  /// sum of their pitch angles).
+  double angle = 0.0;
   /// mm: mesh of gears, the offset between the mid-faces along the axis; worm gear, the
   /// wheel's mid-plane from the worm's axis. Reported, not required (as in recognition).
   double axial = 0.0;
   /// True when the features engage along their axes as recognition requires (overlapping face
   /// widths, the closest points of the axes within both features).
   bool engaged = true;
+  /// True for a bevel pair: `distance` is between the apexes.
+  bool apexes = false;
   /// True when the pair would be recognised: |distance| and the angle within the file's
   /// tolerances, and engaged.
   bool met = false;

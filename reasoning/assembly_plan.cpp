@@ -98,9 +98,8 @@ class Planner {
                            (p.b.part == moving && p.a.part == obstacle);
       if (!between) continue;
       const FeatureRef theirs = p.a.part == obstacle ? p.a : p.b;
-      const bool teeth = p.type == PairType::kGear || p.type == PairType::kWormGear ||
-                         p.type == PairType::kRackPinion || p.type == PairType::kCycloidal;
-      if (!teeth && std::abs(WorldAxis(theirs).dot(d)) < std::cos(assembly_.tolerance().angle)) {
+      if (!IsCoupling(p.type) &&
+          std::abs(WorldAxis(theirs).dot(d)) < std::cos(assembly_.tolerance().angle)) {
         continue;
       }
       regions.push_back(theirs);

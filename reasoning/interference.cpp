@@ -68,6 +68,14 @@ bool InRegion(const Feature& f, const RigidTransform& X_WP, const Eigen::Vector3
     case FeatureKind::kCycloidDisc:
       // The lobes' size is not in the feature: the disc's whole side (as far as its ring).
       return along >= -tolerance && along <= f.length + tolerance;
+    case FeatureKind::kBevelGear: {
+      // The frustum the teeth fill, one module beyond the pitch cone's face width each way.
+      const double L = f.OuterConeDistance();
+      const double c = std::cos(f.pitch_angle);
+      return along >= (L - f.length) * c - f.module - tolerance &&
+             along <= L * c + f.module + tolerance &&
+             radial <= L * std::sin(f.pitch_angle) + f.module + tolerance;
+    }
   }
   return false;
 }
@@ -87,6 +95,7 @@ bool InEngagementRegion(const Feature& f, const RigidTransform& X_WP, const Eige
 bool OverlapIsDesigned(const Pair& pair) {
   switch (pair.type) {
     case PairType::kGear:
+    case PairType::kBevelGear:
     case PairType::kWormGear:
     case PairType::kRackPinion:
     case PairType::kCycloidal:

@@ -466,10 +466,9 @@ void KinematicModel::BuildRows(const std::vector<Pair>& pairs) {
     if (j.pair && !j.in_tree) off_tree[*j.pair] = &j;
   }
   auto coupling = [](const Pair& p) {
-    return ((p.type == PairType::kGear || p.type == PairType::kWormGear ||
-             p.type == PairType::kCycloidal) &&
-            p.ratio) ||
-           (p.type == PairType::kRackPinion && p.travel_per_revolution);
+    return IsCoupling(p.type) &&
+           (p.type == PairType::kRackPinion ? p.travel_per_revolution.has_value()
+                                            : p.ratio.has_value());
   };
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const Pair& p = pairs[i];
@@ -510,6 +509,19 @@ void KinematicModel::BuildRows(const std::vector<Pair>& pairs) {
     // No common carrier: the pitch points of both members move together along the tangent. A
     // cycloidal disc's pitch circle has the radius lobes x e (its ring's: pins x e, e apart).
     const Feature& fa = assembly_.feature(p.a);
+    if (p.type == PairType::kBevelGear) {
+      // Bevel gears roll on their pitch cones: the common pitch line leaves the apex between
+      // the axes, at each gear's pitch angle from its axis; at mid-face it moves alike on both,
+      // across the plane of the axes.
+      const Feature& fb = assembly_.feature(p.b);
+      const Eigen::Vector3d d =
+          (std::sin(fb.pitch_angle) * a.direction + std::sin(fa.pitch_angle) * b.direction)
+              .normalized();
+      const double mid = fa.OuterConeDistance() - 0.5 * fa.length;
+      rows_.push_back(
+          {Linear(A, B, a.origin + mid * d, a.direction.cross(b.direction).normalized()), i});
+      continue;
+    }
     const bool cycloidal = p.type == PairType::kCycloidal;
     const double r = cycloidal ? fa.teeth * fa.eccentricity : fa.module * fa.teeth / 2.0;
     Eigen::Vector3d n, tangent;

@@ -53,6 +53,7 @@ std::optional<int> DegreesOfFreedom(PairType type) {
     case PairType::kWormGear:
     case PairType::kRackPinion:
     case PairType::kCycloidal:
+    case PairType::kBevelGear:
       return std::nullopt;
   }
   return std::nullopt;

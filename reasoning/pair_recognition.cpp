@@ -100,6 +100,9 @@ Aabb Recognizer::ReachBox(const WorldFeature& w, const Aabb& part_box_W) const {
     case FeatureKind::kRack:
       radius = 2 * f.module;
       break;
+    case FeatureKind::kBevelGear:
+      radius = f.OuterConeDistance() + f.module;  // the whole gear, seen from its apex
+      break;
     case FeatureKind::kFace:
       if (f.width > 0 && f.height > 0) {
         radius = std::hypot(f.width, f.height) / 2;
@@ -139,6 +142,7 @@ void Recognizer::Test(const WorldFeature& x, const WorldFeature& y) {
   either(K::kBall, K::kSocket, [this](auto& b, auto& s) { BallSocket(b, s); });
   either(K::kCycloidDisc, K::kPinRing, [this](auto& d, auto& r) { CycloidPins(d, r); });
   if (is(K::kGear, K::kGear)) GearGear(x, y);
+  if (is(K::kBevelGear, K::kBevelGear)) BevelBevel(x, y);
   if (is(K::kThread, K::kShaft)) setscrew_candidates_.emplace_back(&x, &y);
   if (is(K::kShaft, K::kThread)) setscrew_candidates_.emplace_back(&y, &x);
   if (is(K::kFace, K::kFace)) FaceFace(x, y);
@@ -172,6 +176,11 @@ void Recognizer::SetCoupling(Pair& p, const WorldFeature& a, const WorldFeature&
     // Rates are about each feature's own axis: opposite axes flip the sign.
     if (a.axis.direction.dot(b.axis.direction) < 0) ratio = -ratio;
     p.ratio = ratio;
+  } else if (p.type == PairType::kBevelGear && fa.kind == K::kBevelGear &&
+             fb.kind == K::kBevelGear) {
+    // About axes pointing from the common apex into each gear, the pitch line's point moves
+    // by w_a x d on one and w_b x d on the other: opposite senses, so always negative.
+    p.ratio = -Rational(fa.teeth, fb.teeth);
   } else if (p.type == PairType::kCycloidal && fa.kind == K::kCycloidDisc &&
              fb.kind == K::kPinRing) {
     // As an internal pair, the disc the pinion (lobes) and the ring the ring (pins).

@@ -38,8 +38,10 @@ double CentreDistance(const Feature& own, const Feature& target) {
   }
   if (own.kind == FeatureKind::kRack) return target.module * target.teeth / 2;
   if (target.kind == FeatureKind::kRack) return own.module * own.teeth / 2;
-  if (own.internal || target.internal) return own.module * std::abs(own.teeth - target.teeth) / 2;
-  return own.module * (own.teeth + target.teeth) / 2;
+  // Helical gears mesh at the transverse module's distance.
+  const double m = own.module / std::cos(own.helix_angle);
+  if (own.internal || target.internal) return m * std::abs(own.teeth - target.teeth) / 2;
+  return m * (own.teeth + target.teeth) / 2;
 }
 
 // The shortest rotation taking unit u to unit v; for opposite vectors the half turn about the
@@ -79,6 +81,7 @@ MeshGoal MeshTarget(const Part& part, const PlacementCondition& c, const Target&
   const Feature& tf = *t.f;
   auto is = [](const Feature& f, FeatureKind k) { return f.kind == k; };
   const bool ok = (is(own, FeatureKind::kGear) && is(tf, FeatureKind::kGear)) ||
+                  (is(own, FeatureKind::kBevelGear) && is(tf, FeatureKind::kBevelGear)) ||
                   (is(own, FeatureKind::kWormWheel) && is(tf, FeatureKind::kWorm)) ||
                   (is(own, FeatureKind::kWorm) && is(tf, FeatureKind::kWormWheel)) ||
                   (is(own, FeatureKind::kRack) && is(tf, FeatureKind::kGear)) ||
@@ -87,17 +90,25 @@ MeshGoal MeshTarget(const Part& part, const PlacementCondition& c, const Target&
     throw std::invalid_argument(
         fmt::format("cannot mesh a {} with a {}", ToString(own.kind), ToString(tf.kind)));
   }
-  const double a = CentreDistance(own, tf);
   MeshGoal g;
+  const Vector3d e0 = Radial(t.axis, t.X_WQ.RotateDirection(Vector3d::UnitX()),
+                             t.X_WQ.RotateDirection(Vector3d::UnitY()));
+  const Vector3d e = std::cos(c.angle) * e0 + std::sin(c.angle) * t.axis.cross(e0);
+  if (is(own, FeatureKind::kBevelGear)) {
+    // Apex on apex, the axis tilted from the target's toward `e` by the sum of the pitch
+    // angles; PoseFor puts the point half a face width up the own axis at `mid`.
+    const double shaft_angle = own.pitch_angle + tf.pitch_angle;
+    g.axis = std::cos(shaft_angle) * t.axis + std::sin(shaft_angle) * e;
+    g.mid = t.origin + 0.5 * own.length * g.axis;
+    return g;
+  }
+  const double a = CentreDistance(own, tf);
   if (is(tf, FeatureKind::kRack)) {  // a pinion on a rack, at the rack's middle
     const Vector3d n = t.X_WQ.RotateDirection(tf.normal).normalized();
     g.axis = t.axis.cross(n);
     g.mid = t.Mid() + a * n;
     return g;
   }
-  const Vector3d e0 = Radial(t.axis, t.X_WQ.RotateDirection(Vector3d::UnitX()),
-                             t.X_WQ.RotateDirection(Vector3d::UnitY()));
-  const Vector3d e = std::cos(c.angle) * e0 + std::sin(c.angle) * t.axis.cross(e0);
   g.mid = t.Mid() + a * e;
   g.axis = t.axis;
   if (is(own, FeatureKind::kWorm) || is(own, FeatureKind::kWormWheel) ||

@@ -337,8 +337,43 @@ class Builder {
     }
   }
 
-  void AddActuators() {
+  // The joints whose rates sum to the rate of `link` relative to `base` about (rotation) or
+  // along `axis`, each with +1 or -1 for its sense: hinges parallel to the axis for a turn
+  // (slides on the way do not turn it), slides along it for a push (hinges parallel to it and
+  // slides square to it do not move points along it). Hinges parallel to the axis keep every
+  // such direction, so the sum holds in every pose. Empty when `link` is not below `base` or
+  // a joint on the way is of another kind or direction.
+  std::vector<std::pair<std::size_t, double>> DriverTerms(std::optional<std::size_t> link,
+                                                          std::optional<std::size_t> base,
+                                                          const Eigen::Vector3d& axis,
+                                                          bool rotation) const {
     const double cos_tol = std::cos(assembly_.tolerance().angle);
+    const double sin_tol = std::sin(assembly_.tolerance().angle);
+    const SimJoint::Kind moving = rotation ? SimJoint::Kind::kHinge : SimJoint::Kind::kSlide;
+    std::vector<std::pair<std::size_t, double>> terms;
+    if (!link || !base) return {};
+    for (std::optional<std::size_t> l = link; l != base; l = model_.links[*l].parent) {
+      if (!l || !model_.links[*l].parent) return {};  // the root reached: not below `base`
+      for (std::size_t k = 0; k < model_.joints.size(); ++k) {
+        const SimJoint& j = model_.joints[k];
+        if (j.link != *l) continue;
+        const double dot = j.axis_W.dot(axis);
+        const bool parallel = std::abs(dot) >= cos_tol;
+        if (j.kind == moving && parallel) {
+          terms.emplace_back(k, dot > 0 ? 1.0 : -1.0);
+          continue;
+        }
+        const bool idle = rotation
+                              ? j.kind == SimJoint::Kind::kSlide
+                              : (j.kind == SimJoint::Kind::kHinge && parallel) ||
+                                    (j.kind == SimJoint::Kind::kSlide && std::abs(dot) <= sin_tol);
+        if (!idle) return {};
+      }
+    }
+    return terms;
+  }
+
+  void AddActuators() {
     for (std::size_t d = 0; d < assembly_.drivers().size(); ++d) {
       const Driver& driver = assembly_.drivers()[d];
       SimActuator a;
@@ -349,16 +384,9 @@ class Builder {
           driver.relative_to ? link_of_body_[km_.body_of_part(*driver.relative_to)]
                              : std::optional<std::size_t>(0);
       const Eigen::Vector3d& axis = km_.WorldAxis(driver.feature).direction;
-      for (std::size_t k = 0; k < model_.joints.size() && !a.joint; ++k) {
-        const SimJoint& j = model_.joints[k];
-        const bool kind = j.kind == (rotation ? SimJoint::Kind::kHinge : SimJoint::Kind::kSlide);
-        if (j.link != link || !kind || model_.links[j.link].parent != base) continue;
-        const double dot = j.axis_W.dot(axis);
-        if (std::abs(dot) < cos_tol) continue;
-        a.joint = k;
-        a.rate = (dot > 0 ? 1.0 : -1.0) * driver.rate * (rotation ? kTwoPi : kMetresPerMm);
-      }
-      if (!a.joint) {
+      a.terms = DriverTerms(link, base, axis, rotation);
+      a.rate = driver.rate * (rotation ? kTwoPi : kMetresPerMm);
+      if (a.terms.empty()) {
         a.reason = fmt::format(
             "driver {}: no joint of the tree {} {} about its axis relative to {}", driver.id,
             rotation ? "turns" : "slides", assembly_.part(driver.feature.part).id,

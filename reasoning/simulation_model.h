@@ -85,12 +85,16 @@ struct SimLoop {
   std::vector<Eigen::Vector3d> anchors_W;  ///< metres
 };
 
-/// A driver as the simulator's actuator on the joint it turns or slides.
+/// A driver as the simulator's actuator: on the joint it turns or slides, or on the sum of the
+/// parallel joints between its part and the part it moves against (a side gear held still
+/// while it turns on a turning carrier: carrier + side gear = 0).
 struct SimActuator {
   std::size_t driver = 0;
-  std::optional<std::size_t> joint;  ///< empty: no joint of the tree moves as the driver
-  double rate = 0.0;                 ///< rad/s or m/s; 0 for a held driver
-  std::string reason;                ///< why there is no joint
+  /// (joint index, +1 or -1): the driver's rate is the sum of coefficient x joint rate. One
+  /// term: an actuator on that joint. Empty: no joints of the tree move as the driver.
+  std::vector<std::pair<std::size_t, double>> terms;
+  double rate = 0.0;   ///< rad/s or m/s; 0 for a held driver
+  std::string reason;  ///< why there are no joints
 };
 
 /// The analysed mechanism as a simulator sees it: links, a spanning tree of joints from the

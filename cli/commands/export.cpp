@@ -90,7 +90,7 @@ Command ExportCommand() {
     std::size_t limited = 0;
     for (const auto& j : model.joints) limited += j.lower || j.upper;
     std::size_t actuated = 0;
-    for (const auto& a : model.actuators) actuated += a.joint.has_value();
+    for (const auto& a : model.actuators) actuated += !a.terms.empty();
     std::size_t closed = 0;
     for (const auto& l : model.loops) closed += !l.anchors_W.empty();
     std::cout << "links: " << model.links.size() << " (root " << model.links.front().name << ")\n"

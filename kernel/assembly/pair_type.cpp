@@ -5,7 +5,7 @@
 namespace mechanist {
 namespace {
 
-constexpr EnumNames<PairType, 12> kNames = {{
+constexpr EnumNames<PairType, 13> kNames = {{
     {PairType::kFixed, "fixed"},
     {PairType::kRevolute, "revolute"},
     {PairType::kCylindrical, "cylindrical"},
@@ -18,6 +18,7 @@ constexpr EnumNames<PairType, 12> kNames = {{
     {PairType::kWormGear, "worm_gear"},
     {PairType::kRackPinion, "rack_pinion"},
     {PairType::kCycloidal, "cycloidal"},
+    {PairType::kBevelGear, "bevel_gear"},
 }};
 
 }  // namespace

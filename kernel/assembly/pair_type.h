@@ -21,13 +21,14 @@ enum class PairType : std::uint8_t {
   kWormGear,
   kRackPinion,
   kCycloidal,  ///< a cycloid disc rolling in its pin ring: couples like an internal gear pair
+  kBevelGear,  ///< two bevel gears whose pitch cones share their apex
 };
 
-/// A coupling of two turning or sliding axes (gear, worm gear, rack and pinion, cycloidal):
-/// it relates the rates of its parts' joints instead of guiding a part.
+/// A coupling of two turning or sliding axes (gear, bevel gear, worm gear, rack and pinion,
+/// cycloidal): it relates the rates of its parts' joints instead of guiding a part.
 constexpr bool IsCoupling(PairType type) {
   return type == PairType::kGear || type == PairType::kWormGear || type == PairType::kRackPinion ||
-         type == PairType::kCycloidal;
+         type == PairType::kCycloidal || type == PairType::kBevelGear;
 }
 
 /// The format's spelling ("worm_gear").

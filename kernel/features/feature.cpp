@@ -5,7 +5,7 @@
 namespace mechanist {
 namespace {
 
-constexpr EnumNames<FeatureKind, 15> kNames = {{
+constexpr EnumNames<FeatureKind, 16> kNames = {{
     {FeatureKind::kShaft, "shaft"},
     {FeatureKind::kHole, "hole"},
     {FeatureKind::kThread, "thread"},
@@ -21,6 +21,7 @@ constexpr EnumNames<FeatureKind, 15> kNames = {{
     {FeatureKind::kFace, "face"},
     {FeatureKind::kCycloidDisc, "cycloid_disc"},
     {FeatureKind::kPinRing, "pin_ring"},
+    {FeatureKind::kBevelGear, "bevel_gear"},
 }};
 
 }  // namespace
@@ -34,6 +35,7 @@ bool IsConvex(FeatureKind kind) {
     case FeatureKind::kShaft:
     case FeatureKind::kThread:
     case FeatureKind::kGear:
+    case FeatureKind::kBevelGear:
     case FeatureKind::kWorm:
     case FeatureKind::kWormWheel:
     case FeatureKind::kKey:

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -27,13 +28,15 @@ enum class FeatureKind : std::uint8_t {
   kFace,
   kCycloidDisc,  ///< lobed disc of a cycloidal reducer
   kPinRing,      ///< pins on a circle that a cycloid disc rolls inside
+  kBevelGear,    ///< straight or spiral bevel gear: `origin` its pitch cone's apex
 };
 
 /// The format's spelling of a kind ("tapped_hole").
 std::string_view ToString(FeatureKind kind);
 /// The kind spelled `name`, or nothing.
 std::optional<FeatureKind> ParseFeatureKind(std::string_view name);
-/// Convex features lead into concave ones: shaft, thread, gear, worm, worm_wheel, key, ball.
+/// Convex features lead into concave ones: shaft, thread, gear, bevel_gear, worm, worm_wheel,
+/// key, ball.
 bool IsConvex(FeatureKind kind);
 /// Concave features receive convex ones: hole, tapped_hole, slot, socket.
 bool IsConcave(FeatureKind kind);
@@ -78,6 +81,15 @@ struct Feature {
   double helix_angle = 0.0;
   double eccentricity = 0.0;  ///< mm: a cycloid disc's offset from the axis it orbits
   double pin_diameter = 0.0;  ///< mm: a pin ring's pins (`diameter` is its pin circle's)
+  /// Radians: a bevel gear's pitch cone half-angle, in (0, pi/2]. Its outer cone distance is
+  /// module x teeth / (2 sin(pitch_angle)); `length` is the face width along the cone.
+  double pitch_angle = 0.0;
+  /// Radians: a spiral bevel gear's spiral angle, positive for a right-hand spiral; 0 straight.
+  double spiral_angle = 0.0;
+
+  /// mm: a bevel gear's outer cone distance, from the apex along the pitch line to the outer
+  /// end of the teeth.
+  double OuterConeDistance() const { return module * teeth / (2.0 * std::sin(pitch_angle)); }
 
   /// The axis segment in world coordinates for the part pose X_WP.
   AxisSegment WorldAxis(const RigidTransform& X_WP) const {

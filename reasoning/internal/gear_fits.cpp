@@ -73,6 +73,58 @@ void Recognizer::GearGear(const WorldFeature& x, const WorldFeature& y) {
   }
 }
 
+void Recognizer::BevelBevel(const WorldFeature& x, const WorldFeature& y) {
+  const bool swap = NameLess(y, x);
+  const WorldFeature& g1 = swap ? y : x;
+  const WorldFeature& g2 = swap ? x : y;
+  const Feature& f1 = g1.f;
+  const Feature& f2 = g2.f;
+  const double apart = (g2.axis.origin - g1.axis.origin).norm();
+  const double m = std::max(f1.module, f2.module);
+  if (apart > m) return;  // not even nearly a common apex
+  const double shaft_angle =
+      std::acos(std::clamp(g1.axis.direction.dot(g2.axis.direction), -1.0, 1.0));
+  const double angle_error = shaft_angle - (f1.pitch_angle + f2.pitch_angle);
+  if (std::abs(angle_error) > near_A_) return;  // facing side gears of a differential
+  if (!SameModule(f1.module, f2.module)) {
+    Near("bevel_module_mismatch", g1, g2,
+         fmt::format("modules differ: {} and {} (required equal)", Mm(f1.module), Mm(f2.module)));
+    return;
+  }
+  if (apart > L_) {
+    Near("bevel_apex", g1, g2,
+         fmt::format("pitch cone apexes are {} apart (required common, tolerance {})", Mm(apart),
+                     Mm(L_)));
+    return;
+  }
+  if (std::abs(angle_error) > A_) {
+    Near("bevel_pitch_angles", g1, g2,
+         fmt::format("the axes are {} apart, the pitch angles {} + {} = {} (off by {}, tolerance "
+                     "{})",
+                     Deg(shaft_angle), Deg(f1.pitch_angle), Deg(f2.pitch_angle),
+                     Deg(f1.pitch_angle + f2.pitch_angle), Deg(angle_error), Deg(A_)));
+    return;
+  }
+  if (std::abs(f1.spiral_angle + f2.spiral_angle) > A_) {
+    Near("bevel_spiral_mismatch", g1, g2,
+         fmt::format("spiral angles {} and {} (required equal, of opposite hands)",
+                     Deg(f1.spiral_angle), Deg(f2.spiral_angle)));
+    return;
+  }
+  // Along the common pitch line each gear's teeth run from L - face width to L.
+  const double L1 = f1.OuterConeDistance();
+  const double L2 = f2.OuterConeDistance();
+  if (std::min(L1, L2) - std::max(L1 - f1.length, L2 - f2.length) <= L_) {
+    Near("bevel_cone_distance", g1, g2,
+         fmt::format("the teeth do not meet on the pitch line: outer cone distances {} = {} x {} "
+                     "/ (2 sin {}) and {} = {} x {} / (2 sin {}), face widths {} and {}",
+                     Mm(L1), FormatNumber(m), f1.teeth, Deg(f1.pitch_angle), Mm(L2),
+                     FormatNumber(m), f2.teeth, Deg(f2.pitch_angle), Mm(f1.length), Mm(f2.length)));
+    return;
+  }
+  AddPair(PairType::kBevelGear, g1, g2);
+}
+
 void Recognizer::CycloidPins(const WorldFeature& disc, const WorldFeature& ring) {
   if (AxialOverlap(disc.axis, ring.axis) <= L_) return;
   const double angle = AngleBetweenLines(disc.axis.direction, ring.axis.direction);

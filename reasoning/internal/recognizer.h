@@ -133,6 +133,13 @@ class Recognizer {
 
   void GearGear(const WorldFeature& x, const WorldFeature& y);
 
+  /// Two bevel gears (spec): a common apex, the same module, pitch angles that sum to the
+  /// angle between the axes, equal spiral angles of opposite hands, and pitch-cone faces that
+  /// overlap along the common pitch line. Off by less than the near-miss windows:
+  /// `bevel_apex`, `bevel_module_mismatch`, `bevel_pitch_angles`, `bevel_spiral_mismatch`,
+  /// `bevel_cone_distance`.
+  void BevelBevel(const WorldFeature& x, const WorldFeature& y);
+
   /// A cycloid disc in its pin ring (spec): parallel axes offset by the disc's eccentricity,
   /// one pin more than lobes, overlapping along the axis. Off by less than the near-miss
   /// windows: `cycloid_eccentricity`, `cycloid_pin_count`.

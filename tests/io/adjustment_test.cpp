@@ -5,6 +5,7 @@
 
 #include "reasoning/adjustment.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -117,6 +118,40 @@ TEST(Adjustment, AGoalAlreadyMetStaysAndASpareAdjustmentIsLeftAlone) {
   EXPECT_NE(out.str().find("whole_shift: translate housing along housing/wheel_bearing: no goal "
                            "depends on it, left at 0"),
             std::string::npos)
+      << out.str();
+}
+
+TEST(Adjustment, SwingsABevelGearUntilItsAxisMeetsThePinionsAtTheSumOfThePitchAngles) {
+  // A 15-tooth pinion up +z and a 30-tooth gear tilted 85 degrees from it about y: square
+  // shafts need 90 (atan(1/2) + atan(2)). Swinging the gear about +y through the common apex
+  // by +5 degrees meets the goal.
+  const double tilt = Deg(85);
+  const std::string text = fmt::format(R"({{"mechanist": 1, "parts": [
+    {{"id": "frame", "ground": true, "features": [
+      {{"id": "pinion", "kind": "bevel_gear", "origin": [0, 0, 0], "axis": [0, 0, 1],
+       "teeth": 15, "module": 2, "pitch_angle": {}, "length": 6}},
+      {{"id": "pivot", "kind": "hole", "origin": [0, 0, 0], "axis": [0, 1, 0], "diameter": 5,
+       "length": 5}}]}},
+    {{"id": "gear", "features": [
+      {{"id": "teeth", "kind": "bevel_gear", "origin": [0, 0, 0], "axis": [{}, 0, {}],
+       "teeth": 30, "module": 2, "pitch_angle": {}, "length": 6}}]}}],
+  "adjustments": [{{"id": "swing", "moves": "gear", "rotate_about": "frame/pivot",
+                   "range": [-10, 10]}}],
+  "goals": [{{"mesh": ["gear/teeth", "frame/pinion"]}}]}})",
+                                       std::atan(0.5) * 180 / M_PI, std::sin(tilt), std::cos(tilt),
+                                       std::atan(2.0) * 180 / M_PI);
+  const Assembly a = LoadAssemblyText(text, kWorm);
+  const AdjustmentSummary s = Solve(a);
+  EXPECT_FALSE(s.before[0].met);
+  EXPECT_NEAR(s.before[0].angle, Deg(5), 1e-9);
+  ASSERT_TRUE(s.all_met);
+  EXPECT_NEAR(s.adjustments[0].value, Deg(5), 1e-9);
+  const Analysis an = Analyze(ApplyAdjustments(a, s));
+  ASSERT_EQ(an.pairs.size(), 1u);
+  EXPECT_EQ(an.pairs[0].type, PairType::kBevelGear);
+  std::ostringstream out;
+  WriteAdjustmentSummary(a, s, out);
+  EXPECT_NE(out.str().find("apexes apart by 0.0000 mm, axes off by 5.0000 deg"), std::string::npos)
       << out.str();
 }
 

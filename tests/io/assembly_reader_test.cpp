@@ -444,6 +444,35 @@ TEST_F(AssemblyReaderTest, ReadsFeaturesOnlyPartsAndHeldDrivers) {
   ExpectError(OnePart(gear + "95}]"), "/parts/0/features/0/helix_angle", "between -90 and 90");
 }
 
+TEST_F(AssemblyReaderTest, ReadsBevelGears) {
+  // spec: `bevel_gear` with its apex as origin; angles in the file's unit, lengths in its unit.
+  const std::string bevel =
+      R"("features": [{"id": "b", "kind": "bevel_gear", "origin": [0,0,0], "axis": [0,0,1], )"
+      R"("teeth": 20, "module": 2, "length": 8, "pitch_angle": )";
+  const Feature f = Parse(OnePart(bevel + R"(30, "spiral_angle": -35}])")).part(0).features[0];
+  EXPECT_EQ(f.kind, FeatureKind::kBevelGear);
+  EXPECT_EQ(f.teeth, 20);
+  EXPECT_NEAR(f.pitch_angle, kPi / 6, 1e-12);
+  EXPECT_NEAR(f.spiral_angle, -35 * kPi / 180, 1e-12);
+  EXPECT_NEAR(f.OuterConeDistance(), 40.0, 1e-12);  // 2 x 20 / (2 sin 30 deg)
+  const Feature inches =
+      Parse(OnePart(bevel + "30}]", R"("units": {"length": "in"}, )")).part(0).features[0];
+  EXPECT_NEAR(inches.module, 50.8, 1e-12);
+  EXPECT_EQ(Parse(OnePart(bevel + "90}]")).part(0).features[0].spiral_angle, 0.0);  // a crown gear
+  ExpectError(OnePart(bevel + "0}]"), "/parts/0/features/0/pitch_angle", "above 0 and at most 90");
+  ExpectError(OnePart(bevel + "120}]"), "/parts/0/features/0/pitch_angle", "found the number 120");
+  ExpectError(OnePart(bevel + R"(30, "spiral_angle": 90}])"), "/parts/0/features/0/spiral_angle",
+              "between -90 and 90");
+  // Teeth longer than the cone: 40 mm from apex to rim, face width 45.
+  const std::string long_teeth =
+      R"("features": [{"id": "b", "kind": "bevel_gear", "origin": [0,0,0], "axis": [0,0,1], )"
+      R"("teeth": 20, "module": 2, "length": 45, "pitch_angle": 30}])";
+  ExpectError(OnePart(long_teeth), "/parts/0/features/0/length", "outer cone distance 40");
+  ExpectError(OnePart(R"("features": [{"id": "b", "kind": "bevel_gear", "origin": [0,0,0], )"
+                      R"("axis": [0,0,1], "teeth": 20, "module": 2, "length": 8}])"),
+              "/parts/0/features/0", "pitch_angle");
+}
+
 TEST_F(AssemblyReaderTest, NeverModifiesItsInput) {
   const std::filesystem::path file = dir_ / "in.json";
   const std::string text = OnePart("");

@@ -65,7 +65,8 @@ TEST(SimulationModel, WormDriveIsTwoHingesCoupledAtMinusOneFortieth) {
   const double sense = m.joints[wheel].axis_W.z() * m.joints[worm].axis_W.x();
   EXPECT_NEAR(r * sense, -1.0 / 40, 1e-15);
   ASSERT_EQ(m.actuators.size(), 1u);
-  EXPECT_EQ(m.actuators[0].joint, worm);
+  ASSERT_EQ(m.actuators[0].terms.size(), 1u);
+  EXPECT_EQ(m.actuators[0].terms[0].first, worm);
   EXPECT_NEAR(std::abs(m.actuators[0].rate), kTwoPi, 1e-12);
 
   const std::string urdf = UrdfText(a, an, m, "meshes");
@@ -172,6 +173,29 @@ TEST(SimulationModel, FeaturesOnlyPartsGetTheDefaultInertiaAndHeldDriversABrake)
       << mjcf;
   EXPECT_EQ(mjcf.find("<velocity name=\"brake\""), std::string::npos);
   EXPECT_NE(mjcf.find("<key name=\"drive\" ctrl=\""), std::string::npos);
+}
+
+TEST(SimulationModel, AHeldSideGearOnATurningCarrierIsHeldAsTheSumOfBothHinges) {
+  // The bevel differential's left gear turns in the carrier, the carrier in the housing: held
+  // still, carrier + side gear about x is zero, a tendon of both hinges.
+  const Assembly a = LoadAssembly(Example("bevel_differential_sketch"));
+  const Analysis an = Analyze(a);
+  const SimulationModel m = BuildSimulationModel(a, an);
+  ASSERT_EQ(m.actuators.size(), 2u);
+  const SimActuator& held = m.actuators[1];
+  EXPECT_EQ(held.rate, 0.0);
+  ASSERT_EQ(held.terms.size(), 2u);
+  EXPECT_EQ(m.joints[held.terms[0].first].name, "left_gear_hinge");
+  EXPECT_EQ(m.joints[held.terms[1].first].name, "carrier_hinge");
+  // Both about the driver's axis (-x): the side gear's hinge and the carrier's as analysed.
+  for (const auto& [j, coefficient] : held.terms) {
+    EXPECT_EQ(coefficient, m.joints[j].axis_W.x() < 0 ? 1.0 : -1.0) << m.joints[j].name;
+  }
+  const std::string mjcf = MjcfText(a, an, m, {.mesh_dir = "meshes"});
+  EXPECT_NE(mjcf.find("<tendon name=\"held_wheel\" tendon1=\"held_wheel_drive\""),
+            std::string::npos)
+      << mjcf;
+  EXPECT_EQ(m.actuators[0].terms.size(), 1u);  // the carrier's own hinge
 }
 
 TEST(SimulationModel, MovableRangeEndsWhereTheSweptPartsTouch) {

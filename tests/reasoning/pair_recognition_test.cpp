@@ -297,6 +297,80 @@ TEST(PairRecognition, ExternalAndInternalGearsWithExactRatios) {
       Rational(17, 31));
 }
 
+Feature Bevel(int teeth, double pitch_angle_deg, V axis, V apex = V::Zero(), double module = 2,
+              double width = 8) {
+  return MakeFeature("t", K::kBevelGear, apex, axis.normalized(), [&](Feature& f) {
+    f.teeth = teeth;
+    f.module = module;
+    f.pitch_angle = pitch_angle_deg * kPi / 180;
+    f.length = width;
+  });
+}
+
+// Rolling without slip, checked on the vectors: at a point of the common pitch line (from the
+// apex, at g1's pitch angle from its axis toward g2's), w1 a1 x p = (ratio w1) a2 x p.
+void ExpectRollsOnPitchLine(const Feature& g1, const Feature& g2, const Rational& ratio) {
+  const V side = (g2.axis - g2.axis.dot(g1.axis) * g1.axis).normalized();
+  const V p = std::cos(g1.pitch_angle) * g1.axis + std::sin(g1.pitch_angle) * side;
+  const V v1 = g1.axis.cross(p);
+  const V v2 = ratio.ToDouble() * g2.axis.cross(p);
+  EXPECT_LT((v1 - v2).norm(), 1e-12) << v1.transpose() << " vs " << v2.transpose();
+}
+
+TEST(PairRecognition, BevelGearsShareTheirApexAndRollOnTheirPitchCones) {
+  // Square shafts: tan(pitch angle) = z1 / z2.
+  const Feature pinion = Bevel(15, std::atan2(15, 30) * 180 / kPi, V::UnitZ());
+  const Feature wheel = Bevel(30, std::atan2(30, 15) * 180 / kPi, V::UnitX());
+  const Pair square = Only(GearPair(pinion, wheel));
+  EXPECT_EQ(square.type, PairType::kBevelGear);
+  EXPECT_EQ(*square.ratio, Rational(-1, 2));
+  EXPECT_FALSE(square.dof.has_value());
+  ExpectRollsOnPitchLine(pinion, wheel, *square.ratio);
+  // Shafts 60 degrees apart: tan(pitch angle 1) = sin 60 / (z2 / z1 + cos 60).
+  const double shaft = 60 * kPi / 180;
+  const double gamma1 = std::atan2(std::sin(shaft), 30.0 / 20.0 + std::cos(shaft)) * 180 / kPi;
+  const Feature g20 = Bevel(20, gamma1, V::UnitZ());
+  const Feature g30 = Bevel(30, 60 - gamma1, V(std::sin(shaft), 0, std::cos(shaft)));
+  const Pair acute = Only(GearPair(g20, g30));
+  EXPECT_EQ(*acute.ratio, Rational(-2, 3));
+  ExpectRollsOnPitchLine(g20, g30, *acute.ratio);
+}
+
+TEST(PairRecognition, DifferentialPinionMeshesBothSideGearsWhichDoNotMeshEachOther) {
+  const Assembly differential = MakeAssembly({MakePart("left", {Bevel(16, 45, -V::UnitX())}),
+                                              MakePart("pinion", {Bevel(16, 45, V::UnitZ())}),
+                                              MakePart("right", {Bevel(16, 45, V::UnitX())})});
+  const Recognition r = Recognize(differential);
+  ASSERT_EQ(r.pairs.size(), 2u);
+  for (const Pair& p : r.pairs) {
+    EXPECT_EQ(p.type, PairType::kBevelGear);
+    EXPECT_TRUE(p.a.part == 1 || p.b.part == 1) << "a pair without the pinion";
+    EXPECT_EQ(*p.ratio, Rational(-1));
+  }
+  EXPECT_EQ(NearMisses(r), 0u);
+}
+
+TEST(PairRecognition, BevelGearNearMissesNameWhatIsOff) {
+  const Feature pinion = Bevel(20, 45, V::UnitZ());
+  const Recognition apex = GearPair(pinion, Bevel(20, 45, V::UnitX(), V(0, 0.5, 0)));
+  EXPECT_TRUE(apex.pairs.empty());
+  EXPECT_TRUE(HasDiagnostic(apex, "bevel_apex", "apexes are 0.5 mm apart"));
+  const Recognition angles = GearPair(pinion, Bevel(20, 43.5, V::UnitX()));
+  EXPECT_TRUE(angles.pairs.empty());
+  EXPECT_TRUE(HasDiagnostic(angles, "bevel_pitch_angles", "45 deg + 43.5 deg = 88.5 deg"));
+  const Recognition modules = GearPair(pinion, Bevel(20, 45, V::UnitX(), V::Zero(), 2.5));
+  EXPECT_TRUE(HasDiagnostic(modules, "bevel_module_mismatch", "2 mm and 2.5 mm"));
+  // 20 and 40 teeth both cut at 45 degrees: the cones touch, but the teeth sit 28 and 57 mm out.
+  const Recognition cones = GearPair(pinion, Bevel(40, 45, V::UnitX()));
+  EXPECT_TRUE(cones.pairs.empty());
+  EXPECT_TRUE(HasDiagnostic(cones, "bevel_cone_distance", "28.2843 mm = 2 x 20 / (2 sin 45 deg)"));
+  Feature right = Bevel(20, 45, V::UnitZ()), also_right = Bevel(20, 45, V::UnitX());
+  right.spiral_angle = also_right.spiral_angle = 35 * kPi / 180;
+  EXPECT_TRUE(HasDiagnostic(GearPair(right, also_right), "bevel_spiral_mismatch", "35 deg"));
+  also_right.spiral_angle = -right.spiral_angle;
+  EXPECT_EQ(Only(GearPair(right, also_right)).type, PairType::kBevelGear);
+}
+
 TEST(PairRecognition, HelicalGearsMeshAtTheTransverseModulesDistance) {
   // 20 and 40 teeth, normal module 2, helix 15 degrees: centre distance 2 / cos(15 deg) x 60 / 2.
   const auto helical = [](int teeth, V origin, double helix_deg) {

@@ -85,6 +85,49 @@ TEST(Placement, MeshedGearsAreRecognisedAsTheirPairs) {
   EXPECT_EQ(pairs[1].type, PairType::kGear);  // the ring around g2, (50 - 12) / 2 from it
 }
 
+TEST(Placement, HelicalGearsMeshAtTheTransverseModulesDistance) {
+  AssemblySpec spec;
+  Feature left = Gear("teeth", 20), right = Gear("teeth", 40);
+  left.helix_angle = 0.3;
+  right.helix_angle = -0.3;
+  spec.parts.push_back(MakePart("g1", {left}, RigidTransform(), true));
+  spec.parts.push_back(MakePart("g2", {right}));
+  spec.parts[1].placement = {Condition(PlacementCondition::Kind::kMesh, 0, {0, 0})};
+  ResolvePlacements(&spec);
+  EXPECT_NEAR(spec.parts[1].X_WP.translation().norm(), 30 / std::cos(0.3), 1e-9);
+  const std::vector<Pair> pairs = PairsOf(spec);
+  ASSERT_EQ(pairs.size(), 1u);
+  EXPECT_EQ(pairs[0].type, PairType::kGear);
+}
+
+TEST(Placement, BevelGearMeetsItsPartnerApexOnApex) {
+  // A 15-tooth pinion on a tilted part meshed at polar angle 90 degrees by a 30-tooth gear: the
+  // pitch angles atan(1/2) and atan(2) sum to a square shaft angle.
+  const auto bevel = [](int teeth, double pitch_angle, const Eigen::Vector3d& apex) {
+    return MakeFeature("teeth", FeatureKind::kBevelGear, apex, {0, 0, 1}, [=](Feature& f) {
+      f.teeth = teeth;
+      f.module = 2;
+      f.pitch_angle = pitch_angle;
+      f.length = 6;
+    });
+  };
+  AssemblySpec spec;
+  spec.parts.push_back(MakePart("pinion", {bevel(15, std::atan(0.5), {1, 2, 3})},
+                                RigidTransform::AxisAngle({1, 1, 0}, 0.4), true));
+  spec.parts.push_back(MakePart("gear", {bevel(30, std::atan(2.0), {0, 0, -4})}));
+  spec.parts[1].placement = {Condition(PlacementCondition::Kind::kMesh, 0, {0, 0}, M_PI / 2)};
+  ResolvePlacements(&spec);
+  const RigidTransform& X1 = spec.parts[0].X_WP;
+  const RigidTransform& X2 = spec.parts[1].X_WP;
+  EXPECT_LT((X2 * Eigen::Vector3d(0, 0, -4) - X1 * Eigen::Vector3d(1, 2, 3)).norm(), 1e-9);
+  // Square to the pinion's axis, toward its local y (polar 90 degrees from its local x).
+  EXPECT_LT((X2.RotateDirection({0, 0, 1}) - X1.RotateDirection({0, 1, 0})).norm(), 1e-9);
+  const std::vector<Pair> pairs = PairsOf(spec);
+  ASSERT_EQ(pairs.size(), 1u);
+  EXPECT_EQ(pairs[0].type, PairType::kBevelGear);
+  EXPECT_EQ(*pairs[0].ratio, Rational(-2));  // gear/teeth before pinion/teeth: -30/15
+}
+
 TEST(Placement, WormWheelAndRackMeshWithTheirPartners) {
   AssemblySpec spec;
   spec.parts.push_back(MakePart("worm",

@@ -25,6 +25,11 @@ TEST(TestingApi, ExamplesReadLikeTheirReadmes) {
   const Mechanism planets = Mechanism::Load(Example("planetary_gear_set"));
   EXPECT_TRUE(HasRatio(planets, "carrier/center", "1/3"));
   EXPECT_TRUE(HasDiagnostic(planets, "redundant_constraints", {"planet_2", "sun"}));
+  const Mechanism differential = Mechanism::Load(Example("bevel_differential_sketch"));
+  EXPECT_TRUE(HasPair(differential, "right_gear/teeth", "pinion/teeth", PairType::kBevelGear));
+  EXPECT_FALSE(HasPair(differential, "left_gear/teeth", "right_gear/teeth"));
+  EXPECT_TRUE(HasRatio(differential, "right_gear/teeth", "2"));
+  EXPECT_TRUE(HasMobility(differential, 2));
   EXPECT_TRUE(IsAssemblable(hand));
   const ::testing::AssertionResult not_expected = IsAssemblable(hand, false);
   EXPECT_FALSE(not_expected);

@@ -125,7 +125,9 @@ TEST_P(Simulators, ExportedModelsLoadAndMoveAtTheAnalysisRatios) {
     }
     return -1;
   };
-  // The rate of a part about (or along) its analysed axis: rad/s or m/s.
+  // The rate of a part about (or along) its analysed axis: rad/s or m/s. The axis is the
+  // file pose's, carried along by the parent link's turn since then (a differential's pinion
+  // spins about an axis that turns with the carrier; link frames start with the world's axes).
   auto rate_of = [&](std::size_t part, const PartMotion& pm) {
     const int body = body_of(part);
     EXPECT_GE(body, 0) << assembly.part(part).id;
@@ -133,7 +135,11 @@ TEST_P(Simulators, ExportedModelsLoadAndMoveAtTheAnalysisRatios) {
     mj_objectVelocity(m, d, mjOBJ_BODY, body, v, 0);
     const Eigen::Vector3d omega(v[0], v[1], v[2]);
     const Eigen::Vector3d velocity(v[3], v[4], v[5]);
-    return pm.kind == MotionKind::kTranslation ? velocity.dot(pm.axis_W) : omega.dot(pm.axis_W);
+    const int parent = body > 0 ? m->body_parentid[body] : 0;
+    const Eigen::Matrix3d R_WParent =
+        Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>>(d->xmat + 9 * parent);
+    const Eigen::Vector3d axis_W = R_WParent * pm.axis_W;
+    return pm.kind == MotionKind::kTranslation ? velocity.dot(axis_W) : omega.dot(axis_W);
   };
   if (motion && motion->possible && assembly.drivers().size() >= 1) {
     // The reference: the first running driver's part, simulated, against its analysed rate.
