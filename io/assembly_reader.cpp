@@ -976,13 +976,20 @@ class Reader {
       cnt("segments", s.segments, false);
       spec = s;
     } else if (kind == "spur_gear") {
-      CheckKeys(
-          v, p,
-          {"kind", "teeth", "module", "face_width", "bore_diameter", "pressure_angle", "segments"});
+      CheckKeys(v, p,
+                {"kind", "teeth", "module", "face_width", "bore_diameter", "pressure_angle",
+                 "segments", "helix_angle"});
       SpurGearSpec s;
       cnt("teeth", s.teeth, true), req("module", s.module), req("face_width", s.face_width);
       len("bore_diameter", s.bore_diameter), pressure(s.pressure_angle);
       cnt("segments", s.segments, false);
+      if (const Json* h = Find(v, "helix_angle")) {
+        s.helix_angle = Angle(*h, p + "/helix_angle");
+        if (!(std::abs(s.helix_angle) < kPi / 3)) {
+          Fail(p + "/helix_angle",
+               fmt::format("expected an angle between -60 and 60 degrees, found {}", Describe(*h)));
+        }
+      }
       spec = s;
     } else if (kind == "ring_gear") {
       CheckKeys(v, p,

@@ -31,7 +31,7 @@ GoalFeatures Ordered(const Assembly& assembly, const Goal& goal) {
 // The required centre distance of a mesh goal (gear pair, worm gear, rack and pinion), mm.
 double RequiredDistance(const Feature& a, const Feature& b) {
   if (a.kind == FeatureKind::kWorm) return (a.pitch_diameter + a.module * b.teeth) / 2;
-  if (b.kind == FeatureKind::kRack) return a.module * a.teeth / 2;
+  if (b.kind == FeatureKind::kRack) return a.PitchRadius();
   // Helical gears mesh at the transverse module's distance.
   const double m = a.module / std::cos(a.helix_angle);
   if (a.internal || b.internal) return m * std::abs(a.teeth - b.teeth) / 2;

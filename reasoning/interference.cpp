@@ -42,9 +42,9 @@ bool InRegion(const Feature& f, const RigidTransform& X_WP, const Eigen::Vector3
     case FeatureKind::kGear:
       // Teeth reach one module beyond the pitch circle (inward for a ring gear, whose region
       // still has to include its mating pinion's tips, hence the outer bound for both).
-      return in_cylinder(0.5 * f.module * f.teeth + f.module, 0.0, f.length);
+      return in_cylinder(f.PitchRadius() + f.module, 0.0, f.length);
     case FeatureKind::kWormWheel:
-      return in_cylinder(0.5 * f.module * f.teeth + f.module, 0.0, f.length);
+      return in_cylinder(f.PitchRadius() + f.module, 0.0, f.length);
     case FeatureKind::kWorm:
       return in_cylinder(0.5 * f.pitch_diameter + f.module, 0.0, f.length);
     case FeatureKind::kRack: {

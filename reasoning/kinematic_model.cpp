@@ -523,7 +523,7 @@ void KinematicModel::BuildRows(const std::vector<Pair>& pairs) {
       continue;
     }
     const bool cycloidal = p.type == PairType::kCycloidal;
-    const double r = cycloidal ? fa.teeth * fa.eccentricity : fa.module * fa.teeth / 2.0;
+    const double r = cycloidal ? fa.teeth * fa.eccentricity : fa.PitchRadius();
     Eigen::Vector3d n, tangent;
     if (rack) {
       const Eigen::Vector3d normal_W =

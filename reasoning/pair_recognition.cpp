@@ -86,7 +86,7 @@ Aabb Recognizer::ReachBox(const WorldFeature& w, const Aabb& part_box_W) const {
       break;
     case FeatureKind::kGear:
     case FeatureKind::kWormWheel:
-      radius = f.module * f.teeth / 2 + 2 * f.module;
+      radius = f.PitchRadius() + 2 * f.module;
       break;
     case FeatureKind::kWorm:
       radius = f.pitch_diameter / 2 + 2 * f.module;

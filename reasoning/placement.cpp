@@ -36,8 +36,8 @@ double CentreDistance(const Feature& own, const Feature& target) {
   if (target.kind == FeatureKind::kWorm) {
     return (target.pitch_diameter + target.module * own.teeth) / 2;
   }
-  if (own.kind == FeatureKind::kRack) return target.module * target.teeth / 2;
-  if (target.kind == FeatureKind::kRack) return own.module * own.teeth / 2;
+  if (own.kind == FeatureKind::kRack) return target.PitchRadius();
+  if (target.kind == FeatureKind::kRack) return own.PitchRadius();
   // Helical gears mesh at the transverse module's distance.
   const double m = own.module / std::cos(own.helix_angle);
   if (own.internal || target.internal) return m * std::abs(own.teeth - target.teeth) / 2;

@@ -22,7 +22,7 @@ std::vector<std::vector<Eigen::Vector3d>> FeatureLines(const Part& part, bool pi
     if (!pitch_circles || (!toothed && f.kind != FeatureKind::kPinRing)) continue;
     const Eigen::Vector3d u = f.axis.unitOrthogonal(), v = f.axis.cross(u);
     const Eigen::Vector3d center = f.origin + (bevel ? extent : 0.5 * f.length) * f.axis;
-    const double radius = toothed ? 0.5 * f.module * f.teeth : 0.5 * f.diameter;
+    const double radius = toothed ? f.PitchRadius() : 0.5 * f.diameter;
     constexpr int kSegments = 72;
     std::vector<Eigen::Vector3d> circle;
     for (int k = 0; k <= kSegments; ++k) {

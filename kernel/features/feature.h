@@ -87,6 +87,10 @@ struct Feature {
   /// Radians: a spiral bevel gear's spiral angle, positive for a right-hand spiral; 0 straight.
   double spiral_angle = 0.0;
 
+  /// mm: a gear's pitch radius, module x teeth / (2 cos(helix_angle)) (the transverse module's
+  /// for a helical gear); a worm wheel's or bevel gear's (at its outer end) likewise.
+  double PitchRadius() const { return module * teeth / (2.0 * std::cos(helix_angle)); }
+
   /// mm: a bevel gear's outer cone distance, from the apex along the pitch line to the outer
   /// end of the teeth.
   double OuterConeDistance() const { return module * teeth / (2.0 * std::sin(pitch_angle)); }

@@ -319,6 +319,197 @@ std::vector<Vector3d> CylinderPatchAxes(const TriangleMesh& mesh,
 
 std::string Mm(double x) { return fmt::format("{} mm", FormatNumber(x, 6)); }
 
+// The segments where the plane p . axis = h cuts the mesh's faces, in (u, v) coordinates.
+Outline Section(const TriangleMesh& mesh, const Vector3d& axis, const Vector3d& u,
+                const Vector3d& v, double h) {
+  Outline o;
+  for (const auto& t : mesh.faces) {
+    std::array<Vector2d, 2> cut;
+    int n = 0;
+    for (int k = 0; k < 3; ++k) {
+      const Vector3d& a = mesh.vertices[t[k]];
+      const Vector3d& b = mesh.vertices[t[(k + 1) % 3]];
+      const double da = a.dot(axis) - h, db = b.dot(axis) - h;
+      if ((da < 0) == (db < 0) || n == 2) continue;
+      const Vector3d q = a + da / (da - db) * (b - a);
+      cut[n++] = Vector2d(q.dot(u), q.dot(v));
+    }
+    if (n == 2) o.edges.emplace_back(cut[0], cut[1]);
+  }
+  return o;
+}
+
+// Teeth in one section across the axis: the outline's radius about `centre` (its largest for
+// external teeth, its smallest for internal ones) repeating z times around with the depth of a
+// standard module, as for a spur gear's outline.
+struct SectionTeeth {
+  int teeth = 0;
+  double module = 0.0;      // ISO 54
+  double raw_module = 0.0;  // depth / 2.25
+  double tip = 0.0;         // mm: tip radius
+  double phase = 0.0;       // radians: the z-th harmonic's phase of the radius
+  bool internal = false;
+};
+
+std::optional<SectionTeeth> TeethOfSection(const Outline& o, const Vector2d& centre) {
+  constexpr int kBins = 2048;
+  if (o.edges.size() < 12) return std::nullopt;
+  const Profile radial = Sample(
+      o, kBins, -kPi, kPi,
+      [&](const Vector2d& q) { return std::atan2(q.y() - centre.y(), q.x() - centre.x()); },
+      [&](const Vector2d& q) { return (q - centre).norm(); }, true);
+  for (const bool internal : {false, true}) {
+    const std::vector<double>& r = internal ? radial.low : radial.high;
+    const auto [lo, hi] = std::minmax_element(r.begin(), r.end());
+    const double depth = *hi - *lo;
+    if (depth <= 1e-3 * *hi) continue;
+    const int z = Dominant(Spectrum(r), 3, 256);
+    const std::optional<double> m = Standard(depth / 2.25);
+    if (!m || o.edges.size() < static_cast<std::size_t>(4 * z) ||
+        SelfMismatch(r, static_cast<int>(std::lround(kBins / double(z)))) >= 0.05) {
+      continue;
+    }
+    return SectionTeeth{z, *m, depth / 2.25, internal ? *lo : *hi, HarmonicPhase(r, z), internal};
+  }
+  return std::nullopt;
+}
+
+// A gear whose faces are not all along or across its axis (a helical gear, or a spur gear with
+// a hub or chamfers): sections across `axis` that show the same teeth, whose angular position
+// theta = -phase / z is fitted as a line in the height h (sections close enough that the teeth
+// turn by less than half a tooth between neighbours). At the pitch radius r = m z / (2 cos b)
+// the helix rises by dh = r dtheta / tan(b), so sin(b) = m z (dtheta / dh) / 2 with the normal
+// module m; theta growing with h about the axis is a right-hand helix.
+std::optional<RecognizedFeature> SectionGear(const TriangleMesh& mesh, const Vector3d& axis) {
+  const Vector3d e = std::abs(axis.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
+  const Vector3d u = axis.cross(e).normalized();
+  const Vector3d v = axis.cross(u);
+  double t_min = 1e300, t_max = -1e300;
+  for (const Vector3d& p : mesh.vertices) {
+    t_min = std::min(t_min, p.dot(axis));
+    t_max = std::max(t_max, p.dot(axis));
+  }
+  const double width = t_max - t_min;
+  if (!(width > 0)) return std::nullopt;
+  // The centre: the length-weighted middle of a section's segments (teeth and bore are
+  // symmetric about it).
+  auto centre_of = [](const Outline& o) {
+    Vector2d sum = Vector2d::Zero();
+    double length = 0.0;
+    for (const auto& [a, b] : o.edges) {
+      sum += (b - a).norm() * (a + b) / 2;
+      length += (b - a).norm();
+    }
+    return length > 0 ? Vector2d(sum / length) : Vector2d::Zero();
+  };
+  // Coarse sections, off any round height (a CAD vertex plane would cut faces edge-on).
+  constexpr int kCoarse = 24;
+  const double coarse_step = width / kCoarse;
+  auto height = [&](double i, double step, double from) { return from + (i + 0.5013) * step; };
+  std::optional<Vector2d> centre;
+  std::vector<std::optional<SectionTeeth>> coarse(kCoarse);
+  for (int i = 0; i < kCoarse; ++i) {
+    const Outline o = Section(mesh, axis, u, v, height(i, coarse_step, t_min));
+    if (o.edges.empty()) continue;
+    if (!centre) centre = centre_of(Section(mesh, axis, u, v, t_min + 0.5013 * width));
+    coarse[i] = TeethOfSection(o, *centre);
+  }
+  // The longest run of sections with the same teeth.
+  auto same = [](const SectionTeeth& a, const SectionTeeth& b) {
+    return a.teeth == b.teeth && a.module == b.module && a.internal == b.internal;
+  };
+  int best_first = -1, best_count = 0;
+  for (int i = 0; i < kCoarse;) {
+    if (!coarse[i]) {
+      ++i;
+      continue;
+    }
+    int j = i + 1;
+    while (j < kCoarse && coarse[j] && same(*coarse[j], *coarse[i])) ++j;
+    if (j - i > best_count) best_first = i, best_count = j - i;
+    i = j;
+  }
+  if (best_count < 3) return std::nullopt;
+  const SectionTeeth teeth = *coarse[best_first];
+  const int z = teeth.teeth;
+  const double m = teeth.module;
+  // The face: from the run's first section to its last, out to the part's end where the run
+  // reaches it.
+  const int best_last = best_first + best_count - 1;
+  const double lo = best_first == 0 ? t_min : t_min + best_first * coarse_step;
+  const double hi = best_last == kCoarse - 1 ? t_max : t_min + (best_last + 1) * coarse_step;
+  // Fine sections over the face's inner part: at most 0.4 m apart, which a helix of up to 60
+  // degrees turns by less than half a tooth.
+  const int fine = std::clamp(static_cast<int>(std::ceil((hi - lo) / (0.4 * m))), 8, 256);
+  const double fine_step = (hi - lo) / fine;
+  std::vector<double> hs, thetas;
+  double theta = 0.0;
+  std::optional<double> previous;
+  for (int i = 0; i < fine; ++i) {
+    const double h = height(i, fine_step, lo);
+    const std::optional<SectionTeeth> s = TeethOfSection(Section(mesh, axis, u, v, h), *centre);
+    if (!s || !same(*s, teeth)) continue;
+    const double at = -s->phase / z;
+    if (previous) theta += std::remainder(at - *previous, 2 * kPi / z);
+    previous = at;
+    hs.push_back(h);
+    thetas.push_back(theta);
+  }
+  if (hs.size() < 4) return std::nullopt;
+  // Least squares line theta = a + k h.
+  const double n = static_cast<double>(hs.size());
+  const double h_mean = std::accumulate(hs.begin(), hs.end(), 0.0) / n;
+  const double t_mean = std::accumulate(thetas.begin(), thetas.end(), 0.0) / n;
+  double shh = 0.0, sht = 0.0;
+  for (std::size_t i = 0; i < hs.size(); ++i) {
+    shh += (hs[i] - h_mean) * (hs[i] - h_mean);
+    sht += (hs[i] - h_mean) * (thetas[i] - t_mean);
+  }
+  const double k = sht / shh;
+  double misfit = 0.0;  // radians, largest
+  for (std::size_t i = 0; i < hs.size(); ++i) {
+    misfit = std::max(misfit, std::abs(thetas[i] - t_mean - k * (hs[i] - h_mean)));
+  }
+  const double sin_helix = m * z * k / 2;
+  // The teeth must follow one helix (a twisted or stepped part does not) to a tenth of a tooth.
+  if (std::abs(sin_helix) >= std::sin(60 * kPi / 180) || misfit > 0.1 * 2 * kPi / z) {
+    return std::nullopt;
+  }
+  double helix = std::asin(sin_helix);
+  if (std::abs(helix) < 0.25 * kPi / 180) helix = 0.0;  // a spur gear's sections barely turn
+  const double pitch_radius = m * z / (2 * std::cos(helix));
+  const double shift = teeth.internal ? pitch_radius / m - 1.0 - teeth.tip / m
+                                      : teeth.tip / m - pitch_radius / m - 1.0;
+  if (shift <= -1.0 || shift >= 1.2) return std::nullopt;
+  RecognizedFeature g;
+  Feature& f = g.feature;
+  f.kind = FeatureKind::kGear;
+  f.id = "teeth";
+  f.origin = centre->x() * u + centre->y() * v + lo * axis;
+  f.axis = axis;
+  f.length = hi - lo;
+  f.teeth = z;
+  f.module = m;
+  f.internal = teeth.internal;
+  f.helix_angle = helix;
+  g.fit_error = std::abs(teeth.raw_module - m) * z / 2;
+  const std::string kind = teeth.internal ? "internal gear" : "gear";
+  g.detail = helix == 0.0
+                 ? fmt::format(
+                       "spur {} from {} sections across the axis, {} teeth, tooth depth {} = "
+                       "2.25 x {}, module {} (ISO 54), profile shift about {}",
+                       kind, hs.size(), z, Mm(2.25 * teeth.raw_module),
+                       FormatNumber(teeth.raw_module, 5), FormatNumber(m), FormatNumber(shift, 2))
+                 : fmt::format(
+                       "helical {} from {} sections across the axis, {} teeth, normal module {} "
+                       "(ISO 54; tooth depth 2.25 x {}), the teeth turning {} deg per mm: helix "
+                       "angle {} deg, {} hand, profile shift about {}",
+                       kind, hs.size(), z, FormatNumber(m), FormatNumber(teeth.raw_module, 5),
+                       FormatNumber(k * 180 / kPi, 4), FormatNumber(helix * 180 / kPi, 4),
+                       helix > 0 ? "right" : "left", FormatNumber(shift, 2));
+  return g;
+}
+
 }  // namespace
 
 const std::vector<double>& StandardModules() {
@@ -681,6 +872,15 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
           FormatNumber(m_pitch, 5), Mm(h_depth), FormatNumber(*m), std::lround(length / pitch));
       out.features.push_back(rack);
       has_teeth = true;
+    }
+  }
+  // A part that is no prism may still be a gear: a helical one, or spur teeth beside a hub.
+  if (!prismatic && !has_teeth) {
+    for (int i = 0; i < 3; ++i) {
+      if (auto gear = SectionGear(mesh, Canonical(eigen.eigenvectors().col(i).normalized()))) {
+        out.features.insert(out.features.begin(), std::move(*gear));
+        break;
+      }
     }
   }
   // Below what a mesh's float coordinates resolve: rounded, so that reports read cleanly.

@@ -460,26 +460,41 @@ Feature GearTeeth(FeatureKind kind, int teeth, double module, double face_width)
   return f;
 }
 
-// An external involute gear (spur gear or worm wheel) with addendum 1 m, dedendum 1.25 m.
+// An external involute gear (spur, helical, or worm wheel) with addendum 1 m, dedendum 1.25 m
+// (normal module m; see SpurGearSpec for the helical one).
 LibraryPart MakeExternalGear(int teeth, double module, double face_width, double bore_diameter,
-                             double pressure_angle, int requested_segments, FeatureKind kind) {
+                             double pressure_angle, int requested_segments, FeatureKind kind,
+                             double helix_angle = 0.0) {
   RequireTeeth(teeth);
   RequirePositive(module, "module");
   RequirePositive(face_width, "face_width");
   RequireNonNegative(bore_diameter, "bore_diameter");
   RequirePressureAngle(pressure_angle);
   RequireSegments(requested_segments);
-  const int segments = CircleSegments(requested_segments, module * (teeth + 2));
-  Region2d region{InvoluteOutline({teeth, module, pressure_angle, module, 1.25 * module,
+  if (!(std::abs(helix_angle) < kPi / 3)) {
+    throw Error(fmt::format("helix_angle {} must be below pi/3 radians in size",
+                            FormatNumber(helix_angle)));
+  }
+  const double cos_helix = std::cos(helix_angle);
+  const double transverse = module / cos_helix;
+  const int segments = CircleSegments(requested_segments, transverse * teeth + 2 * module);
+  const double transverse_pressure =
+      helix_angle == 0.0 ? pressure_angle : std::atan(std::tan(pressure_angle) / cos_helix);
+  Region2d region{InvoluteOutline({teeth, transverse, transverse_pressure, module, 1.25 * module,
                                    2.0 * kPi / segments, kFlankPoints}),
                   {}};
   if (bore_diameter > 0.0) {
-    RequireBoreInsideRoot(bore_diameter, module * (teeth - 2.5), segments);
+    RequireBoreInsideRoot(bore_diameter, transverse * teeth - 2.5 * module, segments);
     region.holes.push_back(CircleRing({0.0, 0.0}, bore_diameter / 2.0, segments));
   }
+  // At the pitch radius the helix rises face_width while turning by face_width tan(b) / r.
+  const double twist = std::tan(helix_angle) / (transverse * teeth / 2.0);
+  const int layers = std::max(
+      1, static_cast<int>(std::ceil(std::abs(twist) * face_width / (2.0 * kPi / teeth / 16.0))));
   LibraryPart part;
-  part.mesh = ExtrudeRegion(region, 0.0, face_width);
+  part.mesh = ExtrudeTwistedRegion(region, 0.0, face_width, twist, layers);
   part.features.push_back(GearTeeth(kind, teeth, module, face_width));
+  part.features.back().helix_angle = helix_angle;
   if (bore_diameter > 0.0) {
     part.features.push_back(
         ThroughHole("bore", {0, 0, 0}, Eigen::Vector3d::UnitZ(), face_width, bore_diameter));
@@ -489,7 +504,7 @@ LibraryPart MakeExternalGear(int teeth, double module, double face_width, double
 
 LibraryPart Make(const SpurGearSpec& spec) {
   return MakeExternalGear(spec.teeth, spec.module, spec.face_width, spec.bore_diameter,
-                          spec.pressure_angle, spec.segments, FeatureKind::kGear);
+                          spec.pressure_angle, spec.segments, FeatureKind::kGear, spec.helix_angle);
 }
 
 LibraryPart Make(const WormWheelSpec& spec) {

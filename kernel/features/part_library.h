@@ -122,12 +122,20 @@ struct ShaftSpec {
 /// flank, evenly spaced in the roll angle; a radial flank from the base circle down to a root
 /// circle below it (no undercut or fillet). At least 6 teeth; the bore must clear the faceted root
 /// circle.
+///
+/// With a `helix_angle` b (radians, positive right-hand, |b| below 60 degrees) the gear is
+/// helical: `module` and `pressure_angle` are the normal ones, the outline is the transverse
+/// section's (module m / cos b, pressure angle atan(tan a / cos b), addendum m, dedendum
+/// 1.25 m), turned about the axis by z tan(b) / r at height z (r = m teeth / (2 cos b), the
+/// pitch radius), sampled in layers that turn by at most a sixteenth of a tooth; the teeth
+/// feature carries the helix angle.
 struct SpurGearSpec {
   int teeth = 0;
   double module = 0.0, face_width = 0.0;
   double bore_diameter = 0.0;  ///< 0: no bore
   double pressure_angle = 0.3490658503988659;
   int segments = 0;
+  double helix_angle = 0.0;
 };
 
 /// Ring (internal) gear: involute tooth spaces cut into a ring of `outer_diameter`, z in

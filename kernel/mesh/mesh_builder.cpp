@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -95,19 +96,39 @@ void MeshBuilder::AddCap(const Indices& outer, const std::vector<Indices>& holes
 }
 
 TriangleMesh ExtrudeRegion(const Region2d& region, double z0, double z1) {
+  return ExtrudeTwistedRegion(region, z0, z1, 0.0, 1);
+}
+
+TriangleMesh ExtrudeTwistedRegion(const Region2d& region, double z0, double z1, double twist,
+                                  int layers) {
   if (!(z0 < z1)) {
     throw std::invalid_argument(fmt::format("ExtrudeRegion: z0 {} must be below z1 {}",
                                             std::to_string(z0), std::to_string(z1)));
   }
+  if (layers < 1) {
+    throw std::invalid_argument(fmt::format("ExtrudeTwistedRegion: {} layers", layers));
+  }
   MeshBuilder builder;
   // Counter-clockwise outer ring and clockwise holes make every wall face away from the
-  // material.
-  auto add_prism_ring = [&builder, z0, z1](const Ring2d& ring, bool counter_clockwise) {
+  // material. Each ring is added at every height, turned, with walls between neighbours.
+  auto add_prism_ring = [&](const Ring2d& ring, bool counter_clockwise) {
     const Ring2d oriented = Oriented(ring, counter_clockwise);
-    MeshBuilder::Indices lower = builder.AddRing(oriented, z0);
-    MeshBuilder::Indices upper = builder.AddRing(oriented, z1);
-    builder.AddWall(lower, upper);
-    return std::pair(std::move(lower), std::move(upper));
+    MeshBuilder::Indices lower, first;
+    for (int j = 0; j <= layers; ++j) {
+      const double z = j == layers ? z1 : z0 + (z1 - z0) * j / layers;
+      const Eigen::Rotation2Dd turn(twist * (z - z0));
+      Ring2d turned;
+      turned.reserve(oriented.size());
+      for (const Eigen::Vector2d& p : oriented) turned.push_back(turn * p);
+      MeshBuilder::Indices upper = builder.AddRing(turned, z);
+      if (j == 0) {
+        first = upper;
+      } else {
+        builder.AddWall(lower, upper);
+      }
+      lower = std::move(upper);
+    }
+    return std::pair(std::move(first), std::move(lower));
   };
   const auto [outer_lower, outer_upper] = add_prism_ring(region.outer, true);
   std::vector<MeshBuilder::Indices> holes_lower, holes_upper;

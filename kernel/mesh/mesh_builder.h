@@ -68,6 +68,13 @@ class MeshBuilder {
 /// the region cannot be triangulated.
 TriangleMesh ExtrudeRegion(const Region2d& region, double z0, double z1);
 
+/// As ExtrudeRegion, with the region turned about the z axis by `twist` x (z - z0) radians
+/// (twist in radians per mm; positive: counter-clockwise seen from +z as z grows, a right-hand
+/// helix) and sampled at `layers` + 1 equally spaced heights: a helical gear's teeth. Throws
+/// std::invalid_argument as ExtrudeRegion does, or for fewer than one layer.
+TriangleMesh ExtrudeTwistedRegion(const Region2d& region, double z0, double z1, double twist,
+                                  int layers);
+
 /// A solid around the z axis whose outer surface is r = radius(theta, z), sampled on a grid
 /// of `angular_segments` angles theta_i = 2 pi i / n and `axial_segments` + 1 levels
 /// z_j = z0 + (z1 - z0) j / m, with flat caps at z0 and z1 and an optional coaxial cylindrical

@@ -294,6 +294,33 @@ TEST(StepImport, GearTeethWithFreeFormFlanksAreFoundOnTheSolidsTessellation) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(StepImport, HelicalGearsWithLoftedFlanksMeshWithOppositeHands) {
+  // Our own fixture: a 12-tooth right-hand pinion and a 30-tooth left-hand gear, normal module
+  // 2, helix 20 degrees, flanks lofted as B-spline surfaces: the sections give each helix.
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "mechanist_step_helical";
+  std::filesystem::create_directories(dir);
+  const double helix = 20 * M_PI / 180;
+  testing::WriteHelicalGearPairStep(dir / "pair.step", 12, 30, 2.0, helix);
+  const Assembly a = LoadAssembly(dir / "pair.step");
+  ASSERT_EQ(a.parts().size(), 2u);
+  const Analysis an = Analyze(a);
+  const Gears g(a, an);
+  ASSERT_EQ(g.of_part.size(), 2u);
+  for (const auto& [part, f] : g.of_part) {
+    EXPECT_EQ(f->module, 2.0) << part;
+    EXPECT_NEAR(std::abs(f->axis.z()), 1.0, 1e-9) << part;
+    // Right hand for the pinion, left for the gear, whichever way the axis came out.
+    EXPECT_NEAR(f->helix_angle, f->teeth == 12 ? helix : -helix, 0.2 * M_PI / 180)
+        << part << " " << f->teeth;
+    EXPECT_NEAR(f->length, 10.0, 0.5) << part;
+  }
+  ASSERT_EQ(g.pairs.size(), 1u);
+  const bool pinion_first = a.feature(g.pairs[0]->a).teeth == 12;
+  EXPECT_EQ(*g.pairs[0]->ratio, pinion_first ? Rational(-2, 5) : Rational(-5, 2));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(StepImport, TheSolidWorksSpurPairMeshesAtMinusOneHalf) {
   // ../shared/data/real: SolidWorks Toolbox gears, flanks as many small cylinder patches; the
   // truth: 40 and 20 teeth, module 2, centre distance 60, ratio -1/2 from the pinion.

@@ -59,6 +59,71 @@ TEST(FeatureRecognition, LibrarySpurGearsComeOutExactly) {
   }
 }
 
+TEST(FeatureRecognition, HelicalGearsGiveTheirHelixAngleAndHandFromTheirSections) {
+  // Library helical gears (their sections turn by z tan(b) / r), turned to a skew pose, of
+  // either hand; an undercut-range pinion of 8 teeth among them.
+  const RigidTransform X = RigidTransform::FromQuaternion(
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized())),
+      {12, -4, 7});
+  struct Case {
+    int teeth;
+    double module, helix_deg, face_width;
+  };
+  for (const Case& c : std::vector<Case>{
+           {8, 1.0, 20, 8}, {20, 2.0, -15, 16}, {31, 1.5, 30, 12}, {57, 0.8, -25, 10}}) {
+    SpurGearSpec spec;
+    spec.teeth = c.teeth;
+    spec.module = c.module;
+    spec.face_width = c.face_width;
+    spec.bore_diameter = c.module * c.teeth * 0.3;
+    spec.helix_angle = c.helix_deg * M_PI / 180;
+    const MeshFeatures found = RecognizeFeatures(Moved(MakeLibraryPart(spec).mesh, X));
+    const RecognizedFeature* gear = Find(found, FeatureKind::kGear);
+    ASSERT_NE(gear, nullptr) << c.teeth << " teeth";
+    EXPECT_EQ(gear->feature.teeth, c.teeth);
+    EXPECT_EQ(gear->feature.module, c.module) << c.teeth;
+    EXPECT_FALSE(gear->feature.internal);
+    // The hand does not depend on which way the axis points.
+    EXPECT_NEAR(gear->feature.helix_angle * 180 / M_PI, c.helix_deg, 0.05)
+        << c.teeth << ": " << gear->detail;
+    const Eigen::Vector3d axis = X.RotateDirection(Eigen::Vector3d::UnitZ());
+    EXPECT_GT(std::abs(gear->feature.axis.dot(axis)), 1 - 1e-9);
+    EXPECT_LT(DistanceToAxis(gear->feature, X * Eigen::Vector3d::Zero()), 1e-3);
+    EXPECT_NEAR(gear->feature.length, c.face_width, 1e-6);
+    EXPECT_NE(gear->detail.find(c.helix_deg > 0 ? "right hand" : "left hand"), std::string::npos)
+        << gear->detail;
+  }
+}
+
+TEST(FeatureRecognition, SpurTeethBesideAHubAreFoundInSections) {
+  // A spur gear fused to a tapered hub: no longer a prism, its teeth still show in sections
+  // across the axis, with no helix.
+  SpurGearSpec spec;
+  spec.teeth = 24;
+  spec.module = 1.5;
+  spec.face_width = 10;
+  TriangleMesh gear = MakeLibraryPart(spec).mesh;
+  RadialGrid hub;
+  hub.radius = [](double, double z) { return 10 - 0.2 * (z - 10); };
+  hub.angular_segments = 48;
+  hub.axial_segments = 4;
+  hub.z0 = 10, hub.z1 = 25;  // on the teeth's top face
+  const TriangleMesh boss = MakeRadialGridSolid(hub);
+  const int base = static_cast<int>(gear.vertices.size());
+  gear.vertices.insert(gear.vertices.end(), boss.vertices.begin(), boss.vertices.end());
+  for (auto f : boss.faces) gear.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+  const MeshFeatures found = RecognizeFeatures(gear);
+  EXPECT_FALSE(found.axis.has_value());  // not prismatic
+  const RecognizedFeature* teeth = Find(found, FeatureKind::kGear);
+  ASSERT_NE(teeth, nullptr);
+  EXPECT_EQ(teeth->feature.teeth, 24);
+  EXPECT_EQ(teeth->feature.module, 1.5);
+  EXPECT_EQ(teeth->feature.helix_angle, 0.0);
+  EXPECT_NEAR(teeth->feature.origin.z(), 0.0, 1e-9);
+  EXPECT_NEAR(teeth->feature.length, 10.0, 25.0 / 24 + 1e-9);  // to one coarse section
+  EXPECT_NE(teeth->detail.find("spur gear from"), std::string::npos) << teeth->detail;
+}
+
 TEST(FeatureRecognition, RingGearsAreInternalAndRacksRunAlongTheirTeeth) {
   RingGearSpec ring;
   ring.teeth = 40;

@@ -8,6 +8,7 @@
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
+#include <BRepOffsetAPI_ThruSections.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
@@ -62,43 +63,78 @@ TopoDS_Edge Through(const std::vector<gp_Pnt>& points) {
   return BRepBuilderAPI_MakeEdge(interpolate.Curve()).Edge();
 }
 
-// A spur gear about the z axis: the involute outline split at its corners (where it turns by
-// more than 20 degrees), each smooth run an interpolated B-spline, extruded from z = 0 to 10,
-// with a bore.
-TopoDS_Shape SpurGear(int teeth, double module) {
+// The transverse outline of a gear of normal module `module` and helix angle `helix` (0: a
+// spur gear): involute teeth of module m / cos(helix), pressure angle atan(tan 20 deg /
+// cos(helix)), addendum m, dedendum 1.25 m.
+Ring2d GearOutline(int teeth, double module, double helix) {
   InvoluteOutlineSpec spec;
   spec.teeth = teeth;
-  spec.module = module;
-  spec.pressure_angle = 20.0 * M_PI / 180.0;
+  spec.module = module / std::cos(helix);
+  spec.pressure_angle = std::atan(std::tan(20.0 * M_PI / 180.0) / std::cos(helix));
   spec.addendum = module;
   spec.dedendum = 1.25 * module;
   spec.max_arc_step = 2.0 * M_PI / teeth / 12.0;
   spec.flank_points = 12;
-  const Ring2d ring = InvoluteOutline(spec);
+  return InvoluteOutline(spec);
+}
+
+// The outline `ring` turned by `angle` about z at height `z` as a closed wire: split at its
+// corners (where it turns by more than 20 degrees), each smooth run an interpolated B-spline.
+TopoDS_Wire OutlineWire(const Ring2d& ring, double z, double angle) {
   const std::size_t n = ring.size();
   const auto corner = [&](std::size_t i) {
     const Eigen::Vector2d a = ring[i] - ring[(i + n - 1) % n], b = ring[(i + 1) % n] - ring[i];
     return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) >
            20.0 * M_PI / 180.0;
   };
+  const double c = std::cos(angle), s = std::sin(angle);
+  const auto point = [&](std::size_t i) {
+    return gp_Pnt(c * ring[i].x() - s * ring[i].y(), s * ring[i].x() + c * ring[i].y(), z);
+  };
   std::size_t start = 0;
   while (!corner(start)) ++start;
   BRepBuilderAPI_MakeWire wire;
-  std::vector<gp_Pnt> run = {gp_Pnt(ring[start].x(), ring[start].y(), 0)};
+  std::vector<gp_Pnt> run = {point(start)};
   for (std::size_t k = 1; k <= n; ++k) {
     const std::size_t i = (start + k) % n;
-    run.emplace_back(ring[i].x(), ring[i].y(), 0);
+    run.push_back(point(i));
     if (corner(i)) {
       wire.Add(Through(run));
       run = {run.back()};
     }
   }
-  const TopoDS_Face face = BRepBuilderAPI_MakeFace(wire.Wire()).Face();
-  const TopoDS_Shape body = BRepPrimAPI_MakePrism(face, gp_Vec(0, 0, 10)).Shape();
+  return wire.Wire();
+}
+
+// A bore of 0.3 times the gear's pitch diameter through `body`.
+TopoDS_Shape Bored(const TopoDS_Shape& body, int teeth, double module) {
   const double bore = 0.15 * module * teeth;
   return BRepAlgoAPI_Cut(body,
                          BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -1), gp::DZ()), bore, 12))
       .Shape();
+}
+
+// A spur gear about the z axis, extruded from z = 0 to 10, with a bore.
+TopoDS_Shape SpurGear(int teeth, double module) {
+  const TopoDS_Face face =
+      BRepBuilderAPI_MakeFace(OutlineWire(GearOutline(teeth, module, 0.0), 0.0, 0.0)).Face();
+  return Bored(BRepPrimAPI_MakePrism(face, gp_Vec(0, 0, 10)).Shape(), teeth, module);
+}
+
+// A helical gear about the z axis from z = 0 to 10, with a bore: a loft (B-spline flanks)
+// through the transverse outline at 5 heights, turned by z tan(helix) / r at height z.
+TopoDS_Shape HelicalGear(int teeth, double module, double helix) {
+  const double pitch_radius = module * teeth / (2.0 * std::cos(helix));
+  const Ring2d ring = GearOutline(teeth, module, helix);
+  BRepOffsetAPI_ThruSections loft(true, false, 1e-6);
+  loft.CheckCompatibility(false);
+  for (int k = 0; k <= 4; ++k) {
+    const double z = 2.5 * k;
+    loft.AddWire(OutlineWire(ring, z, z * std::tan(helix) / pitch_radius));
+  }
+  loft.Build();
+  if (!loft.IsDone()) throw std::runtime_error("cannot loft a helical gear");
+  return Bored(loft.Shape(), teeth, module);
 }
 
 }  // namespace
@@ -115,6 +151,22 @@ void WriteSpurGearPairStep(const std::filesystem::path& file, int teeth_a, int t
   BRep_Builder builder;
   builder.MakeCompound(all);
   builder.Add(all, SpurGear(teeth_a, module));
+  builder.Add(all, b);
+  WriteStep(all, file);
+}
+
+void WriteHelicalGearPairStep(const std::filesystem::path& file, int teeth_a, int teeth_b,
+                              double module, double helix) {
+  gp_Trsf place;
+  place.SetRotation(gp::OZ(), M_PI / teeth_b);
+  gp_Trsf shift;
+  shift.SetTranslation(gp_Vec(module / std::cos(helix) * (teeth_a + teeth_b) / 2.0, 0, 0));
+  const TopoDS_Shape b =
+      BRepBuilderAPI_Transform(HelicalGear(teeth_b, module, -helix), shift * place, true).Shape();
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  builder.Add(all, HelicalGear(teeth_a, module, helix));
   builder.Add(all, b);
   WriteStep(all, file);
 }

@@ -25,6 +25,14 @@ void WriteConesAndBallStep(const std::filesystem::path& file);
 void WriteSpurGearPairStep(const std::filesystem::path& file, int teeth_a, int teeth_b,
                            double module);
 
+/// As WriteSpurGearPairStep for helical gears of normal module `module`: gear a of helix angle
+/// `helix` (radians, positive right-hand), gear b of the opposite hand, at the transverse
+/// centre distance m (z_a + z_b) / (2 cos(helix)). Each gear is a loft through its transverse
+/// outline at five heights, so that its flanks are B-spline surfaces twisted along the helix.
+/// Throws std::runtime_error when it cannot build or write.
+void WriteHelicalGearPairStep(const std::filesystem::path& file, int teeth_a, int teeth_b,
+                              double module, double helix);
+
 /// Copies the STEP assembly `in` to `out` with every surface of every solid converted to a
 /// B-spline (Open CASCADE's BRepBuilderAPI_NurbsConvert), keeping the product structure and
 /// names (XCAF reader and writer): a file as some exporters and healing steps write it.
