@@ -351,9 +351,45 @@ struct SectionTeeth {
   bool internal = false;
 };
 
+// Whether a section may show teeth about `centre` (most sections of most parts are no gear):
+// with each segment's larger end radius over the angles it spans (external teeth), or its
+// smaller (internal), in 1024 angles, the radius spans a tooth depth near a standard module's
+// (2.25 m within 6%) and repeats around (matching itself turned by one period of its
+// strongest frequency within 15%). A cheap look before the full profile.
+bool MayShowTeeth(const Outline& o, const Vector2d& centre) {
+  constexpr int kBins = 1024;
+  std::vector<double> high(kBins, 0.0), low(kBins, 1e300);
+  auto bin_of = [&](const Vector2d& q) {
+    const double t = (std::atan2(q.y() - centre.y(), q.x() - centre.x()) + kPi) / (2 * kPi);
+    return std::clamp(static_cast<int>(t * kBins), 0, kBins - 1);
+  };
+  for (const auto& [a, b] : o.edges) {
+    const double ra = (a - centre).norm(), rb = (b - centre).norm();
+    int from = bin_of(a), to = bin_of(b);
+    // The short way round from one end's angle to the other's.
+    if ((to - from + kBins) % kBins > kBins / 2) std::swap(from, to);
+    for (int i = from;; i = (i + 1) % kBins) {
+      high[i] = std::max(high[i], std::max(ra, rb));
+      low[i] = std::min(low[i], std::min(ra, rb));
+      if (i == to) break;
+    }
+  }
+  auto teeth_like = [](const std::vector<double>& r) {
+    const auto [lo, hi] = std::minmax_element(r.begin(), r.end());
+    if (*hi >= 1e299) return false;  // an angle no segment spans
+    const double m = (*hi - *lo) / 2.25;
+    const bool standard = std::any_of(StandardModules().begin(), StandardModules().end(),
+                                      [m](double s) { return std::abs(s - m) <= 0.06 * s; });
+    if (!standard) return false;
+    const int z = Dominant(Spectrum(r), 3, 256);
+    return SelfMismatch(r, static_cast<int>(std::lround(kBins / double(z)))) < 0.15;
+  };
+  return teeth_like(high) || teeth_like(low);
+}
+
 std::optional<SectionTeeth> TeethOfSection(const Outline& o, const Vector2d& centre) {
   constexpr int kBins = 2048;
-  if (o.edges.size() < 12) return std::nullopt;
+  if (o.edges.size() < 12 || !MayShowTeeth(o, centre)) return std::nullopt;
   const Profile radial = Sample(
       o, kBins, -kPi, kPi,
       [&](const Vector2d& q) { return std::atan2(q.y() - centre.y(), q.x() - centre.x()); },
@@ -363,9 +399,10 @@ std::optional<SectionTeeth> TeethOfSection(const Outline& o, const Vector2d& cen
     const auto [lo, hi] = std::minmax_element(r.begin(), r.end());
     const double depth = *hi - *lo;
     if (depth <= 1e-3 * *hi) continue;
-    const int z = Dominant(Spectrum(r), 3, 256);
     const std::optional<double> m = Standard(depth / 2.25);
-    if (!m || o.edges.size() < static_cast<std::size_t>(4 * z) ||
+    if (!m) continue;
+    const int z = Dominant(Spectrum(r), 3, 256);
+    if (o.edges.size() < static_cast<std::size_t>(4 * z) ||
         SelfMismatch(r, static_cast<int>(std::lround(kBins / double(z)))) >= 0.05) {
       continue;
     }
