@@ -440,6 +440,7 @@ class Reader {
       part.tessellated = true;
       part.X_WP = s.X_WP;
       part.group = s.path;
+      part.body_of = s.body_of;
       part.features = std::move(s.features);
       part.notes = std::move(s.notes);
       part_index_.emplace(part.id, spec_.parts.size());

@@ -19,6 +19,8 @@ struct StepSolid {
   /// `_solid2`, ...
   std::string path;
   std::string product;  ///< the name of the product it is a solid of
+  /// The instance's path (without `_solidN`) when its product has several solids; else empty.
+  std::string body_of;
   RigidTransform X_WP;  ///< its placement (mm)
   /// Triangulated in its product's frame (mm); shared by the instances of one product.
   std::shared_ptr<const TriangleMesh> mesh;

@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 #include <utility>
@@ -42,6 +44,24 @@ double ScrewTight(Feature* shaft, Feature* hole) {
   return pitch;
 }
 
+// The largest distance of the mesh's vertices from the line (origin, unit direction), and their
+// extent along it: how wide and how long a part is about an axis (mm).
+struct Girth {
+  double radius = 0.0, lo = 0.0, hi = 0.0;
+};
+
+Girth GirthAbout(const TriangleMesh& mesh, const Eigen::Vector3d& origin,
+                 const Eigen::Vector3d& direction) {
+  Girth g{0.0, std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  for (const Eigen::Vector3d& v : mesh.vertices) {
+    const Eigen::Vector3d d = v - origin;
+    const double s = d.dot(direction);
+    g.radius = std::max(g.radius, (d - s * direction).norm());
+    g.lo = std::min(g.lo, s), g.hi = std::max(g.hi, s);
+  }
+  return g;
+}
+
 // Whether the shaft's axis `s` runs along the hole's `h` (within the tolerances) and the two
 // overlap along it.
 bool Engaged(const AxisSegment& s, const AxisSegment& h, double length_tolerance,
@@ -75,6 +95,10 @@ std::vector<Diagnostic> InferNutsOnBolts(
     if (shape.polygon_sides == 0 || !shape.axis) continue;
     Feature& hole = nut.features[holes[0]];
     if (AngleBetweenLines(hole.axis, *shape.axis) > angle_tolerance) continue;
+    // A nut is small for its bore (an M5 hexagon nut is 9.2 mm across its corners and 4 mm
+    // thick): an arm's square hub on a motor shaft is no nut.
+    const Girth girth = GirthAbout(*nut.mesh, hole.origin, hole.axis);
+    if (girth.radius > 2 * hole.diameter || girth.hi - girth.lo > 2 * hole.diameter) continue;
     const AxisSegment h = hole.WorldAxis(nut.X_WP);
     for (std::size_t b = 0; b < parts->size(); ++b) {
       if (b == n) continue;
@@ -153,54 +177,115 @@ std::vector<Diagnostic> InferScrewsInPlainHoles(
       head_diameter = x.diameter;
       break;
     }
+    const Girth girth = GirthAbout(*screw.mesh, a.origin, a.direction);
+    std::optional<double> tip_along;  // from a.origin along a.direction
+    if (!head_side) {
+      // A head that is no cylinder (domed, cross-recessed): one end of the mesh, over a shank
+      // diameter along the axis, 1.3 to 2.5 diameters wide, and no longer than it is wide
+      // (what is wider than the shank), the other end no wider than the shank (a chamfered or
+      // rolled tip).
+      auto end_width = [&](bool at_hi) {
+        double r = 0.0;
+        for (const Eigen::Vector3d& v : screw.mesh->vertices) {
+          const Eigen::Vector3d d = v - a.origin;
+          const double s = d.dot(a.direction);
+          if (at_hi ? s >= girth.hi - thread.diameter : s <= girth.lo + thread.diameter) {
+            r = std::max(r, (d - s * a.direction).norm());
+          }
+        }
+        return 2 * r;
+      };
+      auto wide_length = [&](bool at_hi) {  // from that end, how far the part is wider
+        double length = 0.0;
+        for (const Eigen::Vector3d& v : screw.mesh->vertices) {
+          const Eigen::Vector3d d = v - a.origin;
+          const double s = d.dot(a.direction);
+          if ((d - s * a.direction).norm() > 0.6 * thread.diameter + length_tolerance) {
+            length = std::max(length, at_hi ? girth.hi - s : s - girth.lo);
+          }
+        }
+        return length;
+      };
+      const double lo_width = end_width(false), hi_width = end_width(true);
+      auto head_like = [&](double w, bool at_hi) {
+        return w >= 1.3 * thread.diameter && w <= 2.5 * thread.diameter && wide_length(at_hi) <= w;
+      };
+      auto tip_like = [&](double w) { return w <= 1.1 * thread.diameter + length_tolerance; };
+      if (head_like(hi_width, true) && tip_like(lo_width)) {
+        head_side = a.direction, head_diameter = hi_width, tip_along = girth.lo;
+      } else if (head_like(lo_width, false) && tip_like(hi_width)) {
+        head_side = -a.direction, head_diameter = lo_width, tip_along = girth.hi;
+      }
+    }
     if (!head_side) continue;
     // A screw is no wider than its head (a motor with a shaft is).
-    bool slender = true;
-    for (const Eigen::Vector3d& v : screw.mesh->vertices) {
-      const Eigen::Vector3d d = v - a.origin;
-      slender =
-          slender && (d - d.dot(a.direction) * a.direction).norm() <= 0.5 * head_diameter * 1.05;
-    }
-    if (!slender) continue;
-    const Eigen::Vector3d tip_P = head_side->dot(a.direction) > 0
-                                      ? a.origin
-                                      : Eigen::Vector3d(a.origin + a.length * a.direction);
+    if (girth.radius > 0.5 * head_diameter * 1.05) continue;
+    if (!tip_along) tip_along = head_side->dot(a.direction) > 0 ? 0.0 : a.length;
+    const Eigen::Vector3d tip_P = a.origin + *tip_along * a.direction;
     const AxisSegment t = thread.WorldAxis(screw.X_WP);
     const Eigen::Vector3d tip = screw.X_WP * tip_P;
     const Eigen::Vector3d inward = screw.X_WP.RotateDirection(-*head_side);  // toward the tip
+    // Plain holes of other parts along the shank, drawn at the thread's size (within 10%) or
+    // at the tap drill's (down to 75% of it): engaged with the shank.
+    struct Along {
+      std::size_t part, feature;
+      bool tip;  // the shank's tip ends inside it
+    };
+    std::vector<Along> along;
     for (std::size_t p = 0; p < parts->size(); ++p) {
       if (p == s) continue;
-      Part& part = (*parts)[p];
-      bool screwed = false;
-      for (std::size_t f = 0; f < part.features.size() && !screwed; ++f) {
-        Feature& hole = part.features[f];
+      const Part& part = (*parts)[p];
+      for (std::size_t f = 0; f < part.features.size(); ++f) {
+        const Feature& hole = part.features[f];
         if (hole.kind != FeatureKind::kHole || !inferred(p, f)) continue;
         const AxisSegment h = hole.WorldAxis(part.X_WP);
-        if (std::abs(hole.diameter - thread.diameter) > 0.1 * thread.diameter ||
+        if (hole.diameter < 0.75 * thread.diameter ||
+            hole.diameter > 1.1 * thread.diameter + length_tolerance ||
             !Engaged(t, h, length_tolerance, angle_tolerance)) {
           continue;
         }
         // The tip inside the hole: not before its start nor past its end.
         const double s0 = (h.origin - tip).dot(inward);
         const double s1 = (h.origin + h.length * h.direction - tip).dot(inward);
-        if (std::min(s0, s1) > length_tolerance || std::max(s0, s1) < -length_tolerance) continue;
-        const double drilled = hole.diameter;
-        hole.diameter = thread.diameter;
-        const double pitch = ScrewTight(&thread, &hole);
-        found.push_back(
-            {Severity::kInfo,
-             "screw_in_plain_hole",
-             fmt::format("part '{}' (a head and a {} mm shank) ends in '{}/{}' ({} mm): taken "
-                         "as screwed into it, a tight thread of pitch {} mm (heuristic: the "
-                         "file models no thread)",
-                         screw.id, FormatNumber(thread.diameter), part.id, hole.id,
-                         FormatNumber(drilled), FormatNumber(pitch)),
-             {screw.id, part.id},
-             {fmt::format("{}/{}", screw.id, thread.id), fmt::format("{}/{}", part.id, hole.id)}});
-        screwed = true;
+        const bool tip_inside =
+            std::min(s0, s1) <= length_tolerance && std::max(s0, s1) >= -length_tolerance;
+        along.push_back({p, f, tip_inside});
       }
-      if (screwed) break;
     }
+    std::stable_partition(along.begin(), along.end(), [](const Along& x) { return x.tip; });
+    if (along.empty() || !along.front().tip) continue;
+    const Along tip_hole = along.front();
+    // The tip's hole is tapped, and so is every hole the shank passes that is narrower than
+    // the thread (it can only be threaded: a motor's long screws run through a tapped stator
+    // into a tapped flange).
+    std::vector<std::string> holes;  // the tip's first
+    double pitch = 0.0;
+    for (const Along& x : along) {
+      Feature& hole = (*parts)[x.part].features[x.feature];
+      if (x.part != tip_hole.part && hole.diameter >= thread.diameter - length_tolerance) {
+        continue;
+      }
+      holes.push_back(fmt::format("'{}/{}' ({} mm)", (*parts)[x.part].id, hole.id,
+                                  FormatNumber(hole.diameter)));
+      hole.diameter = thread.diameter;
+      pitch = ScrewTight(&thread, &hole);
+    }
+    const Part& into = (*parts)[tip_hole.part];
+    const std::string into_hole = into.features[tip_hole.feature].id;
+    std::string message = fmt::format(
+        "part '{}' (a head and a {} mm shank) ends in {}: taken as screwed into it, a tight "
+        "thread of pitch {} mm (heuristic: the file models no thread)",
+        screw.id, FormatNumber(thread.diameter), holes.front(), FormatNumber(pitch));
+    if (holes.size() > 1) {
+      message += "; also threaded through";
+      for (std::size_t k = 1; k < holes.size(); ++k) message += (k > 1 ? ", " : " ") + holes[k];
+    }
+    found.push_back(
+        {Severity::kInfo,
+         "screw_in_plain_hole",
+         message,
+         {screw.id, into.id},
+         {fmt::format("{}/{}", screw.id, thread.id), fmt::format("{}/{}", into.id, into_hole)}});
   }
   return found;
 }

@@ -11,7 +11,8 @@ namespace mechanist {
 
 /// The nut-on-bolt heuristic of a CAD import whose threads are drawn as plain cylinders: a part
 /// whose mesh is a prism with a convex polygonal outline of 3 to 8 sides (a hexagonal, square
-/// or rectangular nut) and one hole along its axis, sitting coaxially (within `length_tolerance` mm
+/// or rectangular nut) and one hole along its axis, small for its bore (within two bore
+/// diameters of the axis, at most two long), sitting coaxially (within `length_tolerance` mm
 /// and `angle_tolerance` rad) on a shaft of another part of the same diameter (within 2%) that
 /// overlaps it along the axis, is a nut on a bolt: the hole becomes a tight tapped hole and the
 /// shaft a tight thread (ISO coarse pitch for the diameter), so that recognition makes the
@@ -25,15 +26,17 @@ std::vector<Diagnostic> InferNutsOnBolts(
 
 /// The screws of a CAD import whose threads are not modelled, screwed into a plain hole: a part
 /// that is a head and a shank (two coaxial shafts, the head 1.3 to 2.5 times the shank's
-/// diameter and no longer than its diameter, the shank at least 1.5 diameters long, the whole
-/// part within the head's cylinder), whose shank's tip ends inside a coaxial hole of another
-/// part (diameter within 10% of the shank's, engaged, the tip not past the hole's end) and
-/// which no nut holds (its shank is still a shaft). That hole becomes a tight tapped hole of
-/// the shank's diameter (the modelled hole is the tap or clearance drill) and the shank a
-/// tight thread (ISO coarse pitch), so that recognition fixes the screw there and clamps the
-/// parts whose holes it passes (a cover and its spacers on a housing). Returns one info
-/// `screw_in_plain_hole` per screw. Only features for which `inferred(part, feature)` holds
-/// are reinterpreted, and a screw's part must have no written feature. Run after
+/// diameter and no longer than its diameter; or, for a head that is no cylinder, one end of
+/// the mesh that wide and no longer, the other end no wider than the shank; the shank at
+/// least 1.5 diameters long, the whole part within the head's cylinder), whose shank's tip
+/// ends inside a coaxial hole of another part (diameter 75% to 110% of the shank's: drawn at
+/// the tap drill or the thread size; engaged, the tip not past the hole's end) and which no
+/// nut holds (its shank is still a shaft). That hole becomes a tight tapped hole of the
+/// shank's diameter and the shank a tight thread (ISO coarse pitch), so that recognition fixes
+/// the screw there and clamps the parts whose holes it passes (a cover and its spacers on a
+/// housing); so does every other hole along the shank narrower than it (threaded through).
+/// Returns one info `screw_in_plain_hole` per screw. Only features for which `inferred(part,
+/// feature)` holds are reinterpreted, and a screw's part must have no written feature. Run after
 /// InferNutsOnBolts.
 std::vector<Diagnostic> InferScrewsInPlainHoles(
     std::vector<Part>* parts, double length_tolerance, double angle_tolerance,

@@ -9,7 +9,7 @@ static_assert(sizeof(Pair) <= 88, "Pair has grown: the analysis reads every pair
 
 namespace {
 
-constexpr EnumNames<PairSource, 8> kSources = {{
+constexpr EnumNames<PairSource, 9> kSources = {{
     {PairSource::kRecognised, "recognised"},
     {PairSource::kOverride, "override"},
     {PairSource::kClamp, "clamp"},
@@ -18,6 +18,7 @@ constexpr EnumNames<PairSource, 8> kSources = {{
     {PairSource::kInferred, "inferred_from_interference"},
     {PairSource::kBearing, "bearing"},
     {PairSource::kLooseFit, "loose_fit"},
+    {PairSource::kOnePart, "one_part"},
 }};
 
 constexpr EnumNames<PairFastening, 6> kFastenings = {{

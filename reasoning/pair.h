@@ -21,6 +21,7 @@ enum class PairSource : std::uint8_t {
   kImpliedPin,  ///< two coaxial holes with nothing in them: a pin the CAD file left out
   kBearing,     ///< a rolling bearing's rings, or a rolling element held with its outer ring
   kLooseFit,    ///< a shaft loose in its hole guiding a part that nothing else holds
+  kOnePart,     ///< two bodies of one CAD part touching face to face: one piece
 };
 
 /// How a pair is held, where that matters to the user.

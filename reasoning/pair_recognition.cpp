@@ -55,12 +55,14 @@ Recognition Recognizer::Run() {
   ApplyOverrides();
   ReportImpliedPins();
   ReportLooseFits();
+  ReportOneParts();
   const std::vector<Screwed> screwed = TightThreads();
   ApplySetscrews(screwed);
   if (2 * rank_bits_ + kSourceBits > 64) {
     throw std::length_error("pair recognition: too many features to sort pairs");
   }
-  for (Pair& p : pairs_) ApplyClamp(p, screwed);
+  const auto unclamped = UnclampedParts(screwed);
+  for (Pair& p : pairs_) ApplyClamp(p, screwed, unclamped);
   ReportUnconnected();
   Recognition out{Sorted(), std::move(diagnostics_), {}};
   std::sort(out.diagnostics.begin(), out.diagnostics.end(), DiagnosticLess);

@@ -580,6 +580,7 @@ class Walker {
       return;
     }
     const TopoDS_Shape shape = tool_->GetShape(label);
+    const std::size_t first = out_->size();
     int index = 0;
     for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next(), ++index) {
       const auto key = std::make_pair(label.Tag(), index);
@@ -599,6 +600,9 @@ class Walker {
       s.features = cached->second.features;
       s.notes = cached->second.notes;
       out_->push_back(std::move(s));
+    }
+    if (index > 1) {
+      for (std::size_t k = first; k < out_->size(); ++k) (*out_)[k].body_of = path;
     }
   }
 

@@ -47,6 +47,10 @@ struct Part {
   /// nothing and counts in no mobility; the parts it touches are reported.
   bool compliant = false;
   std::string group;  ///< CAD product-structure path, informational
+  /// The CAD part instance this solid is one body of, when that part has several solids (a
+  /// STEP product's solids share its instance path); empty otherwise. Bodies of one part that
+  /// touch face to face are one piece (pair recognition).
+  std::string body_of;
   std::vector<Feature> features;
   /// What reading the part's source saw but made no feature of, in words (a STEP solid's
   /// cones, spheres, tori and free-form faces); informational.

@@ -147,6 +147,26 @@ void Recognizer::SetCompliantPartsApart() {
   }
 }
 
+void Recognizer::ReportOneParts() {
+  std::map<std::string, std::set<std::string>> bodies;  // part instance -> its bodies in contact
+  for (const Pair& p : pairs_) {
+    if (p.source != PairSource::kOnePart) continue;
+    auto& of = bodies[assembly_.part(p.a.part).body_of];
+    of.insert(std::string(assembly_.PartId(p.a.part)));
+    of.insert(std::string(assembly_.PartId(p.b.part)));
+  }
+  for (const auto& [instance, names] : bodies) {
+    diagnostics_.push_back(
+        {Severity::kInfo,
+         "one_part",
+         fmt::format("{} are bodies of one CAD part, '{}', touching face to face: held together "
+                     "as one piece (an override of type none forbids it)",
+                     fmt::join(names, ", "), instance),
+         {names.begin(), names.end()},
+         {}});
+  }
+}
+
 void Recognizer::ReportImpliedPins() {
   std::map<std::pair<std::string, std::string>, std::vector<const Pair*>> by_parts;
   for (const Pair& p : pairs_) {
@@ -196,9 +216,55 @@ const FeatureRef* Recognizer::ScrewedInto(const std::vector<Screwed>& screwed, s
   return it != screwed.end() && it->thread == thread ? &it->hole : nullptr;
 }
 
-void Recognizer::ApplyClamp(Pair& p, const std::vector<Screwed>& screwed) const {
+std::set<std::pair<std::size_t, std::size_t>> Recognizer::UnclampedParts(
+    const std::vector<Screwed>& screwed) const {
+  std::set<std::pair<std::size_t, std::size_t>> unclamped;
+  std::map<std::size_t, std::set<std::size_t>> passes;  // thread -> parts of its clearance holes
+  for (const Pair& p : pairs_) {
+    if (p.type == PairType::kCylindrical && assembly_.kind(p.a) == FeatureKind::kThread &&
+        assembly_.kind(p.b) == FeatureKind::kHole && ScrewedInto(screwed, Index(p.a))) {
+      passes[Index(p.a)].insert(p.b.part);
+    }
+  }
+  std::map<std::size_t, std::set<std::size_t>> nuts;  // thread -> every part it is fixed in
+  for (const Screwed& s : tight_) nuts[s.thread].insert(s.hole.part);
+  for (const auto& [thread, parts] : passes) {
+    const WorldFeature& t = features_[thread];
+    // Where the stack is pressed from: the head, and every nut (a rod has one at each end).
+    std::set<std::size_t> ends = nuts[thread];
+    ends.insert(t.ref.part);
+    auto in_stack = [&](std::size_t part) { return ends.count(part) > 0 || parts.count(part) > 0; };
+    std::map<std::size_t, std::vector<std::size_t>> touching;  // face contacts across the axis
+    for (const Pair& p : pairs_) {
+      if (p.type != PairType::kPlanar || !in_stack(p.a.part) || !in_stack(p.b.part)) continue;
+      if (AngleBetweenLines(At(p.a).axis.direction, t.axis.direction) > A_) continue;
+      touching[p.a.part].push_back(p.b.part);
+      touching[p.b.part].push_back(p.a.part);
+    }
+    if (std::none_of(ends.begin(), ends.end(), [&](std::size_t e) { return touching.count(e); })) {
+      continue;
+    }
+    std::set<std::size_t> reached = ends;
+    std::vector<std::size_t> todo(ends.begin(), ends.end());
+    while (!todo.empty()) {
+      const std::size_t part = todo.back();
+      todo.pop_back();
+      for (const std::size_t next : touching[part]) {
+        if (reached.insert(next).second) todo.push_back(next);
+      }
+    }
+    for (const std::size_t part : parts) {
+      if (!reached.count(part)) unclamped.insert({thread, part});
+    }
+  }
+  return unclamped;
+}
+
+void Recognizer::ApplyClamp(Pair& p, const std::vector<Screwed>& screwed,
+                            const std::set<std::pair<std::size_t, std::size_t>>& unclamped) const {
   if (p.type == PairType::kCylindrical && assembly_.kind(p.a) == FeatureKind::kThread &&
-      assembly_.kind(p.b) == FeatureKind::kHole && ScrewedInto(screwed, Index(p.a))) {
+      assembly_.kind(p.b) == FeatureKind::kHole && ScrewedInto(screwed, Index(p.a)) &&
+      !unclamped.count({Index(p.a), p.b.part})) {
     p.type = PairType::kFixed;
     p.dof = 0;
     p.source = PairSource::kClamp;

@@ -153,6 +153,8 @@ class Recognizer {
 
   void BallSocket(const WorldFeature& b, const WorldFeature& s);
 
+  /// Two faces touching (coplanar, opposite normals, overlapping): a planar pair, or a fixed
+  /// one (source one_part) between two bodies of one CAD part (Part::body_of).
   void FaceFace(const WorldFeature& x, const WorldFeature& y);
 
   // ---- rolling bearings (bearing_fits.cpp) ----
@@ -202,6 +204,9 @@ class Recognizer {
   /// and the radial clearance.
   void ReportLooseFits();
 
+  /// One info diagnostic `one_part` per CAD part whose bodies the one_part pairs hold together.
+  void ReportOneParts();
+
   /// Compliant parts (springs, belts, hoses) join no pair: the pairs their features would make
   /// are dropped, and one info diagnostic `compliant_part` per such part names the parts it
   /// touches (those pairs' other parts). Before the overrides, which may still force a pair.
@@ -218,8 +223,19 @@ class Recognizer {
   /// The tapped hole or nut the thread of FeatureIndex `thread` is fixed in, if it is tight.
   static const FeatureRef* ScrewedInto(const std::vector<Screwed>& screwed, std::size_t thread);
 
-  /// A tight thread fixed in a nut or tapped hole clamps the parts of its clearance holes.
-  void ApplyClamp(Pair& p, const std::vector<Screwed>& screwed) const;
+  /// The (thread FeatureIndex, part) of clearance holes a tight thread passes without clamping
+  /// their part: a part that no chain of face contacts across the thread's axis, among the
+  /// parts it passes, joins to the thread's own part (the head) or to a part it is fixed in (a
+  /// nut; a rod has one at each end): a lever between the lugs of a clevis turns on the bolt
+  /// that clamps the lugs. When neither head nor nut has such a contact (faces not
+  /// recognised), none: it clamps them all.
+  std::set<std::pair<std::size_t, std::size_t>> UnclampedParts(
+      const std::vector<Screwed>& screwed) const;
+
+  /// A tight thread fixed in a nut or tapped hole clamps the parts of its clearance holes,
+  /// except those in `unclamped` (UnclampedParts).
+  void ApplyClamp(Pair& p, const std::vector<Screwed>& screwed,
+                  const std::set<std::pair<std::size_t, std::size_t>>& unclamped) const;
 
   /// A tight thread in a tapped hole whose tip bears on a third part's shaft fixes the shaft.
   void ApplySetscrews(const std::vector<Screwed>& screwed);
@@ -233,7 +249,7 @@ class Recognizer {
     std::uint64_t names_and_source;
     std::size_t pair;
   };
-  static constexpr int kSourceBits = 3;
+  static constexpr int kSourceBits = 4;
   static_assert(static_cast<int>(PairSource::kInferred) < (1 << kSourceBits));
   static_assert(static_cast<int>(PairSource::kImpliedPin) < (1 << kSourceBits));
   static_assert(static_cast<int>(PairSource::kBearing) < (1 << kSourceBits));

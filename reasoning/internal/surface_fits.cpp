@@ -31,6 +31,14 @@ void Recognizer::FaceFace(const WorldFeature& x, const WorldFeature& y) {
     if (in_plane >= extent(x.f) + extent(y.f) - L_) return;
   }
   const bool swap = NameLess(y, x);
+  const std::string& body_of = assembly_.part(x.ref.part).body_of;
+  if (!body_of.empty() && body_of == assembly_.part(y.ref.part).body_of) {
+    // Bodies of one CAD part (a multi-body part exported as several solids) that touch face to
+    // face are one piece of it.
+    AddPair(PairType::kFixed, swap ? y : x, swap ? x : y);
+    pairs_.back().source = PairSource::kOnePart;
+    return;
+  }
   AddPair(PairType::kPlanar, swap ? y : x, swap ? x : y);
 }
 

@@ -40,19 +40,27 @@ std::vector<Expected> Cases() {
       // only guide (loose fits), so no warning.
       {"hinge_clamshell_build123d/clamshell_full.step", "COMPOUND_solid2", {}, 0, 0, 6},
       // A near miss a designer checks (a shaft 0.07 mm off its hole's axis), and a part that
-      // nothing holds to the frame.
+      // nothing holds to the frame. Ten M5 screws end in nuts or tap-drilled holes.
       {"lead_screw_linear_actuator_onshape/Assembly.step",
        "Assembly_1._C_V",
-       {"axes_not_collinear: Assembly_1.p____V", "free_motion: Assembly_1.__V_4"}},
-      // Recognition misses: the ring and little fingers' base hinges and the thumb's base
-      // pivot are not found (see the README), so those fingers float.
+       {"axes_not_collinear: Assembly_1.p____V", "free_motion: Assembly_1.__V_4"},
+       0,
+       10},
+      // Recognition misses: the ring and little fingers' base hinges are not found (see the
+      // README), so those fingers float. The thumb's M4 pivot screw ends in its nut's hole
+      // (drawn at the minor diameter).
       {"robot_hand_finger_hinges_onshape/Assembly 1.step",
        "Assembly_1.FOREARM",
-       {"free_motion: Assembly_1.Pinky1"}},
-      // The motor's connector, which nothing in the file holds.
+       {"free_motion: Assembly_1.Pinky1"},
+       0,
+       1},
+      // The motor's connector, which nothing in the file holds. The motor's four long M3
+      // screws (cross-recessed pan heads) run through the tap-drilled stator into the flange.
       {"rotary_pendulum_ball_bearing_fusion/Assembly.step",
        "Assembly_v14.base_link_v4_1.NEMA_v6_1.Middle_part_1",
-       {"part_unconnected: Assembly_v14.base_link_v4_1.NEMA_v6_1.JST-S6B-PH-K-S_1"}},
+       {"part_unconnected: Assembly_v14.base_link_v4_1.NEMA_v6_1.JST-S6B-PH-K-S_1"},
+       0,
+       4},
       // The file has the two gears and no shafts: the pinion meshes with the gear taken as
       // ground but nothing holds its axis.
       {"spur_pair_20T_40T_solidworks/ISO standard Spur Gear Drive (2-1 ratio).STEP",
@@ -99,6 +107,47 @@ TEST_P(RealExports, GroundAndWarningsAreTheOnesADesignerActsOn) {
   EXPECT_EQ(cycloid_features, e.cycloid_features);
   EXPECT_EQ(CountCode(a, "screw_in_plain_hole"), e.plain_hole_screws);
   EXPECT_EQ(loose_fits, e.loose_fits);
+}
+
+TEST(RealExports, TheRobotHandsThumbTurnsOnItsPivotScrew) {
+  // Truth: the thumb's base pivots on a modelled M4 x 45 socket head screw with a nut. The
+  // screw's head and nut bear on the palm, which it clamps; the thumb, between the palm's lugs,
+  // turns on its shank.
+  const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) /
+                                  "real/robot_hand_finger_hinges_onshape/Assembly 1.step");
+  const Analysis an = Analyze(a);
+  const std::string screw = "Assembly_1.Hex_socket_head_cap_screw_M4x0_70_x_45";
+  int thumb = 0, palm = 0;
+  for (const Pair& p : an.pairs) {
+    if (a.part(p.a.part).id != screw) continue;
+    const std::string other = a.part(p.b.part).id;
+    if (other == "Assembly_1.Thumb1") {
+      EXPECT_EQ(p.type, PairType::kCylindrical);
+      ++thumb;
+    } else if (other == "Assembly_1.Palm" && p.type == PairType::kFixed) {
+      EXPECT_EQ(p.source, PairSource::kClamp);
+      ++palm;
+    }
+  }
+  EXPECT_EQ(thumb, 2);  // its two lugs
+  EXPECT_EQ(palm, 1);
+}
+
+TEST(RealExports, ThePendulumsMultiBodyPartsAreOnePieceEach) {
+  // Truth: the arm bar and the pendulum rod are each one part, exported by Fusion 360 as two
+  // solids of one component that touch face to face.
+  const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) /
+                                  "real/rotary_pendulum_ball_bearing_fusion/Assembly.step");
+  const Analysis an = Analyze(a);
+  std::vector<std::string> one_part;
+  for (const Pair& p : an.pairs) {
+    if (p.source != PairSource::kOnePart) continue;
+    EXPECT_EQ(p.type, PairType::kFixed);
+    one_part.push_back(a.part(p.a.part).id + " + " + a.part(p.b.part).id);
+  }
+  EXPECT_EQ(one_part, (std::vector<std::string>{
+                          "Assembly_v14.BarLink_v9_1 + Assembly_v14.BarLink_v9_1_solid2",
+                          "Assembly_v14.PendulumRod_v6_1 + Assembly_v14.PendulumRod_v6_1_solid2"}));
 }
 
 TEST(RealExports, TheSolidEdgePinGivesItsTruthsMobility) {

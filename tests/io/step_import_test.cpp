@@ -564,6 +564,27 @@ TEST(NutOnBolt, MeshPartsAloneAreANutOnItsBolt) {
   EXPECT_EQ(w.findings()[0].code, "features_recognised");
   EXPECT_EQ(w.findings()[0].parts, std::vector<std::string>{"nut"});
   EXPECT_EQ(w.findings()[1].code, "ground_chosen");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(NutOnBolt, AnArmsSquareHubOnAMotorShaftIsNoNut) {
+  // A 100 x 40 x 5 bar with a 5 mm bore on a 5 mm shaft: a 4-sided prism with one hole, but
+  // twenty bores long (an M5 nut is under two across its corners and one thick).
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_arm_stl";
+  std::filesystem::create_directories(dir);
+  PlateSpec arm;
+  arm.length = 100, arm.width = 40, arm.thickness = 5;
+  arm.holes = {{"bore", Eigen::Vector2d(-40, 0), 5.0}};
+  ShaftSpec shaft;
+  shaft.diameter = 5, shaft.length = 30;
+  WriteStl(MakeLibraryPart(arm).mesh, dir / "arm.stl");
+  WriteStl(MakeLibraryPart(shaft).mesh, dir / "shaft.stl");
+  const Assembly a = LoadAssemblyText(R"({"mechanist": 1, "parts": [
+    {"id": "shaft", "mesh": "shaft.stl", "pose": {"position": [-40, 0, -10]}},
+    {"id": "arm", "mesh": "arm.stl"}]})",
+                                      dir / "a.json");
+  for (const Diagnostic& d : a.findings()) EXPECT_NE(d.code, "nut_on_bolt") << d.message;
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

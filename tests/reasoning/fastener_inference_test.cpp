@@ -77,6 +77,34 @@ TEST(ScrewsInPlainHoles, AScrewEndingInAHousingsHoleIsScrewedThereAndClampsTheCo
   EXPECT_EQ(an.motion.mobility.dof, 0);
 }
 
+TEST(ScrewsInPlainHoles, AHeadThatIsNoCylinderAndHolesDrilledAtTheTapSize) {
+  // A domed or cross-recessed head gives no cylinder: only the mesh shows it (8 wide over 3 at
+  // one end, the tip 4 wide). The shank runs through a stator into a housing, both drilled at
+  // the M4 tap size (3.3 mm): threaded in both, so all three are one piece.
+  std::vector<Part> parts = Parts(16, 15);
+  parts[0].features.erase(parts[0].features.begin());  // the head's cylinder is not found
+  parts[1] = MakePart("stator", {Cylinder("bore", FeatureKind::kHole, 10, 3.3, 5)});
+  parts[2].features[0].diameter = 3.3;
+  const std::vector<Diagnostic> found = Infer(&parts);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].parts, (std::vector<std::string>{"screw", "housing"}));
+  EXPECT_NE(found[0].message.find("ends in 'housing/hole' (3.3 mm)"), std::string::npos)
+      << found[0].message;
+  EXPECT_NE(found[0].message.find("also threaded through 'stator/bore' (3.3 mm)"),
+            std::string::npos)
+      << found[0].message;
+  for (const Part* p : {&parts[1], &parts[2]}) {
+    EXPECT_EQ(p->features[0].kind, FeatureKind::kTappedHole) << p->id;
+    EXPECT_DOUBLE_EQ(p->features[0].diameter, 4.0) << p->id;
+  }
+  EXPECT_EQ(Analyze(testing::MakeAssembly(parts)).motion.mobility.dof, 0);
+  // A hole under 75% of the shank is no tap drill: nothing is inferred.
+  std::vector<Part> narrow = Parts(16, 15);
+  narrow[0].features.erase(narrow[0].features.begin());
+  narrow[2].features[0].diameter = 2.9;
+  EXPECT_TRUE(Infer(&narrow).empty());
+}
+
 TEST(ScrewsInPlainHoles, OnlyScrewsThatEndInsideTheirLastHole) {
   // The tip comes out of the housing's hole (z -6 below its end at -1): a pin, not a screw.
   std::vector<Part> through = Parts(16, 6);

@@ -230,6 +230,67 @@ TEST(PairRecognition, TightBoltClampsEveryPartItPassesThrough) {
   for (const Pair& p : forbidden.pairs) EXPECT_EQ(p.type, PairType::kCylindrical);
 }
 
+Feature Face(const std::string& id, V origin, V normal, double size = 12) {
+  return MakeFeature(id, K::kFace, origin, normal, [&](Feature& f) { f.width = f.height = size; });
+}
+
+// A clevis (ground) whose lugs span z 0..5 and 15..20, a lever between them (z 6..14, or
+// 5..15 when `snug`), a tight bolt down from its head at z = 20 into a nut under the lugs.
+Assembly Clevis(bool snug) {
+  const V down = -V::UnitZ(), up = V::UnitZ();
+  const double lever_bottom = snug ? 5 : 6, lever_top = snug ? 15 : 14;
+  Feature upper = Hole(6.6, 5, V(0, 0, 20)), lower = Hole(6.6, 5, V(0, 0, 5));
+  upper.id = "upper", lower.id = "lower";
+  return MakeAssembly(
+      {MakePart("clevis",
+                {upper, lower, Face("top", V(0, 0, 20), up), Face("bottom", V(0, 0, 0), down),
+                 Face("upper_inside", V(0, 0, 15), down), Face("lower_inside", V(0, 0, 5), up)},
+                RigidTransform(), true),
+       MakePart("lever",
+                {Hole(6.6, lever_top - lever_bottom, V(0, 0, lever_top)),
+                 Face("top", V(0, 0, lever_top), up), Face("bottom", V(0, 0, lever_bottom), down)}),
+       MakePart("bolt", {Thread(6, 1, 25, V(0, 0, 20), down, Fastening::kTight),
+                         Face("head", V(0, 0, 20), down)}),
+       MakePart("nut", {Tapped(6, 1, 5, V(0, 0, 0), down), Face("top", V(0, 0, 0), up)})});
+}
+
+TEST(PairRecognition, ATightBoltClampsTheLugsItBearsOnNotTheLeverBetweenThem) {
+  // Head and nut bear on the clevis; the lever, clear of both lugs, turns on the shank.
+  const Recognition pivot = Recognize(Clevis(false));
+  int clamps = 0;
+  for (const Pair& p : pivot.pairs) {
+    const bool lever = p.a.part == 1 || p.b.part == 1;
+    if (p.source == PairSource::kClamp) ++clamps;
+    if (lever) {
+      EXPECT_EQ(p.type, PairType::kCylindrical);
+    }
+  }
+  EXPECT_EQ(clamps, 2);                                      // both lugs
+  EXPECT_EQ(Analyze(Clevis(false)).motion.mobility.dof, 2);  // the lever turns and slides
+  // Snug between the lugs (faces touching), the lever is in the clamped stack.
+  const Analysis snug = Analyze(Clevis(true));
+  EXPECT_EQ(snug.subassemblies.size(), 1u);
+  EXPECT_EQ(snug.motion.mobility.dof, 0);
+}
+
+TEST(PairRecognition, BodiesOfOneCadPartTouchingFaceToFaceAreOnePiece) {
+  auto parts = [](const std::string& body_of_b) {
+    Part a = MakePart("bar", {Face("end", V(0, 0, 0), V::UnitZ())}, RigidTransform(), true);
+    Part b = MakePart("bar_solid2", {Face("end", V(0, 0, 0), -V::UnitZ())});
+    a.body_of = "bar";
+    b.body_of = body_of_b;
+    return MakeAssembly({a, b});
+  };
+  const Recognition one = Recognize(parts("bar"));
+  const Pair fixed = Only(one);
+  EXPECT_EQ(fixed.type, PairType::kFixed);
+  EXPECT_EQ(fixed.source, PairSource::kOnePart);
+  EXPECT_TRUE(HasDiagnostic(one, "one_part", "bar, bar_solid2 are bodies of one CAD part, 'bar'"));
+  // Solids of different parts touching are a planar pair, as always.
+  EXPECT_EQ(Only(Recognize(parts(""))).type, PairType::kPlanar);
+  EXPECT_EQ(Only(Recognize(parts("other"))).type, PairType::kPlanar);
+}
+
 TEST(PairRecognition, SetscrewFixesTheShaftItBearsOn) {
   // A hub on a shaft along x; a setscrew down the hub's radial tapped hole to the shaft.
   Feature shaft = Shaft(6, 40, V(-20, 0, 0), V::UnitX());
