@@ -9,7 +9,7 @@ static_assert(sizeof(Pair) <= 88, "Pair has grown: the analysis reads every pair
 
 namespace {
 
-constexpr EnumNames<PairSource, 9> kSources = {{
+constexpr EnumNames<PairSource, 10> kSources = {{
     {PairSource::kRecognised, "recognised"},
     {PairSource::kOverride, "override"},
     {PairSource::kClamp, "clamp"},
@@ -19,6 +19,7 @@ constexpr EnumNames<PairSource, 9> kSources = {{
     {PairSource::kBearing, "bearing"},
     {PairSource::kLooseFit, "loose_fit"},
     {PairSource::kOnePart, "one_part"},
+    {PairSource::kShaftFlat, "shaft_flat"},
 }};
 
 constexpr EnumNames<PairFastening, 6> kFastenings = {{

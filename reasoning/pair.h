@@ -22,6 +22,7 @@ enum class PairSource : std::uint8_t {
   kBearing,     ///< a rolling bearing's rings, or a rolling element held with its outer ring
   kLooseFit,    ///< a shaft loose in its hole guiding a part that nothing else holds
   kOnePart,     ///< two bodies of one CAD part touching face to face: one piece
+  kShaftFlat,   ///< a hub on a shaft's flat (a setscrew or D-bore not modelled)
 };
 
 /// How a pair is held, where that matters to the user.

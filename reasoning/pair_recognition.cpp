@@ -49,6 +49,8 @@ Recognition Recognizer::Run() {
   }
   for (const auto& [i, j] : OverlappingBoxPairs(reach_, parts)) Test(features_[i], features_[j]);
   AddBearings();
+  AddSolidBearings();
+  FixHubsOnFlats();
   AddImpliedPins();
   AddLooseFits();
   SetCompliantPartsApart();

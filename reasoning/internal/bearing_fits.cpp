@@ -1,6 +1,7 @@
 // Rolling bearings modelled as they are sold: rings and balls (Recognizer::AddBearings).
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>  // fmt::join
 
 #include <Eigen/Dense>
 
@@ -125,6 +126,26 @@ void Recognizer::AddBearings() {
              (std::min(a, b) == std::min(inner->ref.part, outer->ref.part) &&
               std::max(a, b) == std::max(inner->ref.part, outer->ref.part));
     });
+    // The rings' seats: the outer ring's outside in a bore, the inner ring's bore on a shaft,
+    // coaxial and of one size (within the length tolerance: no clearance to turn in) are
+    // fitted, as bearings are; a ring that turns in its seat would make the bearing idle.
+    std::set<std::string> seats;
+    for (Pair& p : pairs_) {
+      if (p.type != PairType::kCylindrical && p.type != PairType::kRevolute) continue;
+      const WorldFeature& s = At(p.a);
+      const WorldFeature& h = At(p.b);
+      const bool ring = s.ref.part == outer->ref.part || h.ref.part == inner->ref.part;
+      if (!ring || s.f.kind != FeatureKind::kShaft || h.f.kind != FeatureKind::kHole ||
+          AngleBetweenLines(s.axis.direction, pitch->normal) > A_ ||
+          std::abs(s.f.diameter - h.f.diameter) > L_) {
+        continue;
+      }
+      p.type = PairType::kFixed;
+      p.dof = 0;
+      p.source = PairSource::kBearing;
+      seats.insert(
+          std::string(assembly_.PartId(s.ref.part == outer->ref.part ? h.ref.part : s.ref.part)));
+    }
     AddPair(PairType::kRevolute, *inner, *outer);
     pairs_.back().source = PairSource::kBearing;
     for (const WorldFeature* b : set) {
@@ -152,7 +173,8 @@ void Recognizer::AddBearings() {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::size_t f = 0; f < assembly_.FeatureCount(outer->ref.part); ++f) {
       const WorldFeature& w = At({outer->ref.part, f});
-      if (w.f.kind != FeatureKind::kFace || AngleBetweenLines(w.normal_W, pitch->normal) > A_) {
+      if (w.f.kind != FeatureKind::kFace ||
+          AngleBetweenLines(w.axis.direction, pitch->normal) > A_) {
         continue;
       }
       const double at = (w.axis.origin - pitch->center).dot(pitch->normal);
@@ -171,11 +193,128 @@ void Recognizer::AddBearings() {
          "bearing",
          fmt::format("a ball bearing{}: {} turns in {} on {} balls of {} on a {} pitch circle "
                      "(a revolute pair; the balls are held with the outer ring, their spin and "
-                     "orbit not modelled)",
+                     "orbit not modelled){}",
                      size, assembly_.PartId(inner->ref.part), assembly_.PartId(outer->ref.part),
-                     set.size(), Mm(2 * ball_r), Mm(2 * pitch->radius)),
+                     set.size(), Mm(2 * ball_r), Mm(2 * pitch->radius),
+                     seats.empty() ? ""
+                                   : fmt::format("; its rings are fitted (fixed) to {}",
+                                                 fmt::join(seats, " and "))),
          parts,
          {Name(*inner), Name(*outer)}});
+  }
+}
+
+void Recognizer::AddSolidBearings() {
+  for (std::size_t part = 0; part < assembly_.parts().size(); ++part) {
+    const std::size_t n = assembly_.FeatureCount(part);
+    const WorldFeature* outside = nullptr;
+    const WorldFeature* bore = nullptr;
+    for (std::size_t f = 0; f < n; ++f) {
+      const WorldFeature& w = At({part, f});
+      if (w.f.kind == FeatureKind::kShaft && (!outside || w.f.diameter > outside->f.diameter)) {
+        outside = &w;
+      }
+    }
+    if (!outside) continue;
+    for (std::size_t f = 0; f < n; ++f) {
+      const WorldFeature& w = At({part, f});
+      if (w.f.kind != FeatureKind::kHole || w.f.diameter >= outside->f.diameter ||
+          AngleBetweenLines(w.axis.direction, outside->axis.direction) > A_ ||
+          DistanceToLine(w.axis.origin, outside->axis.origin, outside->axis.direction) > L_ ||
+          std::abs(w.axis.length - outside->axis.length) > L_ ||
+          AxialOverlap(w.axis, outside->axis) < w.axis.length - L_) {
+        continue;
+      }
+      bore = &w;
+    }
+    if (!bore) continue;
+    // Two flat faces or more at each end: the rings' ends, apart.
+    const Eigen::Vector3d& u = outside->axis.direction;
+    int at_start = 0, at_end = 0;
+    for (std::size_t f = 0; f < n; ++f) {
+      const WorldFeature& w = At({part, f});
+      if (w.f.kind != FeatureKind::kFace || AngleBetweenLines(w.axis.direction, u) > A_) continue;
+      const double along = (w.axis.origin - outside->axis.origin).dot(u);
+      at_start += std::abs(along) <= L_ ? 1 : 0;
+      at_end += std::abs(along - outside->axis.length) <= L_ ? 1 : 0;
+    }
+    if (at_start < 2 || at_end < 2) continue;
+    std::set<std::string> seats, turning;
+    for (Pair& p : pairs_) {
+      if (p.type != PairType::kCylindrical && p.type != PairType::kRevolute) continue;
+      const WorldFeature& s = At(p.a);
+      const WorldFeature& h = At(p.b);
+      if (s.ref == outside->ref && h.f.kind == FeatureKind::kHole &&
+          std::abs(s.f.diameter - h.f.diameter) <= L_) {
+        p.type = PairType::kFixed;
+        p.dof = 0;
+        p.source = PairSource::kBearing;
+        seats.insert(std::string(assembly_.PartId(h.ref.part)));
+      } else if (h.ref == bore->ref && s.f.kind == FeatureKind::kShaft) {
+        p.type = PairType::kRevolute;
+        p.dof = 1;
+        p.source = PairSource::kBearing;
+        turning.insert(std::string(assembly_.PartId(s.ref.part)));
+      }
+    }
+    if (seats.empty() && turning.empty()) continue;
+    std::vector<std::string> parts{std::string(assembly_.PartId(part))};
+    parts.insert(parts.end(), seats.begin(), seats.end());
+    parts.insert(parts.end(), turning.begin(), turning.end());
+    diagnostics_.push_back(
+        {Severity::kInfo,
+         "bearing",
+         fmt::format(
+             "a bearing modelled as one solid, {} x {} x {} mm: {}{}{}",
+             FormatNumber(bore->f.diameter), FormatNumber(outside->f.diameter),
+             FormatNumber(outside->axis.length), assembly_.PartId(part),
+             seats.empty() ? "" : fmt::format(" fitted (fixed) in {}", fmt::join(seats, " and ")),
+             turning.empty() ? ""
+                             : fmt::format(", {} turning in its bore (a revolute pair)",
+                                           fmt::join(turning, " and "))),
+         parts,
+         {Name(*outside), Name(*bore)}});
+  }
+}
+
+void Recognizer::FixHubsOnFlats() {
+  for (Pair& p : pairs_) {
+    if (p.type != PairType::kCylindrical || p.source != PairSource::kRecognised) continue;
+    const WorldFeature& s = At(p.a);
+    const WorldFeature& h = At(p.b);
+    if (s.f.kind != FeatureKind::kShaft || h.f.kind != FeatureKind::kHole) continue;
+    const Eigen::Vector3d& u = s.axis.direction;
+    const double r = s.f.diameter / 2;
+    // The hole's span along the shaft's axis.
+    const double h0 = (h.axis.origin - s.axis.origin).dot(u);
+    const double h1 = h0 + h.axis.length * h.axis.direction.dot(u);
+    const double lo = std::min(h0, h1), hi = std::max(h0, h1);
+    const WorldFeature* flat = nullptr;
+    for (std::size_t f = 0; f < assembly_.FeatureCount(s.ref.part) && !flat; ++f) {
+      const WorldFeature& w = At({s.ref.part, f});
+      if (w.f.kind != FeatureKind::kFace || std::abs(w.axis.direction.dot(u)) > std::sin(A_))
+        continue;
+      const Eigen::Vector3d d = w.axis.origin - s.axis.origin;
+      const double along = d.dot(u);
+      const double depth = r - (d - along * u).dot(w.axis.direction);  // cut below the surface
+      if (depth <= L_ || depth >= r) continue;
+      // Its extent along the axis: the face's width or height, whichever runs along it.
+      const double half = w.f.width > 0 ? std::max(w.f.width, w.f.height) / 2 : 0.0;
+      if (along + half > lo + L_ && along - half < hi - L_) flat = &w;
+    }
+    if (!flat) continue;
+    p.type = PairType::kFixed;
+    p.dof = 0;
+    p.source = PairSource::kShaftFlat;
+    diagnostics_.push_back(
+        {Severity::kInfo,
+         "shaft_flat",
+         fmt::format("{} sits on the flat {} of {}: fixed to it (the flat turns it: a setscrew "
+                     "or a D-shaped bore the file does not model; an override of type none "
+                     "forbids it)",
+                     assembly_.PartId(h.ref.part), Name(*flat), Name(s)),
+         {std::string(assembly_.PartId(h.ref.part)), std::string(assembly_.PartId(s.ref.part))},
+         {Name(s), Name(h), Name(*flat)}});
   }
 }
 

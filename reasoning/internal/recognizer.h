@@ -173,6 +173,20 @@ class Recognizer {
   /// size (bore x outside diameter x width, mm). Before the implied pins and the overrides.
   void AddBearings();
 
+  /// Bearings modelled as one solid (vendor parts): a part whose outside cylinder and bore
+  /// are coaxial and span the same length, with two flat faces or more at each end (the inner
+  /// ring's and the outer ring's: a washer or spacer has one). Fitted like a bearing: its
+  /// outside in a bore of its size is fixed there and a shaft in its bore turns (the
+  /// cylindrical pair becomes revolute: the bearing locates it along the axis), all source
+  /// bearing; one info `bearing` per such part. After AddBearings.
+  void AddSolidBearings();
+
+  /// A part on a shaft with a flat (a face of the shaft's part across the axis direction,
+  /// inside its radius, within the bore's span) cannot turn on it: a setscrew on the flat or a
+  /// D-shaped bore the file does not model. The cylindrical pair becomes fixed (source
+  /// shaft_flat), with one info `shaft_flat` per pair.
+  void FixHubsOnFlats();
+
   // ---- overrides and side effects (recognition_side_effects.cpp; the order of the
   // pairs in pair_recognition.cpp) ----
 

@@ -102,6 +102,77 @@ TEST(Bearing, BallsOffTheirCircleOrTooFewAreNoBearing) {
   EXPECT_EQ(CountSource(four, PairSource::kBearing), 5);
 }
 
+// A housing (ground) with a 10 mm bore, a ring 10 x 5 x 4 mm in it (its ends one flat face
+// each, or two: `rings`), and a 5 mm shaft through the ring; the shaft has a flat 0.5 mm deep
+// over z `flat_from` to `flat_from` + 6 (none when NaN).
+Assembly RingOnShaft(bool rings, double flat_from = std::nan("")) {
+  const std::string ends = rings ? R"(,
+      {"id": "outer_top", "kind": "face", "origin": [4, 0, 4], "axis": [0, 0, 1], "width": 2, "height": 2},
+      {"id": "inner_top", "kind": "face", "origin": [3, 0, 4], "axis": [0, 0, 1], "width": 1, "height": 1},
+      {"id": "outer_bottom", "kind": "face", "origin": [4, 0, 0], "axis": [0, 0, -1], "width": 2, "height": 2},
+      {"id": "inner_bottom", "kind": "face", "origin": [3, 0, 0], "axis": [0, 0, -1], "width": 1, "height": 1})"
+                                 : R"(,
+      {"id": "top", "kind": "face", "origin": [3.5, 0, 4], "axis": [0, 0, 1], "width": 2, "height": 2},
+      {"id": "bottom", "kind": "face", "origin": [3.5, 0, 0], "axis": [0, 0, -1], "width": 2, "height": 2})";
+  const std::string flat =
+      std::isnan(flat_from)
+          ? ""
+          : fmt::format(
+                R"(, {{"id": "flat", "kind": "face", "origin": [2, 0, {}], "axis": [1, 0, 0],
+                              "width": 3, "height": 6}})",
+                flat_from + 3);
+  return LoadAssemblyText(fmt::format(R"({{"mechanist": 1, "parts": [
+    {{"id": "housing", "ground": true, "features": [
+      {{"id": "bore", "kind": "hole", "origin": [0, 0, 0], "axis": [0, 0, 1], "diameter": 10,
+       "length": 4, "through": true}}]}},
+    {{"id": "ring", "features": [
+      {{"id": "outside", "kind": "shaft", "origin": [0, 0, 0], "axis": [0, 0, 1], "diameter": 10,
+       "length": 4}},
+      {{"id": "bore", "kind": "hole", "origin": [0, 0, 0], "axis": [0, 0, 1], "diameter": 5,
+       "length": 4, "through": true}}{}]}},
+    {{"id": "shaft", "features": [
+      {{"id": "shaft", "kind": "shaft", "origin": [0, 0, -10], "axis": [0, 0, 1], "diameter": 5,
+       "length": 30}}{}]}}]}})",
+                                      ends, flat),
+                          "ring.json");
+}
+
+TEST(Bearing, ARingWithBothRingsEndsIsABearingOfOneSolidAndTheShaftTurnsInIt) {
+  const Analysis bearing = Analyze(RingOnShaft(true));
+  for (const Pair& p : bearing.pairs) {
+    if (p.type == PairType::kPlanar) continue;
+    EXPECT_EQ(p.source, PairSource::kBearing);
+    const bool seat = p.b.part == 0;
+    EXPECT_EQ(p.type, seat ? PairType::kFixed : PairType::kRevolute);
+  }
+  const Diagnostic* info = Find(bearing, "bearing");
+  ASSERT_NE(info, nullptr);
+  EXPECT_NE(info->message.find("one solid, 5 x 10 x 4 mm: ring fitted (fixed) in housing, shaft "
+                               "turning in its bore"),
+            std::string::npos)
+      << info->message;
+  EXPECT_EQ(bearing.motion.mobility.dof, 1);
+  // A spacer (one face at each end) is no bearing: it turns in the housing, the shaft in it.
+  const Analysis spacer = Analyze(RingOnShaft(false));
+  EXPECT_EQ(Find(spacer, "bearing"), nullptr);
+  for (const Pair& p : spacer.pairs) EXPECT_EQ(p.type, PairType::kCylindrical);
+}
+
+TEST(Bearing, AHubOnAShaftsFlatIsFixedToIt) {
+  // The spacer on a shaft with a flat under its bore (z 0..4): fixed; a flat beside it: not.
+  const Analysis on = Analyze(RingOnShaft(false, -2));
+  const Diagnostic* flat = Find(on, "shaft_flat");
+  ASSERT_NE(flat, nullptr);
+  EXPECT_NE(flat->message.find("ring sits on the flat shaft/flat of shaft/shaft"),
+            std::string::npos)
+      << flat->message;
+  int fixed = 0;
+  for (const Pair& p : on.pairs) fixed += p.source == PairSource::kShaftFlat;
+  EXPECT_EQ(fixed, 1);
+  const Analysis beside = Analyze(RingOnShaft(false, 6));
+  EXPECT_EQ(Find(beside, "shaft_flat"), nullptr);
+}
+
 TEST(Bearing, TheFusionPendulumsSkf6002IsFoundWithItsNineBalls) {
   // Truth: a deep-groove ball bearing, 9 balls of r about 2.36 on a pitch circle of r about
   // 11.7, races of bore r 7.5 and outside r 16 (an SKF 6002: 15 x 32 x 9).
@@ -113,9 +184,13 @@ TEST(Bearing, TheFusionPendulumsSkf6002IsFoundWithItsNineBalls) {
   EXPECT_NE(bearing->message.find("15 x 32 x 9 mm"), std::string::npos) << bearing->message;
   EXPECT_NE(bearing->message.find("9 balls of 4.762 mm"), std::string::npos) << bearing->message;
   EXPECT_EQ(bearing->parts.size(), 11u);  // two rings and nine balls
+  // Its rings' revolute (the motor's two one-solid bearings give the others).
   const Pair* rings = nullptr;
   for (const Pair& p : an.pairs) {
-    if (p.source == PairSource::kBearing && p.type == PairType::kRevolute) rings = &p;
+    if (p.source == PairSource::kBearing && p.type == PairType::kRevolute &&
+        std::string(a.PartId(p.a.part)).find("SKF_6002") != std::string::npos) {
+      rings = &p;
+    }
   }
   ASSERT_NE(rings, nullptr);
   EXPECT_NE(std::string(a.PartId(rings->a.part)).find("SKF_6002_or_1_solid10"), std::string::npos);
@@ -131,6 +206,41 @@ TEST(Bearing, TheFusionPendulumsSkf6002IsFoundWithItsNineBalls) {
       EXPECT_EQ(part.find("SKF_6002"), std::string::npos) << part;
     }
   }
+  // Its rings are fitted: the outer in the arm's housing bore, the inner on the joint rod
+  // (both r 16 and r 7.5 without clearance), so the rod turns with the inner ring.
+  EXPECT_NE(bearing->message.find("its rings are fitted (fixed) to Assembly_v14.BarLink_v9_1 and "
+                                  "Assembly_v14.JointRod_v4_1"),
+            std::string::npos)
+      << bearing->message;
+}
+
+TEST(Bearing, ThePendulumsMotorBearingsAreOneSolidEachAndItsShaftTurnsInThem) {
+  // Truth: joint 1 is the arm turning about z with the stepper shaft; the motor's bearings are
+  // single solids (5 x 10 x 5.9, both rings' end faces apart), fitted in its end plates; the
+  // arm's hub sits on the shaft's flat.
+  const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) / "real" /
+                                  "rotary_pendulum_ball_bearing_fusion" / "Assembly.step");
+  const Analysis an = Analyze(a);
+  int solid = 0;
+  for (const Diagnostic& d : an.diagnostics) {
+    if (d.code != "bearing" ||
+        d.message.find("modelled as one solid, 5 x 10 x 5.9 mm") == std::string::npos) {
+      continue;
+    }
+    ++solid;
+    EXPECT_NE(d.message.find("Stepper_shaft_1 turning in its bore"), std::string::npos)
+        << d.message;
+  }
+  EXPECT_EQ(solid, 2);
+  int turns = 0, flats = 0;
+  for (const Pair& p : an.pairs) {
+    const std::string a_id(a.PartId(p.a.part));
+    if (a_id.find("Stepper_shaft") == std::string::npos) continue;
+    turns += p.type == PairType::kRevolute && p.source == PairSource::kBearing;
+    flats += p.source == PairSource::kShaftFlat;
+  }
+  EXPECT_EQ(turns, 2);
+  EXPECT_EQ(flats, 1);
 }
 
 }  // namespace
