@@ -40,6 +40,20 @@ void Recognizer::AddImpliedPins() {
     const FeatureKind k = assembly_.kind(p.a);
     if (k == FeatureKind::kShaft || k == FeatureKind::kThread) filled[Index(p.b)] = true;
   }
+  // A hole on the axis of a shaft or thread that runs through it (a bolt in a bearing's bore,
+  // whose seal recesses are holes too) holds no missing pin either.
+  std::vector<const WorldFeature*> rods;
+  for (const WorldFeature& w : features_) {
+    if (w.f.kind == FeatureKind::kShaft || w.f.kind == FeatureKind::kThread) rods.push_back(&w);
+  }
+  auto on_a_rod = [&](const WorldFeature& h) {
+    return std::any_of(rods.begin(), rods.end(), [&](const WorldFeature* r) {
+      return r->ref.part != h.ref.part &&
+             AngleBetweenLines(r->axis.direction, h.axis.direction) <= A_ &&
+             DistanceToLine(h.axis.origin, r->axis.origin, r->axis.direction) <= L_ &&
+             AxialOverlap(r->axis, h.axis) > L_;
+    });
+  };
   for (const auto& [x, y] : hole_candidates_) {
     if (filled[Index(x->ref)] || filled[Index(y->ref)]) continue;
     const double d_max = std::max(x->f.diameter, y->f.diameter);
@@ -51,7 +65,11 @@ void Recognizer::AddImpliedPins() {
         std::max(DistanceToLine(x->axis.origin, y->axis.origin, y->axis.direction),
                  DistanceToLine(y->axis.origin, x->axis.origin, x->axis.direction));
     if (angle > A_ || offset > L_) continue;
-    if (AxialOverlap(x->axis, y->axis) < -kMaxImpliedPinGap - L_) continue;
+    // The holes meet, or a pin bridges a gap of up to its diameter between them (knuckles
+    // spaced apart on one hinge rod).
+    const double gap = -AxialOverlap(x->axis, y->axis);
+    if (gap > std::max(kMaxImpliedPinGap, d_max) + L_) continue;
+    if (gap > kMaxImpliedPinGap + L_ && (on_a_rod(*x) || on_a_rod(*y))) continue;
     const bool x_first = NameLess(*x, *y);
     AddPair(PairType::kRevolute, x_first ? *x : *y, x_first ? *y : *x);
     pairs_.back().source = PairSource::kImpliedPin;

@@ -43,7 +43,8 @@ inline constexpr double kMaxLooseClearance = 0.1;
 inline constexpr double kMaxClearanceHoleRatio = 1.3;
 // Two coaxial empty holes of two parts are a pivot whose pin the file leaves out when their
 // diameters differ by at most this fraction of the larger (a press-fit bore and a running one)
-// and at most kMaxImpliedPinGap mm of axis lies between them (the parts' faces meet there).
+// and at most kMaxImpliedPinGap mm of axis lies between them (the parts' faces meet there), or
+// up to a diameter when no rod of another part runs along them (knuckles spaced on one rod).
 inline constexpr double kMaxImpliedPinDifference = 0.2;
 inline constexpr double kMaxImpliedPinGap = 0.5;
 inline constexpr double kMinThreadDiameterRatio = 0.6;
@@ -201,7 +202,8 @@ class Recognizer {
 
   /// Implied pins (README, "Real CAD exports"): a revolute pair between two holes of two
   /// parts that are collinear, of diameters within kMaxImpliedPinDifference, overlapping or at
-  /// most kMaxImpliedPinGap apart along the axis, when no shaft or thread sits in either: the
+  /// most kMaxImpliedPinGap apart along the axis (a diameter when no other part's shaft or
+  /// thread runs along them), when no shaft or thread sits in either: the
   /// hinge of two parts whose pin or screw the CAD file leaves out. Before the overrides, so
   /// that an override forbids or replaces one as any pair.
   void AddImpliedPins();

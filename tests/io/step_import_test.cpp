@@ -380,33 +380,40 @@ TEST(StepImport, TheRobotHandsFingerHingesTurnOnImpliedPins) {
   for (const auto& joint : truth["truth"]["joints"]) {
     if (joint["type"] != "revolute") continue;
     const std::string x = "Assembly_1." + joint["parts"][0].get<std::string>();
-    const std::string y = "Assembly_1." + joint["parts"][1].get<std::string>();
+    // "Ring1+Pinky1": both turn on that hinge.
+    std::vector<std::string> ys;
+    std::stringstream names(joint["parts"][1].get<std::string>());
+    for (std::string name; std::getline(names, name, '+');) ys.push_back("Assembly_1." + name);
     const Eigen::Vector3d u(joint["axis_direction"][0], joint["axis_direction"][1],
                             joint["axis_direction"][2]);
     const Eigen::Vector3d p(joint["axis_point_mm"][0], joint["axis_point_mm"][1],
                             joint["axis_point_mm"][2]);
-    bool hinge = false;
-    for (const Pair& pair : an.pairs) {
-      const std::string pa(a.PartId(pair.a.part)), pb(a.PartId(pair.b.part));
-      if (pair.type != PairType::kRevolute || !((pa == x && pb == y) || (pa == y && pb == x))) {
-        continue;
+    bool hinges = true;
+    for (const std::string& y : ys) {
+      bool hinge = false;
+      for (const Pair& pair : an.pairs) {
+        const std::string pa(a.PartId(pair.a.part)), pb(a.PartId(pair.b.part));
+        if (pair.type != PairType::kRevolute || !((pa == x && pb == y) || (pa == y && pb == x))) {
+          continue;
+        }
+        EXPECT_EQ(pair.source, PairSource::kImpliedPin) << x << " " << y;
+        const AxisSegment axis = a.feature(pair.a).WorldAxis(a.part(pair.a.part).X_WP);
+        // The truth's directions and points are given to two digits.
+        EXPECT_GT(std::abs(axis.direction.dot(u.normalized())), 0.999) << x << " " << y;
+        const Eigen::Vector3d d = p - axis.origin;
+        EXPECT_LT((d - d.dot(axis.direction) * axis.direction).norm(), 0.6) << x << " " << y;
+        hinge = true;
       }
-      EXPECT_EQ(pair.source, PairSource::kImpliedPin) << x << " " << y;
-      const AxisSegment axis = a.feature(pair.a).WorldAxis(a.part(pair.a.part).X_WP);
-      // The truth's directions and points are given to two digits.
-      EXPECT_GT(std::abs(axis.direction.dot(u.normalized())), 0.999) << x << " " << y;
-      const Eigen::Vector3d d = p - axis.origin;
-      EXPECT_LT((d - d.dot(axis.direction) * axis.direction).norm(), 0.6) << x << " " << y;
-      hinge = true;
+      hinges = hinges && hinge;
     }
-    (hinge ? found : missed).push_back(x + " " + y);
+    (hinges ? found : missed).push_back(x + " " + joint["parts"][1].get<std::string>());
   }
-  // 13 of the 15 finger hinges. Not found: the thumb's base (its M4 screw, 4 mm in 4.4 mm holes,
-  // is too thin to be a fit, and its nut lies between the holes) and the palm's fold (its holes'
-  // full-cylinder stretches stand 3.7 mm apart).
-  EXPECT_EQ(found.size(), 13u);
-  EXPECT_EQ(missed, (std::vector<std::string>{"Assembly_1.Palm Assembly_1.Ring1+Pinky1",
-                                              "Assembly_1.Palm Assembly_1.Thumb1"}));
+  // 14 of the 15 finger hinges, the palm's fold among them (its holes in the palm, Ring1 and
+  // Pinky1 stand 3.7 mm apart: a rod bridges gaps of up to its diameter). The thumb's base turns
+  // on its M4 screw (tested in real_exports_test) as a cylindrical pair: the screw, 4 mm in
+  // 4.4 mm holes, does not locate it along the axis.
+  EXPECT_EQ(found.size(), 14u);
+  EXPECT_EQ(missed, (std::vector<std::string>{"Assembly_1.Palm Thumb1"}));
 }
 
 // The Solid Edge export of ../shared/data/real with `from` replaced by `to`, written to

@@ -718,9 +718,17 @@ TEST(PairRecognition, CoaxialEmptyHolesOfTwoPartsAreAnImpliedPin) {
       << d->message;
   // The lever turns about the pin's axis: one freedom.
   EXPECT_EQ(Analyze(Hinge(3.45, 3.2)).motion.mobility.dof, 1);
-  // A small axial clearance between the faces is still a hinge; a gap is not.
+  // A small axial clearance between the faces is still a hinge, and so is a gap a rod of the
+  // holes' size bridges (knuckles spaced apart on one rod, as in the robot hand's palm); a gap
+  // wider than the holes is not.
   EXPECT_EQ(Recognize(Hinge(3.45, 3.2, 0.4)).pairs.size(), 2u);
-  EXPECT_TRUE(Recognize(Hinge(3.45, 3.2, 1.5)).pairs.empty());
+  EXPECT_EQ(Recognize(Hinge(3.45, 3.2, 1.5)).pairs.size(), 2u);
+  EXPECT_TRUE(Recognize(Hinge(1.2, 1.1, 1.5)).pairs.empty());
+  // A thinner rod on the axis (a bolt in a bearing's bore, whose recesses are holes too):
+  // nothing missing bridges the gap.
+  std::vector<Part> rod = Hinge(3.45, 3.2, 1.5).parts();
+  rod.push_back(MakePart("rod", {Shaft(2.0, 11, V(0, 0, -0.5))}));
+  EXPECT_FALSE(HasDiagnostic(Recognize(MakeAssembly(rod)), "implied_pin"));
   // Holes of unlike sizes are not one pivot (a 3 mm hole beside a 5 mm one).
   EXPECT_TRUE(Recognize(Hinge(5.0, 3.0)).pairs.empty());
   // With the pin modelled, the pin makes the pairs and no pin is implied.
