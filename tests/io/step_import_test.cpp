@@ -321,6 +321,30 @@ TEST(StepImport, HelicalGearsWithLoftedFlanksMeshWithOppositeHands) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(StepImport, ARackAndPinionFromStepSolidsMakeTheirPair) {
+  // Our own fixture: an 18-tooth pinion (module 2, B-spline flanks) on a 12-tooth rack whose
+  // faces are all planes. The rack's teeth are found on its tessellation as the pinion's are;
+  // one pinion turn moves it by pi m z = 36 pi mm.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_step_rack";
+  std::filesystem::create_directories(dir);
+  testing::WriteRackAndPinionStep(dir / "rack.step", 18, 2.0, 12);
+  const Assembly a = LoadAssembly(dir / "rack.step");
+  ASSERT_EQ(a.parts().size(), 2u);
+  const Analysis an = Analyze(a);
+  const Pair* pair = nullptr;
+  for (const Pair& p : an.pairs) {
+    if (p.type == PairType::kRackPinion) pair = &p;
+  }
+  ASSERT_NE(pair, nullptr);
+  const Feature& rack = a.feature(pair->b);
+  EXPECT_EQ(rack.kind, FeatureKind::kRack);
+  EXPECT_EQ(rack.module, 2.0);
+  EXPECT_NEAR(std::abs(a.part(pair->b.part).X_WP.RotateDirection(rack.axis).x()), 1.0, 1e-9);
+  EXPECT_EQ(a.feature(pair->a).teeth, 18);
+  EXPECT_NEAR(std::abs(*pair->travel_per_revolution), 36 * M_PI, 1e-6);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(StepImport, TheSolidWorksSpurPairMeshesAtMinusOneHalf) {
   // ../shared/data/real: SolidWorks Toolbox gears, flanks as many small cylinder patches; the
   // truth: 40 and 20 teeth, module 2, centre distance 60, ratio -1/2 from the pinion.

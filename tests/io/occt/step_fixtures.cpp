@@ -5,6 +5,7 @@
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
@@ -168,6 +169,41 @@ void WriteHelicalGearPairStep(const std::filesystem::path& file, int teeth_a, in
   builder.MakeCompound(all);
   builder.Add(all, HelicalGear(teeth_a, module, helix));
   builder.Add(all, b);
+  WriteStep(all, file);
+}
+
+void WriteRackAndPinionStep(const std::filesystem::path& file, int pinion_teeth, double module,
+                            int rack_teeth) {
+  // The rack: straight flanks at 20 degrees, addendum m above the pitch line y = 0, dedendum
+  // 1.25 m below it, its body down to y = -4.25 m, teeth centred on x = (k + 1/2) pi m.
+  const double m = module, pitch = M_PI * m, tan_flank = std::tan(20.0 * M_PI / 180.0);
+  const double tip_half = pitch / 4 - m * tan_flank, root_half = pitch / 4 + 1.25 * m * tan_flank;
+  const double length = rack_teeth * pitch;
+  BRepBuilderAPI_MakePolygon outline;
+  outline.Add(gp_Pnt(0, -4.25 * m, 0));
+  outline.Add(gp_Pnt(length, -4.25 * m, 0));
+  outline.Add(gp_Pnt(length, -1.25 * m, 0));
+  for (int k = rack_teeth - 1; k >= 0; --k) {
+    const double centre = (k + 0.5) * pitch;
+    outline.Add(gp_Pnt(centre + root_half, -1.25 * m, 0));
+    outline.Add(gp_Pnt(centre + tip_half, m, 0));
+    outline.Add(gp_Pnt(centre - tip_half, m, 0));
+    outline.Add(gp_Pnt(centre - root_half, -1.25 * m, 0));
+  }
+  outline.Add(gp_Pnt(0, -1.25 * m, 0));
+  outline.Close();
+  const TopoDS_Face face = BRepBuilderAPI_MakeFace(outline.Wire()).Face();
+  const TopoDS_Shape rack = BRepPrimAPI_MakePrism(face, gp_Vec(0, 0, 10)).Shape();
+  // The pinion above the rack's middle, its pitch circle on the pitch line.
+  gp_Trsf shift;
+  shift.SetTranslation(gp_Vec(length / 2, m * pinion_teeth / 2.0, 0));
+  const TopoDS_Shape pinion =
+      BRepBuilderAPI_Transform(SpurGear(pinion_teeth, module), shift, true).Shape();
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  builder.Add(all, rack);
+  builder.Add(all, pinion);
   WriteStep(all, file);
 }
 

@@ -33,6 +33,14 @@ void WriteSpurGearPairStep(const std::filesystem::path& file, int teeth_a, int t
 void WriteHelicalGearPairStep(const std::filesystem::path& file, int teeth_a, int teeth_b,
                               double module, double helix);
 
+/// Writes a STEP file (AP214, no product names) of a rack and pinion as a CAD system exports
+/// them: a straight rack of `rack_teeth` teeth along +x from x = 0 (20 degree flanks, pitch
+/// line y = 0, teeth toward +y, 10 mm face width from z = 0, all faces planes) and a spur gear
+/// of `pinion_teeth` as WriteSpurGearPairStep draws it, its axis along z through the rack's
+/// middle at y = m z / 2. Throws std::runtime_error when it cannot write.
+void WriteRackAndPinionStep(const std::filesystem::path& file, int pinion_teeth, double module,
+                            int rack_teeth);
+
 /// Copies the STEP assembly `in` to `out` with every surface of every solid converted to a
 /// B-spline (Open CASCADE's BRepBuilderAPI_NurbsConvert), keeping the product structure and
 /// names (XCAF reader and writer): a file as some exporters and healing steps write it.
