@@ -55,8 +55,9 @@ class UrdfWriter {
         const bool single = a.terms.size() == 1;
         std::string joints;
         for (const auto& [j, coefficient] : a.terms) {
-          const std::string sign = single || coefficient > 0 ? "" : "-";
-          fmt::format_to(std::back_inserter(joints), "{}{}{}", joints.empty() ? "" : " + ", sign,
+          const bool minus = !single && coefficient < 0;
+          fmt::format_to(std::back_inserter(joints), "{}{}",
+                         joints.empty() ? (minus ? "-" : "") : (minus ? " - " : " + "),
                          model_.joints[j].name);
         }
         const SimJoint& first = model_.joints[a.terms.front().first];

@@ -37,8 +37,8 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
   std::set<std::string> guessed_nuts;
   for (const Diagnostic& d : assembly.findings()) {
     if (d.code == "nut_on_bolt" && !d.features.empty()) guessed_nuts.insert(d.features.front());
-    if (d.code == "screw_in_plain_hole" && d.features.size() == 2) {
-      guessed_nuts.insert(d.features.back());
+    if (d.code == "screw_in_plain_hole") {  // the screw's thread, then every hole it tapped
+      guessed_nuts.insert(std::next(d.features.begin()), d.features.end());
     }
   }
   auto too_short = [&](FeatureRef thread, FeatureRef nut, double shortfall,

@@ -259,19 +259,19 @@ std::vector<Diagnostic> InferScrewsInPlainHoles(
     // the thread (it can only be threaded: a motor's long screws run through a tapped stator
     // into a tapped flange).
     std::vector<std::string> holes;  // the tip's first
+    std::vector<std::string> part_ids = {screw.id}, feature_names = {screw.id + "/" + thread.id};
     double pitch = 0.0;
     for (const Along& x : along) {
       Feature& hole = (*parts)[x.part].features[x.feature];
-      if (x.part != tip_hole.part && hole.diameter >= thread.diameter - length_tolerance) {
-        continue;
-      }
-      holes.push_back(fmt::format("'{}/{}' ({} mm)", (*parts)[x.part].id, hole.id,
-                                  FormatNumber(hole.diameter)));
+      const bool tip = x.part == tip_hole.part && x.feature == tip_hole.feature;
+      if (!tip && hole.diameter >= thread.diameter - length_tolerance) continue;
+      const std::string& id = (*parts)[x.part].id;
+      holes.push_back(fmt::format("'{}/{}' ({} mm)", id, hole.id, FormatNumber(hole.diameter)));
+      if (std::find(part_ids.begin(), part_ids.end(), id) == part_ids.end()) part_ids.push_back(id);
+      feature_names.push_back(id + "/" + hole.id);
       hole.diameter = thread.diameter;
       pitch = ScrewTight(&thread, &hole);
     }
-    const Part& into = (*parts)[tip_hole.part];
-    const std::string into_hole = into.features[tip_hole.feature].id;
     std::string message = fmt::format(
         "part '{}' (a head and a {} mm shank) ends in {}: taken as screwed into it, a tight "
         "thread of pitch {} mm (heuristic: the file models no thread)",
@@ -280,12 +280,7 @@ std::vector<Diagnostic> InferScrewsInPlainHoles(
       message += "; also threaded through";
       for (std::size_t k = 1; k < holes.size(); ++k) message += (k > 1 ? ", " : " ") + holes[k];
     }
-    found.push_back(
-        {Severity::kInfo,
-         "screw_in_plain_hole",
-         message,
-         {screw.id, into.id},
-         {fmt::format("{}/{}", screw.id, thread.id), fmt::format("{}/{}", into.id, into_hole)}});
+    found.push_back({Severity::kInfo, "screw_in_plain_hole", message, part_ids, feature_names});
   }
   return found;
 }

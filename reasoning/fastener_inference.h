@@ -35,7 +35,8 @@ std::vector<Diagnostic> InferNutsOnBolts(
 /// shank's diameter and the shank a tight thread (ISO coarse pitch), so that recognition fixes
 /// the screw there and clamps the parts whose holes it passes (a cover and its spacers on a
 /// housing); so does every other hole along the shank narrower than it (threaded through).
-/// Returns one info `screw_in_plain_hole` per screw. Only features for which `inferred(part,
+/// Returns one info `screw_in_plain_hole` per screw, naming the screw's thread and then every
+/// hole it tapped, the tip's first (its parts likewise). Only features for which `inferred(part,
 /// feature)` holds are reinterpreted, and a screw's part must have no written feature. Run after
 /// InferNutsOnBolts.
 std::vector<Diagnostic> InferScrewsInPlainHoles(

@@ -601,14 +601,20 @@ class Walker {
       s.notes = cached->second.notes;
       out_->push_back(std::move(s));
     }
+    // The instance's solids, one CAD part of several bodies: marked by the instance's number
+    // until the paths are unique (ReadSolids names it then).
+    ++instances_;
     if (index > 1) {
-      for (std::size_t k = first; k < out_->size(); ++k) (*out_)[k].body_of = path;
+      for (std::size_t k = first; k < out_->size(); ++k) {
+        (*out_)[k].body_of = std::to_string(instances_);
+      }
     }
   }
 
  private:
   Handle(XCAFDoc_ShapeTool) tool_;
   std::vector<StepSolid>* out_;
+  int instances_ = 0;  // product instances walked
   // A product's solid, converted once for all its instances.
   struct Definition {
     std::shared_ptr<const TriangleMesh> mesh;
@@ -767,6 +773,11 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
   std::map<std::string, int> count;
   for (StepSolid& s : solids) {
     if (++count[s.path] > 1) s.path += fmt::format("_{}", count[s.path]);
+  }
+  // The bodies of one instance take its first solid's (unique) path as their part's name.
+  std::map<std::string, std::string> first_path;
+  for (StepSolid& s : solids) {
+    if (!s.body_of.empty()) s.body_of = first_path.emplace(s.body_of, s.path).first->second;
   }
   return solids;
 }

@@ -358,7 +358,7 @@ struct SectionTeeth {
 // strongest frequency within 15%). A cheap look before the full profile.
 bool MayShowTeeth(const Outline& o, const Vector2d& centre) {
   constexpr int kBins = 1024;
-  std::vector<double> high(kBins, 0.0), low(kBins, 1e300);
+  std::vector<double> high(kBins, -1e300), low(kBins, 1e300);
   auto bin_of = [&](const Vector2d& q) {
     const double t = (std::atan2(q.y() - centre.y(), q.x() - centre.x()) + kPi) / (2 * kPi);
     return std::clamp(static_cast<int>(t * kBins), 0, kBins - 1);
@@ -376,7 +376,7 @@ bool MayShowTeeth(const Outline& o, const Vector2d& centre) {
   }
   auto teeth_like = [](const std::vector<double>& r) {
     const auto [lo, hi] = std::minmax_element(r.begin(), r.end());
-    if (*hi >= 1e299) return false;  // an angle no segment spans
+    if (*hi >= 1e299 || *lo <= -1e299) return false;  // an angle no segment spans
     const double m = (*hi - *lo) / 2.25;
     const bool standard = std::any_of(StandardModules().begin(), StandardModules().end(),
                                       [m](double s) { return std::abs(s - m) <= 0.06 * s; });

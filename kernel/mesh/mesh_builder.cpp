@@ -102,7 +102,7 @@ TriangleMesh ExtrudeRegion(const Region2d& region, double z0, double z1) {
 TriangleMesh ExtrudeTwistedRegion(const Region2d& region, double z0, double z1, double twist,
                                   int layers) {
   if (!(z0 < z1)) {
-    throw std::invalid_argument(fmt::format("ExtrudeRegion: z0 {} must be below z1 {}",
+    throw std::invalid_argument(fmt::format("ExtrudeTwistedRegion: z0 {} must be below z1 {}",
                                             std::to_string(z0), std::to_string(z1)));
   }
   if (layers < 1) {

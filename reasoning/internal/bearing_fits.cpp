@@ -298,7 +298,8 @@ void Recognizer::FixHubsOnFlats() {
       const double along = d.dot(u);
       const double depth = r - (d - along * u).dot(w.axis.direction);  // cut below the surface
       if (depth <= L_ || depth >= r) continue;
-      // Its extent along the axis: the face's width or height, whichever runs along it.
+      // Its extent along the axis: at most its larger extent (a face keeps no in-plane
+      // direction), taken whole.
       const double half = w.f.width > 0 ? std::max(w.f.width, w.f.height) / 2 : 0.0;
       if (along + half > lo + L_ && along - half < hi - L_) flat = &w;
     }

@@ -86,6 +86,8 @@ void Recognizer::BevelBevel(const WorldFeature& x, const WorldFeature& y) {
       std::acos(std::clamp(g1.axis.direction.dot(g2.axis.direction), -1.0, 1.0));
   const double angle_error = shaft_angle - (f1.pitch_angle + f2.pitch_angle);
   if (std::abs(angle_error) > near_A_) return;  // facing side gears of a differential
+  // Two crown gears face each other (90 + 90 degrees): their cones are one plane, no mesh.
+  if (f1.pitch_angle + f2.pitch_angle >= kPi - A_) return;
   if (!SameModule(f1.module, f2.module)) {
     Near("bevel_module_mismatch", g1, g2,
          fmt::format("modules differ: {} and {} (required equal)", Mm(f1.module), Mm(f2.module)));
@@ -111,13 +113,15 @@ void Recognizer::BevelBevel(const WorldFeature& x, const WorldFeature& y) {
                      Deg(f1.spiral_angle), Deg(f2.spiral_angle)));
     return;
   }
-  // Along the common pitch line each gear's teeth run from L - face width to L.
+  // Along the common pitch line each gear's teeth run from L - face width to L; mating gears
+  // end together (their pitch circles, m z / 2 = L sin(pitch angle), then roll at z1 : z2).
   const double L1 = f1.OuterConeDistance();
   const double L2 = f2.OuterConeDistance();
-  if (std::min(L1, L2) - std::max(L1 - f1.length, L2 - f2.length) <= L_) {
+  if (std::abs(L1 - L2) > L_ || std::min(L1, L2) - std::max(L1 - f1.length, L2 - f2.length) <= L_) {
     Near("bevel_cone_distance", g1, g2,
-         fmt::format("the teeth do not meet on the pitch line: outer cone distances {} = {} x {} "
-                     "/ (2 sin {}) and {} = {} x {} / (2 sin {}), face widths {} and {}",
+         fmt::format("the teeth do not end together on the pitch line: outer cone distances {} = "
+                     "{} x {} / (2 sin {}) and {} = {} x {} / (2 sin {}) (required equal), face "
+                     "widths {} and {}",
                      Mm(L1), FormatNumber(m), f1.teeth, Deg(f1.pitch_angle), Mm(L2),
                      FormatNumber(m), f2.teeth, Deg(f2.pitch_angle), Mm(f1.length), Mm(f2.length)));
     return;

@@ -87,7 +87,9 @@ TEST(ScrewsInPlainHoles, AHeadThatIsNoCylinderAndHolesDrilledAtTheTapSize) {
   parts[2].features[0].diameter = 3.3;
   const std::vector<Diagnostic> found = Infer(&parts);
   ASSERT_EQ(found.size(), 1u);
-  EXPECT_EQ(found[0].parts, (std::vector<std::string>{"screw", "housing"}));
+  EXPECT_EQ(found[0].parts, (std::vector<std::string>{"screw", "housing", "stator"}));
+  EXPECT_EQ(found[0].features,
+            (std::vector<std::string>{"screw/shank", "housing/hole", "stator/bore"}));
   EXPECT_NE(found[0].message.find("ends in 'housing/hole' (3.3 mm)"), std::string::npos)
       << found[0].message;
   EXPECT_NE(found[0].message.find("also threaded through 'stator/bore' (3.3 mm)"),

@@ -425,6 +425,16 @@ TEST(PairRecognition, BevelGearNearMissesNameWhatIsOff) {
   const Recognition cones = GearPair(pinion, Bevel(40, 45, V::UnitX()));
   EXPECT_TRUE(cones.pairs.empty());
   EXPECT_TRUE(HasDiagnostic(cones, "bevel_cone_distance", "28.2843 mm = 2 x 20 / (2 sin 45 deg)"));
+  // 12 and 20 teeth both at 45 degrees with wide faces that overlap: the pitch circles would
+  // roll at 1 : 1, not 12 : 20, so no pair either.
+  const Recognition unequal = GearPair(Bevel(12, 45, V::UnitZ(), V::Zero(), 2, 12),
+                                       Bevel(20, 45, V::UnitX(), V::Zero(), 2, 16));
+  EXPECT_TRUE(unequal.pairs.empty());
+  EXPECT_TRUE(HasDiagnostic(unequal, "bevel_cone_distance", "(required equal)"));
+  // Two crown gears facing each other: one plane, no mesh and nothing to say.
+  const Recognition crowns = GearPair(Bevel(30, 90, V::UnitZ()), Bevel(30, 90, -V::UnitZ()));
+  EXPECT_TRUE(crowns.pairs.empty());
+  EXPECT_EQ(NearMisses(crowns), 0u);
   Feature right = Bevel(20, 45, V::UnitZ()), also_right = Bevel(20, 45, V::UnitX());
   right.spiral_angle = also_right.spiral_angle = 35 * kPi / 180;
   EXPECT_TRUE(HasDiagnostic(GearPair(right, also_right), "bevel_spiral_mismatch", "35 deg"));
