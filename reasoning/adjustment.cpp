@@ -28,16 +28,6 @@ GoalFeatures Ordered(const Assembly& assembly, const Goal& goal) {
               : GoalFeatures{goal.features[0], goal.features[1]};
 }
 
-// The required centre distance of a mesh goal (gear pair, worm gear, rack and pinion), mm.
-double RequiredDistance(const Feature& a, const Feature& b) {
-  if (a.kind == FeatureKind::kWorm) return (a.pitch_diameter + a.module * b.teeth) / 2;
-  if (b.kind == FeatureKind::kRack) return a.PitchRadius();
-  // Helical gears mesh at the transverse module's distance.
-  const double m = a.module / std::cos(a.helix_angle);
-  if (a.internal || b.internal) return m * std::abs(a.teeth - b.teeth) / 2;
-  return m * (a.teeth + b.teeth) / 2;
-}
-
 // Appends the goal's residuals (mm) at `state` to `r`.
 void GoalResiduals(const Assembly& assembly, const AssemblyState& state, const Goal& goal,
                    std::vector<double>* r) {
@@ -63,7 +53,7 @@ void GoalResiduals(const Assembly& assembly, const AssemblyState& state, const G
     r->push_back(fa.OuterConeDistance() * (angle - fa.pitch_angle - fb.pitch_angle));
     return;
   }
-  const double required = RequiredDistance(fa, fb);
+  const double required = MeshCentreDistance(fa, fb);
   if (fa.kind == FeatureKind::kWorm || fb.kind == FeatureKind::kRack) {
     const LineLineClosest c = ClosestPointsOfLines(a.origin, a.direction, b.origin, b.direction);
     r->push_back(c.distance - required);
@@ -166,7 +156,7 @@ GoalError MeasureGoal(const Assembly& assembly, const AssemblyState& state, std:
     e.engaged = std::min(La, Lb) - std::max(La - fa.length, Lb - fb.length) > L;
   } else if (fa.kind == FeatureKind::kWorm || fb.kind == FeatureKind::kRack) {
     const LineLineClosest c = ClosestPointsOfLines(a.origin, a.direction, b.origin, b.direction);
-    e.distance = c.distance - RequiredDistance(fa, fb);
+    e.distance = c.distance - MeshCentreDistance(fa, fb);
     e.angle = std::abs(M_PI / 2 - angle);
     if (fb.kind == FeatureKind::kRack) {
       const Eigen::Vector3d n_W = state.X_WP[g.second.part].RotateDirection(fb.normal);
@@ -177,7 +167,7 @@ GoalError MeasureGoal(const Assembly& assembly, const AssemblyState& state, std:
     e.engaged = c.s >= -L && c.s <= a.length + L && c.t >= -L && c.t <= b.length + L;
   } else {
     const Eigen::Vector3d mid_b = b.origin + 0.5 * b.length * b.direction;
-    e.distance = DistanceToLine(mid_b, a.origin, a.direction) - RequiredDistance(fa, fb);
+    e.distance = DistanceToLine(mid_b, a.origin, a.direction) - MeshCentreDistance(fa, fb);
     e.angle = angle;
     e.axial = (mid_b - (a.origin + 0.5 * a.length * a.direction)).dot(a.direction);
     e.engaged = AxialOverlap(a, b) > L;

@@ -31,19 +31,6 @@ Target TargetOf(const AssemblySpec& spec, FeatureRef ref) {
   return {&f, q.X_WP, q.X_WP * f.origin, q.X_WP.RotateDirection(f.axis)};
 }
 
-double CentreDistance(const Feature& own, const Feature& target) {
-  if (own.kind == FeatureKind::kWorm) return (own.pitch_diameter + own.module * target.teeth) / 2;
-  if (target.kind == FeatureKind::kWorm) {
-    return (target.pitch_diameter + target.module * own.teeth) / 2;
-  }
-  if (own.kind == FeatureKind::kRack) return target.PitchRadius();
-  if (target.kind == FeatureKind::kRack) return own.PitchRadius();
-  // Helical gears mesh at the transverse module's distance.
-  const double m = own.module / std::cos(own.helix_angle);
-  if (own.internal || target.internal) return m * std::abs(own.teeth - target.teeth) / 2;
-  return m * (own.teeth + target.teeth) / 2;
-}
-
 // The shortest rotation taking unit u to unit v; for opposite vectors the half turn about the
 // part's x axis made perpendicular to u (its y when x is along u), so that the choice is the
 // same on every machine.
@@ -102,7 +89,7 @@ MeshGoal MeshTarget(const Part& part, const PlacementCondition& c, const Target&
     g.mid = t.origin + 0.5 * own.length * g.axis;
     return g;
   }
-  const double a = CentreDistance(own, tf);
+  const double a = MeshCentreDistance(own, tf);
   if (is(tf, FeatureKind::kRack)) {  // a pinion on a rack, at the rack's middle
     const Vector3d n = t.X_WQ.RotateDirection(tf.normal).normalized();
     g.axis = t.axis.cross(n);

@@ -1,5 +1,7 @@
 #include "kernel/features/feature.h"
 
+#include <cmath>
+
 #include "kernel/support/enum_names.h"
 
 namespace mechanist {
@@ -44,6 +46,16 @@ bool IsConvex(FeatureKind kind) {
     default:
       return false;
   }
+}
+
+double MeshCentreDistance(const Feature& a, const Feature& b) {
+  if (a.kind == FeatureKind::kWorm) return (a.pitch_diameter + a.module * b.teeth) / 2;
+  if (b.kind == FeatureKind::kWorm) return (b.pitch_diameter + b.module * a.teeth) / 2;
+  if (a.kind == FeatureKind::kRack) return b.PitchRadius();
+  if (b.kind == FeatureKind::kRack) return a.PitchRadius();
+  const double m = a.module / std::cos(a.helix_angle);  // helical: the transverse module
+  if (a.internal || b.internal) return m * std::abs(a.teeth - b.teeth) / 2;
+  return m * (a.teeth + b.teeth) / 2;
 }
 
 bool IsConcave(FeatureKind kind) {

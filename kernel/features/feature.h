@@ -103,4 +103,11 @@ struct Feature {
   AxisSegment LocalAxis() const { return {origin, axis, length}; }
 };
 
+/// mm: the distance at which two features mesh, in either order: a worm's axis from its
+/// wheel's, (pitch_diameter + m z) / 2; a pinion's axis from a rack's pitch line, its pitch
+/// radius; two gears' axes, m' (z1 + z2) / 2, or m' |z1 - z2| / 2 for an internal pair, with
+/// the first gear's transverse module m' = m / cos(helix). Bevel gears have none (they share
+/// an apex).
+double MeshCentreDistance(const Feature& a, const Feature& b);
+
 }  // namespace mechanist

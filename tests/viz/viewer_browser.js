@@ -40,7 +40,8 @@ function fail(message) {
     if (!url.startsWith("data:") && url !== "file://" + path.resolve(page_file)) requests.push(url);
   });
   await page.goto("file://" + path.resolve(page_file), { waitUntil: "load" });
-  await page.waitForFunction(() => window.mechanist !== undefined, { timeout: 20000 });
+  // Generous: swiftshader on a 2-core machine busy with other tests can take 20 s to start.
+  await page.waitForFunction(() => window.mechanist !== undefined, { timeout: 90000 });
   if (errors.length) fail("console errors: " + errors.join(" | "));
   if (requests.length) fail("network requests: " + requests.join(" "));
   console.log("ok loads with no console error and no network request");
