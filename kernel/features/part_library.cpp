@@ -478,6 +478,7 @@ LibraryPart MakeExternalGear(int teeth, double module, double face_width, double
   const double cos_helix = std::cos(helix_angle);
   const double transverse = module / cos_helix;
   const int segments = CircleSegments(requested_segments, transverse * teeth + 2 * module);
+  // A spur gear keeps its pressure angle bit for bit (atan(tan a) may differ in the last bit).
   const double transverse_pressure =
       helix_angle == 0.0 ? pressure_angle : std::atan(std::tan(pressure_angle) / cos_helix);
   Region2d region{InvoluteOutline({teeth, transverse, transverse_pressure, module, 1.25 * module,

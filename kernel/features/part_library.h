@@ -135,7 +135,7 @@ struct SpurGearSpec {
   double bore_diameter = 0.0;  ///< 0: no bore
   double pressure_angle = 0.3490658503988659;
   int segments = 0;
-  double helix_angle = 0.0;
+  double helix_angle = 0.0;  ///< radians, positive right-hand; 0: a spur gear
 };
 
 /// Ring (internal) gear: involute tooth spaces cut into a ring of `outer_diameter`, z in
