@@ -231,7 +231,7 @@ class MjcfWriter {
       const SimJoint& j = model_.joints[a.terms.front().first];
       const double kv = InertiaAbout(j) / kDriveTimeConstant;
       const bool single = a.terms.size() == 1;
-      const double rate = single ? a.terms.front().second * a.rate : a.rate;
+      const double rate = a.ActingRate();
       actuators << "    "
                 << XmlComment(fmt::format("driver {}: {} {}{}", d.id, Number(rate),
                                           j.kind == SimJoint::Kind::kSlide ? "m/s" : "rad/s",

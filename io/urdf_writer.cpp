@@ -63,7 +63,7 @@ class UrdfWriter {
         const SimJoint& first = model_.joints[a.terms.front().first];
         out_ << XmlComment(fmt::format("driver {}: {} {} at {} {}{}", d.id,
                                        single ? "joint" : "the sum of joints", joints,
-                                       Number(single ? a.terms.front().second * a.rate : a.rate),
+                                       Number(a.ActingRate()),
                                        first.kind == SimJoint::Kind::kSlide ? "m/s" : "rad/s",
                                        a.rate == 0.0 ? " (held)" : ""))
              << "\n";

@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "kernel/features/feature_recognition.h"
 #include "kernel/geometry/line_geometry.h"
@@ -44,19 +45,24 @@ double ScrewTight(Feature* shaft, Feature* hole) {
   return pitch;
 }
 
-// The largest distance of the mesh's vertices from the line (origin, unit direction), and their
-// extent along it: how wide and how long a part is about an axis (mm).
+// The mesh's vertices about the line (origin, unit direction): each one's distance along it
+// and from it, and their largest distance from it and extent along it: how wide and how long a
+// part is about an axis (mm).
 struct Girth {
   double radius = 0.0, lo = 0.0, hi = 0.0;
+  std::vector<std::pair<double, double>> vertices;  // (along, from the line)
 };
 
 Girth GirthAbout(const TriangleMesh& mesh, const Eigen::Vector3d& origin,
                  const Eigen::Vector3d& direction) {
-  Girth g{0.0, std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  Girth g{
+      0.0, std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), {}};
+  g.vertices.reserve(mesh.vertices.size());
   for (const Eigen::Vector3d& v : mesh.vertices) {
     const Eigen::Vector3d d = v - origin;
-    const double s = d.dot(direction);
-    g.radius = std::max(g.radius, (d - s * direction).norm());
+    const double s = d.dot(direction), r = (d - s * direction).norm();
+    g.vertices.emplace_back(s, r);
+    g.radius = std::max(g.radius, r);
     g.lo = std::min(g.lo, s), g.hi = std::max(g.hi, s);
   }
   return g;
@@ -185,22 +191,18 @@ std::vector<Diagnostic> InferScrewsInPlainHoles(
       // (what is wider than the shank), the other end no wider than the shank (a chamfered or
       // rolled tip).
       auto end_width = [&](bool at_hi) {
-        double r = 0.0;
-        for (const Eigen::Vector3d& v : screw.mesh->vertices) {
-          const Eigen::Vector3d d = v - a.origin;
-          const double s = d.dot(a.direction);
+        double width = 0.0;
+        for (const auto& [s, r] : girth.vertices) {
           if (at_hi ? s >= girth.hi - thread.diameter : s <= girth.lo + thread.diameter) {
-            r = std::max(r, (d - s * a.direction).norm());
+            width = std::max(width, 2 * r);
           }
         }
-        return 2 * r;
+        return width;
       };
       auto wide_length = [&](bool at_hi) {  // from that end, how far the part is wider
         double length = 0.0;
-        for (const Eigen::Vector3d& v : screw.mesh->vertices) {
-          const Eigen::Vector3d d = v - a.origin;
-          const double s = d.dot(a.direction);
-          if ((d - s * a.direction).norm() > 0.6 * thread.diameter + length_tolerance) {
+        for (const auto& [s, r] : girth.vertices) {
+          if (r > 0.6 * thread.diameter + length_tolerance) {
             length = std::max(length, at_hi ? girth.hi - s : s - girth.lo);
           }
         }

@@ -95,6 +95,10 @@ struct SimActuator {
   std::vector<std::pair<std::size_t, double>> terms;
   double rate = 0.0;   ///< rad/s or m/s; 0 for a held driver
   std::string reason;  ///< why there are no joints
+
+  /// rad/s or m/s: what the actuator runs at, its one joint's rate in that joint's own sense,
+  /// or the rate of the sum of its terms.
+  double ActingRate() const { return terms.size() == 1 ? terms.front().second * rate : rate; }
 };
 
 /// The analysed mechanism as a simulator sees it: links, a spanning tree of joints from the

@@ -26,6 +26,8 @@ struct Expected {
   // discs and pin rings, screws taken as screwed into plain holes, loose-fit pairs. No file
   // has a spring.
   int cycloid_features = 0, plain_hole_screws = 0, loose_fits = 0;
+  // Bearings modelled as one solid (the `bearing` findings that say so).
+  int solid_bearings = 0;
 };
 
 std::vector<Expected> Cases() {
@@ -45,6 +47,8 @@ std::vector<Expected> Cases() {
        "Assembly_1._C_V",
        {"axes_not_collinear: Assembly_1.p____V", "free_motion: Assembly_1.__V_4"},
        0,
+       10,
+       0,
        10},
       // Every finger hinge is found (the palm's fold included), so no warning. The thumb's M4
       // pivot screw ends in its nut's hole (drawn at the minor diameter).
@@ -55,7 +59,9 @@ std::vector<Expected> Cases() {
        "Assembly_v14.base_link_v4_1.NEMA_v6_1.Middle_part_1",
        {"part_unconnected: Assembly_v14.base_link_v4_1.NEMA_v6_1.JST-S6B-PH-K-S_1"},
        0,
-       4},
+       4,
+       0,
+       2},
       // The file has the two gears and no shafts: the pinion meshes with the gear taken as
       // ground but nothing holds its axis.
       {"spur_pair_20T_40T_solidworks/ISO standard Spur Gear Drive (2-1 ratio).STEP",
@@ -102,6 +108,11 @@ TEST_P(RealExports, GroundAndWarningsAreTheOnesADesignerActsOn) {
   EXPECT_EQ(cycloid_features, e.cycloid_features);
   EXPECT_EQ(CountCode(a, "screw_in_plain_hole"), e.plain_hole_screws);
   EXPECT_EQ(loose_fits, e.loose_fits);
+  const int solid_bearings = static_cast<int>(
+      std::count_if(an.diagnostics.begin(), an.diagnostics.end(), [](const Diagnostic& d) {
+        return d.code == "bearing" && d.message.find("modelled as one solid") != std::string::npos;
+      }));
+  EXPECT_EQ(solid_bearings, e.solid_bearings);
 }
 
 TEST(RealExports, TheRobotHandsThumbTurnsOnItsPivotScrew) {
