@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
+#include <new>
 #include <vector>
 
 #include "cli/commands.h"
@@ -71,6 +72,12 @@ int main(int argc, char** argv) {
     }
   } catch (const mechanist::InputError& e) {
     std::cerr << "mechanist: error: " << e.what() << "\n";
+    return kExitUsage;
+  } catch (const std::bad_alloc&) {
+    // Past the readers' own estimate (io/internal/memory_budget.h): still the user's to act on.
+    std::cerr << "mechanist: error: " << file
+              << ": ran out of memory working on it; the input is too large for the memory "
+                 "this process may use\n";
     return kExitUsage;
   } catch (const std::exception& e) {
     std::cerr << "mechanist: internal error: " << e.what() << "\n";

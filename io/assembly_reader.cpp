@@ -20,6 +20,7 @@
 
 #include "io/input_error.h"
 #include "io/internal/json_source.h"
+#include "io/internal/memory_budget.h"
 #include "io/mesh_reader.h"
 #include "io/step_reader.h"
 #include "kernel/features/part_library.h"
@@ -27,6 +28,16 @@
 
 namespace mechanist {
 namespace {
+
+// ReadStep, once the memory it takes is known to be there.
+std::vector<StepSolid> ImportStep(const std::filesystem::path& file,
+                                  std::vector<StepMessage>* messages) {
+  if (const auto shortfall = internal::MemoryShortfall(
+          internal::ReadingNeed(file, internal::kStepBytesPerFileByte), "a STEP file")) {
+    throw std::runtime_error(*shortfall);
+  }
+  return ReadStep(file, messages);
+}
 
 using Json = nlohmann::ordered_json;
 using internal::JoinPointer;
@@ -421,7 +432,7 @@ class Reader {
     std::vector<StepSolid> solids;
     std::vector<StepMessage> messages;
     try {
-      solids = mechanist::ReadStep((dir_ / relative).lexically_normal(), &messages);
+      solids = ImportStep((dir_ / relative).lexically_normal(), &messages);
     } catch (const std::exception& e) {
       Fail(p, fmt::format("cannot import \"{}\": {}", relative, e.what()));
     }
@@ -539,7 +550,7 @@ class Reader {
     std::vector<StepSolid> solids;
     std::vector<StepMessage> messages;
     try {
-      solids = mechanist::ReadStep((dir_ / relative).lexically_normal(), &messages);
+      solids = ImportStep((dir_ / relative).lexically_normal(), &messages);
     } catch (const std::exception& e) {
       Fail(pointer, fmt::format("cannot use mesh \"{}\": {}", relative, e.what()));
     }
@@ -1397,6 +1408,10 @@ class Reader {
 std::string ReadText(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file.string(), "", 0, 0, "cannot open the file for reading");
+  if (const auto shortfall = internal::MemoryShortfall(
+          internal::ReadingNeed(file, internal::kJsonBytesPerFileByte), "an assembly file")) {
+    throw InputError(file.string(), "", 0, 0, *shortfall);
+  }
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(file.string(), "", 0, 0, "error while reading the file");

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "io/input_error.h"
+#include "io/internal/memory_budget.h"
 
 namespace mechanist {
 namespace {
@@ -850,8 +851,9 @@ std::vector<PlyRole> PlyRoles(const PlyElement& element, const Source& source) {
     constexpr std::array<std::pair<const char*, PlyRole>, 3> kAxes = {
         {{"x", PlyRole::kX}, {"y", PlyRole::kY}, {"z", PlyRole::kZ}}};
     for (const auto& [name, role] : kAxes) {
+      const char* axis = name;  // clang 14 cannot capture a binding
       const auto it = std::find_if(element.properties.begin(), element.properties.end(),
-                                   [&](const PlyProperty& p) { return p.name == name; });
+                                   [axis](const PlyProperty& p) { return p.name == axis; });
       if (it == element.properties.end() || it->length_type) {
         source.Fail(element.line, 0,
                     fmt::format("expected a scalar property '{}' in element 'vertex', found {}",
@@ -960,6 +962,10 @@ std::string ReadFile(const std::filesystem::path& path, const Source& source) {
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) source.Fail(0, 0, "cannot open the file for reading");
+  if (const auto shortfall = internal::MemoryShortfall(
+          internal::ReadingNeed(path, internal::kMeshBytesPerFileByte), "a mesh file")) {
+    source.Fail(0, 0, *shortfall);
+  }
   std::string data(std::filesystem::file_size(path, error), '\0');
   if (error || !in.read(data.data(), static_cast<std::streamsize>(data.size()))) {
     source.Fail(0, 0, "cannot read the file");

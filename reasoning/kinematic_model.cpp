@@ -218,7 +218,7 @@ void KinematicModel::AddFreedoms(std::size_t joint) {
         break;
     }
   }
-  j.freedoms = std::views::iota(first, freedoms_.size());
+  j.freedoms = {first, freedoms_.size()};
 }
 
 void KinematicModel::BuildTree() {

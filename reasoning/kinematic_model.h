@@ -4,13 +4,13 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
-#include <ranges>
 #include <string>
 #include <vector>
 
 #include "kernel/assembly/assembly.h"
 #include "kernel/assembly/diagnostic.h"
 #include "kernel/support/compressed_rows.h"
+#include "kernel/support/index_range.h"
 #include "reasoning/exact_real.h"
 #include "reasoning/linear_system.h"
 #include "reasoning/pair.h"
@@ -38,7 +38,7 @@ struct Joint {
   std::size_t body_a = 0, body_b = 0;
   /// Unknown indices, when the joint is in the tree: consecutive, so a range rather than a
   /// list (no allocation per joint).
-  std::ranges::iota_view<std::size_t, std::size_t> freedoms;
+  IndexRange freedoms;
   bool in_tree = false;
   std::size_t child = 0;  ///< in the tree: the body it holds to its parent
   Eigen::Vector3d point_W = Eigen::Vector3d::Zero();  ///< on its axis (or the ball's centre)

@@ -14,6 +14,7 @@ packages=(
   libocct-modeling-data-dev libocct-foundation-dev
   libmujoco-dev liburdfdom-tools
   libjs-three chromium
+  clang libclang-rt-14-dev
 )
 
 missing=()

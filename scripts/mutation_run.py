@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Feeds mechanist mutated inputs and counts how it ends: every run must exit with 0, 1 or 2.
 
-Usage: scripts/mutation_run.py [--step N] [--json N] [--seed S] [--mechanist PATH] [--keep DIR]
+Usage: scripts/mutation_run.py [--step N] [--json N] [--seed S] [--jobs J] [--mechanist PATH]
+                               [--keep DIR]
 
 Mutates STEP files of ../shared/data (AS1 and the smaller real exports) and the examples'
 assembly files and meshes the way damaged files look: bytes flipped, ranges deleted or
@@ -13,6 +14,7 @@ exit codes counted and every run that ended otherwise (a signal, a time-out, exi
 """
 import argparse
 import collections
+import concurrent.futures
 import os
 import random
 import re
@@ -73,47 +75,56 @@ def run(mechanist, path):
     return results
 
 
+def make_mutant(rng, family, folder, examples):
+    """Writes one mutant into its own folder; returns the file to run and the file mutated."""
+    os.makedirs(folder)
+    if family == "step":
+        source = os.path.join(SHARED, rng.choice(STEP_SOURCES))
+        data, kind = mutate(open(source, "rb").read(), rng, True)
+        path = os.path.join(folder, "mutant.stp")
+        open(path, "wb").write(data)
+        return path, path, kind
+    target = os.path.join(folder, "example")
+    shutil.copytree(os.path.join(ROOT, "examples", rng.choice(examples)), target)
+    files = sorted(os.path.join(dp, f) for dp, _, fs in os.walk(target) for f in fs
+                   if f.endswith((".json", ".stl", ".obj", ".ply", ".off")))
+    victim = rng.choice(files)
+    data, kind = mutate(open(victim, "rb").read(), rng, False)
+    open(victim, "wb").write(data)
+    return os.path.join(target, "assembly.json"), victim, kind
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--step", type=int, default=1000)
     parser.add_argument("--json", type=int, default=1000)
     parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--jobs", type=int, default=1, help="mutants run at once")
     parser.add_argument("--mechanist", default=os.path.join(ROOT, "build", "cli", "mechanist"))
     parser.add_argument("--keep")
     args = parser.parse_args()
     rng = random.Random(args.seed)
     work = tempfile.mkdtemp(prefix="mechanist_mutants_")
-    counts = collections.Counter()
-    bad = []
     examples = sorted(d for d in os.listdir(os.path.join(ROOT, "examples")))
     plan = [("step", k) for k in range(args.step)] + [("json", k) for k in range(args.json)]
-    for n, (family, k) in enumerate(plan):
-        if family == "step":
-            source = os.path.join(SHARED, rng.choice(STEP_SOURCES))
-            data, kind = mutate(open(source, "rb").read(), rng, True)
-            path = os.path.join(work, "mutant.stp")
-            open(path, "wb").write(data)
-        else:
-            example = os.path.join(ROOT, "examples", rng.choice(examples))
-            target = os.path.join(work, "example")
-            shutil.rmtree(target, ignore_errors=True)
-            shutil.copytree(example, target)
-            files = [os.path.join(dp, f) for dp, _, fs in os.walk(target) for f in fs
-                     if f.endswith((".json", ".stl", ".obj", ".ply", ".off"))]
-            victim = rng.choice(files)
-            data, kind = mutate(open(victim, "rb").read(), rng, False)
-            open(victim, "wb").write(data)
-            path = os.path.join(target, "assembly.json")
-        for command, code, err in run(args.mechanist, path):
-            counts[(family, command, code)] += 1
-            if code not in (0, 1, 2):
-                bad.append((family, k, kind, command, code, err))
-                if args.keep:
-                    os.makedirs(args.keep, exist_ok=True)
-                    keep = os.path.join(args.keep, "%s_%d%s" % (family, k, os.path.splitext(path)[1]))
-                    shutil.copy(path if family == "step" else victim, keep)
-        if sys.stderr.isatty():
-            sys.stderr.write("\r%d/%d" % (n + 1, len(plan)))
+    # The mutants are made in order (a seed gives the same mutants whatever --jobs is), then run.
+    mutants = [(family, k) + make_mutant(rng, family, os.path.join(work, str(n)), examples)
+               for n, (family, k) in enumerate(plan)]
+    counts = collections.Counter()
+    bad = []
+    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        runs = pool.map(lambda m: run(args.mechanist, m[2]), mutants)
+        for n, ((family, k, path, victim, kind), results) in enumerate(zip(mutants, runs)):
+            for command, code, err in results:
+                counts[(family, command, code)] += 1
+                if code not in (0, 1, 2):
+                    bad.append((family, k, kind, command, code, err))
+                    if args.keep:
+                        os.makedirs(args.keep, exist_ok=True)
+                        keep = os.path.join(args.keep, "%s_%d%s" % (family, k, os.path.splitext(victim)[1]))
+                        shutil.copy(victim, keep)
+            if sys.stderr.isatty():
+                sys.stderr.write("\r%d/%d" % (n + 1, len(plan)))
     if sys.stderr.isatty():
         sys.stderr.write("\n")
     shutil.rmtree(work, ignore_errors=True)

@@ -677,21 +677,25 @@ class MessageCapture {
 };
 
 // While alive, Open CASCADE's handlers catch the signals of a crash (segmentation and bus
-// faults, illegal instructions, floating-point traps) where no other handler is set (a
-// sanitizer's stays), on a stack of their own, so that an endless recursion (an edge loop of a
-// damaged file that refers to itself) is caught too; the previous handlers and stack come back
-// on destruction.
+// faults, illegal instructions, floating-point traps), on a stack of their own, so that an
+// endless recursion (an edge loop of a damaged file that refers to itself) is caught too. They
+// replace whatever handler was set (a sanitizer's or a fuzzer's too: a crash of Open CASCADE
+// on a damaged file is bad input there as well, and the sanitizers' own reports do not come
+// by these signals); the previous handlers and stack come back on destruction.
 class SignalsAsExceptions {
  public:
   SignalsAsExceptions() : stack_(kStackSize) {
-    for (std::size_t k = 0; k < kSignals.size(); ++k) sigaction(kSignals[k], nullptr, &saved_[k]);
+    for (std::size_t k = 0; k < kSignals.size(); ++k) {
+      struct sigaction fallback {};
+      fallback.sa_handler = SIG_DFL;
+      sigaction(kSignals[k], &fallback, &saved_[k]);
+    }
     OSD::SetSignal(OSD_SignalMode_SetUnhandled, Standard_False);
     stack_t alternate{};
     alternate.ss_sp = stack_.data();
     alternate.ss_size = stack_.size();
     sigaltstack(&alternate, &saved_stack_);
     for (std::size_t k = 0; k < kSignals.size(); ++k) {
-      if (saved_[k].sa_handler != SIG_DFL) continue;  // not Open CASCADE's: left as it is
       struct sigaction action;
       sigaction(kSignals[k], nullptr, &action);
       action.sa_flags |= SA_ONSTACK;

@@ -268,7 +268,8 @@ double FreeHeight(const std::vector<Triangle>& tris, int axis, const Eigen::Vect
         return t.p[0][axis] -
                (t.n[u] * (q[0] - t.p[0][u]) + t.n[v] * (q[1] - t.p[0][v])) / t.n[axis];
       };
-      const auto [lo_h, hi_h] = std::minmax(height(pa), height(pb));
+      // The list form: the pair form would return references to the temporaries.
+      const auto [lo_h, hi_h] = std::minmax({height(pa), height(pb)});
       from = std::max(from, lo_h);
       to = std::min(to, hi_h);
     }

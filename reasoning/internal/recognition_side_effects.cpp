@@ -246,7 +246,8 @@ std::set<std::pair<std::size_t, std::size_t>> Recognizer::UnclampedParts(
   }
   std::map<std::size_t, std::set<std::size_t>> nuts;  // thread -> every part it is fixed in
   for (const Screwed& s : tight_) nuts[s.thread].insert(s.hole.part);
-  for (const auto& [thread, parts] : passes) {
+  for (const auto& [thread, through] : passes) {
+    const std::set<std::size_t>& parts = through;  // clang 14 cannot capture a binding
     const WorldFeature& t = features_[thread];
     // Where the stack is pressed from: the head, and every nut (a rod has one at each end).
     std::set<std::size_t> ends = nuts[thread];

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -90,6 +91,67 @@ TEST(Cli, ReadingThatTakesTooLongEndsWithTwo) {
             std::string::npos)
       << run.out;
   EXPECT_EQ(Mechanist("--read-timeout -1 validate " + hand).exit_code, 2);
+}
+
+// A binary STL declaring `triangles` triangles, of the size they take (50 bytes each after an
+// 84-byte header), written sparse: the file takes no room on the disk.
+std::filesystem::path SparseStl(const std::filesystem::path& file, std::uint32_t triangles) {
+  {
+    std::ofstream out(file, std::ios::binary);
+    char header[84] = {};
+    std::memcpy(header + 80, &triangles, sizeof triangles);
+    out.write(header, sizeof header);
+  }
+  std::filesystem::resize_file(file, 84 + 50ull * triangles);
+  return file;
+}
+
+TEST(Cli, AMeshTooLargeForTheMemoryFailsBeforeItIsReadAndSaysWhatItNeeds) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "mechanist_cli_memory";
+  std::filesystem::create_directories(dir);
+  // Four billion triangles: 200 GB of file, and more memory than any machine this runs on has.
+  const std::filesystem::path stl = SparseStl(dir / "huge.stl", 4'000'000'000u);
+  std::ofstream(dir / "huge.json") << R"({"mechanist": 1, "parts": [{"id": "p", "mesh": "huge.stl"}]})";
+  for (const std::string& command : {"features " + stl.string(),
+                                     "analyze " + (dir / "huge.json").string() + " --json " +
+                                         (dir / "report.json").string()}) {
+    const CommandResult run = Mechanist(command);
+    EXPECT_EQ(run.exit_code, 2) << run.out;
+    // 200 GB of file, seven bytes of memory for each at most.
+    EXPECT_NE(run.out.find("huge.stl: reading it needs about 1303.9 GB of memory (a mesh file); "),
+              std::string::npos)
+        << run.out;
+    EXPECT_NE(run.out.find(" are available"), std::string::npos) << run.out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "report.json"));
+  EXPECT_EQ(std::filesystem::file_size(stl), 84 + 50ull * 4'000'000'000u);  // untouched
+  std::filesystem::remove_all(dir);
+}
+
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define MECHANIST_ASAN 1
+#endif
+#endif
+
+TEST(Cli, AnAddressSpaceLimitBoundsWhatAFileMayTakeToRead) {
+#ifdef MECHANIST_ASAN
+  GTEST_SKIP() << "AddressSanitizer's shadow memory does not fit under an address-space limit";
+#endif
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "mechanist_cli_memory_limit";
+  std::filesystem::create_directories(dir);
+  // 20 million triangles, 1 GB of file: it would fit this machine's memory, not 2 GB of
+  // address space (ulimit -v), which the process's libraries share.
+  const std::filesystem::path stl = SparseStl(dir / "big.stl", 20'000'000u);
+  const CommandResult run = mechanist::testing::RunCommand(
+      "ulimit -v 2000000 && " + std::string(MECHANIST_EXE) + " features " + stl.string());
+  EXPECT_EQ(run.exit_code, 2) << run.out;
+  EXPECT_NE(run.out.find("big.stl: reading it needs about 6.5 GB of memory (a mesh file); "),
+            std::string::npos)
+      << run.out;
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Cli, BadInputExitsWithTwoAndNamesThePlace) {

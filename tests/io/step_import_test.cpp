@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -489,6 +490,25 @@ TEST(StepImport, AFileThatCrashesOpenCascadeIsAnErrorAndTheProcessGoesOn) {
   }
   // The process goes on, and reads a sound file as before.
   EXPECT_EQ(LoadAssembly(kAs1).parts().size(), 18u);
+  std::filesystem::remove_all(dir);
+}
+
+void HandlerOfTheCaller(int) {}
+
+TEST(StepImport, ACallersCrashHandlerGivesWayWhileOpenCascadeReadsAndComesBackAfter) {
+  // A sanitizer or a fuzzer holds the crash signals before any file is read.
+  struct sigaction own {}, previous {};
+  own.sa_handler = HandlerOfTheCaller;
+  ASSERT_EQ(sigaction(SIGSEGV, &own, &previous), 0);
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "mechanist_step_handler";
+  EXPECT_THROW(
+      LoadAssembly(WriteDamagedStep(dir, "#259 = SURFACE_SIDE_STYLE( '', ( #425 ) );", "")),
+      InputError);
+  struct sigaction after {};
+  sigaction(SIGSEGV, nullptr, &after);
+  EXPECT_EQ(after.sa_handler, &HandlerOfTheCaller);
+  sigaction(SIGSEGV, &previous, nullptr);
   std::filesystem::remove_all(dir);
 }
 
