@@ -18,15 +18,20 @@
 
 namespace mechanist::fuzz {
 
-/// A folder of this process's own under the system's temporary folder, created once.
+/// A folder of this process's own under the system's temporary folder, created on first use
+/// and removed when the process exits normally (a crash or a time-out leaves it behind).
 inline const std::filesystem::path& Folder() {
-  static const std::filesystem::path folder = [] {
-    auto path = std::filesystem::temp_directory_path() /
-                ("mechanist-fuzz-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(path);
-    return path;
-  }();
-  return folder;
+  struct Owned {
+    std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                 ("mechanist-fuzz-" + std::to_string(::getpid()));
+    Owned() { std::filesystem::create_directories(path); }
+    ~Owned() {
+      std::error_code ignored;
+      std::filesystem::remove_all(path, ignored);
+    }
+  };
+  static const Owned folder;
+  return folder.path;
 }
 
 /// Writes `size` bytes at `data` to Folder()/name and returns its path.

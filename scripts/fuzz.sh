@@ -10,6 +10,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-600}
+case $seconds in
+  '' | *[!0-9]* | 0) echo "fuzz.sh: expected SECONDS, a positive whole number, found '$seconds'" >&2; exit 2 ;;
+esac
 shift || true
 all=(assembly_file_fuzzer stl_reader_fuzzer obj_reader_fuzzer ply_reader_fuzzer
      off_reader_fuzzer ccd_query_fuzzer analysis_fuzzer step_import_fuzzer)
@@ -23,13 +26,14 @@ cmake --build "$build_dir" -j "$(nproc)" --target "${fuzzers[@]}"
 
 shared=../shared/data
 out=$build_dir/fuzz
-# Seeds: every file of the given globs, copied (the fuzzer never writes into its inputs).
+# Seeds: every file of the given globs, copied under a name made of its path (the examples'
+# files share names; the fuzzer never writes into its inputs).
 seed() {
   local name=$1
   shift
   mkdir -p "$out/seeds/$name"
   for f in "$@"; do
-    if [ -f "$f" ]; then cp "$f" "$out/seeds/$name/"; fi
+    if [ -f "$f" ]; then cp "$f" "$out/seeds/$name/$(echo "$f" | tr / _)"; fi
   done
 }
 seed assembly_file_fuzzer examples/*/assembly.json tests/data/bad/*.json
@@ -41,8 +45,9 @@ seed analysis_fuzzer fuzz/seeds/*.stl "$shared"/gears/spur_singles/*.stl
 seed step_import_fuzzer tests/data/bad/*.step "$shared"/step/*.stp \
   "$shared"/real/revolute_pin_solidedge_chrono/*.stp "$shared"/real/hinge_clamshell_build123d/*.step
 # A CCD seed is a query file behind one byte that chooses its kind (even: vertex-face).
-mkdir -p "$out/seeds/ccd_query_fuzzer"
+seed ccd_query_fuzzer fuzz/seeds/*.ccd
 for f in "$shared"/ccd/*/*/*.csv; do
+  [ -f "$f" ] || continue
   kind=1
   case $f in */vertex-face/*) kind=0 ;; esac
   { printf '%s' "$kind"; cat "$f"; } > "$out/seeds/ccd_query_fuzzer/$(echo "$f" | tr / _)"
@@ -68,9 +73,9 @@ for name in "${fuzzers[@]}"; do
     -artifact_prefix="$out/artifacts/$name/" "$out/corpus/$name" "$out/seeds/$name" \
     > "$out/logs/$name.log" 2>&1 || true
   # Fork mode's last status line: "#runs: cov: ... exec/s N oom/timeout/crash: a/b/c time: Ts".
-  last=$(grep -E '^#[0-9]+: cov:' "$out/logs/$name.log" | tail -1)
+  last=$(grep -E '^#[0-9]+: cov:' "$out/logs/$name.log" | tail -1 || true)
   found=$(find "$out/artifacts/$name" -type f | wc -l)
-  summary+=("$name: ${last:-no status line (see $out/logs/$name.log)}; artifacts: $found")
+  summary+=("$name: ${last:-no status line (see $out/logs/$name.log)}; artifacts so far: $found")
   if [ "$found" -gt 0 ]; then status=1; fi
 done
 printf '%s\n' "${summary[@]}"

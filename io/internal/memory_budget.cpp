@@ -39,10 +39,10 @@ std::optional<std::uint64_t> LeftUnderLimit(int resource, std::optional<std::uin
   return cap > *used ? cap - *used : 0;
 }
 
+// Decimal units, as file sizes are given: a 200 GB file is 200e9 bytes.
 std::string Bytes(std::uint64_t bytes) {
-  constexpr double kMb = 1024.0 * 1024.0;
-  const double mb = static_cast<double>(bytes) / kMb;
-  return mb >= 1024 ? fmt::format("{:.1f} GB", mb / 1024) : fmt::format("{:.0f} MB", mb);
+  const double mb = static_cast<double>(bytes) / 1e6;
+  return mb >= 1000 ? fmt::format("{:.1f} GB", mb / 1000) : fmt::format("{:.0f} MB", mb);
 }
 
 }  // namespace

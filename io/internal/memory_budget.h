@@ -28,8 +28,9 @@ std::optional<std::uint64_t> AvailableMemoryBytes();
 std::uint64_t ReadingNeed(const std::filesystem::path& file, double bytes_per_file_byte);
 
 /// When `needed` bytes are more than AvailableMemoryBytes(): what to tell the user, e.g.
-/// "reading it needs about 3.2 GB of memory (a binary STL of 21,000,000 triangles); 1.5 GB are
-/// available", without the file's name (the caller's error names it). Nothing when it fits.
+/// "reading it needs about 7.0 GB of memory (a mesh file); 1.5 GB are available" (decimal
+/// units), without the file's name (the caller's error names it); `what` is the parenthesis.
+/// Nothing when it fits.
 std::optional<std::string> MemoryShortfall(std::uint64_t needed, std::string_view what);
 
 }  // namespace mechanist::internal

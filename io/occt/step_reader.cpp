@@ -679,9 +679,11 @@ class MessageCapture {
 // While alive, Open CASCADE's handlers catch the signals of a crash (segmentation and bus
 // faults, illegal instructions, floating-point traps), on a stack of their own, so that an
 // endless recursion (an edge loop of a damaged file that refers to itself) is caught too. They
-// replace whatever handler was set (a sanitizer's or a fuzzer's too: a crash of Open CASCADE
-// on a damaged file is bad input there as well, and the sanitizers' own reports do not come
-// by these signals); the previous handlers and stack come back on destruction.
+// replace whatever handler was set, a sanitizer's or a fuzzer's too: a crash of Open CASCADE on
+// a damaged file is bad input there as well, not a finding. The price: while a file is read,
+// a segmentation fault of our own code in this file (the faces' features) is reported as a file
+// that cannot be read, not by the sanitizer (its other reports, of memory misuse caught by its
+// checks, still come). The previous handlers and stack come back on destruction.
 class SignalsAsExceptions {
  public:
   SignalsAsExceptions() : stack_(kStackSize) {
