@@ -8,8 +8,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
   const bool vertex_face = data[0] % 2 == 0;
-  const auto path = mechanist::fuzz::WriteInput(
-      data + 1, size - 1, vertex_face ? "vertex-face.csv" : "edge-edge.csv");
+  const auto path = mechanist::fuzz::WriteInput(data + 1, size - 1,
+                                                vertex_face ? "vertex-face.csv" : "edge-edge.csv");
   mechanist::fuzz::ExpectOnlyInputErrors([&] {
     for (const mechanist::CcdQuery& q : mechanist::ReadCcdQueries(path)) {
       const auto& p = q.points;

@@ -22,8 +22,8 @@ namespace mechanist::fuzz {
 /// and removed when the process exits normally (a crash or a time-out leaves it behind).
 inline const std::filesystem::path& Folder() {
   struct Owned {
-    std::filesystem::path path = std::filesystem::temp_directory_path() /
-                                 ("mechanist-fuzz-" + std::to_string(::getpid()));
+    std::filesystem::path path =
+        std::filesystem::temp_directory_path() / ("mechanist-fuzz-" + std::to_string(::getpid()));
     Owned() { std::filesystem::create_directories(path); }
     ~Owned() {
       std::error_code ignored;
@@ -51,8 +51,7 @@ void ExpectOnlyInputErrors(Body&& body) {
     body();
   } catch (const InputError&) {
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "not an input error (the command line would exit with 3): %s\n",
-                 e.what());
+    std::fprintf(stderr, "not an input error (the command line would exit with 3): %s\n", e.what());
     std::abort();
   }
 }

@@ -108,15 +108,15 @@ std::filesystem::path SparseStl(const std::filesystem::path& file, std::uint32_t
 }
 
 TEST(Cli, AMeshTooLargeForTheMemoryFailsBeforeItIsReadAndSaysWhatItNeeds) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "mechanist_cli_memory";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_cli_memory";
   std::filesystem::create_directories(dir);
   // Four billion triangles: 200 GB of file, and more memory than any machine this runs on has.
   const std::filesystem::path stl = SparseStl(dir / "huge.stl", 4'000'000'000u);
-  std::ofstream(dir / "huge.json") << R"({"mechanist": 1, "parts": [{"id": "p", "mesh": "huge.stl"}]})";
-  for (const std::string& command : {"features " + stl.string(),
-                                     "analyze " + (dir / "huge.json").string() + " --json " +
-                                         (dir / "report.json").string()}) {
+  std::ofstream(dir / "huge.json")
+      << R"({"mechanist": 1, "parts": [{"id": "p", "mesh": "huge.stl"}]})";
+  for (const std::string& command :
+       {"features " + stl.string(),
+        "analyze " + (dir / "huge.json").string() + " --json " + (dir / "report.json").string()}) {
     const CommandResult run = Mechanist(command);
     EXPECT_EQ(run.exit_code, 2) << run.out;
     // 200 GB of file, seven bytes of memory for each at most.

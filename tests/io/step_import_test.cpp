@@ -6,8 +6,8 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdint>
 #include <csignal>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -500,7 +500,8 @@ void HandlerOfTheCaller(int) { _exit(99); }
 
 TEST(StepImport, ACallersCrashHandlerGivesWayWhileOpenCascadeReadsAndComesBackAfter) {
   // A sanitizer or a fuzzer holds the crash signals before any file is read.
-  struct sigaction own {}, previous {};
+  struct sigaction own = {};
+  struct sigaction previous = {};
   own.sa_handler = HandlerOfTheCaller;
   ASSERT_EQ(sigaction(SIGSEGV, &own, &previous), 0);
   const std::filesystem::path dir =
@@ -508,7 +509,7 @@ TEST(StepImport, ACallersCrashHandlerGivesWayWhileOpenCascadeReadsAndComesBackAf
   EXPECT_THROW(
       LoadAssembly(WriteDamagedStep(dir, "#259 = SURFACE_SIDE_STYLE( '', ( #425 ) );", "")),
       InputError);
-  struct sigaction after {};
+  struct sigaction after = {};
   sigaction(SIGSEGV, nullptr, &after);
   EXPECT_EQ(after.sa_handler, &HandlerOfTheCaller);
   sigaction(SIGSEGV, &previous, nullptr);
