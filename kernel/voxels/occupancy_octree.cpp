@@ -441,7 +441,10 @@ class OctreeBuilder {
     std::iota(all.begin(), all.end(), 0);
     OccupancyOctree::Cell root;
     root.size = tree_.resolution();
+    // Sized once: Split holds references into it across its recursion.
+    child_tris_.resize(tree_.depth_ + 1);
     Split(root, all, 0);
+    child_tris_ = {};
     tree_.nodes_.shrink_to_fit();
     tree_.fills_.shrink_to_fit();
     vertices_ = {};
@@ -501,7 +504,8 @@ class OctreeBuilder {
       const auto error = static_cast<std::uint16_t>(
           std::min<double>(kFillUnit, std::ceil(fill.error * kFillUnit + 0.5)));
       tree_.fills_[cell.node] = static_cast<std::uint16_t>(empty | (error << 8));
-      std::vector<std::int32_t> touching;
+      std::vector<std::int32_t>& touching = touching_;
+      touching.clear();
       for (const std::int32_t t : tris) touching.push_back(triangle_mesh_[t]);
       std::sort(touching.begin(), touching.end());
       touching.erase(std::unique(touching.begin(), touching.end()), touching.end());
@@ -510,7 +514,7 @@ class OctreeBuilder {
         word |= static_cast<std::uint32_t>(touching.front());
       } else {
         word |= OccupancyOctree::kListBit | static_cast<std::uint32_t>(tree_.multi_meshes_.size());
-        tree_.multi_meshes_.push_back(std::move(touching));
+        tree_.multi_meshes_.push_back(touching);
       }
       ++tree_.leaves_;
       return;
@@ -528,7 +532,9 @@ class OctreeBuilder {
     const Eigen::Vector3d mid = lo + Eigen::Vector3d::Constant(half * h);
     const Eigen::Vector3d child_half = Eigen::Vector3d::Constant(0.5 * half * h);
     const double margin = 1e-12 * (mid.cwiseAbs().maxCoeff() + cell.size * h);
-    std::array<std::vector<std::int32_t>, 8> child_tris;
+    // The children's triangle lists, one set per level, reused from node to node.
+    auto& child_tris = child_tris_.at(level);
+    for (auto& list : child_tris) list.clear();
     for (const std::int32_t t : tris) {
       const auto& f = triangles_[t];
       const Eigen::Vector3d& a = vertices_[f[0]];
@@ -537,7 +543,7 @@ class OctreeBuilder {
       const Eigen::Vector3d tmin = a.cwiseMin(b).cwiseMin(c);
       const Eigen::Vector3d tmax = a.cwiseMax(b).cwiseMax(c);
       // Which halves the triangle's box reaches along each axis, counting a margin at the
-      // mid-plane as both (TriangleOverlapsBox then decides, with its own margin); a triangle
+      // mid-plane as both (the separating-axis test then decides, with its own margin); a triangle
       // that reaches one child only touches it for sure.
       int lo_side[3], hi_side[3];
       for (int i = 0; i < 3; ++i) {
@@ -546,15 +552,15 @@ class OctreeBuilder {
       }
       const bool single =
           lo_side[0] == hi_side[0] && lo_side[1] == hi_side[1] && lo_side[2] == hi_side[2];
+      std::optional<TriangleBoxTester> tester;
+      if (!single) tester.emplace(a, b, c, mid, child_half);
       for (int z = lo_side[2]; z <= hi_side[2]; ++z) {
         for (int y = lo_side[1]; y <= hi_side[1]; ++y) {
           for (int x = lo_side[0]; x <= hi_side[0]; ++x) {
             const int i = x | (y << 1) | (z << 2);
-            if (!single) {
-              const Eigen::Vector3d center =
-                  lo + Eigen::Vector3d(x * half * h, y * half * h, z * half * h) + child_half;
-              if (!TriangleOverlapsBox(a, b, c, center, child_half)) continue;
-            }
+            const Eigen::Vector3d offset =
+                Eigen::Vector3d(2 * x - 1, 2 * y - 1, 2 * z - 1).cwiseProduct(child_half);
+            if (tester && !tester->Overlaps(offset)) continue;
             child_tris[i].push_back(t);
           }
         }
@@ -562,8 +568,7 @@ class OctreeBuilder {
     }
     for (int i = 0; i < 8; ++i) {
       const OccupancyOctree::Cell child = OccupancyOctree::Child(cell, first, i);
-      std::vector<std::int32_t> own = std::move(child_tris[i]);
-      Split(child, own, level + 1);
+      Split(child, child_tris[i], level + 1);
       // Progress counts the 64 grandchildren of the root (eight for a root child that is a
       // leaf).
       if (progress_ && level <= 1) {
@@ -710,7 +715,9 @@ class OctreeBuilder {
   std::vector<std::array<std::int32_t, 3>> triangles_;
   std::vector<std::int32_t> triangle_mesh_;
   std::vector<Aabb> mesh_box_W_;
-  std::vector<Triangle> voxel_tris_;  // the triangles of the voxel being split, reused
+  std::vector<Triangle> voxel_tris_;    // the triangles of the voxel being split, reused
+  std::vector<std::int32_t> touching_;  // the meshes touching that voxel, reused
+  std::vector<std::array<std::vector<std::int32_t>, 8>> child_tris_;  // per level, reused
   FillScratch scratch_;
   int done_ = 0;
 };

@@ -88,6 +88,37 @@ TEST(TriangleOverlapsBox, AgreesWithClippingOutsideARoundingBand) {
   EXPECT_GT(apart, 2000);
 }
 
+TEST(TriangleBoxTester, EachOfACellsEightChildrenAgreesWithClipping) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  int overlaps = 0, apart = 0;
+  for (int n = 0; n < 5000; ++n) {
+    const std::vector<Eigen::Vector3d> tri = {
+        {u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}};
+    const Eigen::Vector3d mid(u(rng) / 2, u(rng) / 2, u(rng) / 2);
+    const Eigen::Vector3d half = Eigen::Vector3d::Constant(std::abs(u(rng)) / 4 + 0.01);
+    const TriangleBoxTester tester(tri[0], tri[1], tri[2], mid, half);
+    for (int child = 0; child < 8; ++child) {
+      const Eigen::Vector3d offset =
+          Eigen::Vector3d(child & 1 ? 1 : -1, child & 2 ? 1 : -1, child & 4 ? 1 : -1)
+              .cwiseProduct(half);
+      const bool got = tester.Overlaps(offset);
+      const Eigen::Vector3d center = mid + offset;
+      const Eigen::Vector3d band = Eigen::Vector3d::Constant(1e-9);
+      if (ClippedNonEmpty(tri, center - half + band, center + half - band)) {
+        EXPECT_TRUE(got) << n << " child " << child;
+        ++overlaps;
+      }
+      if (!ClippedNonEmpty(tri, center - half - band, center + half + band)) {
+        EXPECT_FALSE(got) << n << " child " << child;
+        ++apart;
+      }
+    }
+  }
+  EXPECT_GT(overlaps, 4000);
+  EXPECT_GT(apart, 4000);
+}
+
 TEST(TriangleOverlapsBox, CountsTouchingAndDegenerateTriangles) {
   const Eigen::Vector3d c(0, 0, 0), h(1, 1, 1);
   // In the plane of a face, and a segment touching a corner.
