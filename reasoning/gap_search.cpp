@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <tuple>
 
@@ -11,14 +12,14 @@ namespace mechanist {
 
 namespace {
 
-// The centre of the face shared by leaves a (low side) and b along `axis`: the smaller
-// leaf's face.
-Eigen::Vector3d SharedFaceCenter(const OccupancyOctree& tree, const OccupancyOctree::Cell& a,
-                                 const OccupancyOctree::Cell& b, int axis) {
-  const OccupancyOctree::Cell& small = a.size <= b.size ? a : b;
-  Eigen::Vector3d p = tree.Box_W(small).center();
-  p[axis] = tree.origin_W()[axis] + tree.voxel() * b.min[axis];
-  return p;
+// The box of one octant of a voxel (bits as in OccupancyOctree::OctantSet), world, mm.
+Aabb OctantBox(const OccupancyOctree& tree, const OccupancyOctree::Cell& voxel, int octant) {
+  const Aabb box = tree.Box_W(voxel);
+  const Eigen::Vector3d half = (box.max - box.min) / 2;
+  const Eigen::Vector3d lo =
+      box.min +
+      Eigen::Vector3d(octant & 1, (octant >> 1) & 1, (octant >> 2) & 1).cwiseProduct(half);
+  return Aabb{lo, lo + half};
 }
 
 // A k-d tree over points, stored implicitly in their order (median splits by nth_element,
@@ -135,27 +136,29 @@ GapSearch FindGaps(const Assembly& assembly, const GapSearchOptions& options) {
     return c >= 0 && tree.components()[c].exterior;
   };
 
-  // From the leaves' face adjacency: the faces between empty and partial leaves on the
-  // outside and on each gap, the gap leaves next to a wall, and the enclosing parts.
-  std::vector<Eigen::Vector3f> outside_faces;
-  std::vector<std::vector<Eigen::Vector3f>> gap_faces(result.gaps.size());
+  // From the leaves' face adjacency: the partial voxels next to the outside and to each gap
+  // (their centres, each once), the gap leaves next to a wall, and the enclosing parts.
+  std::vector<Eigen::Vector3f> outside_walls;
+  std::vector<bool> next_to_outside(tree.node_count(), false);
+  std::vector<std::vector<Eigen::Vector3f>> gap_walls(result.gaps.size());
   std::vector<std::vector<std::size_t>> parts(result.gaps.size());
   std::vector<std::pair<std::int32_t, OccupancyOctree::Cell>> rim;
   tree.ForEachFaceNeighbours(
-      [&](const OccupancyOctree::Cell& a, const OccupancyOctree::Cell& b, int axis) {
+      [&](const OccupancyOctree::Cell& a, const OccupancyOctree::Cell& b, int) {
         const bool a_partial = tree.state(a) == CellState::kPartial;
         const bool b_partial = tree.state(b) == CellState::kPartial;
         if (a_partial == b_partial) return;
         const OccupancyOctree::Cell& air = a_partial ? b : a;
         const OccupancyOctree::Cell& wall = a_partial ? a : b;
-        const Eigen::Vector3f p = SharedFaceCenter(tree, a, b, axis).cast<float>();
+        const Eigen::Vector3f p = tree.Box_W(wall).center().cast<float>();
         if (outside(air)) {
-          outside_faces.push_back(p);
+          if (!next_to_outside[wall.node]) outside_walls.push_back(p);
+          next_to_outside[wall.node] = true;
           return;
         }
         const std::int32_t g = gap_index(air);
         if (g < 0) return;
-        gap_faces[g].push_back(p);
+        gap_walls[g].push_back(p);
         rim.emplace_back(g, air);
         for (const std::int32_t m : tree.touching_meshes(wall)) {
           parts[g].push_back(static_cast<std::size_t>(m));
@@ -187,6 +190,31 @@ GapSearch FindGaps(const Assembly& assembly, const GapSearchOptions& options) {
       if (tree.state(near) == CellState::kPartial) walls.emplace_back(g, near.node);
     });
   }
+  // A thin gap (free octants only): its octants stand in for the empty cells, their centres
+  // for the faces, and the partial voxels that touch an octant (its own and those around its
+  // outer corner) are its walls.
+  for (std::size_t g = 0; g < result.gaps.size(); ++g) {
+    for (const OccupancyOctree::OctantSet& set : tree.thin_octants(result.gaps[g].component)) {
+      for (int octant = 0; octant < 8; ++octant) {
+        if (!((set.octants >> octant) & 1)) continue;
+        const Aabb box = OctantBox(tree, set.cell, octant);
+        result.gaps[g].box_W.Extend(box);
+        gap_walls[g].push_back(OctantBox(tree, set.cell, octant).center().cast<float>());
+        for (int corner = 0; corner < 8; ++corner) {
+          std::array<std::int32_t, 3> v = set.cell.min;
+          for (int i = 0; i < 3; ++i) {
+            if ((corner >> i) & 1) v[i] += ((octant >> i) & 1) ? 1 : -1;
+          }
+          const OccupancyOctree::Cell near = tree.Locate(v);
+          if (tree.state(near) != CellState::kPartial) continue;
+          walls.emplace_back(static_cast<std::int32_t>(g), near.node);
+          for (const std::int32_t m : tree.touching_meshes(near)) {
+            parts[g].push_back(static_cast<std::size_t>(m));
+          }
+        }
+      }
+    }
+  }
   std::sort(walls.begin(), walls.end());
   walls.erase(std::unique(walls.begin(), walls.end()), walls.end());
   std::vector<OccupancyOctree::Fill> wall_fill(result.gaps.size());  // summed, in voxels
@@ -199,11 +227,17 @@ GapSearch FindGaps(const Assembly& assembly, const GapSearchOptions& options) {
     wall_fill[g].error += fill.error;
   }
 
-  // Closest approach: the nearest pair of a gap face and an outside face.
-  const PointTree outside_tree(std::move(outside_faces));
+  // Closest approach: the nearest pair of a partial voxel next to the gap (or a thin gap's
+  // octant) and one next to the outside.
+  const PointTree outside_tree(std::move(outside_walls));
   for (std::size_t g = 0; g < result.gaps.size(); ++g) {
     Gap& gap = result.gaps[g];
-    const PointTree gap_tree(std::move(gap_faces[g]));
+    std::vector<Eigen::Vector3f>& points = gap_walls[g];
+    std::sort(points.begin(), points.end(), [](const Eigen::Vector3f& x, const Eigen::Vector3f& y) {
+      return std::tie(x[0], x[1], x[2]) < std::tie(y[0], y[1], y[2]);
+    });
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    const PointTree gap_tree(std::move(points));
     ClosestPair best;
     FindClosestPair(gap_tree, 0, gap_tree.size(), outside_tree, 0, outside_tree.size(), best);
     if (std::isfinite(best.d2)) {
@@ -229,7 +263,7 @@ GapSearch FindGaps(const Assembly& assembly, const GapSearchOptions& options) {
   std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) {
     const Gap& a = result.gaps[x];
     const Gap& b = result.gaps[y];
-    if (a.voxels != b.voxels) return a.voxels > b.voxels;
+    if (a.volume != b.volume) return a.volume > b.volume;
     const auto key = [](const Gap& g) {
       return std::make_tuple(g.box_W.min.z(), g.box_W.min.y(), g.box_W.min.x(), g.component);
     };
@@ -284,6 +318,51 @@ TriangleMesh GapSurface(const GapSearch& search, std::vector<std::int32_t>* gap_
     }
     if (gap_of_face) gap_of_face->insert(gap_of_face->end(), 2, ga >= 0 ? ga : gb);
   });
+
+  // Thin gaps: the faces of their free octants that no other octant of the same gap shares.
+  for (std::size_t g = 0; g < search.gaps.size(); ++g) {
+    const auto& sets = tree.thin_octants(search.gaps[g].component);
+    std::map<std::int32_t, std::uint8_t> octants_of;  // by node
+    for (const auto& set : sets) octants_of[set.cell.node] = set.octants;
+    const auto holds = [&](const std::array<std::int32_t, 3>& voxel, int octant) {
+      const auto it = octants_of.find(tree.Locate(voxel).node);
+      return it != octants_of.end() && ((it->second >> octant) & 1);
+    };
+    for (const auto& set : sets) {
+      for (int octant = 0; octant < 8; ++octant) {
+        if (!((set.octants >> octant) & 1)) continue;
+        const Aabb box = OctantBox(tree, set.cell, octant);
+        for (int axis = 0; axis < 3; ++axis) {
+          for (const bool high : {false, true}) {
+            const int next = octant ^ (1 << axis);
+            const bool within_voxel = ((octant >> axis) & 1) != static_cast<int>(high);
+            std::array<std::int32_t, 3> voxel = set.cell.min;
+            voxel[axis] += high ? 1 : -1;
+            if (within_voxel ? ((set.octants >> next) & 1) != 0 : holds(voxel, next)) continue;
+            const int v = (axis + 1) % 3, w = (axis + 2) % 3;
+            const auto first = static_cast<std::int32_t>(mesh.vertices.size());
+            for (const auto& [dv, dw] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+              Eigen::Vector3d p;
+              p[axis] = high ? box.max[axis] : box.min[axis];
+              p[v] = dv ? box.max[v] : box.min[v];
+              p[w] = dw ? box.max[w] : box.min[w];
+              mesh.vertices.push_back(p);
+            }
+            // Facing away from the octant: counter-clockwise about +axis on its high side.
+            if (high) {
+              mesh.faces.push_back({first, first + 1, first + 2});
+              mesh.faces.push_back({first, first + 2, first + 3});
+            } else {
+              mesh.faces.push_back({first, first + 2, first + 1});
+              mesh.faces.push_back({first, first + 3, first + 2});
+            }
+            if (gap_of_face)
+              gap_of_face->insert(gap_of_face->end(), 2, static_cast<std::int32_t>(g));
+          }
+        }
+      }
+    }
+  }
   return mesh;
 }
 

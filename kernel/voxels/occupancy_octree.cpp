@@ -35,9 +35,14 @@ std::int32_t FindRoot(std::vector<std::int32_t>& parent, std::int32_t x) {
 struct Triangle {
   std::array<Eigen::Vector3d, 3> p;
   Eigen::Vector3d n, min, max;
+  std::int32_t mesh = 0;
 };
 
 constexpr int kMaxLines = 4;  // lines per side of a voxel for its Fill, at most
+// Crossings of a line this close (in voxels) are at one height when states are sampled: the
+// faces where parts meet cross a line at heights rounded differently, most where they slope
+// steeply to it.
+constexpr double kCoincident = 1e-6;
 constexpr int kMaxSamples = kMaxLines * kMaxLines * kMaxLines;
 // A Fill's unit, 1/240 of a voxel: 8 bits, and halves to sixteenths are exact.
 constexpr int kFillUnit = 240;
@@ -47,6 +52,7 @@ constexpr int kFillUnit = 240;
 struct Crossing {
   double at = 0.0;
   bool up = false;
+  std::int32_t mesh = 0;  // of the triangle
 };
 
 // A triangle seen along an axis, for crossing lines along it: each edge's side of a point
@@ -118,7 +124,8 @@ void VoxelLineCrossings(const std::vector<Triangle>& tris, int axis, const Eigen
             t.p[0][axis] - (t.n[u] * (pu - t.p[0][u]) + t.n[v] * (pv - t.p[0][v])) / t.n[axis],
             t.min[axis], t.max[axis]);
         if (at < lo[axis] - eps || at > lo[axis] + h + eps) continue;
-        crossings[i + n * j].push_back({std::clamp(at, lo[axis], lo[axis] + h), t.n[axis] > 0});
+        crossings[i + n * j].push_back(
+            {std::clamp(at, lo[axis], lo[axis] + h), t.n[axis] > 0, t.mesh});
       }
     }
   }
@@ -203,10 +210,12 @@ std::array<std::int8_t, kMaxSamples> SampleStates(const std::vector<Triangle>& t
           bool separated = false;  // from the next point along the line
           for (const Crossing& x : line) {
             const double gap = std::abs(x.at - at);
-            if (gap > 0 && gap <= nearest) {
-              const int m = (x.at > at) == x.up ? 1 : 0;  // several at one height: material
-              material = gap < nearest ? m : std::max(material, m);
-              nearest = gap;
+            // Several at one height (within kCoincident, faces of parts that meet, rounded
+            // differently): material.
+            if (gap > 0 && gap <= nearest + kCoincident * h) {
+              const int m = (x.at > at) == x.up ? 1 : 0;
+              material = gap < nearest - kCoincident * h ? m : std::max(material, m);
+              nearest = std::min(nearest, gap);
             }
             separated = separated || (x.at >= at && x.at <= at + d);
           }
@@ -284,11 +293,93 @@ double FreeHeight(const std::vector<Triangle>& tris, int axis, const Eigen::Vect
 // Buffers reused from voxel to voxel.
 struct FillScratch {
   LineCrossings crossings, sample_crossings;
+  std::array<LineCrossings, 3> axis_crossings;
+  std::vector<Crossing> own_crossings;
 };
 
-// The Fill of the voxel [lo, lo + h]^3 crossed by `tris` (see OccupancyOctree::Fill).
-OccupancyOctree::Fill VoxelFill(const std::vector<Triangle>& tris, const Eigen::Vector3d& lo,
-                                double h, double eps, FillScratch& scratch) {
+// Of the voxel [lo, lo + h]^3's `octants`, which no triangle reaches inside, those outside
+// each of `meshes` (those that cross the voxel), judged at the 4 x 4 x 4 centres of its
+// sub-cubes, each mesh on its own: a centre on a line along an axis takes the mesh's state
+// below or above the mesh's nearest crossing of the line, and neighbouring centres on a line
+// that the mesh does not cross between them share their state. A line may run inside a mesh
+// it does not cross, so an octant with a centre whose state for some mesh stays unknown is
+// not taken.
+std::uint8_t OutsideEveryMesh(const std::vector<Triangle>& tris,
+                              const std::vector<std::int32_t>& meshes, const Eigen::Vector3d& lo,
+                              double h, double eps, std::uint8_t octants,
+                              std::array<LineCrossings, 3>& crossings, std::vector<Crossing>& own) {
+  constexpr int n = kMaxLines;
+  const double d = h / n;
+  for (int axis = 0; axis < 3; ++axis)
+    VoxelLineCrossings(tris, axis, lo, h, n, eps, crossings[axis]);
+  std::uint8_t outside = octants;
+  for (const std::int32_t mesh : meshes) {
+    std::array<std::int8_t, kMaxSamples> state;  // per centre: -1 unknown, 0 outside, 1 inside
+    state.fill(-1);
+    std::array<int, kMaxSamples> parent;
+    std::iota(parent.begin(), parent.end(), 0);
+    const auto find = [&](int x) {
+      while (parent[x] != x) x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    for (int axis = 0; axis < 3; ++axis) {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      const int step = axis == 0 ? 1 : axis == 1 ? n : n * n;
+      for (int line = 0; line < n * n; ++line) {
+        own.clear();
+        for (const Crossing& c : crossings[axis][line]) {
+          if (c.mesh == mesh) own.push_back(c);
+        }
+        std::sort(own.begin(), own.end(),
+                  [](const Crossing& x, const Crossing& y) { return x.at < y.at; });
+        std::array<int, 3> c;
+        c[u] = line % n;
+        c[v] = line / n;
+        for (int k = 0; k < n; ++k) {
+          c[axis] = k;
+          const int point = c[0] + n * (c[1] + n * c[2]);
+          const double at = lo[axis] + (k + 0.5) * d;
+          if (!own.empty()) {
+            state[point] = static_cast<std::int8_t>(
+                std::max<int>(state[point], StateAt(own, at, kCoincident * h)));
+          }
+          const bool crossed = std::any_of(own.begin(), own.end(), [&](const Crossing& x) {
+            return x.at >= at && x.at <= at + d;
+          });
+          if (k + 1 < n && !crossed) parent[find(point + step)] = find(point);
+        }
+      }
+    }
+    std::array<std::int8_t, kMaxSamples> shared;
+    shared.fill(-1);
+    for (int x = 0; x < kMaxSamples; ++x) shared[find(x)] = std::max(shared[find(x)], state[x]);
+    for (int x = 0; x < kMaxSamples; ++x) {
+      if (shared[find(x)] == 0) continue;
+      // The octant of centre x: bit a set when its coordinate a is in the high half.
+      const int octant =
+          (x % n >= n / 2) | ((x / n % n >= n / 2) << 1) | ((x / (n * n) >= n / 2) << 2);
+      outside = static_cast<std::uint8_t>(outside & ~(1 << octant));
+    }
+  }
+  return outside;
+}
+
+// What the lines through a partial voxel tell: its Fill, and its free octants
+// (OccupancyOctree::free_octants): those whose inside no triangle reaches (judged on the
+// triangles' planes over the octant's prisms, so a sloping triangle may mark an octant it
+// passes by) and whose state on a line through them is empty.
+struct VoxelContents {
+  OccupancyOctree::Fill fill;
+  std::uint8_t free_octants = 0;
+};
+
+// The contents of the voxel [lo, lo + h]^3 crossed by `tris`, of which those of `meshes`
+// (ascending) reach inside it; `one_mesh` when all are of one mesh, whose state its lines
+// then tell, else the octants are judged mesh by mesh (OutsideEveryMesh) and the meshes not
+// in `meshes` are left to the caller.
+VoxelContents VoxelFill(const std::vector<Triangle>& tris, const std::vector<std::int32_t>& meshes,
+                        bool one_mesh, const Eigen::Vector3d& lo, double h, double eps,
+                        FillScratch& scratch) {
   Eigen::Vector3d facing = Eigen::Vector3d::Zero();
   for (const Triangle& t : tris) facing += t.n.cwiseAbs();
   int axis = 0;
@@ -306,6 +397,9 @@ OccupancyOctree::Fill VoxelFill(const std::vector<Triangle>& tris, const Eigen::
   // in the prism's side does not reach into it; one square to the axis spans no height).
   std::array<std::pair<double, double>, kMaxLines * kMaxLines> span;
   span.fill({top, bottom});
+  // Where the triangles reach into each prism at all, faces square to the axis included.
+  std::array<std::pair<double, double>, kMaxLines * kMaxLines> reach;
+  reach.fill({top, bottom});
   const double per_d = 1.0 / d;
   const auto prisms = [&](double from, double to, double start) {
     const double first = std::floor(std::clamp((from - start + eps) * per_d, 0.0, double(n)));
@@ -336,6 +430,11 @@ OccupancyOctree::Fill VoxelFill(const std::vector<Triangle>& tris, const Eigen::
         }
         from = std::max(from, bottom);
         to = std::min(to, top);
+        if (to >= from) {
+          auto& [low, high] = reach[i + n * j];
+          low = std::min(low, from);
+          high = std::max(high, to);
+        }
         if (to - from > 2 * eps) {
           auto& [low, high] = span[i + n * j];
           low = std::min(low, from);
@@ -396,7 +495,37 @@ OccupancyOctree::Fill VoxelFill(const std::vector<Triangle>& tris, const Eigen::
   }
   for (const auto& [low, high] : span) error += std::max(0.0, high - low);
   const double lines = n * n * h;
-  return {std::clamp(empty / lines, 0.0, 1.0), std::min(error / lines, 1.0)};
+  VoxelContents contents;
+  contents.fill = {std::clamp(empty / lines, 0.0, 1.0), std::min(error / lines, 1.0)};
+  for (int octant = 0; octant < 8; ++octant) {
+    const auto high = [&](int a) { return (octant >> a) & 1; };
+    // The octant's prisms (one when n is 2, four when 4) and its heights.
+    const int i0 = high(u) * (n / 2), j0 = high(v) * (n / 2);
+    const double below = bottom + high(axis) * h / 2, above = below + h / 2;
+    bool touched = false;
+    for (int j = j0; j < j0 + n / 2; ++j) {
+      for (int i = i0; i < i0 + n / 2; ++i) {
+        const auto [low, high_reach] = reach[i + n * j];
+        touched = touched || (low < above - eps && high_reach > below + eps);
+      }
+    }
+    if (touched) continue;
+    // Untouched, so one state throughout: for one mesh, that on its first line (the
+    // crossings are sorted now, by EmptyLength, as StateAt needs); for several, judged below.
+    const double at = (below + above) / 2;
+    const int line = i0 + n * j0;
+    const int octant_state = state[line] == kCrossed
+                                 ? StateAt(scratch.crossings[line], at, kCoincident * h)
+                                 : state[line];
+    if (!one_mesh || octant_state == 0) {
+      contents.free_octants |= static_cast<std::uint8_t>(1 << octant);
+    }
+  }
+  if (!one_mesh && contents.free_octants != 0) {
+    contents.free_octants = OutsideEveryMesh(tris, meshes, lo, h, eps, contents.free_octants,
+                                             scratch.axis_crossings, scratch.own_crossings);
+  }
+  return contents;
 }
 
 }  // namespace
@@ -437,6 +566,7 @@ class OctreeBuilder {
 
     tree_.nodes_.assign(1, 0);
     tree_.fills_.assign(1, 0);
+    tree_.free_octants_.assign(1, 0);
     std::vector<std::int32_t> all(triangle_mesh_.size());
     std::iota(all.begin(), all.end(), 0);
     OccupancyOctree::Cell root;
@@ -447,6 +577,7 @@ class OctreeBuilder {
     child_tris_ = {};
     tree_.nodes_.shrink_to_fit();
     tree_.fills_.shrink_to_fit();
+    tree_.free_octants_.shrink_to_fit();
     vertices_ = {};
     triangles_ = {};
     triangle_mesh_ = {};
@@ -486,7 +617,8 @@ class OctreeBuilder {
       voxel_tris_.clear();
       for (const std::int32_t t : tris) {
         const auto& f = triangles_[t];
-        Triangle tri{{vertices_[f[0]], vertices_[f[1]], vertices_[f[2]]}, {}, {}, {}};
+        Triangle tri{
+            {vertices_[f[0]], vertices_[f[1]], vertices_[f[2]]}, {}, {}, {}, triangle_mesh_[t]};
         tri.n = (tri.p[1] - tri.p[0]).cross(tri.p[2] - tri.p[0]);
         tri.min = tri.p[0].cwiseMin(tri.p[1]).cwiseMin(tri.p[2]);
         tri.max = tri.p[0].cwiseMax(tri.p[1]).cwiseMax(tri.p[2]);
@@ -498,17 +630,35 @@ class OctreeBuilder {
         ++tree_.leaves_;
         return;
       }
-      const OccupancyOctree::Fill fill = VoxelFill(voxel_tris_, lo, tree_.voxel_, eps, scratch_);
-      // Rounded to kFillUnit-ths; the error also covers the rounding of the fraction.
-      const auto empty = static_cast<std::uint16_t>(std::lround(fill.empty * kFillUnit));
-      const auto error = static_cast<std::uint16_t>(
-          std::min<double>(kFillUnit, std::ceil(fill.error * kFillUnit + 0.5)));
-      tree_.fills_[cell.node] = static_cast<std::uint16_t>(empty | (error << 8));
       std::vector<std::int32_t>& touching = touching_;
       touching.clear();
       for (const std::int32_t t : tris) touching.push_back(triangle_mesh_[t]);
       std::sort(touching.begin(), touching.end());
       touching.erase(std::unique(touching.begin(), touching.end()), touching.end());
+      // The meshes whose triangles reach inside the voxel, and those that only border it.
+      std::vector<std::int32_t>& reaching = reaching_;
+      reaching.clear();
+      for (const Triangle& t : voxel_tris_) {
+        if (((t.min - lo).array() < tree_.voxel_ - eps).all() &&
+            ((t.max - lo).array() > eps).all()) {
+          reaching.push_back(t.mesh);
+        }
+      }
+      std::sort(reaching.begin(), reaching.end());
+      reaching.erase(std::unique(reaching.begin(), reaching.end()), reaching.end());
+      VoxelContents contents =
+          VoxelFill(voxel_tris_, reaching, touching.size() == 1, lo, tree_.voxel_, eps, scratch_);
+      if (contents.free_octants != 0 && reaching.size() < touching.size() &&
+          InsideABorderingMesh(touching, reaching, lo, eps)) {
+        contents.free_octants = 0;
+      }
+      const OccupancyOctree::Fill& fill = contents.fill;
+      // Rounded to kFillUnit-ths; the error also covers the rounding of the fraction.
+      const auto empty = static_cast<std::uint16_t>(std::lround(fill.empty * kFillUnit));
+      const auto error = static_cast<std::uint16_t>(
+          std::min<double>(kFillUnit, std::ceil(fill.error * kFillUnit + 0.5)));
+      tree_.fills_[cell.node] = static_cast<std::uint16_t>(empty | (error << 8));
+      tree_.free_octants_[cell.node] = contents.free_octants;
       word = OccupancyOctree::kLeaf | OccupancyOctree::kPartialBit;
       if (touching.size() == 1) {
         word |= static_cast<std::uint32_t>(touching.front());
@@ -524,6 +674,7 @@ class OctreeBuilder {
     word = first;
     tree_.nodes_.resize(first + 8, 0);
     tree_.fills_.resize(first + 8, 0);
+    tree_.free_octants_.resize(first + 8, 0);
 
     const std::int32_t half = cell.size / 2;
     const double h = tree_.voxel_;
@@ -682,6 +833,9 @@ class OctreeBuilder {
         if (ra != rb) merged[std::max(ra, rb)] = std::min(ra, rb);
       });
     }
+    const std::vector<OccupancyOctree::OctantSet> holders =
+        JoinFreeOctants(state, first_pass, merged);
+
     std::vector<std::int32_t> final_id(state.size(), -1);
     const std::int32_t n = tree_.resolution();
     tree_.ForEachLeaf([&](const OccupancyOctree::Cell& cell) {
@@ -705,7 +859,189 @@ class OctreeBuilder {
       }
       nodes[cell.node] = OccupancyOctree::kLeaf | static_cast<std::uint32_t>(id);
     });
+    // Free octants that reach no untouched cell: thin components, in the order of their first
+    // octant.
+    const auto first_octant = static_cast<std::int32_t>(state.size());
+    constexpr std::int32_t kInside = -2;
+    std::vector<std::int32_t> thin_id(merged.size() - state.size(), -1);
+    for (std::size_t h = 0; h < holders.size(); ++h) {
+      for (int octant = 0; octant < 8; ++octant) {
+        if (!((holders[h].octants >> octant) & 1)) continue;
+        const std::int32_t root =
+            FindRoot(merged, first_octant + 8 * static_cast<std::int32_t>(h) + octant);
+        if (root < first_octant) continue;  // joined to untouched cells
+        std::int32_t& id = thin_id[root - first_octant];
+        if (id == kInside) continue;
+        if (id < 0 && StateAt(OctantCenter(holders[h].cell, octant)) >= 0) {
+          // Inside another part than the one that crosses its voxels (parts that overlap).
+          id = kInside;
+          continue;
+        }
+        if (id < 0) {
+          if (tree_.components_.size() >= OccupancyOctree::kPayload) {
+            throw std::length_error("octree has too many components");
+          }
+          id = static_cast<std::int32_t>(tree_.components_.size());
+          tree_.components_.emplace_back();
+          tree_.thin_octants_.resize(tree_.components_.size());
+        }
+        auto& sets = tree_.thin_octants_[id];
+        if (sets.empty() || sets.back().cell.node != holders[h].cell.node) {
+          sets.push_back({holders[h].cell, 0});
+        }
+        sets.back().octants = static_cast<std::uint8_t>(sets.back().octants | (1 << octant));
+      }
+    }
     tree_.components_.shrink_to_fit();
+  }
+
+  // Whether the voxel at lo (whose triangles are voxel_tris_) lies inside one of the meshes in
+  // `touching` but not in `reaching`, which touch it only on its boundary and so are on one
+  // side of all of it: told by the normal of one of its triangles in the plane of a face of
+  // the voxel (pointing out of the voxel: inside), else by its winding number at the centre.
+  bool InsideABorderingMesh(const std::vector<std::int32_t>& touching,
+                            const std::vector<std::int32_t>& reaching, const Eigen::Vector3d& lo,
+                            double eps) const {
+    const double h = tree_.voxel_;
+    for (const std::int32_t mesh : touching) {
+      if (std::binary_search(reaching.begin(), reaching.end(), mesh)) continue;
+      std::optional<bool> inside;
+      for (const Triangle& t : voxel_tris_) {
+        if (t.mesh != mesh || inside) continue;
+        for (int a = 0; a < 3 && !inside; ++a) {
+          for (int side = 0; side < 2 && !inside; ++side) {
+            const double plane = lo[a] + side * h;
+            const int u = (a + 1) % 3, v = (a + 2) % 3;
+            // In the plane, over part of the face (not only along its edge).
+            if (std::abs(t.min[a] - plane) > eps || std::abs(t.max[a] - plane) > eps ||
+                t.max[u] <= lo[u] + eps || t.min[u] >= lo[u] + h - eps || t.max[v] <= lo[v] + eps ||
+                t.min[v] >= lo[v] + h - eps || t.n[a] == 0) {
+              continue;
+            }
+            inside = side == 0 ? t.n[a] < 0 : t.n[a] > 0;
+          }
+        }
+      }
+      if (!inside) {
+        const Eigen::Vector3d center_M =
+            meshes_[mesh].X_WM.inverse() * (lo + Eigen::Vector3d::Constant(h / 2));
+        inside = std::abs(WindingNumber(*meshes_[mesh].mesh, center_M)) >= 0.5;
+      }
+      if (*inside) return true;
+    }
+    return false;
+  }
+
+  Eigen::Vector3d OctantCenter(const OccupancyOctree::Cell& voxel, int octant) const {
+    const Eigen::Vector3d at(octant & 1 ? 0.75 : 0.25, octant & 2 ? 0.75 : 0.25,
+                             octant & 4 ? 0.75 : 0.25);
+    return tree_.origin_W_ +
+           tree_.voxel_ * (Eigen::Vector3d(voxel.min[0], voxel.min[1], voxel.min[2]) + at);
+  }
+
+  // Joins the free octants of partial voxels (OccupancyOctree::free_octants) to each other and
+  // to the empty untouched cells they share a face with, in `merged`, the union-find over the
+  // first-pass components (`state`: -1 empty): it grows by eight elements per partial voxel
+  // with free octants, octant o of the h-th at state.size() + 8 h + o. Returns those voxels
+  // in leaf order with their free octants.
+  template <typename FirstPass>
+  std::vector<OccupancyOctree::OctantSet> JoinFreeOctants(const std::vector<std::int32_t>& state,
+                                                          const FirstPass& first_pass,
+                                                          std::vector<std::int32_t>& merged) {
+    const auto& nodes = tree_.nodes_;
+    const auto& free = tree_.free_octants_;
+    std::vector<OccupancyOctree::OctantSet> holders;
+    std::vector<std::int32_t> holder_of(nodes.size(), -1);
+    tree_.ForEachLeaf([&](const OccupancyOctree::Cell& cell) {
+      if ((nodes[cell.node] & OccupancyOctree::kPartialBit) && free[cell.node] != 0) {
+        holder_of[cell.node] = static_cast<std::int32_t>(holders.size());
+        holders.push_back({cell, free[cell.node]});
+      }
+    });
+    if (holders.empty()) return holders;
+    const auto first_octant = static_cast<std::int32_t>(state.size());
+    merged.resize(state.size() + 8 * holders.size());
+    std::iota(merged.begin() + first_octant, merged.end(), first_octant);
+    const auto join = [&](std::int32_t x, std::int32_t y) {
+      const std::int32_t rx = FindRoot(merged, x), ry = FindRoot(merged, y);
+      if (rx != ry) merged[std::max(rx, ry)] = std::min(rx, ry);
+    };
+    const auto element = [&](std::int32_t node, int octant) {
+      return first_octant + 8 * holder_of[node] + octant;
+    };
+    for (const OccupancyOctree::OctantSet& set : holders) {
+      for (int octant = 0; octant < 8; ++octant) {
+        for (int axis = 0; axis < 3; ++axis) {
+          const int next = octant | (1 << axis);
+          if (next != octant && ((set.octants >> octant) & 1) && ((set.octants >> next) & 1)) {
+            join(element(set.cell.node, octant), element(set.cell.node, next));
+          }
+        }
+      }
+    }
+    tree_.ForEachFaceNeighbours(
+        [&](const OccupancyOctree::Cell& a, const OccupancyOctree::Cell& b, int axis) {
+          const bool a_holds = holder_of[a.node] >= 0, b_holds = holder_of[b.node] >= 0;
+          if (!a_holds && !b_holds) return;
+          const auto empty_untouched = [&](const OccupancyOctree::Cell& c) {
+            return !(nodes[c.node] & OccupancyOctree::kPartialBit) && state[first_pass(c.node)] < 0;
+          };
+          const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+          for (int k = 0; k < 4; ++k) {
+            // The octants of a on its high side and of b on its low side that meet at the face.
+            const int low = ((k & 1) << u) | (((k >> 1) & 1) << v);
+            const int high = low | (1 << axis);
+            const bool a_free = a_holds && ((free[a.node] >> high) & 1);
+            const bool b_free = b_holds && ((free[b.node] >> low) & 1);
+            if (a_free && b_free) {
+              join(element(a.node, high), element(b.node, low));
+            } else if (a_free && empty_untouched(b)) {
+              join(element(a.node, high), first_pass(b.node));
+            } else if (b_free && empty_untouched(a)) {
+              join(element(b.node, low), first_pass(a.node));
+            }
+          }
+        });
+
+    // A set of free octants whose every voxel has an empty untouched cell among its 26
+    // neighbours is a pocket of that cell's space that octants are too coarse to join to it
+    // (at a gap's rim, in its edges and corners): joined to the first such cell's component.
+    const auto beside = [&](const OccupancyOctree::Cell& voxel) {
+      for (int k = 0; k < 27; ++k) {
+        std::array<std::int32_t, 3> v = voxel.min;
+        for (int i = 0, code = k; i < 3; ++i, code /= 3) v[i] += code % 3 - 1;
+        const OccupancyOctree::Cell near = tree_.Locate(v);
+        if (!(nodes[near.node] & OccupancyOctree::kPartialBit) &&
+            state[first_pass(near.node)] < 0) {
+          return first_pass(near.node);
+        }
+      }
+      return std::int32_t{-1};
+    };
+    std::vector<std::int32_t> pocket(holders.size(), -2);  // by root: -2 unseen, -1 not
+    for (std::size_t h = 0; h < holders.size(); ++h) {
+      std::optional<std::int32_t> near;  // looked up once per voxel, when needed
+      for (int octant = 0; octant < 8; ++octant) {
+        if (!((holders[h].octants >> octant) & 1)) continue;
+        const std::int32_t root = FindRoot(merged, element(holders[h].cell.node, octant));
+        if (root < first_octant) continue;
+        std::int32_t& to = pocket[(root - first_octant) / 8];
+        if (to == -1) continue;
+        if (!near) near = beside(holders[h].cell);
+        to = *near < 0 ? -1 : to == -2 ? *near : to;
+      }
+    }
+    for (std::size_t h = 0; h < holders.size(); ++h) {
+      for (int octant = 0; octant < 8; ++octant) {
+        if (!((holders[h].octants >> octant) & 1)) continue;
+        const std::int32_t x = element(holders[h].cell.node, octant);
+        const std::int32_t root = FindRoot(merged, x);
+        if (root >= first_octant && pocket[(root - first_octant) / 8] >= 0) {
+          join(x, pocket[(root - first_octant) / 8]);
+        }
+      }
+    }
+    return holders;
   }
 
   OccupancyOctree& tree_;
@@ -717,6 +1053,7 @@ class OctreeBuilder {
   std::vector<Aabb> mesh_box_W_;
   std::vector<Triangle> voxel_tris_;    // the triangles of the voxel being split, reused
   std::vector<std::int32_t> touching_;  // the meshes touching that voxel, reused
+  std::vector<std::int32_t> reaching_;  // those reaching inside it, reused
   std::vector<std::array<std::vector<std::int32_t>, 8>> child_tris_;  // per level, reused
   FillScratch scratch_;
   int done_ = 0;
@@ -755,6 +1092,17 @@ OccupancyOctree::Fill OccupancyOctree::fill(const Cell& cell) const {
   if (state(cell) != CellState::kPartial) return {};
   const std::uint16_t bits = fills_[cell.node];
   return {(bits & 0xff) / double{kFillUnit}, (bits >> 8) / double{kFillUnit}};
+}
+
+std::uint8_t OccupancyOctree::free_octants(const Cell& cell) const {
+  return state(cell) == CellState::kPartial ? free_octants_[cell.node] : 0;
+}
+
+const std::vector<OccupancyOctree::OctantSet>& OccupancyOctree::thin_octants(
+    std::int32_t component) const {
+  static const std::vector<OctantSet> kNone;
+  const auto c = static_cast<std::size_t>(component);
+  return c < thin_octants_.size() ? thin_octants_[c] : kNone;
 }
 
 std::vector<std::int32_t> OccupancyOctree::touching_meshes(const Cell& cell) const {
@@ -858,10 +1206,12 @@ OccupancyOctree::Cell OccupancyOctree::Locate(const std::array<std::int32_t, 3>&
 
 std::size_t OccupancyOctree::MemoryBytes() const {
   std::size_t bytes = sizeof(*this) + nodes_.capacity() * sizeof(std::uint32_t) +
-                      fills_.capacity() * sizeof(std::uint16_t) +
+                      fills_.capacity() * sizeof(std::uint16_t) + free_octants_.capacity() +
                       components_.capacity() * sizeof(Component) +
                       multi_meshes_.capacity() * sizeof(std::vector<std::int32_t>);
   for (const auto& list : multi_meshes_) bytes += list.capacity() * sizeof(std::int32_t);
+  bytes += thin_octants_.capacity() * sizeof(std::vector<OctantSet>);
+  for (const auto& sets : thin_octants_) bytes += sets.capacity() * sizeof(OctantSet);
   return bytes;
 }
 

@@ -59,7 +59,14 @@ class OccupancyOctree {
     std::array<std::int32_t, 3> min = {0, 0, 0};
     std::int32_t size = 1;
   };
-  /// A connected set of untouched cells (see the class comment).
+  /// Octants of a partial voxel: bit x | y << 1 | z << 2 for the octant on the high (1) or
+  /// low (0) side of the voxel's middle along each axis.
+  struct OctantSet {
+    Cell cell;
+    std::uint8_t octants = 0;
+  };
+  /// A connected set of untouched cells and free octants (see the class comment); a thin
+  /// component has free octants only (voxels 0).
   struct Component {
     CellState state = CellState::kEmpty;
     /// For a full component, the index (into the meshes given to Build) of a mesh containing it.
@@ -103,6 +110,14 @@ class OccupancyOctree {
   /// The component of an untouched cell, or -1 for a partial cell.
   std::int32_t component(const Cell& cell) const;
   const std::vector<Component>& components() const { return components_; }
+  /// The free octants of a partial voxel: those no surface reaches inside, outside the meshes
+  /// that cross the voxel (where meshes overlap, possibly inside another); 0 for other cells.
+  /// A sloping face is judged by its plane over the octant, so it may take an octant it passes
+  /// by; an octant on a line that some mesh crossing the voxel does not cross is not free.
+  std::uint8_t free_octants(const Cell& cell) const;
+  /// The free octants that make a thin component, by partial voxel in leaf order; empty for
+  /// a component with untouched cells.
+  const std::vector<OctantSet>& thin_octants(std::int32_t component) const;
   /// The meshes (indices into Build's argument) whose triangles touch a partial cell; empty
   /// for other cells.
   std::vector<std::int32_t> touching_meshes(const Cell& cell) const;
@@ -155,8 +170,13 @@ class OccupancyOctree {
   // Per node: a partial leaf's Fill, empty in the low byte and error in the high byte, in
   // 240ths.
   std::vector<std::uint16_t> fills_;
+  // Per node: a partial leaf's free octants (see free_octants()).
+  std::vector<std::uint8_t> free_octants_;
   std::size_t leaves_ = 0;
   std::vector<Component> components_;
+  // Per component: a thin one's octants (see thin_octants()); may stop short of the last
+  // components, which then have none.
+  std::vector<std::vector<OctantSet>> thin_octants_;
   std::vector<std::vector<std::int32_t>> multi_meshes_;
 };
 

@@ -21,8 +21,8 @@ TEST(GapExamples, SealedEnclosureDrainsOnceTheVoxelResolvesItsHole) {
   const Gap& gap = coarse.gaps[0];
   EXPECT_LE(std::abs(gap.volume - 114.0 * 54 * 30), gap.volume_error);
   EXPECT_EQ(gap.parts.size(), 6u);
-  EXPECT_GE(gap.wall, 3.0);
-  EXPECT_LE(gap.wall, 3.0 + 2 * options.voxel);
+  EXPECT_GE(gap.wall, 3.0 - options.voxel);
+  EXPECT_LE(gap.wall, 3.0 + options.voxel);
   options.voxel = 0.5;
   EXPECT_TRUE(FindGaps(assembly, options).gaps.empty());
 }

@@ -197,6 +197,93 @@ TEST(OccupancyOctree, CellsMatchBruteForceForRotatedAndOverlappingParts) {
   }
 }
 
+// Every free octant of a partial voxel: no triangle reaches inside it (clipping against the
+// octant shrunk by a rounding band), and its centre and corners are outside the meshes that
+// cross its voxel (winding number).
+void ExpectFreeOctantsAreFree(const OccupancyOctree& tree, const std::vector<PosedMesh>& meshes,
+                              int& free_octants) {
+  tree.ForEachLeaf([&](const OccupancyOctree::Cell& cell) {
+    const std::uint8_t octants = tree.free_octants(cell);
+    if (tree.state(cell) != CellState::kPartial) {
+      EXPECT_EQ(octants, 0);
+      return;
+    }
+    const Aabb voxel = tree.Box_W(cell);
+    const Eigen::Vector3d half = (voxel.max - voxel.min) / 2;
+    const std::vector<std::int32_t> crossing = tree.touching_meshes(cell);
+    for (int octant = 0; octant < 8; ++octant) {
+      if (!((octants >> octant) & 1)) continue;
+      ++free_octants;
+      const Eigen::Vector3d lo =
+          voxel.min +
+          Eigen::Vector3d(octant & 1, (octant >> 1) & 1, (octant >> 2) & 1).cwiseProduct(half);
+      const Eigen::Vector3d band = Eigen::Vector3d::Constant(1e-9);
+      for (const auto& pm : meshes) {
+        for (const auto& f : pm.mesh->faces) {
+          const std::vector<Eigen::Vector3d> tri = {pm.X_WM * pm.mesh->vertices[f[0]],
+                                                    pm.X_WM * pm.mesh->vertices[f[1]],
+                                                    pm.X_WM * pm.mesh->vertices[f[2]]};
+          ASSERT_FALSE(ClippedNonEmpty(tri, lo + band, lo + half - band))
+              << "octant " << octant << " of voxel " << cell.min[0] << " " << cell.min[1] << " "
+              << cell.min[2];
+        }
+        const auto m = static_cast<std::int32_t>(&pm - meshes.data());
+        if (std::find(crossing.begin(), crossing.end(), m) == crossing.end()) continue;
+        for (int corner = 0; corner < 9; ++corner) {
+          // The corners pulled in by 1% of the octant, then its centre.
+          Eigen::Vector3d at = Eigen::Vector3d::Constant(0.5);
+          if (corner < 8) {
+            at = 0.98 * Eigen::Vector3d(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1) +
+                 Eigen::Vector3d::Constant(0.01);
+          }
+          const Eigen::Vector3d p = lo + at.cwiseProduct(half);
+          ASSERT_LT(std::abs(WindingNumber(*pm.mesh, pm.X_WM.inverse() * p)), 0.5)
+              << "octant " << octant << " corner " << corner << " at " << p.transpose()
+              << " of voxel " << voxel.min.transpose() << " size " << tree.voxel() << " mesh "
+              << (&pm - meshes.data());
+        }
+      }
+    }
+  });
+}
+
+TEST(OccupancyOctree, FreeOctantsHoldNoSurfaceAndNoMaterial) {
+  // Rotated and axis-aligned parts that touch and overlap, faces on round coordinates.
+  const TriangleMesh box = BoxMesh({-3, -2, -1}, {3, 2, 1});
+  const TriangleMesh plate = BoxMesh({-4, -4, 1}, {4, 4, 2});
+  const TriangleMesh sphere = MakeUvSphere(2.2, 8, 12);
+  const std::vector<PosedMesh> meshes = {
+      {&box, RigidTransform(
+                 Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix(),
+                 Eigen::Vector3d(0.3, 0.1, -0.2))},
+      {&plate, RigidTransform()},
+      {&box, RigidTransform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(0, 0, 3))},
+      {&sphere, RigidTransform(Eigen::Matrix3d::Identity(), Eigen::Vector3d(2.5, 0, 1))}};
+  int free_octants = 0;
+  for (const double voxel : {0.7, 0.5, 0.33}) {
+    const OccupancyOctree tree = OccupancyOctree::Build(meshes, voxel);
+    ExpectFreeOctantsAreFree(tree, meshes, free_octants);
+    for (std::size_t c = 0; c < tree.components().size(); ++c) {
+      // A thin component's octants are outside every mesh.
+      for (const auto& set : tree.thin_octants(static_cast<std::int32_t>(c))) {
+        const Aabb box = tree.Box_W(set.cell);
+        for (int octant = 0; octant < 8; ++octant) {
+          if (!((set.octants >> octant) & 1)) continue;
+          const Eigen::Vector3d p =
+              box.min +
+              (box.max - box.min)
+                  .cwiseProduct(Eigen::Vector3d(octant & 1 ? 0.75 : 0.25, octant & 2 ? 0.75 : 0.25,
+                                                octant & 4 ? 0.75 : 0.25));
+          for (const auto& pm : meshes) {
+            EXPECT_LT(std::abs(WindingNumber(*pm.mesh, pm.X_WM.inverse() * p)), 0.5);
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(free_octants, 1000);
+}
+
 TEST(OccupancyOctree, VolumeOfABoxIsBracketedByFullAndPartialCells) {
   const TriangleMesh box = BoxMesh({0, 0, 0}, {10, 7, 5});
   const std::vector<PosedMesh> meshes = {
@@ -325,8 +412,8 @@ TEST(OccupancyOctree, MemoryGrowsWithSurfaceNotVolume) {
   const double ratio = static_cast<double>(fine.node_count()) / coarse.node_count();
   EXPECT_GT(ratio, 10.0);
   EXPECT_LT(ratio, 24.0);
-  // A 4-byte word and a 2-byte fill per node.
-  EXPECT_LT(fine.MemoryBytes(), 6 * fine.node_count() + 4096);
+  // A 4-byte word, a 2-byte fill and a byte of free octants per node.
+  EXPECT_LT(fine.MemoryBytes(), 7 * fine.node_count() + 4096);
 }
 
 TEST(OccupancyOctree, AMeshWithAnOpeningWiderThanAVoxelKeepsItsInside) {

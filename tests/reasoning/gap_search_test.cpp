@@ -8,6 +8,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -84,9 +85,10 @@ TEST(GapSearch, SealedBoxHasOneGapOfTheCavitysVolume) {
     EXPECT_EQ(gap.parts.size(), 6u);
     EXPECT_LE(gap.box_W.min.cwiseAbs().maxCoeff(), voxel);
     EXPECT_LE((gap.box_W.max - Eigen::Vector3d(40, 30, 20)).cwiseAbs().maxCoeff(), voxel);
-    // Every wall is 3 mm thick; the faces lie on either side, up to a voxel off.
-    EXPECT_GE(gap.wall, 3.0);
-    EXPECT_LE(gap.wall, 3.0 + 2 * voxel);
+    // Every wall is 3 mm thick; the centres of the partial voxels that hold its faces lie
+    // up to half a voxel off them.
+    EXPECT_GE(gap.wall, 3.0 - voxel);
+    EXPECT_LE(gap.wall, 3.0 + voxel);
     EXPECT_NEAR((gap.p_gap_W - gap.p_outside_W).norm(), gap.wall, 1e-5);
   }
 }
@@ -116,8 +118,8 @@ TEST(GapSearch, AOnePieceShellComesClosestToTheOutsideAtItsThinnestWall) {
     ExpectBracketed(gap, 20 * 10 * 5, "shell");
     EXPECT_EQ(gap.parts, std::vector<std::size_t>{0});
     // The walls are 4 mm thick but the one at +x, 2 mm: the closest approach is there.
-    EXPECT_GE(gap.wall, 2.0);
-    EXPECT_LE(gap.wall, 2.0 + 2 * voxel);
+    EXPECT_GE(gap.wall, 2.0 - voxel);
+    EXPECT_LE(gap.wall, 2.0 + voxel);
     EXPECT_NEAR(gap.p_gap_W.x(), 20, voxel);
     EXPECT_NEAR(gap.p_outside_W.x(), 22, voxel);
   }
@@ -172,18 +174,24 @@ TEST(GapSearch, EachGapsSurfaceEnclosesExactlyItsEmptyVoxels) {
       GapSurface(Search(MakeAssembly({Slab("plate", {0, 0, 0}, {9, 9, 1})}), 1.0)).faces.empty());
 }
 
-TEST(GapSearch, ALeakOpensOnceTheVoxelIsSmallerThanIt) {
-  // The right wall in two pieces with a 1 mm x 1 mm channel through it at mid height.
+TEST(GapSearch, ALeakOpensOnceTheVoxelIsNoWiderThanIt) {
+  // The right wall in two pieces with a 1 mm x 1 mm channel through it at mid height: closed
+  // at voxels over twice as wide, open at voxels no wider, whatever the alignment (at 0.9 mm
+  // no whole voxel fits in the channel).
   std::vector<Part> parts = SealedBox(40, 30, 20, 3);
   parts[3] = Slab("right_low", {40, -3, 0}, {43, 33, 10});
   parts.push_back(Slab("right_high", {40, -3, 11}, {43, 33, 20}));
   parts.push_back(Slab("right_mid_a", {40, -3, 10}, {43, 15, 11}));
   parts.push_back(Slab("right_mid_b", {40, 16, 10}, {43, 33, 11}));
   const Assembly assembly = MakeAssembly(parts);
-  const GapSearch coarse = Search(assembly, 2.0);
-  ASSERT_EQ(coarse.gaps.size(), 1u);
-  ExpectBracketed(coarse.gaps[0], 40 * 30 * 20 + 3, "leak closed");
-  EXPECT_TRUE(Search(assembly, 0.25).gaps.empty());
+  for (const double voxel : {2.5, 2.2}) {
+    const GapSearch coarse = Search(assembly, voxel);
+    ASSERT_EQ(coarse.gaps.size(), 1u) << voxel;
+    ExpectBracketed(coarse.gaps[0], 40 * 30 * 20 + 3, "leak closed");
+  }
+  for (const double voxel : {1.0, 0.9, 0.7, 0.25}) {
+    EXPECT_TRUE(Search(assembly, voxel).gaps.empty()) << voxel;
+  }
 }
 
 TEST(GapSearch, APlateExportedWithTJunctionsAndACrackStillSeals) {
@@ -289,6 +297,56 @@ TEST(GapSearch, ACavityOneVoxelHighWithFacesOnVoxelFacesIsFound) {
     const GapSearch search = Search(MakeAssembly(SealedBox(20, 12, voxel, 2)), voxel);
     ExpectWithinTwoPercent(search, 20 * 12 * voxel, "voxel " + std::to_string(voxel));
   }
+}
+
+TEST(GapSearch, ACavityBetweenOneAndTwoVoxelsThickIsFoundAtAnyAlignment) {
+  // A cavity 20 x 12 mm, 1 to 1.75 voxels high, between plates and walls shifted by
+  // fractions of a voxel: most of these hold no whole voxel of the grid, only free octants.
+  int thin = 0;
+  for (const double voxel : {0.25, 0.5, 1.0}) {
+    for (const double height : {1.0, 1.3, 1.75}) {
+      for (const double shift : {0.13, 0.37, 0.5, 0.81}) {
+        const RigidTransform X_WA(Eigen::Matrix3d::Identity(),
+                                  Eigen::Vector3d::Constant(shift * voxel));
+        std::vector<Part> parts = SealedBox(20, 12, height * voxel, 2, X_WA);
+        parts.push_back(Anchor());
+        const GapSearch search = Search(MakeAssembly(parts), voxel);
+        const std::string what = "voxel " + std::to_string(voxel) + " height " +
+                                 std::to_string(height) + " shift " + std::to_string(shift);
+        ExpectWithinTwoPercent(search, 20 * 12 * height * voxel, what);
+        if (!search.gaps.empty() && search.gaps[0].voxels == 0) {
+          ++thin;
+          EXPECT_EQ(search.gaps[0].parts.size(), 6u) << what;
+          EXPECT_LE((search.gaps[0].box_W.max - search.gaps[0].box_W.min -
+                     Eigen::Vector3d(20, 12, height * voxel))
+                        .cwiseAbs()
+                        .maxCoeff(),
+                    voxel)
+              << what;
+        }
+      }
+    }
+  }
+  EXPECT_GE(thin, 20);
+}
+
+TEST(GapSearch, AThinGapsSurfaceEnclosesExactlyItsOctants) {
+  const RigidTransform X_WA(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Constant(0.37));
+  std::vector<Part> parts = SealedBox(20, 12, 1.3, 2, X_WA);
+  parts.push_back(Anchor());
+  const GapSearch search = Search(MakeAssembly(parts), 1.0);
+  ASSERT_EQ(search.gaps.size(), 1u);
+  ASSERT_EQ(search.gaps[0].voxels, 0);
+  int octants = 0;
+  for (const auto& set : search.octree->thin_octants(search.gaps[0].component)) {
+    octants += std::popcount(set.octants);
+  }
+  EXPECT_GT(octants, 100);
+  std::vector<std::int32_t> gap_of_face;
+  const TriangleMesh surface = GapSurface(search, &gap_of_face);
+  ASSERT_EQ(gap_of_face.size(), surface.faces.size());
+  EXPECT_TRUE(std::all_of(gap_of_face.begin(), gap_of_face.end(), [](int g) { return g == 0; }));
+  EXPECT_NEAR(surface.SignedVolume(), octants * 0.125, 1e-6);
 }
 
 TEST(GapSearch, TheBoundShrinksOnAxisAlignedFaces) {
