@@ -61,22 +61,33 @@ class PointTree {
   std::vector<Eigen::AlignedBox3f> boxes_;
 };
 
-// The closest pair between two point trees: a dual-tree search that skips pairs of subtrees
-// whose boxes are no nearer than the best pair so far (Bentley, 1980).
+// A pair of points no farther apart than the closest pair plus `slack` (mm): a dual-tree
+// search that skips pairs of subtrees whose boxes cannot bring a pair nearer than the best so
+// far by more than the slack (Bentley, 1980).
 struct ClosestPair {
+  explicit ClosestPair(double slack) : slack(slack) {}
+  void Offer(std::size_t i, std::size_t j, double distance2) {
+    if (distance2 >= d2) return;
+    a = i;
+    b = j;
+    d2 = distance2;
+    const double reach = std::max(0.0, std::sqrt(d2) - slack);
+    prune2 = reach * reach;
+  }
+  double slack = 0;
   std::size_t a = 0, b = 0;
   double d2 = std::numeric_limits<double>::infinity();
+  double prune2 = std::numeric_limits<double>::infinity();  // boxes this far apart are skipped
 };
 
 void FindClosestPair(const PointTree& ta, std::size_t a_lo, std::size_t a_hi, const PointTree& tb,
                      std::size_t b_lo, std::size_t b_hi, ClosestPair& best) {
   if (a_lo >= a_hi || b_lo >= b_hi) return;
-  if (ta.Box(a_lo, a_hi).squaredExteriorDistance(tb.Box(b_lo, b_hi)) >= best.d2) return;
+  if (ta.Box(a_lo, a_hi).squaredExteriorDistance(tb.Box(b_lo, b_hi)) >= best.prune2) return;
   if ((a_hi - a_lo) * (b_hi - b_lo) <= 16) {
     for (std::size_t i = a_lo; i < a_hi; ++i) {
       for (std::size_t j = b_lo; j < b_hi; ++j) {
-        const double d2 = (ta.point(i) - tb.point(j)).cast<double>().squaredNorm();
-        if (d2 < best.d2) best = {i, j, d2};
+        best.Offer(i, j, (ta.point(i) - tb.point(j)).cast<double>().squaredNorm());
       }
     }
     return;
@@ -238,7 +249,8 @@ GapSearch FindGaps(const Assembly& assembly, const GapSearchOptions& options) {
     });
     points.erase(std::unique(points.begin(), points.end()), points.end());
     const PointTree gap_tree(std::move(points));
-    ClosestPair best;
+    // Half a voxel of slack: the centres stand for the surfaces only to within that anyway.
+    ClosestPair best(options.voxel / 2);
     FindClosestPair(gap_tree, 0, gap_tree.size(), outside_tree, 0, outside_tree.size(), best);
     if (std::isfinite(best.d2)) {
       gap.p_gap_W = gap_tree.point(best.a).cast<double>();

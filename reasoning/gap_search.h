@@ -45,9 +45,10 @@ struct Gap {
   std::vector<std::size_t> parts;  ///< parts whose surfaces bound it (indices, ascending)
   /// Where it comes closest to the outside: the nearest pair of a partial voxel next to the
   /// gap (or an octant of a thin gap) and a partial voxel next to the outside (their
-  /// centres, world, mm), and their distance `wall` (mm), the thinnest separation between the
-  /// gap and the outside to within about a voxel (the centres lie up to half a voxel off the
-  /// surfaces across the wall; on faces on voxel faces, half a voxel inside the wall).
+  /// centres, world, mm; a pair within half a voxel of the nearest, the search's slack), and
+  /// their distance `wall` (mm), the thinnest separation between the gap and the outside to
+  /// within about a voxel (the centres lie up to half a voxel off the surfaces across the
+  /// wall; on faces on voxel faces, half a voxel inside the wall).
   Eigen::Vector3d p_gap_W = Eigen::Vector3d::Zero();
   Eigen::Vector3d p_outside_W = Eigen::Vector3d::Zero();
   double wall = 0.0;

@@ -22,6 +22,44 @@ namespace {
 
 constexpr int kMaxDepth = 20;
 
+// The groups of a set of octants (bit mask, bits as in OccupancyOctree::OctantSet) that share
+// faces: each octant's group (0, 1, ...; -1 for octants not in the set) and their number.
+struct OctantGroups {
+  std::array<std::int8_t, 8> group;
+  int count = 0;
+};
+
+const OctantGroups& OctantGroupsOf(std::uint8_t octants) {
+  static const std::array<OctantGroups, 256> table = [] {
+    std::array<OctantGroups, 256> groups;
+    for (int mask = 0; mask < 256; ++mask) {
+      OctantGroups& g = groups[mask];
+      g.group.fill(-1);
+      for (int start = 0; start < 8; ++start) {
+        if (!((mask >> start) & 1) || g.group[start] >= 0) continue;
+        // Flood the new group over octants that differ in one bit.
+        std::array<int, 8> stack;
+        int top = 0;
+        stack[top++] = start;
+        g.group[start] = static_cast<std::int8_t>(g.count);
+        while (top > 0) {
+          const int o = stack[--top];
+          for (int axis = 0; axis < 3; ++axis) {
+            const int next = o ^ (1 << axis);
+            if (((mask >> next) & 1) && g.group[next] < 0) {
+              g.group[next] = static_cast<std::int8_t>(g.count);
+              stack[top++] = next;
+            }
+          }
+        }
+        ++g.count;
+      }
+    }
+    return groups;
+  }();
+  return table[octants];
+}
+
 // Union-find over node indices with path halving.
 std::int32_t FindRoot(std::vector<std::int32_t>& parent, std::int32_t x) {
   while (parent[x] != x) {
@@ -794,11 +832,37 @@ class OctreeBuilder {
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       if (untouched(static_cast<std::int32_t>(i))) parent[i] = static_cast<std::int32_t>(i);
     }
-    tree_.ForEachFaceNeighbours([&](const auto& a, const auto& b, int) {
-      if (!untouched(a.node) || !untouched(b.node) || kind(a.node) != kind(b.node)) return;
-      const std::int32_t ra = FindRoot(parent, a.node), rb = FindRoot(parent, b.node);
-      if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+    // The same pass joins free octants that share a face and lists those that share one with
+    // an untouched leaf, to be joined once the leaf's state is known.
+    FreeOctants octants = CollectFreeOctants();
+    const auto& free = tree_.free_octants_;
+    tree_.ForEachFaceNeighbours([&](const auto& a, const auto& b, int axis) {
+      const bool a_untouched = untouched(a.node), b_untouched = untouched(b.node);
+      if (a_untouched && b_untouched) {
+        if (kind(a.node) != kind(b.node)) return;
+        const std::int32_t ra = FindRoot(parent, a.node), rb = FindRoot(parent, b.node);
+        if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+        return;
+      }
+      const std::int32_t ha = octants.holder_of[a.node], hb = octants.holder_of[b.node];
+      if (ha < 0 && hb < 0) return;
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      for (int k = 0; k < 4; ++k) {
+        // The octants of a on its high side and of b on its low side that meet at the face.
+        const int low = ((k & 1) << u) | (((k >> 1) & 1) << v);
+        const int high = low | (1 << axis);
+        const bool a_free = ha >= 0 && ((free[a.node] >> high) & 1);
+        const bool b_free = hb >= 0 && ((free[b.node] >> low) & 1);
+        if (a_free && b_free) {
+          octants.Join(octants.Element(ha, high), octants.Element(hb, low));
+        } else if (a_free && b_untouched) {
+          octants.Beside(octants.Element(ha, high), b.node);
+        } else if (b_free && a_untouched) {
+          octants.Beside(octants.Element(hb, low), a.node);
+        }
+      }
     });
+    octants.holder_of = {};
 
     // Components in the order of their first leaf, each with its state.
     for (std::size_t i = 0; i < nodes.size(); ++i) {
@@ -833,8 +897,8 @@ class OctreeBuilder {
         if (ra != rb) merged[std::max(ra, rb)] = std::min(ra, rb);
       });
     }
-    const std::vector<OccupancyOctree::OctantSet> holders =
-        JoinFreeOctants(state, first_pass, merged);
+    JoinFreeOctants(octants, state, first_pass, merged);
+    const FreeOctants& free_octants = octants;
 
     std::vector<std::int32_t> final_id(state.size(), -1);
     const std::int32_t n = tree_.resolution();
@@ -864,11 +928,12 @@ class OctreeBuilder {
     const auto first_octant = static_cast<std::int32_t>(state.size());
     constexpr std::int32_t kInside = -2;
     std::vector<std::int32_t> thin_id(merged.size() - state.size(), -1);
+    const auto& holders = free_octants.holders;
     for (std::size_t h = 0; h < holders.size(); ++h) {
       for (int octant = 0; octant < 8; ++octant) {
         if (!((holders[h].octants >> octant) & 1)) continue;
-        const std::int32_t root =
-            FindRoot(merged, first_octant + 8 * static_cast<std::int32_t>(h) + octant);
+        const std::int32_t root = FindRoot(
+            merged, first_octant + free_octants.Element(static_cast<std::int32_t>(h), octant));
         if (root < first_octant) continue;  // joined to untouched cells
         std::int32_t& id = thin_id[root - first_octant];
         if (id == kInside) continue;
@@ -939,69 +1004,73 @@ class OctreeBuilder {
            tree_.voxel_ * (Eigen::Vector3d(voxel.min[0], voxel.min[1], voxel.min[2]) + at);
   }
 
-  // Joins the free octants of partial voxels (OccupancyOctree::free_octants) to each other and
-  // to the empty untouched cells they share a face with, in `merged`, the union-find over the
-  // first-pass components (`state`: -1 empty): it grows by eight elements per partial voxel
-  // with free octants, octant o of the h-th at state.size() + 8 h + o. Returns those voxels
-  // in leaf order with their free octants.
-  template <typename FirstPass>
-  std::vector<OccupancyOctree::OctantSet> JoinFreeOctants(const std::vector<std::int32_t>& state,
-                                                          const FirstPass& first_pass,
-                                                          std::vector<std::int32_t>& merged) {
+  // The partial voxels with free octants, in leaf order, and their union-find elements: one
+  // per group of free octants that share faces within the voxel (OctantGroupsOf), those of
+  // the h-th voxel numbered from first[h] on.
+  struct FreeOctants {
+    std::vector<OccupancyOctree::OctantSet> holders;
+    std::vector<std::int32_t> first;
+    std::vector<std::int32_t> holder_of;  // by node, -1 for none
+    std::vector<std::int32_t> parent;     // union-find over the elements
+    // (element, untouched leaf's node) that share a face, in the order found.
+    std::vector<std::pair<std::int32_t, std::int32_t>> beside;
+
+    std::int32_t Element(std::int32_t h, int octant) const {
+      return first[h] + OctantGroupsOf(holders[h].octants).group[octant];
+    }
+    void Join(std::int32_t x, std::int32_t y) {
+      const std::int32_t rx = FindRoot(parent, x), ry = FindRoot(parent, y);
+      if (rx != ry) parent[std::max(rx, ry)] = std::min(rx, ry);
+    }
+    void Beside(std::int32_t element, std::int32_t node) {
+      if (beside.empty() || beside.back() != std::pair{element, node}) {
+        beside.emplace_back(element, node);
+      }
+    }
+  };
+
+  FreeOctants CollectFreeOctants() const {
     const auto& nodes = tree_.nodes_;
     const auto& free = tree_.free_octants_;
-    std::vector<OccupancyOctree::OctantSet> holders;
-    std::vector<std::int32_t> holder_of(nodes.size(), -1);
+    FreeOctants octants;
+    octants.holder_of.assign(nodes.size(), -1);
+    std::int32_t next = 0;
     tree_.ForEachLeaf([&](const OccupancyOctree::Cell& cell) {
       if ((nodes[cell.node] & OccupancyOctree::kPartialBit) && free[cell.node] != 0) {
-        holder_of[cell.node] = static_cast<std::int32_t>(holders.size());
-        holders.push_back({cell, free[cell.node]});
+        octants.holder_of[cell.node] = static_cast<std::int32_t>(octants.holders.size());
+        octants.holders.push_back({cell, free[cell.node]});
+        octants.first.push_back(next);
+        next += OctantGroupsOf(free[cell.node]).count;
       }
     });
-    if (holders.empty()) return holders;
+    octants.parent.resize(next);
+    std::iota(octants.parent.begin(), octants.parent.end(), 0);
+    return octants;
+  }
+
+  // Adds the free octants' elements to `merged`, the union-find over the first-pass
+  // components (`state`: -1 empty), as state.size() + element, and joins them as the first
+  // pass found: to each other, and to the empty untouched leaves they share a face with.
+  template <typename FirstPass>
+  void JoinFreeOctants(FreeOctants& octants, const std::vector<std::int32_t>& state,
+                       const FirstPass& first_pass, std::vector<std::int32_t>& merged) {
+    const auto& nodes = tree_.nodes_;
+    const auto& holders = octants.holders;
     const auto first_octant = static_cast<std::int32_t>(state.size());
-    merged.resize(state.size() + 8 * holders.size());
-    std::iota(merged.begin() + first_octant, merged.end(), first_octant);
+    const auto count = static_cast<std::int32_t>(octants.parent.size());
+    if (count == 0) return;
+    merged.resize(state.size() + count);
+    for (std::int32_t e = 0; e < count; ++e) {
+      merged[first_octant + e] = first_octant + FindRoot(octants.parent, e);
+    }
     const auto join = [&](std::int32_t x, std::int32_t y) {
       const std::int32_t rx = FindRoot(merged, x), ry = FindRoot(merged, y);
       if (rx != ry) merged[std::max(rx, ry)] = std::min(rx, ry);
     };
-    const auto element = [&](std::int32_t node, int octant) {
-      return first_octant + 8 * holder_of[node] + octant;
-    };
-    for (const OccupancyOctree::OctantSet& set : holders) {
-      for (int octant = 0; octant < 8; ++octant) {
-        for (int axis = 0; axis < 3; ++axis) {
-          const int next = octant | (1 << axis);
-          if (next != octant && ((set.octants >> octant) & 1) && ((set.octants >> next) & 1)) {
-            join(element(set.cell.node, octant), element(set.cell.node, next));
-          }
-        }
-      }
+    for (const auto& [element, node] : octants.beside) {
+      if (state[first_pass(node)] < 0) join(first_octant + element, first_pass(node));
     }
-    tree_.ForEachFaceNeighbours(
-        [&](const OccupancyOctree::Cell& a, const OccupancyOctree::Cell& b, int axis) {
-          const bool a_holds = holder_of[a.node] >= 0, b_holds = holder_of[b.node] >= 0;
-          if (!a_holds && !b_holds) return;
-          const auto empty_untouched = [&](const OccupancyOctree::Cell& c) {
-            return !(nodes[c.node] & OccupancyOctree::kPartialBit) && state[first_pass(c.node)] < 0;
-          };
-          const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-          for (int k = 0; k < 4; ++k) {
-            // The octants of a on its high side and of b on its low side that meet at the face.
-            const int low = ((k & 1) << u) | (((k >> 1) & 1) << v);
-            const int high = low | (1 << axis);
-            const bool a_free = a_holds && ((free[a.node] >> high) & 1);
-            const bool b_free = b_holds && ((free[b.node] >> low) & 1);
-            if (a_free && b_free) {
-              join(element(a.node, high), element(b.node, low));
-            } else if (a_free && empty_untouched(b)) {
-              join(element(a.node, high), first_pass(b.node));
-            } else if (b_free && empty_untouched(a)) {
-              join(element(b.node, low), first_pass(a.node));
-            }
-          }
-        });
+    octants.beside = {};
 
     // A set of free octants whose every voxel has an empty untouched cell among its 26
     // neighbours is a pocket of that cell's space that octants are too coarse to join to it
@@ -1018,30 +1087,25 @@ class OctreeBuilder {
       }
       return std::int32_t{-1};
     };
-    std::vector<std::int32_t> pocket(holders.size(), -2);  // by root: -2 unseen, -1 not
+    // By root (less first_octant): -2 unseen, -1 not a pocket, else the component to join.
+    std::vector<std::int32_t> pocket(count, -2);
     for (std::size_t h = 0; h < holders.size(); ++h) {
       std::optional<std::int32_t> near;  // looked up once per voxel, when needed
-      for (int octant = 0; octant < 8; ++octant) {
-        if (!((holders[h].octants >> octant) & 1)) continue;
-        const std::int32_t root = FindRoot(merged, element(holders[h].cell.node, octant));
+      for (int g = 0; g < OctantGroupsOf(holders[h].octants).count; ++g) {
+        const std::int32_t root = FindRoot(merged, first_octant + octants.first[h] + g);
         if (root < first_octant) continue;
-        std::int32_t& to = pocket[(root - first_octant) / 8];
+        std::int32_t& to = pocket[root - first_octant];
         if (to == -1) continue;
         if (!near) near = beside(holders[h].cell);
         to = *near < 0 ? -1 : to == -2 ? *near : to;
       }
     }
-    for (std::size_t h = 0; h < holders.size(); ++h) {
-      for (int octant = 0; octant < 8; ++octant) {
-        if (!((holders[h].octants >> octant) & 1)) continue;
-        const std::int32_t x = element(holders[h].cell.node, octant);
-        const std::int32_t root = FindRoot(merged, x);
-        if (root >= first_octant && pocket[(root - first_octant) / 8] >= 0) {
-          join(x, pocket[(root - first_octant) / 8]);
-        }
+    for (std::int32_t x = first_octant; x < first_octant + count; ++x) {
+      const std::int32_t root = FindRoot(merged, x);
+      if (root >= first_octant && pocket[root - first_octant] >= 0) {
+        join(x, pocket[root - first_octant]);
       }
     }
-    return holders;
   }
 
   OccupancyOctree& tree_;
@@ -1064,14 +1128,6 @@ OccupancyOctree OccupancyOctree::Build(const std::vector<PosedMesh>& meshes, dou
   OccupancyOctree tree;
   OctreeBuilder(tree, meshes, progress).Run(voxel);
   return tree;
-}
-
-OccupancyOctree::Cell OccupancyOctree::Child(const Cell& parent, std::uint32_t first, int i) {
-  Cell c;
-  c.node = static_cast<std::int32_t>(first) + i;
-  c.size = parent.size / 2;
-  for (int a = 0; a < 3; ++a) c.min[a] = parent.min[a] + ((i >> a) & 1) * c.size;
-  return c;
 }
 
 CellState OccupancyOctree::state(const Cell& cell) const {
@@ -1123,51 +1179,15 @@ void OccupancyOctree::ForEachLeaf(const std::function<void(const Cell&)>& f) con
   ForEachLeafIn({0, 0, 0}, {n, n, n}, f);
 }
 
-void OccupancyOctree::CellProc(const Cell& c,
-                               const std::function<void(const Cell&, const Cell&, int)>& f) const {
-  const std::uint32_t word = nodes_[c.node];
-  if (IsLeaf(word)) return;
-  for (int i = 0; i < 8; ++i) CellProc(Child(c, word, i), f);
-  for (int axis = 0; axis < 3; ++axis) {
-    for (int i = 0; i < 8; ++i) {
-      if ((i >> axis) & 1) continue;
-      FaceProc(Child(c, word, i), Child(c, word, i | (1 << axis)), axis, f);
-    }
-  }
-}
-
-void OccupancyOctree::FaceProc(const Cell& a, const Cell& b, int axis,
-                               const std::function<void(const Cell&, const Cell&, int)>& f) const {
-  const std::uint32_t wa = nodes_[a.node], wb = nodes_[b.node];
-  if (IsLeaf(wa) && IsLeaf(wb)) {
-    f(a, b, axis);
-    return;
-  }
-  // The four children pairs across the shared face: a's children on its high side, b's on
-  // its low side, matched by the other two bits.
-  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  for (int k = 0; k < 4; ++k) {
-    const int bits = (((k >> 0) & 1) << u) | (((k >> 1) & 1) << v);
-    const Cell ca = IsLeaf(wa) ? a : Child(a, wa, bits | (1 << axis));
-    const Cell cb = IsLeaf(wb) ? b : Child(b, wb, bits);
-    FaceProc(ca, cb, axis, f);
-  }
-}
-
-void OccupancyOctree::ForEachFaceNeighbours(
-    const std::function<void(const Cell&, const Cell&, int)>& f) const {
-  Cell root;
-  root.size = resolution();
-  CellProc(root, f);
-}
-
 void OccupancyOctree::ForEachLeafIn(const std::array<std::int32_t, 3>& min,
                                     const std::array<std::int32_t, 3>& max,
                                     const std::function<void(const Cell&)>& f) const {
-  std::vector<Cell> stack;
+  // Depth first: at most seven siblings wait per level, so the stack never outgrows this.
+  std::array<Cell, 7 * kMaxDepth + 1> stack;
+  std::size_t top = 0;
   Cell root;
   root.size = resolution();
-  stack.push_back(root);
+  stack[top++] = root;
   const auto overlaps = [&](const Cell& c) {
     for (int i = 0; i < 3; ++i) {
       if (c.min[i] >= max[i] || min[i] >= c.min[i] + c.size) return false;
@@ -1175,9 +1195,8 @@ void OccupancyOctree::ForEachLeafIn(const std::array<std::int32_t, 3>& min,
     return true;
   };
   if (!overlaps(root)) return;
-  while (!stack.empty()) {
-    const Cell c = stack.back();
-    stack.pop_back();
+  while (top > 0) {
+    const Cell c = stack[--top];
     const std::uint32_t word = nodes_[c.node];
     if (IsLeaf(word)) {
       f(c);
@@ -1185,7 +1204,7 @@ void OccupancyOctree::ForEachLeafIn(const std::array<std::int32_t, 3>& min,
     }
     for (int i = 7; i >= 0; --i) {
       const Cell child = Child(c, word, i);
-      if (overlaps(child)) stack.push_back(child);
+      if (overlaps(child)) stack[top++] = child;
     }
   }
 }

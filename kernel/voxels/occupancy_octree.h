@@ -51,6 +51,14 @@ enum class CellState : std::uint8_t {
 /// than a voxel, so inside its bounding box every untouched cell is decided by the winding number
 /// at its own centre (near 1 inside a part with a hole) and only cells of equal state are joined;
 /// components of equal state that touch are merged afterwards.
+///
+/// Free octants. A partial voxel's octants (half-size cubes) that no surface enters and that
+/// lie outside the parts are free (free_octants()); they join each other and the empty
+/// untouched cells they share a face with, so that space one to two voxels thick, which holds
+/// no whole voxel, still connects. Free octants that reach no untouched cell form thin
+/// components (thin_octants()), except for a pocket whose every voxel has an empty untouched
+/// cell among its 26 neighbours (joined to it: space at a gap's rim that octants are too
+/// coarse to join) and one inside a part that crosses none of its voxels (dropped).
 class OccupancyOctree {
  public:
   /// A leaf cell: the voxel box [min, min + size) (size a power of two) and its node.
@@ -132,8 +140,14 @@ class OccupancyOctree {
   /// Calls f(a, b, axis) once for every pair of leaves that share part of a face, a on the low
   /// side of b along `axis` (0, 1, 2), in O(leaves) (the face procedure of octree dual
   /// traversals).
-  void ForEachFaceNeighbours(
-      const std::function<void(const Cell&, const Cell&, int axis)>& f) const;
+  /// A template, so that f is called directly: the traversal runs over every leaf near a
+  /// surface, several times per decomposition.
+  template <typename F>
+  void ForEachFaceNeighbours(F&& f) const {
+    Cell root;
+    root.size = resolution();
+    CellProc(root, f);
+  }
   /// Calls f on every leaf that overlaps the voxel box [min, max) (clipped to the root).
   void ForEachLeafIn(const std::array<std::int32_t, 3>& min, const std::array<std::int32_t, 3>& max,
                      const std::function<void(const Cell&)>& f) const;
@@ -157,10 +171,42 @@ class OccupancyOctree {
   static constexpr std::uint32_t kPayload = 0x1fffffffu;
 
   static bool IsLeaf(std::uint32_t word) { return (word & kLeaf) != 0; }
-  static Cell Child(const Cell& parent, std::uint32_t first, int i);
-  void FaceProc(const Cell& a, const Cell& b, int axis,
-                const std::function<void(const Cell&, const Cell&, int)>& f) const;
-  void CellProc(const Cell& c, const std::function<void(const Cell&, const Cell&, int)>& f) const;
+  static Cell Child(const Cell& parent, std::uint32_t first, int i) {
+    Cell c;
+    c.node = static_cast<std::int32_t>(first) + i;
+    c.size = parent.size / 2;
+    for (int a = 0; a < 3; ++a) c.min[a] = parent.min[a] + ((i >> a) & 1) * c.size;
+    return c;
+  }
+  template <typename F>
+  void CellProc(const Cell& c, F& f) const {
+    const std::uint32_t word = nodes_[c.node];
+    if (IsLeaf(word)) return;
+    for (int i = 0; i < 8; ++i) CellProc(Child(c, word, i), f);
+    for (int axis = 0; axis < 3; ++axis) {
+      for (int i = 0; i < 8; ++i) {
+        if ((i >> axis) & 1) continue;
+        FaceProc(Child(c, word, i), Child(c, word, i | (1 << axis)), axis, f);
+      }
+    }
+  }
+  template <typename F>
+  void FaceProc(const Cell& a, const Cell& b, int axis, F& f) const {
+    const std::uint32_t wa = nodes_[a.node], wb = nodes_[b.node];
+    if (IsLeaf(wa) && IsLeaf(wb)) {
+      f(a, b, axis);
+      return;
+    }
+    // The four children pairs across the shared face: a's children on its high side, b's on
+    // its low side, matched by the other two bits.
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    for (int k = 0; k < 4; ++k) {
+      const int bits = (((k >> 0) & 1) << u) | (((k >> 1) & 1) << v);
+      const Cell ca = IsLeaf(wa) ? a : Child(a, wa, bits | (1 << axis));
+      const Cell cb = IsLeaf(wb) ? b : Child(b, wb, bits);
+      FaceProc(ca, cb, axis, f);
+    }
+  }
 
   double voxel_ = 1.0;
   Eigen::Vector3d origin_W_ = Eigen::Vector3d::Zero();

@@ -261,6 +261,15 @@ std::string Describe(const AlignedCase& c) {
 
 Part Anchor() { return Slab("anchor", {-10, -10, -10}, {-9, -9, -9}); }
 
+// A cavity 20 x 12 x height mm between 2 mm plates and walls, shifted by `shift` mm along
+// each axis, with the anchor that keeps the grid's origin put.
+Assembly ShiftedCavity(double height, double shift) {
+  const RigidTransform X_WA(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Constant(shift));
+  std::vector<Part> parts = SealedBox(20, 12, height, 2, X_WA);
+  parts.push_back(Anchor());
+  return MakeAssembly(parts);
+}
+
 void ExpectWithinTwoPercent(const GapSearch& search, double truth, const std::string& what) {
   ASSERT_EQ(search.gaps.size(), 1u) << what;
   const Gap& gap = search.gaps[0];
@@ -272,11 +281,8 @@ void ExpectWithinTwoPercent(const GapSearch& search, double truth, const std::st
 TEST(GapSearch, AThinCavityBetweenPlatesOnRoundCoordinatesIsFoundAndMeasured) {
   // A cavity 20 x 12 x 2 mm between 2 mm plates and walls.
   for (const AlignedCase& c : AlignedCases()) {
-    const RigidTransform X_WA(Eigen::Matrix3d::Identity(),
-                              Eigen::Vector3d::Constant(c.shift * c.voxel));
-    std::vector<Part> parts = SealedBox(20, 12, 2, 2, X_WA);
-    parts.push_back(Anchor());
-    ExpectWithinTwoPercent(Search(MakeAssembly(parts), c.voxel), 20 * 12 * 2, Describe(c));
+    ExpectWithinTwoPercent(Search(ShiftedCavity(2, c.shift * c.voxel), c.voxel), 20 * 12 * 2,
+                           Describe(c));
   }
 }
 
@@ -306,11 +312,7 @@ TEST(GapSearch, ACavityBetweenOneAndTwoVoxelsThickIsFoundAtAnyAlignment) {
   for (const double voxel : {0.25, 0.5, 1.0}) {
     for (const double height : {1.0, 1.3, 1.75}) {
       for (const double shift : {0.13, 0.37, 0.5, 0.81}) {
-        const RigidTransform X_WA(Eigen::Matrix3d::Identity(),
-                                  Eigen::Vector3d::Constant(shift * voxel));
-        std::vector<Part> parts = SealedBox(20, 12, height * voxel, 2, X_WA);
-        parts.push_back(Anchor());
-        const GapSearch search = Search(MakeAssembly(parts), voxel);
+        const GapSearch search = Search(ShiftedCavity(height * voxel, shift * voxel), voxel);
         const std::string what = "voxel " + std::to_string(voxel) + " height " +
                                  std::to_string(height) + " shift " + std::to_string(shift);
         ExpectWithinTwoPercent(search, 20 * 12 * height * voxel, what);
@@ -331,10 +333,7 @@ TEST(GapSearch, ACavityBetweenOneAndTwoVoxelsThickIsFoundAtAnyAlignment) {
 }
 
 TEST(GapSearch, AThinGapsSurfaceEnclosesExactlyItsOctants) {
-  const RigidTransform X_WA(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Constant(0.37));
-  std::vector<Part> parts = SealedBox(20, 12, 1.3, 2, X_WA);
-  parts.push_back(Anchor());
-  const GapSearch search = Search(MakeAssembly(parts), 1.0);
+  const GapSearch search = Search(ShiftedCavity(1.3, 0.37), 1.0);
   ASSERT_EQ(search.gaps.size(), 1u);
   ASSERT_EQ(search.gaps[0].voxels, 0);
   int octants = 0;
@@ -352,10 +351,7 @@ TEST(GapSearch, AThinGapsSurfaceEnclosesExactlyItsOctants) {
 TEST(GapSearch, TheBoundShrinksOnAxisAlignedFaces) {
   // At half a voxel's shift the faces cross voxels; the stated error stays below 1% of the
   // volume where counting each partial voxel half would state about 50%.
-  const RigidTransform X_WA(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Constant(0.25));
-  std::vector<Part> parts = SealedBox(20, 12, 2, 2, X_WA);
-  parts.push_back(Anchor());
-  const GapSearch search = Search(MakeAssembly(parts), 0.5);
+  const GapSearch search = Search(ShiftedCavity(2, 0.25), 0.5);
   ASSERT_EQ(search.gaps.size(), 1u);
   EXPECT_LT(search.gaps[0].volume_error, 0.01 * 20 * 12 * 2);
 }
