@@ -210,7 +210,7 @@ GapSearch FindGaps(const Assembly& assembly, const GapSearchOptions& options) {
         if (!((set.octants >> octant) & 1)) continue;
         const Aabb box = OctantBox(tree, set.cell, octant);
         result.gaps[g].box_W.Extend(box);
-        gap_walls[g].push_back(OctantBox(tree, set.cell, octant).center().cast<float>());
+        gap_walls[g].push_back(box.center().cast<float>());
         for (int corner = 0; corner < 8; ++corner) {
           std::array<std::int32_t, 3> v = set.cell.min;
           for (int i = 0; i < 3; ++i) {

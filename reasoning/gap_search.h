@@ -22,9 +22,10 @@ struct GapSearchOptions {
 /// An enclosed empty space: a connected set of empty cells and free octants (half-voxel
 /// cubes of partial voxels that no surface enters) that the outside does not reach through
 /// empty cells and free octants (the seeds' gaps that sealant would fill). So a gap or a
-/// passage at least a voxel thick holds a free octant whatever its alignment and is found
-/// (open, for a passage); one thinner than half a voxel holds none and is not found (closed:
-/// a gap with such a leak stays a gap); between the two, it depends on the alignment. A gap
+/// passage at least a voxel thick between faces square to the axes holds a free octant
+/// whatever its offset on the grid and is found (open, for a passage); one thinner than half a
+/// voxel holds none and is not found (closed: a gap with such a leak stays a gap); between the
+/// two, and between sloping faces (judged conservatively), it depends on the alignment. A gap
 /// made of free octants only (`voxels` 0, between 1 and 2 voxels thick) is a thin gap.
 struct Gap {
   /// The gap's component in the decomposition (OccupancyOctree::components()).

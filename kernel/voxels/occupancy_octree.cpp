@@ -405,7 +405,8 @@ std::uint8_t OutsideEveryMesh(const std::vector<Triangle>& tris,
 // What the lines through a partial voxel tell: its Fill, and its free octants
 // (OccupancyOctree::free_octants): those whose inside no triangle reaches (judged on the
 // triangles' planes over the octant's prisms, so a sloping triangle may mark an octant it
-// passes by) and whose state on a line through them is empty.
+// passes by) and that are outside the meshes (for one mesh, the state on a line through the
+// octant; for several, OutsideEveryMesh).
 struct VoxelContents {
   OccupancyOctree::Fill fill;
   std::uint8_t free_octants = 0;
@@ -444,15 +445,28 @@ VoxelContents VoxelFill(const std::vector<Triangle>& tris, const std::vector<std
     const double last = std::ceil(std::clamp((to - start - eps) * per_d, 0.0, double(n))) - 1;
     return std::make_pair(static_cast<int>(first), std::min(n - 1, static_cast<int>(last)));
   };
+  // A triangle in the plane between two prisms reaches into neither, but into the octant that
+  // plane cuts (a quarter of the voxel in, when n is 4): both prisms then get its reach.
+  const auto reach_prisms = [&](double from, double to, double start) {
+    std::pair<int, int> range = prisms(from, to, start);
+    if (range.first > range.second && n == 4 && to - from <= 2 * eps) {
+      for (const int k : {1, 3}) {
+        if (std::abs((from + to) / 2 - start - k * d) <= eps) range = {k - 1, k};
+      }
+    }
+    return range;
+  };
   for (const Triangle& t : tris) {
     const auto [i0, i1] = prisms(t.min[u], t.max[u], lo[u]);
     const auto [j0, j1] = prisms(t.min[v], t.max[v], lo[v]);
+    const auto [ri0, ri1] = reach_prisms(t.min[u], t.max[u], lo[u]);
+    const auto [rj0, rj1] = reach_prisms(t.min[v], t.max[v], lo[v]);
     // The triangle's plane: height = base + gu (u - lo[u]) + gv (v - lo[v]).
     const bool flat = t.n[axis] == 0;
     const double gu = flat ? 0 : -t.n[u] / t.n[axis], gv = flat ? 0 : -t.n[v] / t.n[axis];
     const double base = t.p[0][axis] + gu * (lo[u] - t.p[0][u]) + gv * (lo[v] - t.p[0][v]);
-    for (int j = j0; j <= j1; ++j) {
-      for (int i = i0; i <= i1; ++i) {
+    for (int j = std::min(j0, rj0); j <= std::max(j1, rj1); ++j) {
+      for (int i = std::min(i0, ri0); i <= std::max(i1, ri1); ++i) {
         double from = t.min[axis], to = t.max[axis];
         if (!flat) {
           // The plane over the part of the prism the triangle's box covers.
@@ -468,12 +482,12 @@ VoxelContents VoxelFill(const std::vector<Triangle>& tris, const std::vector<std
         }
         from = std::max(from, bottom);
         to = std::min(to, top);
-        if (to >= from) {
+        if (to >= from && i >= ri0 && i <= ri1 && j >= rj0 && j <= rj1) {
           auto& [low, high] = reach[i + n * j];
           low = std::min(low, from);
           high = std::max(high, to);
         }
-        if (to - from > 2 * eps) {
+        if (to - from > 2 * eps && i >= i0 && i <= i1 && j >= j0 && j <= j1) {
           auto& [low, high] = span[i + n * j];
           low = std::min(low, from);
           high = std::max(high, to);
@@ -977,12 +991,16 @@ class OctreeBuilder {
           for (int side = 0; side < 2 && !inside; ++side) {
             const double plane = lo[a] + side * h;
             const int u = (a + 1) % 3, v = (a + 2) % 3;
-            // In the plane, over part of the face (not only along its edge).
+            // In the plane, over part of the face (not only along its edges).
             if (std::abs(t.min[a] - plane) > eps || std::abs(t.max[a] - plane) > eps ||
-                t.max[u] <= lo[u] + eps || t.min[u] >= lo[u] + h - eps || t.max[v] <= lo[v] + eps ||
-                t.min[v] >= lo[v] + h - eps || t.n[a] == 0) {
+                t.n[a] == 0) {
               continue;
             }
+            Eigen::Vector3d center = lo + Eigen::Vector3d::Constant(h / 2), half;
+            center[a] = plane;
+            half[a] = 0;
+            half[u] = half[v] = h / 2 - 2 * eps;
+            if (!TriangleOverlapsBox(t.p[0], t.p[1], t.p[2], center, half)) continue;
             inside = side == 0 ? t.n[a] < 0 : t.n[a] > 0;
           }
         }
@@ -1072,17 +1090,24 @@ class OctreeBuilder {
     }
     octants.beside = {};
 
-    // A set of free octants whose every voxel has an empty untouched cell among its 26
-    // neighbours is a pocket of that cell's space that octants are too coarse to join to it
-    // (at a gap's rim, in its edges and corners): joined to the first such cell's component.
-    const auto beside = [&](const OccupancyOctree::Cell& voxel) {
-      for (int k = 0; k < 27; ++k) {
-        std::array<std::int32_t, 3> v = voxel.min;
-        for (int i = 0, code = k; i < 3; ++i, code /= 3) v[i] += code % 3 - 1;
-        const OccupancyOctree::Cell near = tree_.Locate(v);
-        if (!(nodes[near.node] & OccupancyOctree::kPartialBit) &&
-            state[first_pass(near.node)] < 0) {
-          return first_pass(near.node);
+    // A set of free octants each group of which touches an empty untouched cell (shares a
+    // face, an edge or a corner with it) is a pocket of that cell's space that octants are too
+    // coarse to join to it (at a gap's rim, in its edges and corners): joined to the first such
+    // cell's component. The cells an octant touches are those of the 2 x 2 x 2 voxels around
+    // its outer corner.
+    const auto beside = [&](const OccupancyOctree::Cell& voxel, std::uint8_t group) {
+      for (int octant = 0; octant < 8; ++octant) {
+        if (!((group >> octant) & 1)) continue;
+        for (int corner = 1; corner < 8; ++corner) {
+          std::array<std::int32_t, 3> v = voxel.min;
+          for (int i = 0; i < 3; ++i) {
+            if ((corner >> i) & 1) v[i] += ((octant >> i) & 1) ? 1 : -1;
+          }
+          const OccupancyOctree::Cell near = tree_.Locate(v);
+          if (!(nodes[near.node] & OccupancyOctree::kPartialBit) &&
+              state[first_pass(near.node)] < 0) {
+            return first_pass(near.node);
+          }
         }
       }
       return std::int32_t{-1};
@@ -1090,14 +1115,18 @@ class OctreeBuilder {
     // By root (less first_octant): -2 unseen, -1 not a pocket, else the component to join.
     std::vector<std::int32_t> pocket(count, -2);
     for (std::size_t h = 0; h < holders.size(); ++h) {
-      std::optional<std::int32_t> near;  // looked up once per voxel, when needed
-      for (int g = 0; g < OctantGroupsOf(holders[h].octants).count; ++g) {
+      const OctantGroups& groups = OctantGroupsOf(holders[h].octants);
+      for (int g = 0; g < groups.count; ++g) {
         const std::int32_t root = FindRoot(merged, first_octant + octants.first[h] + g);
         if (root < first_octant) continue;
         std::int32_t& to = pocket[root - first_octant];
         if (to == -1) continue;
-        if (!near) near = beside(holders[h].cell);
-        to = *near < 0 ? -1 : to == -2 ? *near : to;
+        std::uint8_t group = 0;
+        for (int octant = 0; octant < 8; ++octant) {
+          if (groups.group[octant] == g) group = static_cast<std::uint8_t>(group | (1 << octant));
+        }
+        const std::int32_t near = beside(holders[h].cell, group);
+        to = near < 0 ? -1 : to == -2 ? near : to;
       }
     }
     for (std::int32_t x = first_octant; x < first_octant + count; ++x) {

@@ -56,9 +56,10 @@ enum class CellState : std::uint8_t {
 /// lie outside the parts are free (free_octants()); they join each other and the empty
 /// untouched cells they share a face with, so that space one to two voxels thick, which holds
 /// no whole voxel, still connects. Free octants that reach no untouched cell form thin
-/// components (thin_octants()), except for a pocket whose every voxel has an empty untouched
-/// cell among its 26 neighbours (joined to it: space at a gap's rim that octants are too
-/// coarse to join) and one inside a part that crosses none of its voxels (dropped).
+/// components (thin_octants()), except for a pocket whose every group of octants touches an
+/// empty untouched cell (joined to it: space at a gap's rim that octants are too coarse to
+/// join) and one inside a part by the winding number of every part at one of its octants
+/// (dropped: parts that overlap).
 class OccupancyOctree {
  public:
   /// A leaf cell: the voxel box [min, min + size) (size a power of two) and its node.
@@ -121,7 +122,9 @@ class OccupancyOctree {
   /// The free octants of a partial voxel: those no surface reaches inside, outside the meshes
   /// that cross the voxel (where meshes overlap, possibly inside another); 0 for other cells.
   /// A sloping face is judged by its plane over the octant, so it may take an octant it passes
-  /// by; an octant on a line that some mesh crossing the voxel does not cross is not free.
+  /// by. Where one mesh crosses the voxel, its fill lines tell the state; where several do,
+  /// each mesh's state is told by its own crossings of 4 x 4 lines along each axis, and an
+  /// octant for which some mesh's state stays unknown is not free.
   std::uint8_t free_octants(const Cell& cell) const;
   /// The free octants that make a thin component, by partial voxel in leaf order; empty for
   /// a component with untouched cells.

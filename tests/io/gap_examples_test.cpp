@@ -4,6 +4,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 
 #include "io/load_assembly.h"
 #include "reasoning/gap_search.h"
@@ -25,6 +28,23 @@ TEST(GapExamples, SealedEnclosureDrainsOnceTheVoxelResolvesItsHole) {
   EXPECT_LE(gap.wall, 3.0 + options.voxel);
   options.voxel = 0.5;
   EXPECT_TRUE(FindGaps(assembly, options).gaps.empty());
+}
+
+TEST(GapExamples, AThreeMillimetreDrainHoleIsOpenAtTwoMillimetreVoxels) {
+  // The same box with a 3 mm hole: 1.5 voxels wide, it holds free octants and drains.
+  const std::filesystem::path file =
+      std::filesystem::path(MECHANIST_SOURCE_DIR) / "examples/sealed_enclosure/assembly.json";
+  std::ifstream in(file);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string hole = "\"diameter\": 1}";
+  const auto at = text.find(hole);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, hole.size(), "\"diameter\": 3}");
+  GapSearchOptions options;
+  options.voxel = 2.0;
+  EXPECT_TRUE(FindGaps(LoadAssemblyText(text, file), options).gaps.empty());
+  options.voxel = 7.0;  // the hole narrower than half an octant's diagonal: closed
+  EXPECT_EQ(FindGaps(LoadAssemblyText(text, file), options).gaps.size(), 1u);
 }
 
 }  // namespace

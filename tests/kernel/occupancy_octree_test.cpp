@@ -284,6 +284,22 @@ TEST(OccupancyOctree, FreeOctantsHoldNoSurfaceAndNoMaterial) {
   EXPECT_GT(free_octants, 1000);
 }
 
+TEST(OccupancyOctree, FreeOctantsOfAShellWithWallsOnQuarterVoxels) {
+  // Inner faces a quarter or three quarters into the voxels: planes between the fill's line
+  // prisms, which cut octants.
+  int free_octants = 0;
+  for (const double wall : {0.5, 1.5}) {
+    TriangleMesh shell = BoxMesh({0, 0, 0}, {12, 12, 12});
+    TriangleMesh cavity =
+        BoxMesh(Eigen::Vector3d::Constant(wall), Eigen::Vector3d::Constant(12 - wall));
+    for (auto& f : cavity.faces) std::swap(f[1], f[2]);
+    shell.Append(cavity);
+    const std::vector<PosedMesh> meshes = {{&shell, RigidTransform()}};
+    ExpectFreeOctantsAreFree(OccupancyOctree::Build(meshes, 2.0), meshes, free_octants);
+  }
+  EXPECT_GT(free_octants, 100);
+}
+
 TEST(OccupancyOctree, VolumeOfABoxIsBracketedByFullAndPartialCells) {
   const TriangleMesh box = BoxMesh({0, 0, 0}, {10, 7, 5});
   const std::vector<PosedMesh> meshes = {

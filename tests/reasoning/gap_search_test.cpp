@@ -348,6 +348,39 @@ TEST(GapSearch, AThinGapsSurfaceEnclosesExactlyItsOctants) {
   EXPECT_NEAR(surface.SignedVolume(), octants * 0.125, 1e-6);
 }
 
+TEST(GapSearch, AThinCavityBetweenWallsHalfAVoxelThickIsFound) {
+  // One voxel high, its faces half a voxel into the voxels, the outside half a voxel beyond:
+  // every voxel of it has outside cells among its neighbours, none touching its octants.
+  const RigidTransform X_WA(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Constant(0.5));
+  std::vector<Part> parts = SealedBox(20, 12, 1, 0.5, X_WA);
+  parts.push_back(Anchor());
+  const GapSearch search = Search(MakeAssembly(parts), 1.0);
+  ExpectWithinTwoPercent(search, 20 * 12 * 1, "walls half a voxel thick");
+  ASSERT_EQ(search.gaps.size(), 1u);
+  EXPECT_EQ(search.gaps[0].voxels, 0);
+}
+
+TEST(GapSearch, AThinCavityInsideAnotherPartIsNoGap) {
+  // The plates of a thin cavity overlap a block that holds all of them.
+  std::vector<Part> parts = SealedBox(20, 12, 1.3, 2);
+  parts.push_back(Slab("block", {-5, -5, -5}, {25, 17, 7}));
+  const RigidTransform X_WA(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Constant(0.37));
+  for (Part& part : parts) part.X_WP = X_WA;
+  EXPECT_TRUE(Search(MakeAssembly(parts), 1.0).gaps.empty());
+}
+
+TEST(GapSearch, AShellWithWallsOnQuarterVoxelsDoesNotLeak) {
+  // One piece, its inner faces a quarter or three quarters into the voxels, its outer faces on
+  // voxel faces: octants cut by a face must not be taken as free.
+  for (const double wall : {0.5, 1.5}) {
+    const Part part = HollowBlock("shell", {0, 0, 0}, {12, 12, 12}, Eigen::Vector3d::Constant(wall),
+                                  Eigen::Vector3d::Constant(12 - wall));
+    const GapSearch search = Search(MakeAssembly({part}), 2.0);
+    ASSERT_EQ(search.gaps.size(), 1u) << wall;
+    ExpectBracketed(search.gaps[0], std::pow(12 - 2 * wall, 3), "shell");
+  }
+}
+
 TEST(GapSearch, TheBoundShrinksOnAxisAlignedFaces) {
   // At half a voxel's shift the faces cross voxels; the stated error stays below 1% of the
   // volume where counting each partial voxel half would state about 50%.
