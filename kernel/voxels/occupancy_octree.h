@@ -58,8 +58,8 @@ enum class CellState : std::uint8_t {
 /// no whole voxel, still connects. Free octants that reach no untouched cell form thin
 /// components (thin_octants()), except for a pocket whose every group of octants touches an
 /// empty untouched cell (joined to it: space at a gap's rim that octants are too coarse to
-/// join) and one inside a part by the winding number of every part at one of its octants
-/// (dropped: parts that overlap).
+/// join) and one that lies inside a part where parts overlap (dropped; told by the winding
+/// number of every part at one of its octants).
 class OccupancyOctree {
  public:
   /// A leaf cell: the voxel box [min, min + size) (size a power of two) and its node.
