@@ -12,16 +12,6 @@ namespace mechanist {
 
 namespace {
 
-// The box of one octant of a voxel (bits as in OccupancyOctree::OctantSet), world, mm.
-Aabb OctantBox(const OccupancyOctree& tree, const OccupancyOctree::Cell& voxel, int octant) {
-  const Aabb box = tree.Box_W(voxel);
-  const Eigen::Vector3d half = (box.max - box.min) / 2;
-  const Eigen::Vector3d lo =
-      box.min +
-      Eigen::Vector3d(octant & 1, (octant >> 1) & 1, (octant >> 2) & 1).cwiseProduct(half);
-  return Aabb{lo, lo + half};
-}
-
 // A k-d tree over points, stored implicitly in their order (median splits by nth_element,
 // cycling through the axes), with the bounding box of every subtree.
 class PointTree {
@@ -208,14 +198,10 @@ GapSearch FindGaps(const Assembly& assembly, const GapSearchOptions& options) {
     for (const OccupancyOctree::OctantSet& set : tree.thin_octants(result.gaps[g].component)) {
       for (int octant = 0; octant < 8; ++octant) {
         if (!((set.octants >> octant) & 1)) continue;
-        const Aabb box = OctantBox(tree, set.cell, octant);
+        const Aabb box = tree.OctantBox_W(set.cell, octant);
         result.gaps[g].box_W.Extend(box);
         gap_walls[g].push_back(box.center().cast<float>());
-        for (int corner = 0; corner < 8; ++corner) {
-          std::array<std::int32_t, 3> v = set.cell.min;
-          for (int i = 0; i < 3; ++i) {
-            if ((corner >> i) & 1) v[i] += ((octant >> i) & 1) ? 1 : -1;
-          }
+        for (const auto& v : OccupancyOctree::VoxelsAroundOctant(set.cell, octant)) {
           const OccupancyOctree::Cell near = tree.Locate(v);
           if (tree.state(near) != CellState::kPartial) continue;
           walls.emplace_back(static_cast<std::int32_t>(g), near.node);
@@ -343,7 +329,7 @@ TriangleMesh GapSurface(const GapSearch& search, std::vector<std::int32_t>* gap_
     for (const auto& set : sets) {
       for (int octant = 0; octant < 8; ++octant) {
         if (!((set.octants >> octant) & 1)) continue;
-        const Aabb box = OctantBox(tree, set.cell, octant);
+        const Aabb box = tree.OctantBox_W(set.cell, octant);
         for (int axis = 0; axis < 3; ++axis) {
           for (const bool high : {false, true}) {
             const int next = octant ^ (1 << axis);

@@ -951,7 +951,7 @@ class OctreeBuilder {
         if (root < first_octant) continue;  // joined to untouched cells
         std::int32_t& id = thin_id[root - first_octant];
         if (id == kInside) continue;
-        if (id < 0 && StateAt(OctantCenter(holders[h].cell, octant)) >= 0) {
+        if (id < 0 && StateAt(tree_.OctantBox_W(holders[h].cell, octant).center()) >= 0) {
           // Inside another part than the one that crosses its voxels (parts that overlap).
           id = kInside;
           continue;
@@ -1013,13 +1013,6 @@ class OctreeBuilder {
       if (*inside) return true;
     }
     return false;
-  }
-
-  Eigen::Vector3d OctantCenter(const OccupancyOctree::Cell& voxel, int octant) const {
-    const Eigen::Vector3d at(octant & 1 ? 0.75 : 0.25, octant & 2 ? 0.75 : 0.25,
-                             octant & 4 ? 0.75 : 0.25);
-    return tree_.origin_W_ +
-           tree_.voxel_ * (Eigen::Vector3d(voxel.min[0], voxel.min[1], voxel.min[2]) + at);
   }
 
   // The partial voxels with free octants, in leaf order, and their union-find elements: one
@@ -1093,16 +1086,11 @@ class OctreeBuilder {
     // A set of free octants each group of which touches an empty untouched cell (shares a
     // face, an edge or a corner with it) is a pocket of that cell's space that octants are too
     // coarse to join to it (at a gap's rim, in its edges and corners): joined to the first such
-    // cell's component. The cells an octant touches are those of the 2 x 2 x 2 voxels around
-    // its outer corner.
+    // cell's component.
     const auto beside = [&](const OccupancyOctree::Cell& voxel, std::uint8_t group) {
       for (int octant = 0; octant < 8; ++octant) {
         if (!((group >> octant) & 1)) continue;
-        for (int corner = 1; corner < 8; ++corner) {
-          std::array<std::int32_t, 3> v = voxel.min;
-          for (int i = 0; i < 3; ++i) {
-            if ((corner >> i) & 1) v[i] += ((octant >> i) & 1) ? 1 : -1;
-          }
+        for (const auto& v : OccupancyOctree::VoxelsAroundOctant(voxel, octant)) {
           const OccupancyOctree::Cell near = tree_.Locate(v);
           if (!(nodes[near.node] & OccupancyOctree::kPartialBit) &&
               state[first_pass(near.node)] < 0) {
@@ -1195,6 +1183,26 @@ std::vector<std::int32_t> OccupancyOctree::touching_meshes(const Cell& cell) con
   if (!IsLeaf(word) || !(word & kPartialBit)) return {};
   if (word & kListBit) return multi_meshes_[word & kPayload];
   return {static_cast<std::int32_t>(word & kPayload)};
+}
+
+Aabb OccupancyOctree::OctantBox_W(const Cell& voxel, int octant) const {
+  const Eigen::Vector3d lo =
+      origin_W_ +
+      voxel_ * (Eigen::Vector3d(voxel.min[0], voxel.min[1], voxel.min[2]) +
+                0.5 * Eigen::Vector3d(octant & 1, (octant >> 1) & 1, (octant >> 2) & 1));
+  return Aabb{lo, lo + Eigen::Vector3d::Constant(voxel_ / 2)};
+}
+
+std::array<std::array<std::int32_t, 3>, 8> OccupancyOctree::VoxelsAroundOctant(const Cell& voxel,
+                                                                               int octant) {
+  std::array<std::array<std::int32_t, 3>, 8> voxels;
+  for (int corner = 0; corner < 8; ++corner) {
+    voxels[corner] = voxel.min;
+    for (int i = 0; i < 3; ++i) {
+      if ((corner >> i) & 1) voxels[corner][i] += ((octant >> i) & 1) ? 1 : -1;
+    }
+  }
+  return voxels;
 }
 
 Aabb OccupancyOctree::Box_W(const Cell& cell) const {

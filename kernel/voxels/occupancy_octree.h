@@ -138,6 +138,12 @@ class OccupancyOctree {
 
   /// The cell's box in the world, mm.
   Aabb Box_W(const Cell& cell) const;
+  /// The box of one octant (bits as in OctantSet) of a voxel, world, mm.
+  Aabb OctantBox_W(const Cell& voxel, int octant) const;
+  /// The voxels an octant (bits as in OctantSet) of `voxel` touches, at a face, an edge or a
+  /// corner: the 2 x 2 x 2 voxels around its outer corner, `voxel` itself first.
+  static std::array<std::array<std::int32_t, 3>, 8> VoxelsAroundOctant(const Cell& voxel,
+                                                                       int octant);
   /// Calls f on every leaf, depth first in child order (x, then y, then z bit).
   void ForEachLeaf(const std::function<void(const Cell&)>& f) const;
   /// Calls f(a, b, axis) once for every pair of leaves that share part of a face, a on the low

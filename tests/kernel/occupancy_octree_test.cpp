@@ -6,10 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <set>
+#include <string>
 #include <tuple>
+#include <vector>
 
 #include "kernel/mesh/mesh_builder.h"
 #include "kernel/mesh/mesh_check.h"
@@ -62,39 +65,53 @@ bool ClippedNonEmpty(const std::vector<Eigen::Vector3d>& tri, const Eigen::Vecto
   return true;
 }
 
+// A triangle with corners drawn from u.
+std::vector<Eigen::Vector3d> RandomTriangle(std::mt19937& rng,
+                                            std::uniform_real_distribution<double>& u) {
+  return {{u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}};
+}
+
+// Counts of the overlap answers that clipping settles, outside a rounding band of 1e-9.
+struct ClippingTally {
+  int overlaps = 0, apart = 0;
+  // Expects `got` for the triangle and the box when clipping settles it.
+  void Check(const std::vector<Eigen::Vector3d>& tri, const Eigen::Vector3d& center,
+             const Eigen::Vector3d& half, bool got, const std::string& what) {
+    const Eigen::Vector3d band = Eigen::Vector3d::Constant(1e-9);
+    if (ClippedNonEmpty(tri, center - half + band, center + half - band)) {
+      EXPECT_TRUE(got) << what;
+      ++overlaps;
+    }
+    if (!ClippedNonEmpty(tri, center - half - band, center + half + band)) {
+      EXPECT_FALSE(got) << what;
+      ++apart;
+    }
+  }
+};
+
 TEST(TriangleOverlapsBox, AgreesWithClippingOutsideARoundingBand) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-2.0, 2.0);
-  int overlaps = 0, apart = 0;
+  ClippingTally tally;
   for (int n = 0; n < 20000; ++n) {
-    const std::vector<Eigen::Vector3d> tri = {
-        {u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}};
+    const std::vector<Eigen::Vector3d> tri = RandomTriangle(rng, u);
     const Eigen::Vector3d center(u(rng) / 2, u(rng) / 2, u(rng) / 2);
     const Eigen::Vector3d half =
         Eigen::Vector3d(std::abs(u(rng)), std::abs(u(rng)), std::abs(u(rng))) / 4 +
         Eigen::Vector3d::Constant(0.01);
-    const bool got = TriangleOverlapsBox(tri[0], tri[1], tri[2], center, half);
-    const Eigen::Vector3d band = Eigen::Vector3d::Constant(1e-9);
-    if (ClippedNonEmpty(tri, center - half + band, center + half - band)) {
-      EXPECT_TRUE(got) << n;
-      ++overlaps;
-    }
-    if (!ClippedNonEmpty(tri, center - half - band, center + half + band)) {
-      EXPECT_FALSE(got) << n;
-      ++apart;
-    }
+    tally.Check(tri, center, half, TriangleOverlapsBox(tri[0], tri[1], tri[2], center, half),
+                std::to_string(n));
   }
-  EXPECT_GT(overlaps, 2000);
-  EXPECT_GT(apart, 2000);
+  EXPECT_GT(tally.overlaps, 2000);
+  EXPECT_GT(tally.apart, 2000);
 }
 
 TEST(TriangleBoxTester, EachOfACellsEightChildrenAgreesWithClipping) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-2.0, 2.0);
-  int overlaps = 0, apart = 0;
+  ClippingTally tally;
   for (int n = 0; n < 5000; ++n) {
-    const std::vector<Eigen::Vector3d> tri = {
-        {u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}};
+    const std::vector<Eigen::Vector3d> tri = RandomTriangle(rng, u);
     const Eigen::Vector3d mid(u(rng) / 2, u(rng) / 2, u(rng) / 2);
     const Eigen::Vector3d half = Eigen::Vector3d::Constant(std::abs(u(rng)) / 4 + 0.01);
     const TriangleBoxTester tester(tri[0], tri[1], tri[2], mid, half);
@@ -102,21 +119,12 @@ TEST(TriangleBoxTester, EachOfACellsEightChildrenAgreesWithClipping) {
       const Eigen::Vector3d offset =
           Eigen::Vector3d(child & 1 ? 1 : -1, child & 2 ? 1 : -1, child & 4 ? 1 : -1)
               .cwiseProduct(half);
-      const bool got = tester.Overlaps(offset);
-      const Eigen::Vector3d center = mid + offset;
-      const Eigen::Vector3d band = Eigen::Vector3d::Constant(1e-9);
-      if (ClippedNonEmpty(tri, center - half + band, center + half - band)) {
-        EXPECT_TRUE(got) << n << " child " << child;
-        ++overlaps;
-      }
-      if (!ClippedNonEmpty(tri, center - half - band, center + half + band)) {
-        EXPECT_FALSE(got) << n << " child " << child;
-        ++apart;
-      }
+      tally.Check(tri, mid + offset, half, tester.Overlaps(offset),
+                  std::to_string(n) + " child " + std::to_string(child));
     }
   }
-  EXPECT_GT(overlaps, 4000);
-  EXPECT_GT(apart, 4000);
+  EXPECT_GT(tally.overlaps, 4000);
+  EXPECT_GT(tally.apart, 4000);
 }
 
 TEST(TriangleOverlapsBox, CountsTouchingAndDegenerateTriangles) {
