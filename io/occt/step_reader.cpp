@@ -5,6 +5,7 @@
 #include "io/step_reader.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>  // fmt::join
 
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
@@ -14,6 +15,8 @@
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+#include <Eigen/SVD>
 #include <GProp_GProps.hxx>
 #include <GeomLib_IsPlanarSurface.hxx>
 #include <Message.hxx>
@@ -129,97 +132,246 @@ struct Cone {
 
 std::string Mm(double x) { return fmt::format("{} mm", FormatNumber(x)); }
 
-// A free-form face (B-spline, Bezier, extrusion, revolution, offset) that is a plane or a
-// cylinder within `tolerance` mm: some exporters and healing steps write every surface so.
+// A free-form face (B-spline, Bezier, extrusion, revolution, offset) that is a plane, a
+// cylinder, a cone, a sphere or a torus within `tolerance` mm: some exporters and healing steps
+// write every surface so.
 struct AnalyticFit {
-  enum class Kind { kNone, kPlane, kCylinder };
+  enum class Kind { kNone, kPlane, kCylinder, kCone, kSphere, kTorus };
   Kind kind = Kind::kNone;
-  Eigen::Vector3d point, direction;  // plane: a point and its normal; cylinder: its axis
-  double radius = 0.0;
-  bool outward = true;    // cylinder: the surface's normal (face orientation aside) points away
-  double coverage = 0.0;  // cylinder: radians around the axis that the samples span
-  double error = 0.0;     // mm: the largest distance of a sample from the fitted surface
+  // plane: a point and its normal; cylinder and torus: a point of the axis and its direction;
+  // cone: the apex and the axis, pointing to where the cone widens; sphere: the centre.
+  Eigen::Vector3d point, direction;
+  double radius = 0.0;      // cylinder, sphere; torus: the major radius (its tube's centre line)
+  double semi_angle = 0.0;  // cone: radians between the axis and the surface
+  bool outward = true;      // the surface's normal (face orientation aside) points away from
+                            // the axis (cylinder, cone), the centre (sphere) or the tube's
+                            // centre line (torus)
+  double coverage = 0.0;    // radians around the axis that the samples span (cylinder, cone)
+  double error = 0.0;       // mm: the largest distance of a sample from the fitted surface
 };
 
-// Fits a plane, then a cylinder, to a 9 x 9 grid of the face's surface points and normals over
-// its parameter bounds. A plane: every point within `tolerance` of the least-squares plane of
-// the points (Open CASCADE's GeomLib_IsPlanarSurface for the surface itself). A cylinder: the
-// axis is the direction the normals are all perpendicular to (the eigenvector of the smallest
-// eigenvalue of sum n n^T), the circle a least-squares fit of the points projected across it
-// (Kasa's algebraic fit), every point within `tolerance` of it and every normal radial.
-AnalyticFit FitAnalytic(const TopoDS_Face& face, const BRepAdaptor_Surface& surface,
-                        double tolerance) {
-  AnalyticFit fit;
+// Points and unit normals (the surface's own, face orientation aside) of a face's surface on a
+// 9 x 9 grid over its parameter bounds, degenerate points (poles) left out.
+struct SurfaceSamples {
+  std::vector<Eigen::Vector3d> points, normals;
+};
+
+SurfaceSamples SampleSurface(const TopoDS_Face& face, const BRepAdaptor_Surface& surface) {
+  SurfaceSamples s;
   double u0, u1, v0, v1;
   BRepTools::UVBounds(face, u0, u1, v0, v1);
   constexpr int kGrid = 9;
-  std::vector<Eigen::Vector3d> points, normals;
   for (int i = 0; i < kGrid; ++i) {
     for (int j = 0; j < kGrid; ++j) {
       gp_Pnt p;
       gp_Vec du, dv;
       surface.D1(u0 + (u1 - u0) * i / (kGrid - 1), v0 + (v1 - v0) * j / (kGrid - 1), p, du, dv);
       const gp_Vec n = du.Crossed(dv);
-      if (n.Magnitude() < 1e-12) continue;  // a degenerate point (a pole)
-      points.push_back(ToEigen(p.XYZ()));
-      normals.push_back(ToEigen(n.Normalized().XYZ()));
+      if (n.Magnitude() < 1e-12) continue;
+      s.points.push_back(ToEigen(p.XYZ()));
+      s.normals.push_back(ToEigen(n.Normalized().XYZ()));
     }
   }
-  if (points.size() < 9) return fit;
-  const Handle(Geom_Surface) geometry = BRep_Tool::Surface(face);
-  const GeomLib_IsPlanarSurface planar(geometry, tolerance);
+  return s;
+}
+
+// Normals agree with a fitted surface's when their directions differ by less than this (rad).
+constexpr double kNormalAngle = 1e-3;
+
+// Radians around `axis` (through `origin`) that the samples span: a full turn less the widest
+// gap between their angles.
+double Coverage(const SurfaceSamples& s, const Eigen::Vector3d& origin,
+                const Eigen::Vector3d& axis) {
+  const Eigen::Vector3d x = axis.unitOrthogonal(), y = axis.cross(x);
+  std::vector<double> angles;
+  for (const Eigen::Vector3d& p : s.points) {
+    angles.push_back(std::atan2((p - origin).dot(y), (p - origin).dot(x)));
+  }
+  std::sort(angles.begin(), angles.end());
+  double gap = angles.front() + 2 * kPi - angles.back();
+  for (std::size_t k = 1; k < angles.size(); ++k) gap = std::max(gap, angles[k] - angles[k - 1]);
+  return 2 * kPi - gap;
+}
+
+// A cylinder: the axis is the direction the normals are all perpendicular to (the eigenvector
+// of the smallest eigenvalue of sum n n^T), the circle a least-squares fit of the points
+// projected across it (Kasa's algebraic fit), every point within `tolerance` of it and every
+// normal radial.
+AnalyticFit FitCylinder(const SurfaceSamples& s, double tolerance) {
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3d& n : s.normals) scatter += n * n.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
+  const Eigen::Vector3d axis = eigen.eigenvectors().col(0);
+  for (const Eigen::Vector3d& n : s.normals) {
+    if (std::abs(n.dot(axis)) > kNormalAngle) return {};
+  }
+  const Eigen::Vector3d x = axis.unitOrthogonal(), y = axis.cross(x);
+  std::vector<Eigen::Vector2d> across;
+  for (const Eigen::Vector3d& p : s.points) across.emplace_back(p.dot(x), p.dot(y));
+  const FittedCircle circle = FitCircle(across);
+  if (!(circle.radius > 0)) return {};
+  AnalyticFit fit;
+  fit.radius = circle.radius;
+  fit.direction = axis;
+  fit.point = circle.center.x() * x + circle.center.y() * y;
+  int outward = 0;
+  for (std::size_t k = 0; k < s.points.size(); ++k) {
+    const Eigen::Vector3d d = s.points[k] - fit.point, radial = d - d.dot(axis) * axis;
+    fit.error = std::max(fit.error, std::abs(radial.norm() - fit.radius));
+    if (std::abs(std::abs(radial.normalized().dot(s.normals[k])) - 1) > kNormalAngle) return {};
+    outward += radial.dot(s.normals[k]) > 0 ? 1 : -1;
+  }
+  if (fit.error > tolerance || std::abs(outward) != static_cast<int>(s.points.size())) return {};
+  fit.kind = AnalyticFit::Kind::kCylinder;
+  fit.outward = outward > 0;
+  fit.coverage = Coverage(s, fit.point, axis);
+  return fit;
+}
+
+// A sphere: |p|^2 + D . p + E = 0 by least squares over the points (the algebraic fit, as
+// Kasa's for circles), every point within `tolerance` of it and every normal radial.
+AnalyticFit FitSphere(const SurfaceSamples& s, double tolerance) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : s.points) mean += p / s.points.size();
+  Eigen::MatrixXd A(s.points.size(), 4);
+  Eigen::VectorXd b(s.points.size());
+  for (std::size_t k = 0; k < s.points.size(); ++k) {
+    const Eigen::Vector3d q = s.points[k] - mean;
+    A.row(k) << q.x(), q.y(), q.z(), 1.0;
+    b(k) = -q.squaredNorm();
+  }
+  const Eigen::Vector4d c = A.colPivHouseholderQr().solve(b);
+  const Eigen::Vector3d centre = -0.5 * c.head<3>();
+  const double r2 = centre.squaredNorm() - c(3);
+  if (!(r2 > 0)) return {};
+  AnalyticFit fit;
+  fit.point = centre + mean;
+  fit.radius = std::sqrt(r2);
+  int outward = 0;
+  for (std::size_t k = 0; k < s.points.size(); ++k) {
+    const Eigen::Vector3d d = s.points[k] - fit.point;
+    fit.error = std::max(fit.error, std::abs(d.norm() - fit.radius));
+    if (std::abs(std::abs(d.normalized().dot(s.normals[k])) - 1) > kNormalAngle) return {};
+    outward += d.dot(s.normals[k]) > 0 ? 1 : -1;
+  }
+  if (fit.error > tolerance || std::abs(outward) != static_cast<int>(s.points.size())) return {};
+  fit.kind = AnalyticFit::Kind::kSphere;
+  fit.direction = Eigen::Vector3d::UnitZ();
+  fit.outward = outward > 0;
+  return fit;
+}
+
+// A cone or a torus, the surfaces of revolution other than the cylinder and the sphere. Every
+// normal line of a surface of revolution meets its axis: with Pluecker coordinates (d, m) of
+// the axis and (n, q x n) of a normal line through q, n . m + d . (q x n) = 0, one linear
+// equation per sample, so the axis is the null vector of those rows (the right singular vector
+// of the smallest singular value). Each sample then has a height h along the axis and a
+// radius r from it; the meridian (h, r) is a line for a cone (least squares) and a circle for
+// a torus (Kasa's fit), every sample within `tolerance` of it and every normal square to it.
+AnalyticFit FitRevolution(const SurfaceSamples& s, double tolerance) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : s.points) mean += p / s.points.size();
+  double scale = 0.0;  // the samples' extent, so that the rows' two halves weigh alike
+  for (const Eigen::Vector3d& p : s.points) scale = std::max(scale, (p - mean).norm());
+  if (!(scale > 0)) return {};
+  Eigen::MatrixXd rows(s.points.size(), 6);
+  for (std::size_t k = 0; k < s.points.size(); ++k) {
+    const Eigen::Vector3d q = (s.points[k] - mean) / scale;
+    rows.row(k) << q.cross(s.normals[k]).transpose(), s.normals[k].transpose();
+  }
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(rows, Eigen::ComputeThinV);
+  const Eigen::Matrix<double, 6, 1> v = svd.matrixV().col(5);
+  if (v.head<3>().norm() < 1e-6) return {};
+  const Eigen::Vector3d d = v.head<3>().normalized(), m = v.tail<3>() / v.head<3>().norm();
+  const Eigen::Vector3d origin = mean + scale * d.cross(m);  // the axis' point nearest the mean
+  // Each sample's height and radius, and its normal's components along them; a normal of a
+  // surface of revolution lies in the sample's meridian plane.
+  std::vector<Eigen::Vector2d> meridian, normals;
+  for (std::size_t k = 0; k < s.points.size(); ++k) {
+    const Eigen::Vector3d q = s.points[k] - origin;
+    const double h = q.dot(d);
+    const Eigen::Vector3d radial = q - h * d;
+    const double r = radial.norm();
+    if (r < tolerance) continue;  // a cone's apex: no radius to check its normal by
+    const Eigen::Vector3d n = s.normals[k];
+    if (std::abs(n.dot(d.cross(radial / r))) > kNormalAngle) return {};
+    meridian.emplace_back(h, r);
+    normals.emplace_back(n.dot(d), n.dot(radial / r));
+  }
+  AnalyticFit fit;
+  fit.direction = d;
+  // A cone: r = a + b h by least squares.
+  Eigen::MatrixXd A(meridian.size(), 2);
+  Eigen::VectorXd b(meridian.size());
+  for (std::size_t k = 0; k < meridian.size(); ++k) {
+    A.row(k) << 1.0, meridian[k].x();
+    b(k) = meridian[k].y();
+  }
+  const Eigen::Vector2d line = A.colPivHouseholderQr().solve(b);
+  const Eigen::Vector2d tangent = Eigen::Vector2d(1, line(1)).normalized();
+  const Eigen::Vector2d across(-tangent.y(), tangent.x());
+  bool square = true;
+  int outward = 0;
+  for (std::size_t k = 0; k < meridian.size(); ++k) {
+    fit.error = std::max(
+        fit.error, std::abs(meridian[k].y() - line(0) - line(1) * meridian[k].x()) * tangent.x());
+    square = square && std::abs(normals[k].dot(tangent)) < kNormalAngle;
+    outward += normals[k].dot(across) > 0 ? 1 : -1;
+  }
+  if (std::abs(line(1)) > 1e-6 && fit.error <= tolerance && square &&
+      std::abs(outward) == static_cast<int>(meridian.size())) {
+    fit.kind = AnalyticFit::Kind::kCone;
+    fit.point = origin - line(0) / line(1) * d;  // the apex, where r = 0
+    if (line(1) < 0) fit.direction = -d;
+    fit.semi_angle = std::atan(std::abs(line(1)));
+    fit.outward = outward > 0;
+    fit.coverage = Coverage(s, fit.point, d);
+    return fit;
+  }
+  // A torus: the meridian a circle about (h0, R), the tube's centre line.
+  const FittedCircle tube = FitCircle(meridian);
+  if (!(tube.radius > 0)) return {};
+  fit.error = 0.0;
+  outward = 0;
+  for (std::size_t k = 0; k < meridian.size(); ++k) {
+    const Eigen::Vector2d out = meridian[k] - tube.center;
+    fit.error = std::max(fit.error, std::abs(out.norm() - tube.radius));
+    if (std::abs(std::abs(out.normalized().dot(normals[k])) - 1) > kNormalAngle) return {};
+    outward += out.dot(normals[k]) > 0 ? 1 : -1;
+  }
+  if (fit.error > tolerance || std::abs(outward) != static_cast<int>(meridian.size())) return {};
+  fit.kind = AnalyticFit::Kind::kTorus;
+  fit.point = origin + tube.center.x() * d;
+  fit.radius = tube.center.y();
+  fit.outward = outward > 0;
+  return fit;
+}
+
+// The exact surface a free-form face is, within `tolerance` mm, tried in the order plane (Open
+// CASCADE's GeomLib_IsPlanarSurface for the surface itself), cylinder, sphere, then cone or
+// torus; kNone when it is none of them.
+AnalyticFit FitAnalytic(const TopoDS_Face& face, const BRepAdaptor_Surface& surface,
+                        double tolerance) {
+  const SurfaceSamples s = SampleSurface(face, surface);
+  if (s.points.size() < 9) return {};
+  const GeomLib_IsPlanarSurface planar(BRep_Tool::Surface(face), tolerance);
   if (planar.IsPlanar()) {
     const gp_Pln plane = planar.Plan();
+    AnalyticFit fit;
     fit.kind = AnalyticFit::Kind::kPlane;
     fit.point = ToEigen(plane.Location().XYZ());
     fit.direction = ToEigen(plane.Axis().Direction().XYZ());
-    if (fit.direction.dot(normals[normals.size() / 2]) < 0) fit.direction = -fit.direction;
-    for (const Eigen::Vector3d& p : points) {
+    if (fit.direction.dot(s.normals[s.normals.size() / 2]) < 0) fit.direction = -fit.direction;
+    for (const Eigen::Vector3d& p : s.points) {
       fit.error = std::max(fit.error, std::abs((p - fit.point).dot(fit.direction)));
     }
     return fit;
   }
-  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-  for (const Eigen::Vector3d& n : normals) scatter += n * n.transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
-  const Eigen::Vector3d axis = eigen.eigenvectors().col(0);
-  // Normals all across the axis, within the angle the tolerance allows over the face.
-  for (const Eigen::Vector3d& n : normals) {
-    if (std::abs(n.dot(axis)) > 1e-3) return fit;
+  for (auto* fitter : {FitCylinder, FitSphere, FitRevolution}) {
+    const AnalyticFit fit = fitter(s, tolerance);
+    if (fit.kind != AnalyticFit::Kind::kNone) return fit;
   }
-  const Eigen::Vector3d x = axis.unitOrthogonal(), y = axis.cross(x);
-  Eigen::MatrixXd A(points.size(), 3);
-  Eigen::VectorXd b(points.size());
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const double px = points[k].dot(x), py = points[k].dot(y);
-    A.row(k) << px, py, 1.0;
-    b(k) = -(px * px + py * py);
-  }
-  const Eigen::Vector3d c = A.colPivHouseholderQr().solve(b);
-  const double cx = -c(0) / 2, cy = -c(1) / 2, r2 = cx * cx + cy * cy - c(2);
-  if (!(r2 > 0)) return fit;
-  fit.radius = std::sqrt(r2);
-  fit.direction = axis;
-  fit.point = cx * x + cy * y;
-  std::vector<double> angles;
-  int outward = 0;
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const Eigen::Vector3d radial = points[k] - fit.point - (points[k] - fit.point).dot(axis) * axis;
-    fit.error = std::max(fit.error, std::abs(radial.norm() - fit.radius));
-    if (std::abs(std::abs(radial.normalized().dot(normals[k])) - 1) > 1e-3) return AnalyticFit();
-    outward += radial.dot(normals[k]) > 0 ? 1 : -1;
-    angles.push_back(std::atan2(radial.dot(y), radial.dot(x)));
-  }
-  if (fit.error > tolerance || std::abs(outward) != static_cast<int>(points.size())) {
-    return AnalyticFit();
-  }
-  fit.kind = AnalyticFit::Kind::kCylinder;
-  fit.outward = outward > 0;
-  std::sort(angles.begin(), angles.end());
-  double gap = angles.front() + 2 * kPi - angles.back();
-  for (std::size_t k = 1; k < angles.size(); ++k) gap = std::max(gap, angles[k] - angles[k - 1]);
-  fit.coverage = 2 * kPi - gap;
-  return fit;
+  return {};
 }
 
 // What a cone is beside the solid's cylinders: a countersink at a hole's mouth, a conical end
@@ -331,9 +483,9 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
   std::vector<Cone> cones;
   std::vector<Sphere> spheres;
   int planes = 0, tori = 0, free_form = 0, partial_cones = 0, partial_spheres = 0;
-  // Free-form faces that are planes or cylinders: within 1 um or 10 ppm of the solid's size.
+  // Free-form faces that are exact surfaces: within 1 um or 10 ppm of the solid's size.
   const double fit_tolerance = std::max(1e-3, 1e-5 * size);
-  int fitted_planes = 0, fitted_cylinders = 0;
+  std::map<AnalyticFit::Kind, int> fitted;
   double fit_error = 0.0;
   std::map<std::tuple<double, double, double>, std::int32_t> positions;
   auto* welded = &positions;
@@ -366,13 +518,15 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
                           type == GeomAbs_Cone || type == GeomAbs_Sphere || type == GeomAbs_Torus;
     const AnalyticFit fit = analytic ? AnalyticFit() : FitAnalytic(face, surface, fit_tolerance);
     if (fit.kind != AnalyticFit::Kind::kNone) {
-      ++(fit.kind == AnalyticFit::Kind::kPlane ? fitted_planes : fitted_cylinders);
+      ++fitted[fit.kind];
       fit_error = std::max(fit_error, fit.error);
     }
+    // Exact surfaces of one cylinder, cone or sphere agree to rounding; fitted ones within the
+    // fit's tolerance.
+    const double merge = analytic ? 1e-6 : fit_tolerance;
     if (type == GeomAbs_Cylinder || fit.kind == AnalyticFit::Kind::kCylinder) {
       Cylinder c;
       Cylinder::Span span;
-      double merge = 1e-6;  // exact surfaces of one cylinder agree to rounding
       if (type == GeomAbs_Cylinder) {
         const gp_Cylinder g = surface.Cylinder();
         c.point = ToEigen(g.Location().XYZ());
@@ -390,7 +544,6 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
         c.radius = fit.radius;
         c.convex = fit.outward != reversed;
         span.coverage = fit.coverage;
-        merge = fit_tolerance;
       }
       for (const Eigen::Vector3d& p : nodes) {
         span.lo = std::min(span.lo, (p - c.point).dot(c.direction));
@@ -412,17 +565,25 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
         same->spans.push_back({shift + (sign > 0 ? span.lo : -span.hi),
                                shift + (sign > 0 ? span.hi : -span.lo), span.coverage});
       }
-    } else if (surface.GetType() == GeomAbs_Cone) {
-      const gp_Cone g = surface.Cone();
+    } else if (type == GeomAbs_Cone || fit.kind == AnalyticFit::Kind::kCone) {
       Cone c;
-      c.apex = ToEigen(g.Apex().XYZ());
-      c.direction = ToEigen(g.Axis().Direction().XYZ()).normalized();
-      c.semi_angle = std::abs(g.SemiAngle());
-      // As for a cylinder: the surface's normal points away from the axis in a direct frame.
-      c.convex = g.Position().Direct() != reversed;
-      double u0, u1, v0, v1;
-      BRepTools::UVBounds(face, u0, u1, v0, v1);
-      c.coverage = std::min(u1 - u0, 2 * kPi);
+      if (type == GeomAbs_Cone) {
+        const gp_Cone g = surface.Cone();
+        c.apex = ToEigen(g.Apex().XYZ());
+        c.direction = ToEigen(g.Axis().Direction().XYZ()).normalized();
+        c.semi_angle = std::abs(g.SemiAngle());
+        // As for a cylinder: the surface's normal points away from the axis in a direct frame.
+        c.convex = g.Position().Direct() != reversed;
+        double u0, u1, v0, v1;
+        BRepTools::UVBounds(face, u0, u1, v0, v1);
+        c.coverage = std::min(u1 - u0, 2 * kPi);
+      } else {
+        c.apex = fit.point;
+        c.direction = fit.direction;
+        c.semi_angle = fit.semi_angle;
+        c.convex = fit.outward != reversed;
+        c.coverage = fit.coverage;
+      }
       for (const Eigen::Vector3d& p : nodes) {
         const Eigen::Vector3d d = p - c.apex;
         const double r = (d - d.dot(c.direction) * c.direction).norm();
@@ -430,9 +591,9 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
         c.r_max = std::max(c.r_max, r);
       }
       auto same = std::find_if(cones.begin(), cones.end(), [&](const Cone& o) {
-        return (o.apex - c.apex).norm() < 1e-6 * std::max(1.0, c.r_max) &&
-               o.direction.dot(c.direction) > 1 - 1e-9 &&
-               std::abs(o.semi_angle - c.semi_angle) < 1e-9 && o.convex == c.convex;
+        return (o.apex - c.apex).norm() < merge * std::max(1.0, c.r_max) &&
+               o.direction.dot(c.direction) > 1 - 1e-9 - merge &&
+               std::abs(o.semi_angle - c.semi_angle) < 1e-9 + merge && o.convex == c.convex;
       });
       if (same == cones.end()) {
         cones.push_back(c);
@@ -441,19 +602,25 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
         same->r_min = std::min(same->r_min, c.r_min);
         same->r_max = std::max(same->r_max, c.r_max);
       }
-    } else if (type == GeomAbs_Sphere) {
-      const gp_Sphere g = surface.Sphere();
+    } else if (type == GeomAbs_Sphere || fit.kind == AnalyticFit::Kind::kSphere) {
       Sphere sphere;
-      sphere.center = ToEigen(g.Location().XYZ());
-      sphere.radius = g.Radius();
-      // As for a cylinder: the surface's normal points outward in a direct frame.
-      sphere.convex = g.Position().Direct() != reversed;
+      if (type == GeomAbs_Sphere) {
+        const gp_Sphere g = surface.Sphere();
+        sphere.center = ToEigen(g.Location().XYZ());
+        sphere.radius = g.Radius();
+        // As for a cylinder: the surface's normal points outward in a direct frame.
+        sphere.convex = g.Position().Direct() != reversed;
+      } else {
+        sphere.center = fit.point;
+        sphere.radius = fit.radius;
+        sphere.convex = fit.outward != reversed;
+      }
       GProp_GProps properties;
       BRepGProp::SurfaceProperties(face, properties);
       sphere.area = properties.Mass();
       auto same = std::find_if(spheres.begin(), spheres.end(), [&](const Sphere& o) {
-        return (o.center - sphere.center).norm() < 1e-6 * std::max(1.0, sphere.radius) &&
-               std::abs(o.radius - sphere.radius) < 1e-6 * std::max(1.0, sphere.radius) &&
+        return (o.center - sphere.center).norm() < merge * std::max(1.0, sphere.radius) &&
+               std::abs(o.radius - sphere.radius) < merge * std::max(1.0, sphere.radius) &&
                o.convex == sphere.convex;
       });
       if (same == spheres.end()) {
@@ -461,7 +628,7 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
       } else {
         same->area += sphere.area;
       }
-    } else if (type == GeomAbs_Torus) {
+    } else if (type == GeomAbs_Torus || fit.kind == AnalyticFit::Kind::kTorus) {
       ++tori;
     } else if (type != GeomAbs_Plane && fit.kind != AnalyticFit::Kind::kPlane) {
       ++free_form;
@@ -544,10 +711,22 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
                                    n == 1 ? "face" : "faces"));
     }
   };
-  if (fitted_planes + fitted_cylinders > 0) {
-    notes->push_back(fmt::format(
-        "{} free-form faces taken as exact surfaces: {} planes, {} cylinders (within {})",
-        fitted_planes + fitted_cylinders, fitted_planes, fitted_cylinders, Mm(fit_error)));
+  if (!fitted.empty()) {
+    int total = 0;
+    std::vector<std::string> kinds;
+    const std::map<AnalyticFit::Kind, std::array<const char*, 2>> names = {
+        {AnalyticFit::Kind::kPlane, {"plane", "planes"}},
+        {AnalyticFit::Kind::kCylinder, {"cylinder", "cylinders"}},
+        {AnalyticFit::Kind::kCone, {"cone", "cones"}},
+        {AnalyticFit::Kind::kSphere, {"sphere", "spheres"}},
+        {AnalyticFit::Kind::kTorus, {"torus", "tori"}}};
+    for (const auto& [kind, n] : fitted) {
+      total += n;
+      kinds.push_back(fmt::format("{} {}", n, names.at(kind)[n == 1 ? 0 : 1]));
+    }
+    notes->push_back(fmt::format("{} free-form {} taken as exact surfaces: {} (within {})", total,
+                                 total == 1 ? "face" : "faces", fmt::join(kinds, ", "),
+                                 Mm(std::ceil(fit_error * 1e4) / 1e4)));  // to 0.1 um, up
   }
   count(partial_cones, "partial conical");
   count(partial_spheres, "partial spherical");

@@ -5,12 +5,14 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "io/load_assembly.h"
+#include "io/occt/step_fixtures.h"
 #include "reasoning/analysis.h"
 
 namespace mechanist {
@@ -87,6 +89,57 @@ TEST(Bearing, RingsAndBallsAreOneRevoluteBearing) {
             std::string::npos)
       << bearing->message;
   EXPECT_EQ(Find(an, "part_unconnected"), nullptr);
+}
+
+// The pairs of an analysis as "type source a b" with the features' names, sorted.
+std::vector<std::string> PairNames(const Assembly& a, const Analysis& an) {
+  std::vector<std::string> names;
+  for (const Pair& p : an.pairs) {
+    names.push_back(fmt::format("{} {} {} {}", ToString(p.type), ToString(p.source),
+                                a.FeatureName(p.a), a.FeatureName(p.b)));
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+TEST(Bearing, ABallBearingModelledInOpenCascadeIsFoundAsWrittenAndAsBSplines) {
+  // A vendor-style model: rings with toroidal raceways and nine separate balls. Written again
+  // with every surface a B-spline (balls, raceways, lands), it must give the same bearing.
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "mechanist_occt_bearing";
+  std::filesystem::create_directories(dir);
+  testing::WriteBallBearingStep(dir / "6002.step", 9);
+  testing::WriteNurbsCopy(dir / "6002.step", dir / "6002_nurbs.step");
+  const Assembly exact = LoadAssembly(dir / "6002.step");
+  const Assembly nurbs = LoadAssembly(dir / "6002_nurbs.step");
+  const Analysis an_exact = Analyze(exact), an_nurbs = Analyze(nurbs);
+  for (const auto* an : {&an_exact, &an_nurbs}) {
+    const Diagnostic* bearing = Find(*an, "bearing");
+    ASSERT_NE(bearing, nullptr);
+    EXPECT_NE(bearing->message.find("15 x 32 x 9 mm"), std::string::npos) << bearing->message;
+    EXPECT_NE(bearing->message.find("9 balls of 4.762 mm on a 23.5 mm pitch circle"),
+              std::string::npos)
+        << bearing->message;
+    EXPECT_EQ(CountSource(*an, PairSource::kBearing), 10);  // the rings' revolute, nine balls
+    EXPECT_EQ(an->motion.mobility.dof, 1);
+    EXPECT_EQ(Find(*an, "part_unconnected"), nullptr);
+  }
+  EXPECT_EQ(PairNames(nurbs, an_nurbs), PairNames(exact, an_exact));
+  // The B-spline copy says what its free-form faces were taken as: on a ball, one sphere; on
+  // the inner ring, the raceway's torus besides its planes and cylinders.
+  ASSERT_EQ(nurbs.parts().size(), 11u);
+  auto converted = [&](std::size_t part) {
+    for (const std::string& n : nurbs.part(part).notes) {
+      if (n.find("taken as exact surfaces") != std::string::npos) return n;
+    }
+    return std::string();
+  };
+  EXPECT_NE(converted(0).find("1 torus"), std::string::npos) << converted(0);
+  EXPECT_NE(converted(2).find("1 sphere"), std::string::npos) << converted(2);
+  for (std::size_t p = 0; p < nurbs.parts().size(); ++p) {
+    EXPECT_EQ(nurbs.part(p).features.size(), exact.part(p).features.size()) << nurbs.part(p).id;
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Bearing, BallsOffTheirCircleOrTooFewAreNoBearing) {

@@ -564,6 +564,42 @@ TEST(StepImport, ConesAreNamedInNotesAndSpheresAreBalls) {
                       "solid1: countersink of hole_1: 90 deg, diameter 6 to 12 mm"),
             notes.end())
       << ::testing::PrintToString(notes);
+  // With every surface a B-spline, the cones, the ball and the rest are fitted back: the same
+  // features (to the fit's 1 um) and the same notes, plus one saying what was fitted.
+  testing::WriteNurbsCopy(dir / "cones.step", dir / "cones_nurbs.step");
+  const std::vector<StepSolid> nurbs = ReadStep(dir / "cones_nurbs.step");
+  ASSERT_EQ(nurbs.size(), solids.size());
+  for (std::size_t k = 0; k < solids.size(); ++k) {
+    ASSERT_EQ(nurbs[k].features.size(), solids[k].features.size()) << k;
+    for (std::size_t i = 0; i < solids[k].features.size(); ++i) {
+      const Feature &f = nurbs[k].features[i], &g = solids[k].features[i];
+      EXPECT_EQ(f.id, g.id);
+      EXPECT_EQ(f.kind, g.kind) << f.id;
+      EXPECT_NEAR(f.diameter, g.diameter, 1e-3) << f.id;
+      EXPECT_NEAR(f.length, g.length, 1e-3) << f.id;
+      EXPECT_NEAR((f.origin - g.origin).norm(), 0, 1e-3) << f.id;
+      EXPECT_NEAR(std::abs(f.axis.dot(g.axis)), 1, 1e-6) << f.id;
+    }
+    std::vector<std::string> fitted;
+    for (const std::string& n : nurbs[k].notes) {
+      if (n.find("taken as exact surfaces") == std::string::npos) fitted.push_back(n);
+    }
+    EXPECT_EQ(fitted, solids[k].notes) << k;
+  }
+  auto fitted_as = [](const StepSolid& s) {
+    for (const std::string& n : s.notes) {
+      if (n.find("taken as exact surfaces") != std::string::npos) return n;
+    }
+    return std::string();
+  };
+  // Each says what its faces were taken as, and within what (to 0.1 um, rounded up).
+  const std::vector<std::string> fitted_notes = {
+      "8 free-form faces taken as exact surfaces: 6 planes, 1 cylinder, 1 cone (within ",
+      "3 free-form faces taken as exact surfaces: 1 plane, 1 cylinder, 1 cone (within ",
+      "1 free-form face taken as exact surfaces: 1 sphere (within "};
+  for (std::size_t k = 0; k < nurbs.size(); ++k) {
+    EXPECT_EQ(fitted_as(nurbs[k]).rfind(fitted_notes[k], 0), 0u) << fitted_as(nurbs[k]);
+  }
 }
 
 // A binary STL of `mesh`.

@@ -15,6 +15,7 @@
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
+#include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRep_Builder.hxx>
 #include <GeomAPI_Interpolate.hxx>
 #include <Geom_BSplineCurve.hxx>
@@ -251,6 +252,29 @@ void WriteConesAndBallStep(const std::filesystem::path& file) {
   BRep_Builder builder;
   builder.MakeCompound(all);
   for (const TopoDS_Shape& s : {block, pin, ball}) builder.Add(all, s);
+  WriteStep(all, file);
+}
+
+void WriteBallBearingStep(const std::filesystem::path& file, int balls) {
+  const double pitch = 23.5 / 2, ball = 4.762 / 2, groove = 0.52 * 4.762, width = 9;
+  const gp_Ax2 axis(gp_Pnt(0, 0, -width / 2), gp_Dir(0, 0, 1));
+  auto tube = [&](double r_in, double r_out) {
+    return BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(axis, r_out, width).Shape(),
+                           BRepPrimAPI_MakeCylinder(axis, r_in, width).Shape())
+        .Shape();
+  };
+  const TopoDS_Shape raceway = BRepPrimAPI_MakeTorus(gp_Ax2(), pitch, groove).Shape();
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  builder.Add(all, BRepAlgoAPI_Cut(tube(7.5, 20.5 / 2), raceway).Shape());
+  builder.Add(all, BRepAlgoAPI_Cut(tube(26.7 / 2, 16), raceway).Shape());
+  for (int k = 0; k < balls; ++k) {
+    const double a = 2 * M_PI * k / balls;
+    builder.Add(
+        all,
+        BRepPrimAPI_MakeSphere(gp_Pnt(pitch * std::cos(a), pitch * std::sin(a), 0), ball).Shape());
+  }
   WriteStep(all, file);
 }
 

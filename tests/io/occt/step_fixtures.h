@@ -41,6 +41,14 @@ void WriteHelicalGearPairStep(const std::filesystem::path& file, int teeth_a, in
 void WriteRackAndPinionStep(const std::filesystem::path& file, int pinion_teeth, double module,
                             int rack_teeth);
 
+/// Writes a STEP file (AP214, no product names) of a deep-groove ball bearing with a 6002's
+/// dimensions as a vendor's model has it, axis z, mid-plane z = 0: an inner ring (bore 15 mm,
+/// land 20.5 mm), an outer ring (land 26.7 mm, outside 32 mm), both 9 mm wide with a toroidal
+/// raceway of radius 0.52 times the ball's about the 23.5 mm pitch circle, and `balls` balls of
+/// 4.762 mm on that circle, each a solid of its own. Throws std::runtime_error when it cannot
+/// write.
+void WriteBallBearingStep(const std::filesystem::path& file, int balls);
+
 /// Copies the STEP assembly `in` to `out` with every surface of every solid converted to a
 /// B-spline (Open CASCADE's BRepBuilderAPI_NurbsConvert), keeping the product structure and
 /// names (XCAF reader and writer): a file as some exporters and healing steps write it.
