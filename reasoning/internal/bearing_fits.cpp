@@ -1,4 +1,5 @@
-// Rolling bearings modelled as they are sold: rings and balls (Recognizer::AddBearings).
+// Rolling bearings modelled as they are sold: rings and balls or rollers (AddBearings), and
+// bearings of one solid (AddSolidBearings).
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>  // fmt::join
@@ -51,49 +52,94 @@ std::optional<SpaceCircle> FitSpaceCircle(const std::vector<Eigen::Vector3d>& po
   return c;
 }
 
+/// A part that is one rolling element: a ball, or a roller (one cylinder and flat ends).
+struct RollingElement {
+  const WorldFeature* w;   ///< the ball, or the roller's cylinder
+  Eigen::Vector3d center;  ///< world
+  double length = 0.0;     ///< mm along its axis; 0 for a ball
+};
+
 }  // namespace
 
 void Recognizer::AddBearings() {
-  // The balls: parts that are one ball and nothing else, by diameter.
-  std::vector<const WorldFeature*> balls;
+  // The rolling elements: parts that are one ball and nothing else, or one shaft and faces
+  // across its axis (its ends), sorted by size.
+  std::vector<RollingElement> elements;
   for (std::size_t part = 0; part < assembly_.parts().size(); ++part) {
-    if (assembly_.FeatureCount(part) != 1) continue;
-    const WorldFeature& w = At({part, 0});
-    if (w.f.kind == FeatureKind::kBall) balls.push_back(&w);
+    const std::size_t n = assembly_.FeatureCount(part);
+    const WorldFeature* cylinder = nullptr;
+    bool only_ends = true;
+    for (std::size_t f = 0; f < n; ++f) {
+      const WorldFeature& w = At({part, f});
+      if (w.f.kind == FeatureKind::kShaft && !cylinder)
+        cylinder = &w;
+      else if (w.f.kind != FeatureKind::kFace)
+        only_ends = false;
+    }
+    if (n == 1 && At({part, 0}).f.kind == FeatureKind::kBall) {
+      elements.push_back({&At({part, 0}), At({part, 0}).axis.origin, 0.0});
+      continue;
+    }
+    if (!cylinder || !only_ends) continue;
+    for (std::size_t f = 0; f < n; ++f) {
+      const WorldFeature& w = At({part, f});
+      only_ends =
+          only_ends &&
+          (&w == cylinder || AngleBetweenLines(w.axis.direction, cylinder->axis.direction) <= A_);
+    }
+    if (!only_ends) continue;
+    elements.push_back(
+        {cylinder, cylinder->axis.origin + cylinder->axis.length / 2 * cylinder->axis.direction,
+         cylinder->axis.length});
   }
-  if (balls.size() < 3) return;
-  std::sort(balls.begin(), balls.end(), [&](const WorldFeature* x, const WorldFeature* y) {
-    return x->f.diameter != y->f.diameter ? x->f.diameter < y->f.diameter : NameLess(*x, *y);
-  });
-  // Sets of balls of one diameter whose neighbours lie at most four diameters apart (single
+  if (elements.size() < 3) return;
+  std::sort(elements.begin(), elements.end(),
+            [&](const RollingElement& x, const RollingElement& y) {
+              if (x.length != y.length) return x.length < y.length;
+              return x.w->f.diameter != y.w->f.diameter ? x.w->f.diameter < y.w->f.diameter
+                                                        : NameLess(*x.w, *y.w);
+            });
+  // Sets of elements of one size whose neighbours lie at most four diameters apart (single
   // linkage): the rolling elements of one bearing each.
-  std::vector<std::vector<const WorldFeature*>> sets;
-  std::vector<bool> taken(balls.size(), false);
-  for (std::size_t first = 0; first < balls.size(); ++first) {
+  std::vector<std::vector<const RollingElement*>> sets;
+  std::vector<bool> taken(elements.size(), false);
+  for (std::size_t first = 0; first < elements.size(); ++first) {
     if (taken[first]) continue;
-    std::vector<const WorldFeature*> set{balls[first]};
+    std::vector<const RollingElement*> set{&elements[first]};
     taken[first] = true;
     for (std::size_t k = 0; k < set.size(); ++k) {
-      for (std::size_t j = first + 1; j < balls.size(); ++j) {
-        const WorldFeature& b = *balls[j];
-        if (taken[j] || std::abs(b.f.diameter - set[k]->f.diameter) > L_) continue;
-        if ((b.axis.origin - set[k]->axis.origin).norm() > 4 * b.f.diameter) continue;
+      for (std::size_t j = first + 1; j < elements.size(); ++j) {
+        const RollingElement& e = elements[j];
+        if (taken[j] || std::abs(e.w->f.diameter - set[k]->w->f.diameter) > L_ ||
+            std::abs(e.length - set[k]->length) > L_ ||
+            (e.center - set[k]->center).norm() > 4 * e.w->f.diameter) {
+          continue;
+        }
         taken[j] = true;
-        set.push_back(&b);
+        set.push_back(&e);
       }
     }
     if (set.size() >= 3) sets.push_back(std::move(set));
   }
-  for (std::vector<const WorldFeature*>& set : sets) {
+  for (std::vector<const RollingElement*>& set : sets) {
     std::vector<Eigen::Vector3d> centers;
-    for (const WorldFeature* b : set) centers.push_back(b->axis.origin);
+    for (const RollingElement* e : set) centers.push_back(e->center);
     const std::optional<SpaceCircle> pitch = FitSpaceCircle(centers);
     if (!pitch || pitch->worst > L_) continue;
-    const double ball_r = set.front()->f.diameter / 2;
+    // Rollers lie along the bearing's axis (tapered and spherical ones are not recognised).
+    const double length = set.front()->length;
+    if (length > 0 && std::any_of(set.begin(), set.end(), [&](const RollingElement* e) {
+          return AngleBetweenLines(e->w->axis.direction, pitch->normal) > A_;
+        })) {
+      continue;
+    }
+    const double element_r = set.front()->w->f.diameter / 2;
+    const double reach = length > 0 ? length / 2 : element_r;  // from the elements' plane
     std::set<std::size_t> in_set;
-    for (const WorldFeature* b : set) in_set.insert(b->ref.part);
-    // The rings' lands: coaxial with the pitch circle, between a raceway's bottom and the
-    // pitch circle, within a ball radius of the balls' plane along the axis.
+    for (const RollingElement* e : set) in_set.insert(e->w->ref.part);
+    // The rings' raceways or lands: coaxial with the pitch circle, between the elements'
+    // inner (outer) side and the pitch circle, reaching the elements' plane within `reach`. A
+    // needle bearing without an inner ring runs on the shaft itself.
     const WorldFeature* inner = nullptr;
     const WorldFeature* outer = nullptr;
     for (const WorldFeature& w : features_) {
@@ -106,13 +152,13 @@ void Recognizer::AddBearings() {
       const double r = w.f.diameter / 2;
       const double along = (pitch->center - w.axis.origin).dot(w.axis.direction);
       const double outside = std::max({0.0, -along, along - w.axis.length});
-      if (outside > ball_r + L_) continue;
-      if (shaft && r > pitch->radius - ball_r - L_ && r < pitch->radius &&
+      if (outside > reach + L_) continue;
+      if (shaft && r > pitch->radius - element_r - L_ && r < pitch->radius &&
           (!inner || r > inner->f.diameter / 2 ||
            (r == inner->f.diameter / 2 && NameLess(w, *inner)))) {
         inner = &w;
       }
-      if (hole && r < pitch->radius + ball_r + L_ && r > pitch->radius &&
+      if (hole && r < pitch->radius + element_r + L_ && r > pitch->radius &&
           (!outer || r < outer->f.diameter / 2 ||
            (r == outer->f.diameter / 2 && NameLess(w, *outer)))) {
         outer = &w;
@@ -148,13 +194,13 @@ void Recognizer::AddBearings() {
     }
     AddPair(PairType::kRevolute, *inner, *outer);
     pairs_.back().source = PairSource::kBearing;
-    for (const WorldFeature* b : set) {
-      AddPair(PairType::kFixed, *b, *outer);
+    for (const RollingElement* e : set) {
+      AddPair(PairType::kFixed, *e->w, *outer);
       pairs_.back().source = PairSource::kBearing;
     }
-    // Its size as a catalogue gives it: the inner ring's bore, the outer ring's outside
-    // diameter and width (between its end faces, which chamfers do not shorten as they do
-    // its outside cylinder).
+    // Its size as a catalogue gives it: the inner ring's bore (without an inner ring, the
+    // shaft it runs on), the outer ring's outside diameter and width (between its end faces,
+    // which chamfers do not shorten as they do its outside cylinder).
     double bore = 0.0, outside = 0.0, width = 0.0;
     for (std::size_t f = 0; f < assembly_.FeatureCount(inner->ref.part); ++f) {
       const WorldFeature& w = At({inner->ref.part, f});
@@ -181,24 +227,35 @@ void Recognizer::AddBearings() {
       lo = std::min(lo, at), hi = std::max(hi, at);
     }
     if (hi > lo) width = hi - lo;
+    if (bore == 0.0) bore = inner->f.diameter;
     const std::string size = bore > 0 && outside > 0
                                  ? fmt::format(", {} x {} x {} mm", FormatNumber(bore),
                                                FormatNumber(outside), FormatNumber(width))
                                  : "";
     std::vector<std::string> parts{std::string(assembly_.PartId(inner->ref.part)),
                                    std::string(assembly_.PartId(outer->ref.part))};
-    for (const WorldFeature* b : set) parts.emplace_back(assembly_.PartId(b->ref.part));
+    for (const RollingElement* e : set) parts.emplace_back(assembly_.PartId(e->w->ref.part));
+    // Needles: rollers at least 2.5 diameters long (ISO 3096's are 2.5 to 10).
+    const bool needles = length >= 2.5 * 2 * element_r;
+    const std::string kind = length == 0 ? "ball"
+                             : needles   ? "needle roller"
+                                         : "cylindrical roller";
+    const std::string named = length == 0 ? "balls" : needles ? "needles" : "rollers";
+    const std::string each = length == 0
+                                 ? Mm(2 * element_r)
+                                 : fmt::format("{} x {}", FormatNumber(2 * element_r), Mm(length));
     diagnostics_.push_back(
         {Severity::kInfo,
          "bearing",
-         fmt::format("a ball bearing{}: {} turns in {} on {} balls of {} on a {} pitch circle "
-                     "(a revolute pair; the balls are held with the outer ring, their spin and "
-                     "orbit not modelled){}",
-                     size, assembly_.PartId(inner->ref.part), assembly_.PartId(outer->ref.part),
-                     set.size(), Mm(2 * ball_r), Mm(2 * pitch->radius),
-                     seats.empty() ? ""
-                                   : fmt::format("; its rings are fitted (fixed) to {}",
-                                                 fmt::join(seats, " and "))),
+         fmt::format(
+             "a {} bearing{}: {} turns in {} on {} {} of {} on a {} pitch circle "
+             "(a revolute pair; the {} are held with the outer ring, their spin and "
+             "orbit not modelled){}",
+             kind, size, assembly_.PartId(inner->ref.part), assembly_.PartId(outer->ref.part),
+             set.size(), named, each, Mm(2 * pitch->radius), named,
+             seats.empty()
+                 ? ""
+                 : fmt::format("; its rings are fitted (fixed) to {}", fmt::join(seats, " and "))),
          parts,
          {Name(*inner), Name(*outer)}});
   }

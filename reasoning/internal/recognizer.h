@@ -160,17 +160,20 @@ class Recognizer {
 
   // ---- rolling bearings (bearing_fits.cpp) ----
 
-  /// Ball bearings as they are sold (README, "Real CAD exports"): three or more parts that are
-  /// each one ball of one diameter (within the length tolerance), their centres on a circle
-  /// (the pitch circle, fitted in the plane of the centres by Kasa's algebraic fit, every
-  /// centre within the length tolerance of it), neighbours at most four ball diameters
-  /// apart; the inner ring is the part with a shaft coaxial with the circle between the
-  /// raceway's bottom and the pitch circle (its land), the outer ring the part with such a
-  /// hole between the pitch circle and the outer raceway's bottom, both within a ball radius
-  /// of the balls' plane. The rings make a revolute pair (source bearing) and no other pair
-  /// between them (a land is never a press fit); each ball is held with the outer ring (a
+  /// Rolling bearings as they are sold (README, "Real CAD exports"): three or more parts that
+  /// are each one rolling element of one size (within the length tolerance): a ball, or a
+  /// roller (one shaft and faces across its axis: its ends) lying along the bearing's axis;
+  /// their centres on a circle (the pitch circle, fitted in the plane of the centres by Kasa's
+  /// algebraic fit, every centre within the length tolerance of it), neighbours at most four
+  /// diameters apart. The inner ring is the part with a shaft coaxial with the circle between
+  /// the elements' inner side and the pitch circle (a ball raceway's land, a roller raceway, or
+  /// the shaft a needle bearing without an inner ring runs on), the outer ring the part with
+  /// such a hole outside the circle, both reaching the elements' plane within a ball radius
+  /// or half a roller. The rings make a revolute pair (source bearing) and no other pair
+  /// between them (a land is never a press fit); each element is held with the outer ring (a
   /// fixed pair, source bearing: its spin and orbit are not modelled, and it adds no freedom),
-  /// and makes no other pair. One info diagnostic `bearing` per bearing gives its balls and
+  /// and makes no other pair. One info diagnostic `bearing` per bearing gives its kind (ball,
+  /// cylindrical roller, needle roller: rollers 2.5 diameters long or more), its elements and
   /// size (bore x outside diameter x width, mm). Before the implied pins and the overrides.
   void AddBearings();
 

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -23,14 +24,34 @@ constexpr double kPi = 3.14159265358979323846;
 // A 6002 (15 x 32 x 9) drawn by its features, axis z: the inner ring's bore and its two lands
 // beside the raceway, the outer ring's outside and its two lands, and `balls` balls of 4.762
 // mm on a 23.5 mm pitch circle in z = 0, the first moved by `off` mm across the circle.
-std::string Sketch(int balls, double off = 0.0) {
+// How the sketch's rolling elements are drawn: balls, or rollers 5 mm long (a shaft and its
+// two end faces) along the bearing's axis or along radii.
+enum class Elements { kBalls, kRollersAlongTheAxis, kRollersAlongRadii };
+
+std::string Sketch(int balls, double off = 0.0, Elements kind = Elements::kBalls) {
   std::string elements;
   for (int k = 0; k < balls; ++k) {
     const double a = 2 * kPi * k / balls, r = 11.75 + (k == 0 ? off : 0.0);
+    const Eigen::Vector3d c(r * std::cos(a), r * std::sin(a), 0);
+    if (kind == Elements::kBalls) {
+      elements += fmt::format(
+          R"(, {{"id": "ball{}", "features": [{{"id": "ball", "kind": "ball",
+            "origin": [{}, {}, 0], "diameter": 4.762}}]}})",
+          k + 1, c.x(), c.y());
+      continue;
+    }
+    const Eigen::Vector3d u = kind == Elements::kRollersAlongTheAxis
+                                  ? Eigen::Vector3d::UnitZ()
+                                  : Eigen::Vector3d(std::cos(a), std::sin(a), 0);
+    const Eigen::Vector3d o = c - 2.5 * u, e = c + 2.5 * u;
     elements += fmt::format(
-        R"(, {{"id": "ball{}", "features": [{{"id": "ball", "kind": "ball",
-          "origin": [{}, {}, 0], "diameter": 4.762}}]}})",
-        k + 1, r * std::cos(a), r * std::sin(a));
+        R"(, {{"id": "roller{}", "features": [
+          {{"id": "roll", "kind": "shaft", "origin": [{}, {}, {}], "axis": [{}, {}, {}],
+           "diameter": 4.762, "length": 5}},
+          {{"id": "end_a", "kind": "face", "origin": [{}, {}, {}], "axis": [{}, {}, {}]}},
+          {{"id": "end_b", "kind": "face", "origin": [{}, {}, {}], "axis": [{}, {}, {}]}}]}})",
+        k + 1, o.x(), o.y(), o.z(), u.x(), u.y(), u.z(), o.x(), o.y(), o.z(), -u.x(), -u.y(),
+        -u.z(), e.x(), e.y(), e.z(), u.x(), u.y(), u.z());
   }
   return fmt::format(R"({{"mechanist": 1, "parts": [
     {{"id": "outer", "ground": true, "features": [
@@ -142,7 +163,58 @@ TEST(Bearing, ABallBearingModelledInOpenCascadeIsFoundAsWrittenAndAsBSplines) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(Bearing, BallsOffTheirCircleOrTooFewAreNoBearing) {
+TEST(Bearing, CylindricalRollersBetweenTwoRingsAreARollerBearing) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "mechanist_occt_rollers";
+  std::filesystem::create_directories(dir);
+  testing::WriteRollerBearingStep(dir / "nu205.step");
+  const Assembly a = LoadAssembly(dir / "nu205.step");
+  const Analysis an = Analyze(a);
+  const Diagnostic* bearing = Find(an, "bearing");
+  ASSERT_NE(bearing, nullptr);
+  EXPECT_EQ(bearing->message.rfind("a cylindrical roller bearing, 25 x 52 x 15 mm: ", 0), 0u)
+      << bearing->message;
+  EXPECT_NE(bearing->message.find("on 13 rollers of 6.5 x 8 mm on a 38.5 mm pitch circle"),
+            std::string::npos)
+      << bearing->message;
+  EXPECT_EQ(bearing->parts.size(), 15u);
+  EXPECT_EQ(CountSource(an, PairSource::kBearing), 14);  // the rings' revolute, 13 rollers
+  for (const Pair& p : an.pairs) {
+    EXPECT_EQ(p.source, PairSource::kBearing) << a.FeatureName(p.a) << " " << a.FeatureName(p.b);
+  }
+  EXPECT_EQ(an.motion.mobility.dof, 1);  // the inner ring's turn
+  EXPECT_EQ(Find(an, "part_unconnected"), nullptr);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Bearing, NeedlesInADrawnCupOnAShaftAreANeedleBearingAndTheShaftTurnsInIt) {
+  // No inner ring: the needles run on the shaft itself, which turns in the cup.
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "mechanist_occt_needles";
+  std::filesystem::create_directories(dir);
+  testing::WriteNeedleBearingStep(dir / "hk1210.step");
+  const Assembly a = LoadAssembly(dir / "hk1210.step");
+  const Analysis an = Analyze(a);
+  const Diagnostic* bearing = Find(an, "bearing");
+  ASSERT_NE(bearing, nullptr);
+  EXPECT_EQ(bearing->message.rfind("a needle roller bearing, 12 x 19 x 12 mm: ", 0), 0u)
+      << bearing->message;
+  EXPECT_NE(bearing->message.find("on 18 needles of 2 x 10 mm on a 14 mm pitch circle"),
+            std::string::npos)
+      << bearing->message;
+  ASSERT_EQ(bearing->parts.size(), 20u);
+  const Pair* turning = nullptr;
+  for (const Pair& p : an.pairs) {
+    if (p.type == PairType::kRevolute) turning = &p;
+  }
+  ASSERT_NE(turning, nullptr);
+  EXPECT_EQ(a.PartId(turning->a.part), bearing->parts[0]);  // the shaft
+  EXPECT_EQ(a.FeatureName(turning->a), bearing->features[0]);
+  EXPECT_EQ(an.motion.mobility.dof, 1);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Bearing, ElementsOffTheirCircleTooFewOrAcrossTheAxisAreNoBearing) {
   // A ball 0.5 mm off the pitch circle (ten times the length tolerance): no circle, no bearing.
   const Analysis off = Analyze(LoadAssemblyText(Sketch(9, 0.5), "off.json"));
   EXPECT_EQ(CountSource(off, PairSource::kBearing), 0);
@@ -153,6 +225,18 @@ TEST(Bearing, BallsOffTheirCircleOrTooFewAreNoBearing) {
   // Four balls, 16.6 mm apart (3.5 diameters), are.
   const Analysis four = Analyze(LoadAssemblyText(Sketch(4), "four.json"));
   EXPECT_EQ(CountSource(four, PairSource::kBearing), 5);
+  // Rollers along the axis between the same rings are a roller bearing; the same rollers
+  // turned to lie along radii are none (tapered and spherical rollers are not recognised).
+  const Analysis along =
+      Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kRollersAlongTheAxis), "along.json"));
+  EXPECT_EQ(CountSource(along, PairSource::kBearing), 10);
+  ASSERT_NE(Find(along, "bearing"), nullptr);
+  EXPECT_NE(Find(along, "bearing")->message.find("9 rollers of 4.762 x 5 mm"), std::string::npos)
+      << Find(along, "bearing")->message;
+  const Analysis radial =
+      Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kRollersAlongRadii), "radial.json"));
+  EXPECT_EQ(CountSource(radial, PairSource::kBearing), 0);
+  EXPECT_EQ(Find(radial, "bearing"), nullptr);
 }
 
 // A housing (ground) with a 10 mm bore, a ring 10 x 5 x 4 mm in it (its ends one flat face

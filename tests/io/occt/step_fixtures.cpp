@@ -255,26 +255,66 @@ void WriteConesAndBallStep(const std::filesystem::path& file) {
   WriteStep(all, file);
 }
 
+namespace {
+
+// A tube about z from z0 to z1 between radii r_in and r_out.
+TopoDS_Shape Tube(double r_in, double r_out, double z0, double z1) {
+  const gp_Ax2 axis(gp_Pnt(0, 0, z0), gp_Dir(0, 0, 1));
+  return BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(axis, r_out, z1 - z0).Shape(),
+                         BRepPrimAPI_MakeCylinder(axis, r_in, z1 - z0).Shape())
+      .Shape();
+}
+
+// `count` rollers of diameter `d` from z0 to z1, their axes along z on a circle of radius
+// `pitch` about it.
+void AddRollers(BRep_Builder& builder, TopoDS_Compound& all, int count, double d, double pitch,
+                double z0, double z1) {
+  for (int k = 0; k < count; ++k) {
+    const double a = 2 * M_PI * k / count;
+    const gp_Ax2 axis(gp_Pnt(pitch * std::cos(a), pitch * std::sin(a), z0), gp_Dir(0, 0, 1));
+    builder.Add(all, BRepPrimAPI_MakeCylinder(axis, d / 2, z1 - z0).Shape());
+  }
+}
+
+}  // namespace
+
 void WriteBallBearingStep(const std::filesystem::path& file, int balls) {
   const double pitch = 23.5 / 2, ball = 4.762 / 2, groove = 0.52 * 4.762, width = 9;
-  const gp_Ax2 axis(gp_Pnt(0, 0, -width / 2), gp_Dir(0, 0, 1));
-  auto tube = [&](double r_in, double r_out) {
-    return BRepAlgoAPI_Cut(BRepPrimAPI_MakeCylinder(axis, r_out, width).Shape(),
-                           BRepPrimAPI_MakeCylinder(axis, r_in, width).Shape())
-        .Shape();
-  };
   const TopoDS_Shape raceway = BRepPrimAPI_MakeTorus(gp_Ax2(), pitch, groove).Shape();
   TopoDS_Compound all;
   BRep_Builder builder;
   builder.MakeCompound(all);
-  builder.Add(all, BRepAlgoAPI_Cut(tube(7.5, 20.5 / 2), raceway).Shape());
-  builder.Add(all, BRepAlgoAPI_Cut(tube(26.7 / 2, 16), raceway).Shape());
+  builder.Add(all, BRepAlgoAPI_Cut(Tube(7.5, 20.5 / 2, -width / 2, width / 2), raceway).Shape());
+  builder.Add(all, BRepAlgoAPI_Cut(Tube(26.7 / 2, 16, -width / 2, width / 2), raceway).Shape());
   for (int k = 0; k < balls; ++k) {
     const double a = 2 * M_PI * k / balls;
     builder.Add(
         all,
         BRepPrimAPI_MakeSphere(gp_Pnt(pitch * std::cos(a), pitch * std::sin(a), 0), ball).Shape());
   }
+  WriteStep(all, file);
+}
+
+void WriteRollerBearingStep(const std::filesystem::path& file) {
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  builder.Add(all, Tube(12.5, 16, -7.5, 7.5));
+  TopoDS_Shape outer = BRepAlgoAPI_Fuse(Tube(22.5, 26, -7.5, 7.5), Tube(19.5, 22.5, -7.5, -4.5));
+  outer = BRepAlgoAPI_Fuse(outer, Tube(19.5, 22.5, 4.5, 7.5));
+  builder.Add(all, outer);
+  AddRollers(builder, all, 13, 6.5, 19.25, -4, 4);
+  WriteStep(all, file);
+}
+
+void WriteNeedleBearingStep(const std::filesystem::path& file) {
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  builder.Add(all,
+              BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -20), gp_Dir(0, 0, 1)), 6, 40).Shape());
+  builder.Add(all, Tube(8, 9.5, -6, 6));
+  AddRollers(builder, all, 18, 2, 7, -5, 5);
   WriteStep(all, file);
 }
 

@@ -49,6 +49,19 @@ void WriteRackAndPinionStep(const std::filesystem::path& file, int pinion_teeth,
 /// write.
 void WriteBallBearingStep(const std::filesystem::path& file, int balls);
 
+/// Writes a STEP file (AP214, no product names) of a cylindrical roller bearing (an NU type,
+/// 25 x 52 x 15 mm), axis z, mid-plane z = 0: an inner ring (bore 25 mm, raceway 32 mm), an
+/// outer ring (raceway 45 mm between two 3 mm flanges of bore 39 mm, outside 52 mm), and 13
+/// rollers of 6.5 x 8 mm on a 38.5 mm pitch circle, each a solid of its own. Throws
+/// std::runtime_error when it cannot write.
+void WriteRollerBearingStep(const std::filesystem::path& file);
+
+/// Writes a STEP file (AP214, no product names) of a needle bearing without an inner ring on
+/// its shaft, axis z: a 12 mm shaft from z = -20 to 20, a drawn cup (bore 16 mm, outside 19 mm,
+/// from z = -6 to 6) and 18 needles of 2 x 10 mm on a 14 mm pitch circle, each a solid of its
+/// own. Throws std::runtime_error when it cannot write.
+void WriteNeedleBearingStep(const std::filesystem::path& file);
+
 /// Copies the STEP assembly `in` to `out` with every surface of every solid converted to a
 /// B-spline (Open CASCADE's BRepBuilderAPI_NurbsConvert), keeping the product structure and
 /// names (XCAF reader and writer): a file as some exporters and healing steps write it.
