@@ -1278,7 +1278,8 @@ class Reader {
     if (!parsed) {
       Fail(p,
            fmt::format("expected one of fixed, revolute, cylindrical, screw, prismatic, pin_slot, "
-                       "spherical, planar, gear, worm_gear, rack_pinion, cycloidal, none, found {}",
+                       "spherical, planar, gear, worm_gear, rack_pinion, cycloidal, bevel_gear, "
+                       "pins_in_holes, none, found {}",
                        Describe(type)));
     }
     return parsed;

@@ -485,6 +485,14 @@ void KinematicModel::BuildRows(const std::vector<Pair>& pairs) {
     if (A == B) continue;
     const AxisSegment a = WorldAxis(p.a);
     const AxisSegment b = WorldAxis(p.b);
+    if (p.type == PairType::kPinsInHoles) {
+      // The parts keep one orientation about the axis whatever carries them: their rates
+      // relative to any body, the ground here, are equal.
+      LinearSystem::Row row = Angular(B, ground_, b.direction);
+      AppendAngular(row, A, ground_, a.direction, -ExactReal(*p.ratio));
+      rows_.push_back({std::move(row), i});
+      continue;
+    }
     if (const auto C = CommonCarrier(p.a, p.b)) {
       // Willis: rates relative to the carrier are in the pair's exact ratio.
       LinearSystem::Row row =

@@ -56,6 +56,7 @@ std::optional<int> DegreesOfFreedom(PairType type) {
     case PairType::kRackPinion:
     case PairType::kCycloidal:
     case PairType::kBevelGear:
+    case PairType::kPinsInHoles:
       return std::nullopt;
   }
   return std::nullopt;

@@ -53,6 +53,7 @@ Recognition Recognizer::Run() {
   FixHubsOnFlats();
   AddImpliedPins();
   AddLooseFits();
+  AddPinsInHoles();
   SetCompliantPartsApart();
   ApplyOverrides();
   ReportImpliedPins();
@@ -191,6 +192,9 @@ void Recognizer::SetCoupling(Pair& p, const WorldFeature& a, const WorldFeature&
     Rational ratio(fa.teeth, fb.teeth);
     if (a.axis.direction.dot(b.axis.direction) < 0) ratio = -ratio;
     p.ratio = ratio;
+  } else if (p.type == PairType::kPinsInHoles) {
+    // The holes' part turns as the pins' part does, about parallel axes.
+    p.ratio = Rational(a.axis.direction.dot(b.axis.direction) < 0 ? -1 : 1);
   } else if (p.type == PairType::kWormGear && fa.kind == K::kWorm && fb.kind == K::kWormWheel) {
     const LineLineClosest c =
         ClosestPointsOfLines(a.axis.origin, a.axis.direction, b.axis.origin, b.axis.direction);

@@ -5,7 +5,7 @@
 namespace mechanist {
 namespace {
 
-constexpr EnumNames<PairType, 13> kNames = {{
+constexpr EnumNames<PairType, 14> kNames = {{
     {PairType::kFixed, "fixed"},
     {PairType::kRevolute, "revolute"},
     {PairType::kCylindrical, "cylindrical"},
@@ -19,6 +19,7 @@ constexpr EnumNames<PairType, 13> kNames = {{
     {PairType::kRackPinion, "rack_pinion"},
     {PairType::kCycloidal, "cycloidal"},
     {PairType::kBevelGear, "bevel_gear"},
+    {PairType::kPinsInHoles, "pins_in_holes"},
 }};
 
 }  // namespace

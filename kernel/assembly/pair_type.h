@@ -22,13 +22,19 @@ enum class PairType : std::uint8_t {
   kRackPinion,
   kCycloidal,  ///< a cycloid disc rolling in its pin ring: couples like an internal gear pair
   kBevelGear,  ///< two bevel gears whose pitch cones share their apex
+  /// Pins of one part in larger holes of another, all off-centre alike (a cycloidal reducer's
+  /// output mechanism): the two parts keep the same orientation about the pins' axes while
+  /// one orbits the other.
+  kPinsInHoles,
 };
 
 /// A coupling of two turning or sliding axes (gear, bevel gear, worm gear, rack and pinion,
-/// cycloidal): it relates the rates of its parts' joints instead of guiding a part.
+/// cycloidal, pins in holes): it relates the rates of its parts' joints instead of guiding a
+/// part.
 constexpr bool IsCoupling(PairType type) {
   return type == PairType::kGear || type == PairType::kWormGear || type == PairType::kRackPinion ||
-         type == PairType::kCycloidal || type == PairType::kBevelGear;
+         type == PairType::kCycloidal || type == PairType::kBevelGear ||
+         type == PairType::kPinsInHoles;
 }
 
 /// The format's spelling ("worm_gear").

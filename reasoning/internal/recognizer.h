@@ -219,6 +219,16 @@ class Recognizer {
   /// overrides.
   void AddLooseFits();
 
+  /// Pins in holes (pair `pins_in_holes`, README "Real CAD exports"): three or more shafts of
+  /// one part, of one diameter and parallel, on a circle across their axes, each in a hole of
+  /// another part, all holes of one larger diameter, parallel, overlapping the pins along the
+  /// axis, each pin's axis off its hole's by the radial clearance (touching the wall), the same
+  /// offset for every pin: the holes' part keeps the pins' part's orientation about the axis
+  /// while it orbits (a cycloidal reducer's disc and its output). One coupling per two parts,
+  /// between the first pin and its hole, and one info `pins_in_holes`. After the loose fits,
+  /// before the overrides.
+  void AddPinsInHoles();
+
   /// One info diagnostic `loose_fit` per two parts that loose fits join, naming the features
   /// and the radial clearance.
   void ReportLooseFits();

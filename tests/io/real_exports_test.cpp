@@ -28,16 +28,24 @@ struct Expected {
   int cycloid_features = 0, plain_hole_screws = 0, loose_fits = 0;
   // Bearings modelled as one solid (the `bearing` findings that say so).
   int solid_bearings = 0;
+  // Pins in holes (a cycloidal reducer's output mechanism).
+  int pins_in_holes = 0;
 };
 
 std::vector<Expected> Cases() {
   return {
       // Truth: the bracket is ground and the arm turns on its pin: mobility 1 (tested below).
       {"revolute_pin_solidedge_chrono/assembly.stp", "Assem1", {}},
-      // Truth: the housing with its 7 integral ring pins. No warning: the input with its disc,
-      // the output ring (its pin mechanism is not recognised) and the placeholder ring turn
-      // freely (the file has no driver).
-      {"cycloid_7pin_6lobe_onshape/Full Assembly.step", "Full_Assembly.Outer_Pin_Shell", {}, 2, 2},
+      // Truth: the housing with its 7 integral ring pins. No warning: the input with its disc
+      // and the output ring, and the placeholder ring, turn freely (the file has no driver).
+      {"cycloid_7pin_6lobe_onshape/Full Assembly.step",
+       "Full_Assembly.Outer_Pin_Shell",
+       {},
+       2,
+       2,
+       0,
+       0,
+       1},
       // The print-in-place hinge: its pin stubs, 0.3 mm clear of the bores, are the lid's
       // only guide (loose fits), so no warning.
       {"hinge_clamshell_build123d/clamshell_full.step", "COMPOUND_solid2", {}, 0, 0, 6},
@@ -104,7 +112,12 @@ TEST_P(RealExports, GroundAndWarningsAreTheOnesADesignerActsOn) {
           f.kind == FeatureKind::kCycloidDisc || f.kind == FeatureKind::kPinRing ? 1 : 0;
     }
   }
-  for (const Pair& p : an.pairs) loose_fits += p.source == PairSource::kLooseFit ? 1 : 0;
+  int pins_in_holes = 0;
+  for (const Pair& p : an.pairs) {
+    loose_fits += p.source == PairSource::kLooseFit ? 1 : 0;
+    pins_in_holes += p.type == PairType::kPinsInHoles ? 1 : 0;
+  }
+  EXPECT_EQ(pins_in_holes, e.pins_in_holes);
   EXPECT_EQ(cycloid_features, e.cycloid_features);
   EXPECT_EQ(CountCode(a, "screw_in_plain_hole"), e.plain_hole_screws);
   EXPECT_EQ(loose_fits, e.loose_fits);
@@ -180,11 +193,11 @@ TEST(RealExports, TheClamshellsLidTurnsOnItsPrintedPins) {
   }
 }
 
-TEST(RealExports, TheOnshapeReducersDiscRollsInItsPinRing) {
+TEST(RealExports, TheOnshapeReducersDiscRollsInItsPinRingAndTurnsTheOutput) {
   // Truth: a 6-lobe disc centred at (0, 2) on the input's eccentric (e = 2 mm) inside the
-  // housing's 7 integral pins (r 3 on R 25): the disc turns -1/6 per turn of the input.
-  // Mobility 3: that motion, the placeholder ring's idle spin (as the truth says) and the
-  // output ring, whose pins in the disc's holes are not yet a pair.
+  // housing's 7 integral pins (r 3 on R 25): the disc turns -1/6 per turn of the input, and
+  // the output ring's 6 pins (r 2 on R 16) in the disc's 6 holes (r 4) turn the output with
+  // it: input to output -1/6. Mobility 1, 2 with the placeholder ring's idle spin.
   const std::filesystem::path file = std::filesystem::path(MECHANIST_SHARED_DATA) /
                                      "real/cycloid_7pin_6lobe_onshape/Full Assembly.step";
   const Assembly a = LoadAssemblyText(
@@ -208,7 +221,15 @@ TEST(RealExports, TheOnshapeReducersDiscRollsInItsPinRing) {
   int cycloidal = 0;
   for (const Pair& pair : an.pairs) cycloidal += pair.type == PairType::kCycloidal;
   EXPECT_EQ(cycloidal, 1);
-  EXPECT_EQ(an.motion.mobility.dof, 3);
+  // The output mechanism: one pins_in_holes coupling, the output ring's pins in the disc.
+  std::vector<const Pair*> output;
+  for (const Pair& pair : an.pairs) {
+    if (pair.type == PairType::kPinsInHoles) output.push_back(&pair);
+  }
+  ASSERT_EQ(output.size(), 1u);
+  EXPECT_EQ(a.PartId(output[0]->a.part), "Full_Assembly.Output_Ring");
+  EXPECT_EQ(a.PartId(output[0]->b.part), "Full_Assembly.Cycloidal_Disk");
+  EXPECT_EQ(an.motion.mobility.dof, 2);  // the input, and the placeholder's idle spin
   // The input's shaft_1 points down (-z): one turn of it is -1 about z, the disc's +1/6 to
   // rounding: the cover's screws (threads not modelled) hold it to the housing, so the input,
   // turning in the cover, carries both axes and the pair is in Willis' form. (Not carried as
@@ -216,6 +237,17 @@ TEST(RealExports, TheOnshapeReducersDiscRollsInItsPinRing) {
   EXPECT_EQ(CountCode(a, "screw_in_plain_hole"), 2);
   const FeatureRate& in = an.motion.driven.front().features[disc->part][disc->feature];
   EXPECT_NEAR(in.rotation.value(), 1.0 / 6.0, 1e-12);
+  // The output ring turns with the disc: about its shaft_7 (+z), -1/6 of the input's turn
+  // about +z (the driver's shaft_1 points down, so one driver turn is -1 about z).
+  const auto out = a.FindFeature("Full_Assembly.Output_Ring/shaft_7");
+  ASSERT_TRUE(out);
+  EXPECT_NEAR(a.feature(*out).axis.z(), 1.0, 1e-9);
+  const FeatureRate& ring = an.motion.driven.front().features[out->part][out->feature];
+  EXPECT_NEAR(ring.rotation.value(), 1.0 / 6.0, 1e-12);
+  // One info names the mechanism.
+  EXPECT_EQ(std::count_if(an.diagnostics.begin(), an.diagnostics.end(),
+                          [](const Diagnostic& d) { return d.code == "pins_in_holes"; }),
+            1);
 }
 
 INSTANTIATE_TEST_SUITE_P(Files, RealExports, ::testing::ValuesIn(Cases()),

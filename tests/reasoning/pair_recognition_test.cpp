@@ -870,6 +870,48 @@ TEST(PairRecognition, CycloidDiscInItsPinRingCouplesLikeAnInternalGear) {
   EXPECT_TRUE(Recognize(assembly(10, 11, 5.0)).pairs.empty());  // far off: no pair, no note
 }
 
+// An output flange with `pins` pins of 6 mm on a 40 mm circle about z, and a disc with as
+// many 9 mm holes on the same circle shifted by `shift` (the eccentricity): the holes of a
+// cycloidal disc on its eccentric. `stray` moves the first hole by that much more along x.
+Assembly PinsInHoles(int pins, V shift, double stray = 0.0) {
+  std::vector<Feature> pin_features, hole_features;
+  for (int k = 0; k < pins; ++k) {
+    const double a = 2 * kPi * k / pins;
+    const V c(20 * std::cos(a), 20 * std::sin(a), 0);
+    pin_features.push_back(Shaft(6, 24, c));
+    pin_features.back().id = "pin" + std::to_string(k + 1);
+    hole_features.push_back(Hole(9, 10, c + shift + V(k == 0 ? stray : 0, 0, 0), V::UnitZ()));
+    hole_features.back().id = "hole" + std::to_string(k + 1);
+  }
+  return MakeAssembly({MakePart("output", pin_features), MakePart("disc", hole_features)});
+}
+
+TEST(PairRecognition, PinsInHolesOffCentreAlikeCoupleTheirParts) {
+  // Each pin touches its hole's wall (1.5 mm off its centre, the radial clearance), all in
+  // the same direction: one coupling at 1 (the parts keep one orientation), named by the
+  // first pin and its hole, and one info.
+  const Recognition r = Recognize(PinsInHoles(6, V(0, 1.5, 0)));
+  const Pair p = Only(r);
+  EXPECT_EQ(p.type, PairType::kPinsInHoles);
+  EXPECT_EQ(*p.ratio, Rational(1));
+  EXPECT_EQ(p.a, (FeatureRef{0, 0}));
+  EXPECT_EQ(p.b, (FeatureRef{1, 0}));
+  EXPECT_TRUE(HasDiagnostic(r, "pins_in_holes",
+                            "the 6 pins of output (6 mm on a 40 mm circle) "
+                            "run in the 6 holes of disc (9 mm), 1.5 mm"));
+  // Any direction of the offset, three pins at least.
+  EXPECT_EQ(
+      Only(Recognize(PinsInHoles(3, V(1.5, 0, 0) / std::sqrt(2.0) + V(0, 1.5, 0) / std::sqrt(2.0))))
+          .type,
+      PairType::kPinsInHoles);
+  // None: pins centred in their holes (nothing makes them touch), one hole 0.2 mm further
+  // off (it would not touch), offsets short of the clearance, two pins.
+  EXPECT_TRUE(Recognize(PinsInHoles(6, V::Zero())).pairs.empty());
+  EXPECT_TRUE(Recognize(PinsInHoles(6, V(0, 1.5, 0), 0.2)).pairs.empty());
+  EXPECT_TRUE(Recognize(PinsInHoles(6, V(0, 1.0, 0))).pairs.empty());
+  EXPECT_TRUE(Recognize(PinsInHoles(2, V(0, 1.5, 0))).pairs.empty());
+}
+
 TEST(PairRecognition, ForcedCouplingsGetTheSameParametersAsRecognisedOnes) {
   // Gears 2 mm too far apart to mesh, axes of opposite sense: forced into a gear pair, the
   // ratio is what recognition gives for opposite axes.
