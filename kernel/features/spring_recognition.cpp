@@ -78,7 +78,7 @@ std::optional<HelicalSpring> RecognizeHelicalSpring(const TriangleMesh& mesh) {
         length < 1.5 * wire) {
       continue;
     }
-    // The pitch: turns from 1.5 to length / (1.2 wire) in twentieths, both hands, then the
+    // The pitch: turns from 2.5 to length / (0.95 wire) in twentieths, both hands, then the
     // best in two-hundredths (the peak is about a third of a turn wide: a phase error of 2 pi
     // x turns over the length).
     // Only the wire's outermost and innermost vertices (within a tenth of its radius of the
@@ -99,7 +99,9 @@ std::optional<HelicalSpring> RecognizeHelicalSpring(const TriangleMesh& mesh) {
         best_sign = sign;
       }
     };
-    const double most_turns = std::min((length - wire) / (1.2 * wire), 200.0);
+    // A closely wound (extension) spring's coils touch: pitch = wire, or a little less where
+    // the CAD model lets them overlap.
+    const double most_turns = std::min((length - wire) / (0.95 * wire), 200.0);
     for (double turns = 2.5; turns <= most_turns; turns += 0.05) {
       resultant(turns, 1.0);
       resultant(turns, -1.0);

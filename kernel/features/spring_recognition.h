@@ -20,11 +20,11 @@ struct HelicalSpring {
   Hand hand = Hand::kRight;
 };
 
-/// Recognises a helical spring with open coils from its mesh alone. For each principal axis of
+/// Recognises a helical spring, open or closely wound, from its mesh alone. For each principal axis of
 /// the vertices, set through the centres of circles fitted to the lower and upper half of them
 /// (Kasa; twice), the vertices must lie in an annulus about it (inner radius at least a quarter
 /// of the outer; the wire's diameter d = outer - inner from 4% of the coil's mean radius to
-/// all of it, a spring index of 2 to 50); the pitch p is searched (1.2 d to the whole length,
+/// all of it, a spring index of 2 to 50); the pitch p is searched (0.95 d to the whole length,
 /// at most 200 turns, both hands) for the one that concentrates the phase t / p - angle / 2 pi
 /// of the vertices on the annulus' rims, which lie on the wire's helix (Fisher's mean
 /// resultant length at least 0.5); at least 2.5 turns; and the mesh's volume and area within

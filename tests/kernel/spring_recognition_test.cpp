@@ -1,5 +1,6 @@
 // Helical springs recognised from their meshes: swept wires of known coil, wire, pitch and
-// hand, turned to an arbitrary pose; a tube, a washer and a gear are none.
+// hand, turned to an arbitrary pose, open or closely wound; a tube, a washer and a gear are
+// none.
 
 #include "kernel/features/spring_recognition.h"
 
@@ -49,8 +50,20 @@ TEST(SpringRecognition, TubesWashersAndGearsAreNoSpring) {
   gear.face_width = 8;
   gear.bore_diameter = 8;
   EXPECT_FALSE(RecognizeHelicalSpring(MakeLibraryPart(gear).mesh).has_value());
-  // A closely wound coil (pitch = wire) has no open helix to find.
-  EXPECT_FALSE(RecognizeHelicalSpring(testing::SpringMesh(6, 1.5, 1.5, 8)).has_value());
+}
+
+TEST(SpringRecognition, ACloselyWoundCoilIsASpring) {
+  // An extension spring: its coils touch (pitch = wire), or overlap a little in the model.
+  for (const double p : {1.5, 1.45}) {
+    const std::optional<HelicalSpring> s =
+        RecognizeHelicalSpring(testing::SpringMesh(6, 1.5, p, 8, false));
+    ASSERT_TRUE(s.has_value()) << p;
+    EXPECT_NEAR(s->mean_diameter, 12, 0.05 * 1.5);
+    EXPECT_NEAR(s->wire_diameter, 1.5, 0.05 * 1.5);
+    EXPECT_NEAR(s->pitch, p, 0.01 * p);
+    EXPECT_NEAR(s->turns, 8, 0.05);
+    EXPECT_EQ(s->hand, Hand::kLeft);
+  }
 }
 
 }  // namespace
