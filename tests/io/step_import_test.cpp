@@ -2,10 +2,12 @@
 // its product structure, its bolts and nuts, and the conclusion that it is one rigid, bolted
 // assembly.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <csignal>
 #include <cstdint>
 #include <filesystem>
@@ -257,6 +259,60 @@ TEST(StepImport, As1WithEverySurfaceABSplineGivesTheSamePairs) {
   const Analysis an_original = Analyze(original), an_nurbs = Analyze(nurbs);
   EXPECT_EQ(PairNames(nurbs, an_nurbs), PairNames(original, an_original));
   EXPECT_EQ(an_nurbs.subassemblies.size(), 1u);
+  std::filesystem::remove_all(dir);
+}
+
+// The pairs of an analysis without the parts' names: each part by the centre of its mesh in
+// the world (to 0.01 mm), each feature by its id within its solid.
+std::vector<std::string> PairsUpToNames(const Assembly& a, const Analysis& an) {
+  auto part = [&](std::size_t p) {
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    const TriangleMesh& mesh = *a.part(p).mesh;
+    for (const Eigen::Vector3d& v : mesh.vertices) centre += v / mesh.vertices.size();
+    const Eigen::Vector3d c = a.part(p).X_WP * centre;
+    return fmt::format("({:.2f}, {:.2f}, {:.2f})", c.x() + 0.0, c.y() + 0.0, c.z() + 0.0);
+  };
+  std::vector<std::string> names;
+  for (const Pair& p : an.pairs) {
+    std::array<std::string, 2> ends = {part(p.a.part) + "/" + a.feature(p.a).id,
+                                       part(p.b.part) + "/" + a.feature(p.b).id};
+    std::sort(ends.begin(), ends.end());
+    names.push_back(
+        fmt::format("{} {} {} {}", ToString(p.type), ToString(p.source), ends[0], ends[1]));
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+TEST(StepImport, As1InInchesFlatOrNestedGivesTheSamePairsUpToNames) {
+  // The same product as other exporters write it: lengths in inches, a flat compound of
+  // unnamed solids, or the assembly inside three more levels of unnamed assemblies.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_variants";
+  std::filesystem::create_directories(dir);
+  const Assembly original = LoadAssembly(kAs1);
+  const Analysis an_original = Analyze(original);
+  const std::vector<std::string> expected = PairsUpToNames(original, an_original);
+  ASSERT_GT(expected.size(), 20u);
+  for (const auto& [variant, name] : {std::pair{testing::StepVariant::kInches, "inches"},
+                                      std::pair{testing::StepVariant::kFlat, "flat"},
+                                      std::pair{testing::StepVariant::kNested, "nested"}}) {
+    SCOPED_TRACE(name);
+    const std::filesystem::path file = dir / (std::string(name) + ".stp");
+    testing::WriteStepVariant(kAs1, file, variant);
+    const Assembly a = LoadAssembly(file);
+    ASSERT_EQ(a.parts().size(), original.parts().size());
+    const Analysis an = Analyze(a);
+    EXPECT_EQ(PairsUpToNames(a, an), expected);
+    EXPECT_EQ(an.subassemblies.size(), 1u);
+    EXPECT_EQ(an.motion.mobility.dof, an_original.motion.mobility.dof);
+    if (variant == testing::StepVariant::kInches) {
+      // Names are kept; the plate's bolt holes are still 6 holes of the same size in mm.
+      const auto plate = a.FindPart("AS1_PE_ASM.PLATE");
+      ASSERT_TRUE(plate.has_value());
+      EXPECT_EQ(a.part(*plate).features.size(),
+                original.part(*original.FindPart("AS1_PE_ASM.PLATE")).features.size());
+    }
+  }
   std::filesystem::remove_all(dir);
 }
 

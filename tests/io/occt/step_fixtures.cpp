@@ -19,6 +19,7 @@
 #include <BRep_Builder.hxx>
 #include <GeomAPI_Interpolate.hxx>
 #include <Geom_BSplineCurve.hxx>
+#include <Interface_Static.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <STEPCAFControl_Reader.hxx>
@@ -27,6 +28,7 @@
 #include <TColgp_HArray1OfPnt.hxx>
 #include <TDF_LabelSequence.hxx>
 #include <TDocStd_Document.hxx>
+#include <TopExp_Explorer.hxx>
 #include <TopoDS_Compound.hxx>
 #include <XCAFApp_Application.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
@@ -206,6 +208,59 @@ void WriteRackAndPinionStep(const std::filesystem::path& file, int pinion_teeth,
   builder.Add(all, rack);
   builder.Add(all, pinion);
   WriteStep(all, file);
+}
+
+void WriteStepVariant(const std::filesystem::path& in, const std::filesystem::path& out,
+                      StepVariant variant) {
+  Message::DefaultMessenger()->ChangePrinters().Clear();  // the reader's and writer's statistics
+  Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
+  Handle(TDocStd_Document) document;
+  app->NewDocument("MDTV-XCAF", document);
+  STEPCAFControl_Reader reader;
+  reader.SetNameMode(true);
+  if (reader.ReadFile(in.string().c_str()) != IFSelect_RetDone || !reader.Transfer(document)) {
+    throw std::runtime_error("cannot read " + in.string());
+  }
+  const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(document->Main());
+  TDF_LabelSequence roots;
+  tool->GetFreeShapes(roots);
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  for (int i = 1; i <= roots.Length(); ++i) builder.Add(all, tool->GetShape(roots(i)));
+  bool written = false;
+  if (variant == StepVariant::kInches) {
+    Interface_Static::SetCVal("write.step.unit", "INCH");
+    STEPCAFControl_Writer writer;
+    writer.SetNameMode(true);
+    written = writer.Transfer(document, STEPControl_AsIs) &&
+              writer.Write(out.string().c_str()) == IFSelect_RetDone;
+    Interface_Static::SetCVal("write.step.unit", "MM");
+  } else if (variant == StepVariant::kFlat) {
+    TopoDS_Compound solids;
+    builder.MakeCompound(solids);
+    for (TopExp_Explorer e(all, TopAbs_SOLID); e.More(); e.Next()) builder.Add(solids, e.Current());
+    STEPControl_Writer writer;
+    written = writer.Transfer(solids, STEPControl_AsIs) == IFSelect_RetDone &&
+              writer.Write(out.string().c_str()) == IFSelect_RetDone;
+  } else {
+    TopoDS_Shape nested = all;
+    for (int level = 0; level < 3; ++level) {
+      TopoDS_Compound outer;
+      builder.MakeCompound(outer);
+      builder.Add(outer, nested);
+      nested = outer;
+    }
+    Handle(TDocStd_Document) deep;
+    app->NewDocument("MDTV-XCAF", deep);
+    XCAFDoc_DocumentTool::ShapeTool(deep->Main())->AddShape(nested, true);
+    STEPCAFControl_Writer writer;
+    written = writer.Transfer(deep, STEPControl_AsIs) &&
+              writer.Write(out.string().c_str()) == IFSelect_RetDone;
+    app->Close(deep);
+  }
+  app->Close(document);
+  if (!written) throw std::runtime_error("cannot write " + out.string());
 }
 
 void WriteNurbsCopy(const std::filesystem::path& in, const std::filesystem::path& out) {

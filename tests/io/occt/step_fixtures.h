@@ -62,6 +62,18 @@ void WriteRollerBearingStep(const std::filesystem::path& file);
 /// own. Throws std::runtime_error when it cannot write.
 void WriteNeedleBearingStep(const std::filesystem::path& file);
 
+/// How WriteStepVariant rewrites an assembly, as other exporters would write the same product.
+enum class StepVariant {
+  kInches,  ///< the product structure and names kept, lengths in inches
+  kFlat,    ///< one compound of the solids in their places: no structure, no names
+  kNested,  ///< the whole assembly three levels deeper, in unnamed assemblies
+};
+
+/// Copies the STEP assembly `in` to `out` written as `variant` says (Open CASCADE's XCAF
+/// reader and writer). Throws std::runtime_error when it cannot read or write.
+void WriteStepVariant(const std::filesystem::path& in, const std::filesystem::path& out,
+                      StepVariant variant);
+
 /// Copies the STEP assembly `in` to `out` with every surface of every solid converted to a
 /// B-spline (Open CASCADE's BRepBuilderAPI_NurbsConvert), keeping the product structure and
 /// names (XCAF reader and writer): a file as some exporters and healing steps write it.
