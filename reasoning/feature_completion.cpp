@@ -14,7 +14,7 @@
 namespace mechanist {
 namespace {
 
-/// The gears, racks and cycloidal discs found on one solid's tessellation, in the solid's
+/// The gears, bevel gears, racks and cycloidal discs found on one solid's tessellation, in the solid's
 /// frame.
 struct TessellationGears {
   std::vector<Feature> features;
@@ -24,8 +24,8 @@ struct TessellationGears {
 TessellationGears FindTessellationGears(const TriangleMesh& mesh) {
   TessellationGears gears;
   for (RecognizedFeature& r : RecognizeFeatures(mesh).features) {
-    if (r.feature.kind != FeatureKind::kGear && r.feature.kind != FeatureKind::kRack &&
-        r.feature.kind != FeatureKind::kCycloidDisc) {
+    if (r.feature.kind != FeatureKind::kGear && r.feature.kind != FeatureKind::kBevelGear &&
+        r.feature.kind != FeatureKind::kRack && r.feature.kind != FeatureKind::kCycloidDisc) {
       continue;
     }
     gears.notes.push_back(

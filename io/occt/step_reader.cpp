@@ -349,7 +349,8 @@ AnalyticFit FitRevolution(const SurfaceSamples& s, double tolerance) {
 
 // The exact surface a free-form face is, within `tolerance` mm, tried in the order plane (Open
 // CASCADE's GeomLib_IsPlanarSurface for the surface itself), cylinder, sphere, then cone or
-// torus; kNone when it is none of them.
+// torus, the first that fits unless a later one fits ten times closer (and the first is off
+// by more than 1e-6 mm); kNone when it is none of them.
 AnalyticFit FitAnalytic(const TopoDS_Face& face, const BRepAdaptor_Surface& surface,
                         double tolerance) {
   const SurfaceSamples s = SampleSurface(face, surface);
@@ -367,11 +368,19 @@ AnalyticFit FitAnalytic(const TopoDS_Face& face, const BRepAdaptor_Surface& surf
     }
     return fit;
   }
+  // The simplest kind that fits, unless a later one fits ten times closer: a narrow strip of
+  // a cone (a bevel gear's tip land) is a cylinder within the tolerance, but not within its
+  // cone's rounding.
+  AnalyticFit best;
   for (auto* fitter : {FitCylinder, FitSphere, FitRevolution}) {
     const AnalyticFit fit = fitter(s, tolerance);
-    if (fit.kind != AnalyticFit::Kind::kNone) return fit;
+    if (fit.kind == AnalyticFit::Kind::kNone) continue;
+    if (best.kind == AnalyticFit::Kind::kNone ||
+        (best.error > 1e-6 && fit.error < 0.1 * best.error)) {
+      best = fit;
+    }
   }
-  return {};
+  return best;
 }
 
 // What a cone is beside the solid's cylinders: a countersink at a hole's mouth, a conical end

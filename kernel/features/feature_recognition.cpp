@@ -547,6 +547,149 @@ std::optional<RecognizedFeature> SectionGear(const TriangleMesh& mesh, const Vec
   return g;
 }
 
+// Teeth around a section of a bevel gear: the outline's largest radius about `centre` per
+// angle repeating z times around (matching itself turned by one tooth within 5%), its depth
+// free (a bevel gear's local module shrinks toward the apex).
+struct BevelSection {
+  int teeth = 0;
+  double tip = 0.0, root = 0.0;  // mm: the largest and smallest of the largest radius
+};
+
+std::optional<BevelSection> BevelTeethOfSection(const Outline& o, const Vector2d& centre) {
+  constexpr int kBins = 2048;
+  if (o.edges.size() < 12) return std::nullopt;
+  const Profile radial = Sample(
+      o, kBins, -kPi, kPi,
+      [&](const Vector2d& q) { return std::atan2(q.y() - centre.y(), q.x() - centre.x()); },
+      [&](const Vector2d& q) { return (q - centre).norm(); }, true);
+  const std::vector<double>& r = radial.high;
+  const auto [lo, hi] = std::minmax_element(r.begin(), r.end());
+  if (*hi - *lo <= 0.02 * *hi) return std::nullopt;
+  const int z = Dominant(Spectrum(r), 3, 256);
+  if (o.edges.size() < static_cast<std::size_t>(4 * z) ||
+      SelfMismatch(r, static_cast<int>(std::lround(kBins / double(z)))) >= 0.05) {
+    return std::nullopt;
+  }
+  return BevelSection{z, *hi, *lo};
+}
+
+// A straight bevel gear about `axis`: sections across it show the same teeth, whose tip and
+// root radii shrink along lines toward one apex (the gear's tip and root cones). As for a spur
+// gear, the pitch line lies a 2.25th of the tooth depth below the tip (addendum m, dedendum
+// 1.25 m, measured in any section across the axis); it meets the axis at the apex, at the pitch
+// angle d = atan(dr / dh). The teeth end at the heel, farthest from the apex, where the pitch
+// radius is m z / 2: the module there, rounded to ISO 54 (within 3%).
+std::optional<RecognizedFeature> SectionBevelGear(const TriangleMesh& mesh, const Vector3d& axis) {
+  const Vector3d e = std::abs(axis.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
+  const Vector3d u = axis.cross(e).normalized();
+  const Vector3d v = axis.cross(u);
+  double t_min = 1e300, t_max = -1e300;
+  for (const Vector3d& p : mesh.vertices) {
+    t_min = std::min(t_min, p.dot(axis));
+    t_max = std::max(t_max, p.dot(axis));
+  }
+  const double width = t_max - t_min;
+  if (!(width > 0)) return std::nullopt;
+  // The axis' point: the middle of a middle section's segments, weighted by length.
+  const Outline middle = Section(mesh, axis, u, v, t_min + 0.5013 * width);
+  Vector2d centre = Vector2d::Zero();
+  double length = 0.0;
+  for (const auto& [a, b] : middle.edges) {
+    centre += (b - a).norm() * (a + b) / 2;
+    length += (b - a).norm();
+  }
+  if (!(length > 0)) return std::nullopt;
+  centre /= length;
+  constexpr int kSections = 24;
+  const double step = width / kSections;
+  std::vector<std::optional<BevelSection>> sections(kSections);
+  for (int i = 0; i < kSections; ++i) {
+    sections[i] =
+        BevelTeethOfSection(Section(mesh, axis, u, v, t_min + (i + 0.5013) * step), centre);
+  }
+  // The longest run of sections with the same tooth count.
+  int first = -1, count = 0;
+  for (int i = 0; i < kSections;) {
+    if (!sections[i]) {
+      ++i;
+      continue;
+    }
+    int j = i + 1;
+    while (j < kSections && sections[j] && sections[j]->teeth == sections[i]->teeth) ++j;
+    if (j - i > count) first = i, count = j - i;
+    i = j;
+  }
+  if (count < 5) return std::nullopt;
+  const int z = sections[first]->teeth;
+  // Tip and root radius as lines in the height: r = a + b t, by least squares.
+  std::vector<double> ts, tips, roots;
+  for (int i = first; i < first + count; ++i) {
+    ts.push_back(t_min + (i + 0.5013) * step);
+    tips.push_back(sections[i]->tip);
+    roots.push_back(sections[i]->root);
+  }
+  const auto line = [&](const std::vector<double>& r) {
+    const double n = static_cast<double>(ts.size());
+    const double tm = std::accumulate(ts.begin(), ts.end(), 0.0) / n;
+    const double rm = std::accumulate(r.begin(), r.end(), 0.0) / n;
+    double stt = 0.0, str = 0.0;
+    for (std::size_t k = 0; k < ts.size(); ++k) {
+      stt += (ts[k] - tm) * (ts[k] - tm);
+      str += (ts[k] - tm) * (r[k] - rm);
+    }
+    const double b = str / stt;
+    double misfit = 0.0;
+    for (std::size_t k = 0; k < ts.size(); ++k) {
+      misfit = std::max(misfit, std::abs(r[k] - rm - b * (ts[k] - tm)));
+    }
+    return std::array<double, 3>{rm - b * tm, b, misfit};
+  };
+  const auto [tip_a, tip_b, tip_misfit] = line(tips);
+  const auto [root_a, root_b, root_misfit] = line(roots);
+  // Cones, not a cylinder (a spur gear) or a disc (a crown gear, teeth on a face): the pitch
+  // angle between 5 and 80 degrees, both lines straight to 2% of the tip and sloping alike.
+  const double pitch_a = tip_a - (tip_a - root_a) / 2.25;
+  const double pitch_b = tip_b - (tip_b - root_b) / 2.25;
+  const double angle = std::atan(std::abs(pitch_b));
+  const double tip_max = *std::max_element(tips.begin(), tips.end());
+  if (angle < 5 * kPi / 180 || angle > 80 * kPi / 180 || tip_b * root_b <= 0 ||
+      std::max(tip_misfit, root_misfit) > 0.02 * tip_max) {
+    return std::nullopt;
+  }
+  // The apex: where the pitch line meets the axis; the tip and root lines must meet it there
+  // too (within a tenth of the cone distance), as the cones of one gear do.
+  const double apex = -pitch_a / pitch_b;
+  const double heel = pitch_b > 0 ? t_min + (first + count) * step : t_min + first * step;
+  const double reach = std::abs(heel - apex);
+  if (std::abs(-tip_a / tip_b - apex) > 0.1 * reach ||
+      std::abs(-root_a / root_b - apex) > 0.1 * reach) {
+    return std::nullopt;
+  }
+  const double heel_radius = std::abs(pitch_b) * reach;
+  const double raw_module = 2 * heel_radius / z;
+  const std::optional<double> m = Standard(raw_module);
+  if (!m) return std::nullopt;
+  RecognizedFeature g;
+  Feature& f = g.feature;
+  f.kind = FeatureKind::kBevelGear;
+  f.id = "teeth";
+  const Vector3d into = pitch_b > 0 ? axis : Vector3d(-axis);  // from the apex into the gear
+  f.origin = centre.x() * u + centre.y() * v + apex * axis;
+  f.axis = into;
+  f.teeth = z;
+  f.module = *m;
+  f.pitch_angle = angle;
+  f.length = count * step / std::cos(angle);  // the face width along the pitch line
+  g.fit_error = std::abs(raw_module - *m) * z / 2;
+  g.detail = fmt::format(
+      "straight bevel gear from {} sections across the axis, {} teeth, tip and root radii "
+      "shrinking toward one apex: pitch angle {} deg, pitch radius {} at the heel, module {} "
+      "(ISO 54; measured {})",
+      count, z, FormatNumber(angle * 180 / kPi, 4), Mm(heel_radius), FormatNumber(*m),
+      FormatNumber(raw_module, 5));
+  return g;
+}
+
 }  // namespace
 
 const std::vector<double>& StandardModules() {
@@ -913,10 +1056,14 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
   }
   // A part that is no prism may still be a gear: a helical one, or spur teeth beside a hub.
   if (!prismatic && !has_teeth) {
-    for (int i = 0; i < 3; ++i) {
-      if (auto gear = SectionGear(mesh, Canonical(eigen.eigenvectors().col(i).normalized()))) {
+    for (int i = 0; i < 3 && !has_teeth; ++i) {
+      const Vector3d a = Canonical(eigen.eigenvectors().col(i).normalized());
+      // A bevel gear first: some of its sections show a standard module's depth too.
+      std::optional<RecognizedFeature> gear = SectionBevelGear(mesh, a);
+      if (!gear) gear = SectionGear(mesh, a);
+      if (gear) {
         out.features.insert(out.features.begin(), std::move(*gear));
-        break;
+        has_teeth = true;
       }
     }
   }

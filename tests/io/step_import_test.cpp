@@ -14,6 +14,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -379,6 +380,43 @@ TEST(StepImport, HelicalGearsWithLoftedFlanksMeshWithOppositeHands) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(StepImport, StraightBevelGearsFromStepSolidsMeshAtRightAngles) {
+  // A 15- and a 30-tooth bevel gear, module 2, shafts at right angles, flanks as B-splines:
+  // found on the solids' tessellation with their teeth, module, pitch angles (26.57 and 63.43
+  // degrees) and common apex, and their bevel_gear pair at -1/2.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_bevel";
+  std::filesystem::create_directories(dir);
+  testing::WriteBevelGearPairStep(dir / "bevel.step", 15, 30, 2.0);
+  const Assembly a = LoadAssembly(dir / "bevel.step");
+  ASSERT_EQ(a.parts().size(), 2u);
+  const double kDeg = std::numbers::pi / 180;
+  const std::array<int, 2> teeth = {15, 30};
+  const std::array<Eigen::Vector3d, 2> axes = {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX()};
+  for (std::size_t p = 0; p < 2; ++p) {
+    const Feature* gear = nullptr;
+    for (const Feature& f : a.part(p).features) {
+      if (f.kind == FeatureKind::kBevelGear) gear = &f;
+    }
+    ASSERT_NE(gear, nullptr) << ::testing::PrintToString(a.part(p).notes);
+    EXPECT_EQ(gear->teeth, teeth[p]);
+    EXPECT_EQ(gear->module, 2.0);
+    EXPECT_NEAR(gear->pitch_angle, std::atan2(teeth[p], teeth[1 - p]), 0.2 * kDeg);
+    const AxisSegment axis = gear->WorldAxis(a.part(p).X_WP);
+    EXPECT_NEAR(axis.direction.dot(axes[p]), 1.0, 1e-4);  // from the apex into the gear
+    EXPECT_NEAR(axis.origin.norm(), 0.0, 0.05);
+  }
+  const Analysis an = Analyze(a);
+  std::vector<const Pair*> bevel;
+  for (const Pair& p : an.pairs) {
+    if (p.type == PairType::kBevelGear) bevel.push_back(&p);
+  }
+  ASSERT_EQ(bevel.size(), 1u) << ::testing::PrintToString(PairNames(a, an));
+  const Feature& fa = a.feature(bevel[0]->a);
+  const Feature& fb = a.feature(bevel[0]->b);
+  EXPECT_EQ(*bevel[0]->ratio, -Rational(fa.teeth, fb.teeth));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(StepImport, ARackAndPinionFromStepSolidsMakeTheirPair) {
   // Our own fixture: an 18-tooth pinion (module 2, B-spline flanks) on a 12-tooth rack whose
   // faces are all planes. The rack's teeth are found on its tessellation as the pinion's are;
@@ -443,6 +481,7 @@ TEST(StepImport, NoGearIsFoundOnTheRealExportsThatHaveNone) {
     for (const Part& p : a.parts()) {
       for (const Feature& f : p.features) {
         EXPECT_NE(f.kind, FeatureKind::kGear) << file << ": " << p.id;
+        EXPECT_NE(f.kind, FeatureKind::kBevelGear) << file << ": " << p.id;
         EXPECT_NE(f.kind, FeatureKind::kRack) << file << ": " << p.id;
       }
     }

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "kernel/features/involute_gear.h"
 #include "kernel/features/part_library.h"
 #include "kernel/mesh/mesh_builder.h"
 
@@ -93,6 +94,69 @@ TEST(FeatureRecognition, HelicalGearsGiveTheirHelixAngleAndHandFromTheirSections
     EXPECT_NE(gear->detail.find(c.helix_deg > 0 ? "right hand" : "left hand"), std::string::npos)
         << gear->detail;
   }
+}
+
+// A straight bevel gear of `teeth` and heel module `module` with pitch angle `pitch_angle`
+// (radians) about +z, its pitch cone's apex at the origin: the involute outline of a spur gear
+// of that module (addendum m, dedendum 1.25 m) across the axis at the heel, L cos(angle) from
+// the apex (L = m z / (2 sin(angle))), joined by straight walls to the same outline scaled
+// toward the apex by 2/3 at the toe, with a bore.
+TriangleMesh BevelGearMesh(int teeth, double module, double pitch_angle) {
+  InvoluteOutlineSpec spec;
+  spec.teeth = teeth;
+  spec.module = module;
+  spec.pressure_angle = 20 * M_PI / 180;
+  spec.addendum = module;
+  spec.dedendum = 1.25 * module;
+  spec.max_arc_step = 2 * M_PI / teeth / 8;
+  const Ring2d heel = Oriented(InvoluteOutline(spec), true);
+  const double L = module * teeth / (2 * std::sin(pitch_angle)), toe = 2.0 / 3.0;
+  Ring2d inner = heel;
+  for (Eigen::Vector2d& p : inner) p *= toe;
+  const Ring2d bore =
+      Oriented(CircleRing(Eigen::Vector2d::Zero(), 0.1 * module * teeth, 48), false);
+  MeshBuilder b;
+  const double z0 = toe * L * std::cos(pitch_angle), z1 = L * std::cos(pitch_angle);
+  const MeshBuilder::Indices outer0 = b.AddRing(inner, z0), outer1 = b.AddRing(heel, z1);
+  const MeshBuilder::Indices hole0 = b.AddRing(bore, z0), hole1 = b.AddRing(bore, z1);
+  b.AddWall(outer0, outer1);
+  b.AddWall(hole0, hole1);
+  b.AddCap(outer0, {hole0}, /*facing_up=*/false);
+  b.AddCap(outer1, {hole1}, /*facing_up=*/true);
+  return b.Release();
+}
+
+TEST(FeatureRecognition, StraightBevelGearsGiveTheirTeethModulePitchAngleAndApex) {
+  const RigidTransform X = RigidTransform::FromQuaternion(
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.9, Eigen::Vector3d(-1, 2, 1).normalized())),
+      {3, 5, -8});
+  struct Case {
+    int teeth;
+    double module, pitch_deg;
+  };
+  for (const Case& c : std::vector<Case>{{12, 2.0, 21.8}, {20, 1.5, 45}, {36, 1.0, 68.2}}) {
+    const MeshFeatures found =
+        RecognizeFeatures(Moved(BevelGearMesh(c.teeth, c.module, c.pitch_deg * M_PI / 180), X));
+    const RecognizedFeature* gear = Find(found, FeatureKind::kBevelGear);
+    ASSERT_NE(gear, nullptr) << c.teeth << " teeth";
+    EXPECT_EQ(Find(found, FeatureKind::kGear), nullptr);
+    EXPECT_EQ(gear->feature.teeth, c.teeth);
+    EXPECT_EQ(gear->feature.module, c.module);
+    EXPECT_NEAR(gear->feature.pitch_angle * 180 / M_PI, c.pitch_deg, 0.1) << gear->detail;
+    // From the apex into the gear.
+    EXPECT_GT(gear->feature.axis.dot(X.RotateDirection(Eigen::Vector3d::UnitZ())), 1 - 1e-6);
+    EXPECT_LT((gear->feature.origin - X * Eigen::Vector3d::Zero()).norm(), 0.02) << c.teeth;
+  }
+  // A spur gear's tip and root do not shrink: it stays a spur gear.
+  SpurGearSpec spur;
+  spur.teeth = 20;
+  spur.module = 1.5;
+  spur.face_width = 10;
+  spur.bore_diameter = 6;
+  spur.helix_angle = 10 * M_PI / 180;  // not prismatic: the section path
+  const MeshFeatures helical = RecognizeFeatures(MakeLibraryPart(spur).mesh);
+  EXPECT_EQ(Find(helical, FeatureKind::kBevelGear), nullptr);
+  EXPECT_NE(Find(helical, FeatureKind::kGear), nullptr);
 }
 
 TEST(FeatureRecognition, SpurTeethBesideAHubAreFoundInSections) {

@@ -141,6 +141,26 @@ TopoDS_Shape HelicalGear(int teeth, double module, double helix) {
   return Bored(loft.Shape(), teeth, module);
 }
 
+// A straight bevel gear about +z with its pitch cone's apex at the origin (see
+// WriteBevelGearPairStep).
+TopoDS_Shape BevelGear(int teeth, double module, double pitch_angle) {
+  const double L = module * teeth / (2.0 * std::sin(pitch_angle)), toe = 2.0 / 3.0;
+  const Ring2d heel = GearOutline(teeth, module, 0.0);
+  Ring2d inner = heel;
+  for (Eigen::Vector2d& p : inner) p *= toe;
+  BRepOffsetAPI_ThruSections loft(true, true, 1e-6);
+  loft.CheckCompatibility(false);
+  loft.AddWire(OutlineWire(inner, toe * L * std::cos(pitch_angle), 0.0));
+  loft.AddWire(OutlineWire(heel, L * std::cos(pitch_angle), 0.0));
+  loft.Build();
+  if (!loft.IsDone()) throw std::runtime_error("cannot loft a bevel gear");
+  const double bore = 0.15 * toe * module * teeth;
+  return BRepAlgoAPI_Cut(
+             loft.Shape(),
+             BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, 0), gp::DZ()), bore, 2 * L).Shape())
+      .Shape();
+}
+
 }  // namespace
 
 void WriteSpurGearPairStep(const std::filesystem::path& file, int teeth_a, int teeth_b,
@@ -172,6 +192,22 @@ void WriteHelicalGearPairStep(const std::filesystem::path& file, int teeth_a, in
   builder.MakeCompound(all);
   builder.Add(all, HelicalGear(teeth_a, module, helix));
   builder.Add(all, b);
+  WriteStep(all, file);
+}
+
+void WriteBevelGearPairStep(const std::filesystem::path& file, int teeth_a, int teeth_b,
+                            double module) {
+  const double angle_a = std::atan2(teeth_a, teeth_b), angle_b = std::atan2(teeth_b, teeth_a);
+  gp_Trsf phase, across;
+  phase.SetRotation(gp::OZ(), M_PI / teeth_b);  // a tooth space of b faces a tooth of a
+  across.SetRotation(gp::OY(), M_PI / 2);       // +z onto +x
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  builder.Add(all, BevelGear(teeth_a, module, angle_a));
+  builder.Add(
+      all,
+      BRepBuilderAPI_Transform(BevelGear(teeth_b, module, angle_b), across * phase, true).Shape());
   WriteStep(all, file);
 }
 

@@ -33,6 +33,17 @@ void WriteSpurGearPairStep(const std::filesystem::path& file, int teeth_a, int t
 void WriteHelicalGearPairStep(const std::filesystem::path& file, int teeth_a, int teeth_b,
                               double module, double helix);
 
+/// Writes a STEP file (AP214, no product names) of two straight bevel gears of module
+/// `module` (at the heel) meshing on shafts at right angles, their pitch cones' apex at the
+/// origin: `teeth_a` teeth about +z, `teeth_b` about +x, pitch angles atan(z_a / z_b) and
+/// atan(z_b / z_a). Each is a ruled loft (B-spline faces) between its outline at the heel, a
+/// spur gear's of the same teeth and module (addendum m, dedendum 1.25 m) in the plane across
+/// its axis at the outer cone distance L = m z / (2 sin(pitch angle)), and that outline scaled
+/// toward the apex to L - L / 3 (face width L / 3), with a bore of 0.3 times the toe's pitch
+/// diameter. Throws std::runtime_error when it cannot build or write.
+void WriteBevelGearPairStep(const std::filesystem::path& file, int teeth_a, int teeth_b,
+                            double module);
+
 /// Writes a STEP file (AP214, no product names) of a rack and pinion as a CAD system exports
 /// them: a straight rack of `rack_teeth` teeth along +x from x = 0 (20 degree flanks, pitch
 /// line y = 0, teeth toward +y, 10 mm face width from z = 0, all faces planes) and a spur gear
