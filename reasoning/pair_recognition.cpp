@@ -143,6 +143,11 @@ void Recognizer::Test(const WorldFeature& x, const WorldFeature& y) {
   either(K::kShaft, K::kSlot, [this](auto& s, auto& sl) { PinSlot(s, sl); });
   either(K::kKey, K::kSlot, [this](auto& k, auto& sl) { KeySlot(k, sl); });
   either(K::kWorm, K::kWormWheel, [this](auto& w, auto& g) { WormWheel(w, g); });
+  // A gear found on a mesh or a STEP solid's tessellation serves as a worm wheel (its throat,
+  // if any, is not seen in its sections).
+  either(K::kWorm, K::kGear, [this](auto& w, auto& g) {
+    if (!g.f.internal) WormWheel(w, g);
+  });
   either(K::kGear, K::kRack, [this](auto& g, auto& r) { GearRack(g, r); });
   either(K::kBall, K::kSocket, [this](auto& b, auto& s) { BallSocket(b, s); });
   either(K::kCycloidDisc, K::kPinRing, [this](auto& d, auto& r) { CycloidPins(d, r); });
@@ -195,7 +200,8 @@ void Recognizer::SetCoupling(Pair& p, const WorldFeature& a, const WorldFeature&
   } else if (p.type == PairType::kPinsInHoles) {
     // The holes' part turns as the pins' part does, about parallel axes.
     p.ratio = Rational(a.axis.direction.dot(b.axis.direction) < 0 ? -1 : 1);
-  } else if (p.type == PairType::kWormGear && fa.kind == K::kWorm && fb.kind == K::kWormWheel) {
+  } else if (p.type == PairType::kWormGear && fa.kind == K::kWorm &&
+             (fb.kind == K::kWormWheel || fb.kind == K::kGear)) {
     const LineLineClosest c =
         ClosestPointsOfLines(a.axis.origin, a.axis.direction, b.axis.origin, b.axis.direction);
     const Eigen::Vector3d n =

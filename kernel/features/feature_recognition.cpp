@@ -354,9 +354,10 @@ struct SectionTeeth {
 // Whether a section may show teeth about `centre` (most sections of most parts are no gear):
 // with each segment's larger end radius over the angles it spans (external teeth), or its
 // smaller (internal), in 1024 angles, the radius spans a tooth depth near a standard module's
-// (2.25 m within 6%) and repeats around (matching itself turned by one period of its
-// strongest frequency within 15%). A cheap look before the full profile.
-bool MayShowTeeth(const Outline& o, const Vector2d& centre) {
+// (2.25 m within 6%; with `any_depth`, a bevel gear's, over 2% of the largest radius) and
+// repeats around (matching itself turned by one period of its strongest frequency within
+// 15%). A cheap look before the full profile.
+bool MayShowTeeth(const Outline& o, const Vector2d& centre, bool any_depth = false) {
   constexpr int kBins = 1024;
   std::vector<double> high(kBins, -1e300), low(kBins, 1e300);
   auto bin_of = [&](const Vector2d& q) {
@@ -374,13 +375,13 @@ bool MayShowTeeth(const Outline& o, const Vector2d& centre) {
       if (i == to) break;
     }
   }
-  auto teeth_like = [](const std::vector<double>& r) {
+  auto teeth_like = [any_depth](const std::vector<double>& r) {
     const auto [lo, hi] = std::minmax_element(r.begin(), r.end());
     if (*hi >= 1e299 || *lo <= -1e299) return false;  // an angle no segment spans
     const double m = (*hi - *lo) / 2.25;
     const bool standard = std::any_of(StandardModules().begin(), StandardModules().end(),
                                       [m](double s) { return std::abs(s - m) <= 0.06 * s; });
-    if (!standard) return false;
+    if (any_depth ? *hi - *lo <= 0.02 * *hi : !standard) return false;
     const int z = Dominant(Spectrum(r), 3, 256);
     return SelfMismatch(r, static_cast<int>(std::lround(kBins / double(z)))) < 0.15;
   };
@@ -557,7 +558,7 @@ struct BevelSection {
 
 std::optional<BevelSection> BevelTeethOfSection(const Outline& o, const Vector2d& centre) {
   constexpr int kBins = 2048;
-  if (o.edges.size() < 12) return std::nullopt;
+  if (o.edges.size() < 12 || !MayShowTeeth(o, centre, /*any_depth=*/true)) return std::nullopt;
   const Profile radial = Sample(
       o, kBins, -kPi, kPi,
       [&](const Vector2d& q) { return std::atan2(q.y() - centre.y(), q.x() - centre.x()); },
@@ -603,9 +604,19 @@ std::optional<RecognizedFeature> SectionBevelGear(const TriangleMesh& mesh, cons
   constexpr int kSections = 24;
   const double step = width / kSections;
   std::vector<std::optional<BevelSection>> sections(kSections);
-  for (int i = 0; i < kSections; ++i) {
+  auto cut = [&](int i) {
     sections[i] =
         BevelTeethOfSection(Section(mesh, axis, u, v, t_min + (i + 0.5013) * step), centre);
+    return sections[i].has_value();
+  };
+  // Most parts are no gear: three sections, a quarter, half and three quarters up, decide
+  // whether the rest are cut (a run of teeth sections over half the part holds one of them).
+  const std::array<int, 3> probes = {kSections / 4, kSections / 2, 3 * kSections / 4};
+  bool teeth = false;
+  for (const int i : probes) teeth = cut(i) || teeth;
+  if (!teeth) return std::nullopt;
+  for (int i = 0; i < kSections; ++i) {
+    if (std::find(probes.begin(), probes.end(), i) == probes.end()) cut(i);
   }
   // The longest run of sections with the same tooth count.
   int first = -1, count = 0;
@@ -688,6 +699,162 @@ std::optional<RecognizedFeature> SectionBevelGear(const TriangleMesh& mesh, cons
       count, z, FormatNumber(angle * 180 / kPi, 4), Mm(heel_radius), FormatNumber(*m),
       FormatNumber(raw_module, 5));
   return g;
+}
+
+// The mesh's outline in the half-plane through the axis (point c, direction a) toward u, as
+// the largest distance from the axis over `bins` bins of the height t in [lo, hi]; -1 where
+// no segment passes.
+std::vector<double> AxialProfile(const TriangleMesh& mesh, const Vector3d& c, const Vector3d& a,
+                                 const Vector3d& u, double lo, double hi, int bins) {
+  const Vector3d n = a.cross(u);
+  std::vector<double> r(bins, -1.0);
+  for (const auto& f : mesh.faces) {
+    std::array<Vector2d, 2> cut;
+    int count = 0;
+    for (int k = 0; k < 3 && count < 2; ++k) {
+      const Vector3d p = mesh.vertices[f[k]] - c, q = mesh.vertices[f[(k + 1) % 3]] - c;
+      const double dp = p.dot(n), dq = q.dot(n);
+      if ((dp < 0) == (dq < 0)) continue;
+      const Vector3d x = p + dp / (dp - dq) * (q - p);
+      cut[count++] = Vector2d(x.dot(a), x.dot(u));
+    }
+    if (count < 2 || cut[0].y() <= 0 || cut[1].y() <= 0) continue;  // the other half-plane
+    const int steps =
+        2 + static_cast<int>(std::abs(cut[1].x() - cut[0].x()) / (hi - lo) * bins * 4);
+    for (int k = 0; k <= steps; ++k) {
+      const Vector2d x = cut[0] + (cut[1] - cut[0]) * (static_cast<double>(k) / steps);
+      const int bin = static_cast<int>(std::floor((x.x() - lo) / (hi - lo) * bins));
+      if (bin >= 0 && bin < bins) r[bin] = std::max(r[bin], x.y());
+    }
+  }
+  return r;
+}
+
+// The Fourier coefficient of a series, its mean removed, at `q` cycles over its length (q need
+// not be whole: the mean would leak into it).
+std::complex<double> Coefficient(const std::vector<double>& s, double q) {
+  const double n = static_cast<double>(s.size());
+  const double mean = std::accumulate(s.begin(), s.end(), 0.0) / n;
+  std::complex<double> sum = 0.0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    sum += (s[i] - mean) * std::polar(1.0, -2 * kPi * q * i / n);
+  }
+  return sum;
+}
+
+// A worm about `axis` (refined: see below): its outline in a half-plane through the axis
+// repeats along it at the axial pitch p (the strongest frequency over the middle 90% of its
+// length, refined to a hundredth of a cycle; two cycles or more, matching itself shifted by one
+// within 10%), with a tooth depth of 2.25 m for the standard module m = p / pi
+// (ISO 54 within 3%; depth within 10%). In 16 half-planes around the axis the thread's phase
+// turns by -h S theta for S starts of hand h (r(t, theta) = P(t - h S p theta / 2 pi)): the
+// slope, unwrapped, is the starts and the hand. Pitch diameter: the tip's less two addenda m.
+std::optional<RecognizedFeature> AxialWorm(const TriangleMesh& mesh, const Vector3d& axis_guess) {
+  // The axis: the principal direction leans where the thread ends part-way round. Through the
+  // centres of circles (Kasa) fitted to the vertices on the tip (within 2% of the largest
+  // radius) in the lower and the upper half, three times.
+  Vector3d axis = axis_guess, c = Vector3d::Zero();
+  for (const Vector3d& p : mesh.vertices) c += p / static_cast<double>(mesh.vertices.size());
+  double tip = 0.0;
+  for (int round = 0; round < 3; ++round) {
+    const Vector3d e = std::abs(axis.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
+    const Vector3d u = axis.cross(e).normalized(), v = axis.cross(u);
+    tip = 0.0;
+    for (const Vector3d& p : mesh.vertices) {
+      const Vector3d d = p - c;
+      tip = std::max(tip, (d - d.dot(axis) * axis).norm());
+    }
+    std::array<std::vector<Vector2d>, 2> rims;
+    std::array<double, 2> heights = {0.0, 0.0};
+    for (const Vector3d& p : mesh.vertices) {
+      const Vector3d d = p - c;
+      if ((d - d.dot(axis) * axis).norm() < 0.98 * tip) continue;
+      const int half = d.dot(axis) < 0 ? 0 : 1;
+      rims[half].emplace_back(d.dot(u), d.dot(v));
+      heights[half] += d.dot(axis);
+    }
+    if (rims[0].size() < 3 || rims[1].size() < 3) return std::nullopt;
+    std::array<Vector3d, 2> centres;
+    for (int h = 0; h < 2; ++h) {
+      const Vector2d q = FitCircle(rims[h]).center;
+      centres[h] = c + q.x() * u + q.y() * v + heights[h] / rims[h].size() * axis;
+    }
+    if (!((centres[1] - centres[0]).norm() > 0)) return std::nullopt;
+    axis = (centres[1] - centres[0]).normalized();
+    if (axis.dot(axis_guess) < 0) axis = -axis;
+    c = (centres[0] + centres[1]) / 2;
+  }
+  const Vector3d e = std::abs(axis.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
+  const Vector3d u = axis.cross(e).normalized();
+  const Vector3d v = axis.cross(u);
+  c -= c.dot(axis) * axis;  // heights are measured from the origin's plane, as elsewhere
+  double t_min = 1e300, t_max = -1e300;
+  for (const Vector3d& p : mesh.vertices) {
+    t_min = std::min(t_min, p.dot(axis));
+    t_max = std::max(t_max, p.dot(axis));
+  }
+  const double width = t_max - t_min;
+  if (!(width > 0)) return std::nullopt;
+  constexpr int kBins = 1024, kWedges = 16;
+  const double lo = t_min + 0.05 * width, hi = t_max - 0.05 * width;
+  auto profile = [&](int k) {
+    const double angle = 2 * kPi * k / kWedges;
+    std::vector<double> r =
+        AxialProfile(mesh, c, axis, std::cos(angle) * u + std::sin(angle) * v, lo, hi, kBins);
+    return std::count(r.begin(), r.end(), -1.0) > 0 ? std::vector<double>() : r;
+  };
+  const std::vector<double> first = profile(0);
+  if (first.empty()) return std::nullopt;
+  const auto [low, high] = std::minmax_element(first.begin(), first.end());
+  const double depth = *high - *low;
+  if (depth <= 0.05 * *high) return std::nullopt;
+  // The strongest frequency, refined to a hundredth of a cycle over the window.
+  const int f = Dominant(Spectrum(first), 2, kBins / 8);
+  double q = f, best = 0.0;
+  for (int k = -100; k <= 100; ++k) {
+    const double at = f + 0.01 * k;
+    const double strength = std::abs(Coefficient(first, at));
+    if (strength > best) best = strength, q = at;
+  }
+  // Two turns of the thread at least, repeating along the axis.
+  if (q < 2 || SelfMismatch(first, static_cast<int>(std::lround(kBins / q))) >= 0.1) {
+    return std::nullopt;
+  }
+  const double pitch = (hi - lo) / q;
+  const std::optional<double> m = Standard(pitch / kPi);
+  if (!m || std::abs(depth - 2.25 * *m) > 0.1 * 2.25 * *m) return std::nullopt;
+  // The phase in each half-plane, unwrapped around the axis.
+  std::vector<double> phases;
+  for (int k = 0; k < kWedges; ++k) {
+    const std::vector<double> r = k == 0 ? first : profile(k);
+    if (r.empty()) return std::nullopt;
+    const double at = std::arg(Coefficient(r, q));
+    phases.push_back(phases.empty() ? at
+                                    : phases.back() + std::remainder(at - phases.back(), 2 * kPi));
+  }
+  const double slope = (phases.back() - phases.front()) / (2 * kPi * (kWedges - 1) / kWedges);
+  const int starts = static_cast<int>(std::lround(std::abs(slope)));
+  if (starts < 1 || starts > 6 || std::abs(std::abs(slope) - starts) > 0.2) return std::nullopt;
+  RecognizedFeature w;
+  Feature& feature = w.feature;
+  feature.kind = FeatureKind::kWorm;
+  feature.id = "worm";
+  feature.origin = c + t_min * axis;
+  feature.axis = axis;
+  feature.length = width;
+  feature.starts = starts;
+  feature.module = *m;
+  feature.pitch_diameter = 2 * (tip - *m);
+  feature.hand = slope < 0 ? Hand::kRight : Hand::kLeft;
+  w.fit_error = std::abs(pitch / kPi - *m) * kPi;
+  w.detail = fmt::format(
+      "worm from 16 outlines through its axis: axial pitch {} = pi x {}, tooth depth {} "
+      "(2.25 x {}), module {} (ISO 54), the thread turning {} starts around, {} hand; tip "
+      "diameter {}, pitch diameter {}",
+      Mm(pitch), FormatNumber(pitch / kPi, 5), Mm(depth), FormatNumber(depth / 2.25, 5),
+      FormatNumber(*m), starts, feature.hand == Hand::kRight ? "right" : "left", Mm(2 * tip),
+      Mm(feature.pitch_diameter));
+  return w;
 }
 
 }  // namespace
@@ -1061,6 +1228,7 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
       // A bevel gear first: some of its sections show a standard module's depth too.
       std::optional<RecognizedFeature> gear = SectionBevelGear(mesh, a);
       if (!gear) gear = SectionGear(mesh, a);
+      if (!gear) gear = AxialWorm(mesh, a);
       if (gear) {
         out.features.insert(out.features.begin(), std::move(*gear));
         has_teeth = true;

@@ -146,6 +146,9 @@ class Recognizer {
   /// windows: `cycloid_eccentricity`, `cycloid_pin_count`.
   void CycloidPins(const WorldFeature& disc, const WorldFeature& ring);
 
+  /// A worm and its wheel (spec), or an external gear serving as one: axes square, the same
+  /// module, centre distance (pitch diameter + m z) / 2. Off by less than the near-miss
+  /// windows: `worm_module_mismatch`, `worm_axes_not_perpendicular`, `worm_center_distance`.
   void WormWheel(const WorldFeature& w, const WorldFeature& g);
 
   void GearRack(const WorldFeature& g, const WorldFeature& r);

@@ -482,6 +482,7 @@ TEST(StepImport, NoGearIsFoundOnTheRealExportsThatHaveNone) {
       for (const Feature& f : p.features) {
         EXPECT_NE(f.kind, FeatureKind::kGear) << file << ": " << p.id;
         EXPECT_NE(f.kind, FeatureKind::kBevelGear) << file << ": " << p.id;
+        EXPECT_NE(f.kind, FeatureKind::kWorm) << file << ": " << p.id;
         EXPECT_NE(f.kind, FeatureKind::kRack) << file << ": " << p.id;
       }
     }
@@ -714,6 +715,46 @@ void WriteStl(const TriangleMesh& mesh, const std::filesystem::path& path) {
     const std::uint16_t attribute = 0;
     out.write(reinterpret_cast<const char*>(&attribute), 2);
   }
+}
+
+TEST(MeshRecognition, AWormAndAGearAsSTLsMakeTheirWormGearPair) {
+  // A single-start worm (module 1.5, pitch diameter 15) along z and a 30-tooth gear of its
+  // module turning about y, its mid-plane through the worm's axis at the centre distance
+  // (15 + 1.5 x 30) / 2 = 30 mm: both recognised from their meshes alone, and their worm_gear
+  // pair at 1/30.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_worm_stl";
+  std::filesystem::create_directories(dir);
+  WormSpec worm;
+  worm.module = 1.5;
+  worm.pitch_diameter = 15;
+  worm.length = 40;
+  worm.bore_diameter = 5;
+  SpurGearSpec wheel;
+  wheel.teeth = 30;
+  wheel.module = 1.5;
+  wheel.face_width = 8;
+  wheel.bore_diameter = 8;
+  WriteStl(MakeLibraryPart(worm).mesh, dir / "worm.stl");
+  WriteStl(MakeLibraryPart(wheel).mesh, dir / "wheel.stl");
+  const std::string text = R"({"mechanist": 1, "parts": [
+    {"id": "worm", "mesh": "worm.stl"},
+    {"id": "wheel", "mesh": "wheel.stl",
+     "pose": {"position": [30, -4, 20], "quaternion": [0.7071067811865476, -0.7071067811865476, 0, 0]}}]})";
+  const Assembly a = LoadAssemblyText(text, dir / "a.json");
+  const Analysis an = Analyze(a);
+  std::vector<const Pair*> worm_gears;
+  for (const Pair& p : an.pairs) {
+    if (p.type == PairType::kWormGear) worm_gears.push_back(&p);
+  }
+  ASSERT_EQ(worm_gears.size(), 1u) << ::testing::PrintToString(PairNames(a, an));
+  EXPECT_EQ(a.PartId(worm_gears[0]->a.part), "worm");
+  EXPECT_EQ(a.feature(worm_gears[0]->a).starts, 1);
+  // Right-hand worm about +z, wheel about +y on its +x side: (u_wheel x n) . u_worm =
+  // (y x x) . z = -1, so the wheel turns -1/30 per worm turn (see "Recognition").
+  EXPECT_GT(a.feature(worm_gears[0]->a).axis.z(), 1 - 1e-6);
+  EXPECT_GT(a.feature(worm_gears[0]->b).axis.z(), 1 - 1e-6);  // in the wheel's frame
+  EXPECT_EQ(*worm_gears[0]->ratio, Rational(-1, 30));
+  std::filesystem::remove_all(dir);
 }
 
 TEST(NutOnBolt, MeshPartsAloneAreANutOnItsBolt) {

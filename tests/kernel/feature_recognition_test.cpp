@@ -159,6 +159,54 @@ TEST(FeatureRecognition, StraightBevelGearsGiveTheirTeethModulePitchAngleAndApex
   EXPECT_NE(Find(helical, FeatureKind::kGear), nullptr);
 }
 
+TEST(FeatureRecognition, WormsGiveTheirStartsModuleHandAndPitchDiameter) {
+  // Library worms (a trapezoidal thread of 20 degree flanks, axial pitch pi m) in a skew pose.
+  const RigidTransform X = RigidTransform::FromQuaternion(
+      Eigen::Quaterniond(Eigen::AngleAxisd(1.1, Eigen::Vector3d(2, -1, 3).normalized())),
+      {-6, 2, 9});
+  struct Case {
+    int starts;
+    double module, pitch_diameter, length;
+    Hand hand;
+  };
+  for (const Case& c : std::vector<Case>{{1, 1.0, 10, 30, Hand::kRight},
+                                         {2, 2.0, 20, 50, Hand::kLeft},
+                                         {3, 1.5, 18, 40, Hand::kRight},
+                                         {4, 0.8, 12, 25, Hand::kLeft}}) {
+    WormSpec spec;
+    spec.starts = c.starts;
+    spec.module = c.module;
+    spec.pitch_diameter = c.pitch_diameter;
+    spec.length = c.length;
+    spec.bore_diameter = 0.3 * c.pitch_diameter;
+    spec.hand = c.hand;
+    const MeshFeatures found = RecognizeFeatures(Moved(MakeLibraryPart(spec).mesh, X));
+    const RecognizedFeature* worm = Find(found, FeatureKind::kWorm);
+    ASSERT_NE(worm, nullptr) << c.starts << " starts";
+    EXPECT_EQ(worm->feature.starts, c.starts) << worm->detail;
+    EXPECT_EQ(worm->feature.module, c.module) << worm->detail;
+    EXPECT_EQ(worm->feature.hand, c.hand) << worm->detail;
+    EXPECT_NEAR(worm->feature.pitch_diameter, c.pitch_diameter, 0.05 * c.module) << worm->detail;
+    const Eigen::Vector3d axis = X.RotateDirection(Eigen::Vector3d::UnitZ());
+    EXPECT_GT(std::abs(worm->feature.axis.dot(axis)), 1 - 1e-6);
+    EXPECT_LT(DistanceToAxis(worm->feature, X * Eigen::Vector3d::Zero()), 0.01 * c.module);
+    EXPECT_NEAR(worm->feature.length, c.length, 1e-3);
+    EXPECT_EQ(Find(found, FeatureKind::kGear), nullptr);
+  }
+  // A plain shaft, a helical gear and a spring are no worm.
+  ShaftSpec shaft;
+  shaft.diameter = 10;
+  shaft.length = 40;
+  EXPECT_EQ(Find(RecognizeFeatures(MakeLibraryPart(shaft).mesh), FeatureKind::kWorm), nullptr);
+  SpurGearSpec helical;
+  helical.teeth = 20;
+  helical.module = 1.5;
+  helical.face_width = 10;
+  helical.bore_diameter = 6;
+  helical.helix_angle = 20 * M_PI / 180;
+  EXPECT_EQ(Find(RecognizeFeatures(MakeLibraryPart(helical).mesh), FeatureKind::kWorm), nullptr);
+}
+
 TEST(FeatureRecognition, SpurTeethBesideAHubAreFoundInSections) {
   // A spur gear fused to a tapered hub: no longer a prism, its teeth still show in sections
   // across the axis, with no helix.
