@@ -808,13 +808,19 @@ std::optional<RecognizedFeature> AxialWorm(const TriangleMesh& mesh, const Vecto
   const auto [low, high] = std::minmax_element(first.begin(), first.end());
   const double depth = *high - *low;
   if (depth <= 0.05 * *high) return std::nullopt;
-  // The strongest frequency, refined to a hundredth of a cycle over the window.
+  // The strongest frequency (a cheap look first: the outline repeating at a whole number of
+  // cycles within 30%), refined to a tenth, then a hundredth of a cycle over the window.
   const int f = Dominant(Spectrum(first), 2, kBins / 8);
-  double q = f, best = 0.0;
-  for (int k = -100; k <= 100; ++k) {
-    const double at = f + 0.01 * k;
-    const double strength = std::abs(Coefficient(first, at));
-    if (strength > best) best = strength, q = at;
+  if (SelfMismatch(first, static_cast<int>(std::lround(kBins / double(f)))) >= 0.3) {
+    return std::nullopt;
+  }
+  double q = f;
+  for (const double step : {0.1, 0.01}) {
+    double best = 0.0, from = q;
+    for (int k = -10; k <= 10; ++k) {
+      const double strength = std::abs(Coefficient(first, from + step * k));
+      if (strength > best) best = strength, q = from + step * k;
+    }
   }
   // Two turns of the thread at least, repeating along the axis.
   if (q < 2 || SelfMismatch(first, static_cast<int>(std::lround(kBins / q))) >= 0.1) {
