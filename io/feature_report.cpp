@@ -26,7 +26,8 @@ std::vector<FeatureReportEntry> RecogniseAssemblyFeatures(const Assembly& assemb
       FeatureReportEntry e{part.id, part.X_WP, MeshFeatures(), true};
       for (const Feature& f : part.features) {
         const bool teeth = f.kind == FeatureKind::kGear || f.kind == FeatureKind::kBevelGear ||
-                           f.kind == FeatureKind::kRack || f.kind == FeatureKind::kCycloidDisc;
+                           f.kind == FeatureKind::kWorm || f.kind == FeatureKind::kRack ||
+                           f.kind == FeatureKind::kCycloidDisc;
         e.found.features.push_back({f, 0.0,
                                     teeth ? "from the solid's tessellation (see its note)"
                                           : "from the STEP file's exact faces"});

@@ -14,7 +14,7 @@
 namespace mechanist {
 namespace {
 
-/// The gears, bevel gears, racks and cycloidal discs found on one solid's tessellation, in the solid's
+/// The gears, bevel gears, worms, racks and cycloidal discs found on one solid's tessellation, in the solid's
 /// frame.
 struct TessellationGears {
   std::vector<Feature> features;
@@ -24,8 +24,9 @@ struct TessellationGears {
 TessellationGears FindTessellationGears(const TriangleMesh& mesh) {
   TessellationGears gears;
   for (RecognizedFeature& r : RecognizeFeatures(mesh).features) {
-    if (r.feature.kind != FeatureKind::kGear && r.feature.kind != FeatureKind::kBevelGear &&
-        r.feature.kind != FeatureKind::kRack && r.feature.kind != FeatureKind::kCycloidDisc) {
+    const FeatureKind k = r.feature.kind;
+    if (k != FeatureKind::kGear && k != FeatureKind::kBevelGear && k != FeatureKind::kWorm &&
+        k != FeatureKind::kRack && k != FeatureKind::kCycloidDisc) {
       continue;
     }
     gears.notes.push_back(

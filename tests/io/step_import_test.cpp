@@ -417,6 +417,38 @@ TEST(StepImport, StraightBevelGearsFromStepSolidsMeshAtRightAngles) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(StepImport, ARingGearCutIntoAHousingMeshesWithItsPinion) {
+  // A 36-tooth ring gear cut into a bolted housing block (module 2) and a 12-tooth pinion
+  // inside it: the internal gear is one feature of the housing, beside its bolt holes, and the
+  // pair turns the pinion's way at +12/36 = 1/3 (internal) or +3.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_ring";
+  std::filesystem::create_directories(dir);
+  testing::WriteRingGearHousingStep(dir / "ring.step", 36, 12, 2.0);
+  const Assembly a = LoadAssembly(dir / "ring.step");
+  ASSERT_EQ(a.parts().size(), 2u);
+  const Part& housing = a.part(0);
+  const Feature* ring = nullptr;
+  int holes = 0;
+  for (const Feature& f : housing.features) {
+    if (f.kind == FeatureKind::kGear) ring = &f;
+    holes += f.kind == FeatureKind::kHole;
+  }
+  ASSERT_NE(ring, nullptr) << ::testing::PrintToString(housing.notes);
+  EXPECT_TRUE(ring->internal);
+  EXPECT_EQ(ring->teeth, 36);
+  EXPECT_EQ(ring->module, 2.0);
+  EXPECT_EQ(holes, 4);
+  const Analysis an = Analyze(a);
+  std::vector<const Pair*> gears;
+  for (const Pair& p : an.pairs) {
+    if (p.type == PairType::kGear) gears.push_back(&p);
+  }
+  ASSERT_EQ(gears.size(), 1u) << ::testing::PrintToString(PairNames(a, an));
+  const bool pinion_first = a.feature(gears[0]->a).teeth == 12;
+  EXPECT_EQ(*gears[0]->ratio, pinion_first ? Rational(1, 3) : Rational(3));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(StepImport, ARackAndPinionFromStepSolidsMakeTheirPair) {
   // Our own fixture: an 18-tooth pinion (module 2, B-spline flanks) on a 12-tooth rack whose
   // faces are all planes. The rack's teeth are found on its tessellation as the pinion's are;

@@ -211,6 +211,39 @@ void WriteBevelGearPairStep(const std::filesystem::path& file, int teeth_a, int 
   WriteStep(all, file);
 }
 
+void WriteRingGearHousingStep(const std::filesystem::path& file, int ring_teeth, int pinion_teeth,
+                              double module) {
+  const double side = 2.5 * module * (ring_teeth + 10);
+  TopoDS_Shape housing =
+      BRepPrimAPI_MakeBox(gp_Pnt(-side / 2, -side / 2, 0), side, side, 10).Shape();
+  InvoluteOutlineSpec spaces;
+  spaces.teeth = ring_teeth;
+  spaces.module = module;
+  spaces.pressure_angle = 20.0 * M_PI / 180.0;
+  spaces.addendum = 1.25 * module;
+  spaces.dedendum = module;
+  spaces.max_arc_step = 2.0 * M_PI / ring_teeth / 12.0;
+  spaces.flank_points = 12;
+  const TopoDS_Face cavity =
+      BRepBuilderAPI_MakeFace(OutlineWire(InvoluteOutline(spaces), -1.0, 0.0)).Face();
+  housing = BRepAlgoAPI_Cut(housing, BRepPrimAPI_MakePrism(cavity, gp_Vec(0, 0, 12)).Shape());
+  const double corner = 0.4 * side, bolt = 0.3 * module * ring_teeth / 4;
+  for (const double x : {-corner, corner}) {
+    for (const double y : {-corner, corner}) {
+      housing = BRepAlgoAPI_Cut(
+          housing, BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(x, y, -1), gp::DZ()), bolt, 12).Shape());
+    }
+  }
+  gp_Trsf shift;
+  shift.SetTranslation(gp_Vec(module * (ring_teeth - pinion_teeth) / 2.0, 0, 0));
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  builder.Add(all, housing);
+  builder.Add(all, BRepBuilderAPI_Transform(SpurGear(pinion_teeth, module), shift, true).Shape());
+  WriteStep(all, file);
+}
+
 void WriteRackAndPinionStep(const std::filesystem::path& file, int pinion_teeth, double module,
                             int rack_teeth) {
   // The rack: straight flanks at 20 degrees, addendum m above the pitch line y = 0, dedendum

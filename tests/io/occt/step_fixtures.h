@@ -44,6 +44,16 @@ void WriteHelicalGearPairStep(const std::filesystem::path& file, int teeth_a, in
 void WriteBevelGearPairStep(const std::filesystem::path& file, int teeth_a, int teeth_b,
                             double module);
 
+/// Writes a STEP file (AP214, no product names) of a housing with a ring gear cut into it and
+/// a pinion inside: a block of 2.5 m (z_ring + 10) square, 10 mm thick from z = 0, centred on
+/// the z axis, with 4 bolt holes of 0.6 m z_ring / 4 near its corners and the ring gear's tooth
+/// spaces (`ring_teeth` teeth of module `module`, tips 1 m inside the pitch circle, roots 1.25 m
+/// outside, as B-spline curves) cut through it; a spur gear of `pinion_teeth` as
+/// WriteSpurGearPairStep draws it at m (z_ring - z_pinion) / 2 along x. Throws
+/// std::runtime_error when it cannot build or write.
+void WriteRingGearHousingStep(const std::filesystem::path& file, int ring_teeth, int pinion_teeth,
+                              double module);
+
 /// Writes a STEP file (AP214, no product names) of a rack and pinion as a CAD system exports
 /// them: a straight rack of `rack_teeth` teeth along +x from x = 0 (20 degree flanks, pitch
 /// line y = 0, teeth toward +y, 10 mm face width from z = 0, all faces planes) and a spur gear
