@@ -82,11 +82,26 @@ RigidTransform ToRigid(const gp_Trsf& t) {
 
 Eigen::Vector3d ToEigen(const gp_XYZ& v) { return {v.X(), v.Y(), v.Z()}; }
 
+// How closely two faces of one cylinder, cone or sphere agree (and a cone with the cylinder it
+// ends): exact surfaces to rounding (1e-6 of the radius, at least of 1 mm; 1e-9 in the cosine
+// of their axes' angle), surfaces fitted to free-form faces to the fit's tolerance (mm) and the
+// 1 mrad their normals are held to.
+struct Agreement {
+  double length = 0.0;  // mm; 0: rounding
+  double cosine = 1e-9;
+  double Length(double radius) const { return length > 0 ? length : 1e-6 * std::max(1.0, radius); }
+  // Two faces agree as closely as the looser of them.
+  Agreement With(const Agreement& o) const {
+    return {std::max(length, o.length), std::max(cosine, o.cosine)};
+  }
+};
+
 // A cylinder being gathered from its faces.
 struct Cylinder {
   Eigen::Vector3d point, direction;
   double radius = 0.0;
   bool convex = true;
+  Agreement agree;
   // Each face's extent along the axis (from `point`) and angular span (radians).
   struct Span {
     double lo = 1e300, hi = -1e300;
@@ -119,13 +134,15 @@ struct Sphere {
   double radius = 0.0;
   bool convex = true;
   double area = 0.0;  // mm^2, of its faces
+  Agreement agree;
 };
 
 // A cone being gathered from its faces.
 struct Cone {
-  Eigen::Vector3d apex, direction;
-  double semi_angle = 0.0;  // radians
+  Eigen::Vector3d apex, direction;  // direction: where the cone widens
+  double semi_angle = 0.0;          // radians
   bool convex = true;
+  Agreement agree;
   double coverage = 0.0;  // radians of the faces' angular spans, summed
   double r_min = 1e300, r_max = -1e300;
 };
@@ -298,6 +315,7 @@ AnalyticFit FitRevolution(const SurfaceSamples& s, double tolerance) {
     meridian.emplace_back(h, r);
     normals.emplace_back(n.dot(d), n.dot(radial / r));
   }
+  if (meridian.size() < 6) return {};
   AnalyticFit fit;
   fit.direction = d;
   // A cone: r = a + b h by least squares.
@@ -329,8 +347,9 @@ AnalyticFit FitRevolution(const SurfaceSamples& s, double tolerance) {
     return fit;
   }
   // A torus: the meridian a circle about (h0, R), the tube's centre line.
+  // Its tube's centre line off the axis (else a sphere, tried before).
   const FittedCircle tube = FitCircle(meridian);
-  if (!(tube.radius > 0)) return {};
+  if (!(tube.radius > 0) || !(tube.center.y() > tolerance)) return {};
   fit.error = 0.0;
   outward = 0;
   for (std::size_t k = 0; k < meridian.size(); ++k) {
@@ -392,8 +411,8 @@ std::string DescribeCone(const Cone& c, const std::vector<Feature>& features) {
   for (const Feature& f : features) {
     if (f.kind != (c.convex ? FeatureKind::kShaft : FeatureKind::kHole)) continue;
     const Eigen::Vector3d d = c.apex - f.origin;
-    const double r = f.diameter / 2, tol = 1e-6 * std::max(1.0, r);
-    const bool coaxial = std::abs(std::abs(f.axis.dot(c.direction)) - 1) < 1e-9 &&
+    const double r = f.diameter / 2, tol = c.agree.Length(r);
+    const bool coaxial = std::abs(std::abs(f.axis.dot(c.direction)) - 1) < c.agree.cosine &&
                          (d - d.dot(f.axis) * f.axis).norm() < tol;
     if (!coaxial) continue;
     if (!c.convex && std::abs(c.r_min - r) < tol) {
@@ -530,9 +549,8 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
       ++fitted[fit.kind];
       fit_error = std::max(fit_error, fit.error);
     }
-    // Exact surfaces of one cylinder, cone or sphere agree to rounding; fitted ones within the
-    // fit's tolerance.
-    const double merge = analytic ? 1e-6 : fit_tolerance;
+    const Agreement agree =
+        analytic ? Agreement() : Agreement{fit_tolerance, 1 - std::cos(kNormalAngle)};
     if (type == GeomAbs_Cylinder || fit.kind == AnalyticFit::Kind::kCylinder) {
       Cylinder c;
       Cylinder::Span span;
@@ -561,14 +579,18 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
       // One cylinder split into several faces: merged.
       auto same = std::find_if(cylinders.begin(), cylinders.end(), [&](const Cylinder& o) {
         const Eigen::Vector3d d = c.point - o.point;
-        return std::abs(o.radius - c.radius) < merge * std::max(1.0, c.radius) &&
-               std::abs(std::abs(o.direction.dot(c.direction)) - 1) < 1e-9 + merge &&
-               (d - d.dot(o.direction) * o.direction).norm() < merge && o.convex == c.convex;
+        const Agreement both = agree.With(o.agree);
+        return std::abs(o.radius - c.radius) < both.Length(c.radius) &&
+               std::abs(std::abs(o.direction.dot(c.direction)) - 1) < both.cosine &&
+               (d - d.dot(o.direction) * o.direction).norm() < both.Length(c.radius) &&
+               o.convex == c.convex;
       });
       if (same == cylinders.end()) {
         c.spans.push_back(span);
+        c.agree = agree;
         cylinders.push_back(c);
       } else {
+        same->agree = same->agree.With(agree);
         const double sign = same->direction.dot(c.direction) > 0 ? 1 : -1;
         const double shift = (c.point - same->point).dot(same->direction);
         same->spans.push_back({shift + (sign > 0 ? span.lo : -span.hi),
@@ -581,6 +603,7 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
         c.apex = ToEigen(g.Apex().XYZ());
         c.direction = ToEigen(g.Axis().Direction().XYZ()).normalized();
         c.semi_angle = std::abs(g.SemiAngle());
+        if (g.SemiAngle() < 0) c.direction = -c.direction;  // it narrows along its axis
         // As for a cylinder: the surface's normal points away from the axis in a direct frame.
         c.convex = g.Position().Direct() != reversed;
         double u0, u1, v0, v1;
@@ -600,13 +623,17 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
         c.r_max = std::max(c.r_max, r);
       }
       auto same = std::find_if(cones.begin(), cones.end(), [&](const Cone& o) {
-        return (o.apex - c.apex).norm() < merge * std::max(1.0, c.r_max) &&
-               o.direction.dot(c.direction) > 1 - 1e-9 - merge &&
-               std::abs(o.semi_angle - c.semi_angle) < 1e-9 + merge && o.convex == c.convex;
+        const Agreement both = agree.With(o.agree);
+        return (o.apex - c.apex).norm() < both.Length(c.r_max) &&
+               o.direction.dot(c.direction) > 1 - both.cosine &&
+               std::abs(o.semi_angle - c.semi_angle) < std::acos(1 - both.cosine) &&
+               o.convex == c.convex;
       });
       if (same == cones.end()) {
+        c.agree = agree;
         cones.push_back(c);
       } else {
+        same->agree = same->agree.With(agree);
         same->coverage += c.coverage;
         same->r_min = std::min(same->r_min, c.r_min);
         same->r_max = std::max(same->r_max, c.r_max);
@@ -628,13 +655,16 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
       BRepGProp::SurfaceProperties(face, properties);
       sphere.area = properties.Mass();
       auto same = std::find_if(spheres.begin(), spheres.end(), [&](const Sphere& o) {
-        return (o.center - sphere.center).norm() < merge * std::max(1.0, sphere.radius) &&
-               std::abs(o.radius - sphere.radius) < merge * std::max(1.0, sphere.radius) &&
+        const Agreement both = agree.With(o.agree);
+        return (o.center - sphere.center).norm() < both.Length(sphere.radius) &&
+               std::abs(o.radius - sphere.radius) < both.Length(sphere.radius) &&
                o.convex == sphere.convex;
       });
       if (same == spheres.end()) {
+        sphere.agree = agree;
         spheres.push_back(sphere);
       } else {
+        same->agree = same->agree.With(agree);
         same->area += sphere.area;
       }
     } else if (type == GeomAbs_Torus || fit.kind == AnalyticFit::Kind::kTorus) {
@@ -694,7 +724,10 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
   // smaller caps (a rounded end, a dome) are counted in the notes.
   int balls = 0, sockets = 0;
   for (const Sphere& sphere : spheres) {
-    if (sphere.area < 2 * kPi * sphere.radius * sphere.radius * (1 - 1e-6)) {
+    // Half a sphere or more, to rounding (a fitted sphere's area to twice its fit's relative
+    // error).
+    const double rounding = std::max(1e-6, 2 * sphere.agree.length / sphere.radius);
+    if (sphere.area < 2 * kPi * sphere.radius * sphere.radius * (1 - rounding)) {
       ++partial_spheres;
       continue;
     }

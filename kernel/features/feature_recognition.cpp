@@ -579,7 +579,8 @@ std::optional<BevelSection> BevelTeethOfSection(const Outline& o, const Vector2d
 // gear, the pitch line lies a 2.25th of the tooth depth below the tip (addendum m, dedendum
 // 1.25 m, measured in any section across the axis); it meets the axis at the apex, at the pitch
 // angle d = atan(dr / dh). The teeth end at the heel, farthest from the apex, where the pitch
-// radius is m z / 2: the module there, rounded to ISO 54 (within 3%).
+// radius is m z / 2: the module there, rounded to ISO 54 (within 3%), with a tooth depth there
+// of 2.25 m (radial) down to 2.25 m cos(pitch angle) (teeth on the back cone), within 15%.
 std::optional<RecognizedFeature> SectionBevelGear(const TriangleMesh& mesh, const Vector3d& axis) {
   const Vector3d e = std::abs(axis.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
   const Vector3d u = axis.cross(e).normalized();
@@ -609,14 +610,13 @@ std::optional<RecognizedFeature> SectionBevelGear(const TriangleMesh& mesh, cons
         BevelTeethOfSection(Section(mesh, axis, u, v, t_min + (i + 0.5013) * step), centre);
     return sections[i].has_value();
   };
-  // Most parts are no gear: three sections, a quarter, half and three quarters up, decide
-  // whether the rest are cut (a run of teeth sections over half the part holds one of them).
-  const std::array<int, 3> probes = {kSections / 4, kSections / 2, 3 * kSections / 4};
+  // Most parts are no gear: every fourth section decides whether the rest are cut (a run of
+  // five, the fewest that counts, holds one of them).
   bool teeth = false;
-  for (const int i : probes) teeth = cut(i) || teeth;
+  for (int i = 0; i < kSections; i += 4) teeth = cut(i) || teeth;
   if (!teeth) return std::nullopt;
   for (int i = 0; i < kSections; ++i) {
-    if (std::find(probes.begin(), probes.end(), i) == probes.end()) cut(i);
+    if (i % 4 != 0) cut(i);
   }
   // The longest run of sections with the same tooth count.
   int first = -1, count = 0;
@@ -680,6 +680,12 @@ std::optional<RecognizedFeature> SectionBevelGear(const TriangleMesh& mesh, cons
   const double raw_module = 2 * heel_radius / z;
   const std::optional<double> m = Standard(raw_module);
   if (!m) return std::nullopt;
+  // A tooth's depth at the heel, across the axis: 2.25 m, or 2.25 m cos(angle) where the
+  // teeth stand on the back cone (within 15%); a tapered polygon or knob is far shallower.
+  const double heel_depth = std::abs(tip_b - root_b) * reach;
+  if (heel_depth < 0.85 * 2.25 * *m * std::cos(angle) || heel_depth > 1.15 * 2.25 * *m) {
+    return std::nullopt;
+  }
   RecognizedFeature g;
   Feature& f = g.feature;
   f.kind = FeatureKind::kBevelGear;
@@ -728,6 +734,17 @@ std::vector<double> AxialProfile(const TriangleMesh& mesh, const Vector3d& c, co
     }
   }
   return r;
+}
+
+// How far a series along a line (not round a circle) differs from itself shifted by `shift`
+// samples, over its range: only the samples that have a partner `shift` on are compared.
+double LineMismatch(const std::vector<double>& s, int shift) {
+  const int n = static_cast<int>(s.size());
+  if (shift <= 0 || shift >= n) return 1.0;
+  const auto [lo, hi] = std::minmax_element(s.begin(), s.end());
+  double sum = 0.0;
+  for (int i = 0; i + shift < n; ++i) sum += std::abs(s[i] - s[i + shift]);
+  return sum / (n - shift) / std::max(*hi - *lo, 1e-12);
 }
 
 // The Fourier coefficient of a series, its mean removed, at `q` cycles over its length (q need
@@ -811,7 +828,7 @@ std::optional<RecognizedFeature> AxialWorm(const TriangleMesh& mesh, const Vecto
   // The strongest frequency (a cheap look first: the outline repeating at a whole number of
   // cycles within 30%), refined to a tenth, then a hundredth of a cycle over the window.
   const int f = Dominant(Spectrum(first), 2, kBins / 8);
-  if (SelfMismatch(first, static_cast<int>(std::lround(kBins / double(f)))) >= 0.3) {
+  if (LineMismatch(first, static_cast<int>(std::lround(kBins / double(f)))) >= 0.3) {
     return std::nullopt;
   }
   double q = f;
@@ -823,7 +840,7 @@ std::optional<RecognizedFeature> AxialWorm(const TriangleMesh& mesh, const Vecto
     }
   }
   // Two turns of the thread at least, repeating along the axis.
-  if (q < 2 || SelfMismatch(first, static_cast<int>(std::lround(kBins / q))) >= 0.1) {
+  if (q < 2 || LineMismatch(first, static_cast<int>(std::lround(kBins / q))) >= 0.1) {
     return std::nullopt;
   }
   const double pitch = (hi - lo) / q;
@@ -838,7 +855,14 @@ std::optional<RecognizedFeature> AxialWorm(const TriangleMesh& mesh, const Vecto
     phases.push_back(phases.empty() ? at
                                     : phases.back() + std::remainder(at - phases.back(), 2 * kPi));
   }
-  const double slope = (phases.back() - phases.front()) / (2 * kPi * (kWedges - 1) / kWedges);
+  // The slope of the phase in the angle, by least squares over the half-planes.
+  double sxx = 0.0, sxy = 0.0;
+  for (int k = 0; k < kWedges; ++k) {
+    const double x = 2 * kPi * (k - (kWedges - 1) / 2.0) / kWedges;
+    sxx += x * x;
+    sxy += x * phases[k];
+  }
+  const double slope = sxy / sxx;
   const int starts = static_cast<int>(std::lround(std::abs(slope)));
   if (starts < 1 || starts > 6 || std::abs(std::abs(slope) - starts) > 0.2) return std::nullopt;
   RecognizedFeature w;

@@ -172,6 +172,23 @@ void Recognizer::AddBearings() {
              (std::min(a, b) == std::min(inner->ref.part, outer->ref.part) &&
               std::max(a, b) == std::max(inner->ref.part, outer->ref.part));
     });
+    // On the bearing's axis: the inner ring's bore, the outer ring's outside.
+    auto on_axis = [&](const WorldFeature& w) {
+      return AngleBetweenLines(w.axis.direction, pitch->normal) <= A_ &&
+             DistanceToLine(pitch->center, w.axis.origin, w.axis.direction) <= L_;
+    };
+    // The inner ring's bore: its smallest hole on the axis, inside the raceway. A needle
+    // bearing's shaft, which has none, is no ring: it runs on the shaft's own diameter.
+    double bore = 0.0;
+    for (std::size_t f = 0; f < assembly_.FeatureCount(inner->ref.part); ++f) {
+      const WorldFeature& w = At({inner->ref.part, f});
+      if (w.f.kind == FeatureKind::kHole && on_axis(w) && w.f.diameter < inner->f.diameter &&
+          (bore == 0.0 || w.f.diameter < bore)) {
+        bore = w.f.diameter;
+      }
+    }
+    const bool inner_ring = bore > 0.0;
+    if (!inner_ring) bore = inner->f.diameter;
     // The rings' seats: the outer ring's outside in a bore, the inner ring's bore on a shaft,
     // coaxial and of one size (within the length tolerance: no clearance to turn in) are
     // fitted, as bearings are; a ring that turns in its seat would make the bearing idle.
@@ -180,7 +197,8 @@ void Recognizer::AddBearings() {
       if (p.type != PairType::kCylindrical && p.type != PairType::kRevolute) continue;
       const WorldFeature& s = At(p.a);
       const WorldFeature& h = At(p.b);
-      const bool ring = s.ref.part == outer->ref.part || h.ref.part == inner->ref.part;
+      const bool ring =
+          s.ref.part == outer->ref.part || (inner_ring && h.ref.part == inner->ref.part);
       if (!ring || s.f.kind != FeatureKind::kShaft || h.f.kind != FeatureKind::kHole ||
           AngleBetweenLines(s.axis.direction, pitch->normal) > A_ ||
           std::abs(s.f.diameter - h.f.diameter) > L_) {
@@ -198,23 +216,15 @@ void Recognizer::AddBearings() {
       AddPair(PairType::kFixed, *e->w, *outer);
       pairs_.back().source = PairSource::kBearing;
     }
-    // Its size as a catalogue gives it: the inner ring's bore (without an inner ring, the
-    // shaft it runs on), the outer ring's outside diameter and width (between its end faces,
-    // which chamfers do not shorten as they do its outside cylinder).
-    double bore = 0.0, outside = 0.0, width = 0.0;
-    for (std::size_t f = 0; f < assembly_.FeatureCount(inner->ref.part); ++f) {
-      const WorldFeature& w = At({inner->ref.part, f});
-      if (w.f.kind != FeatureKind::kHole || AngleBetweenLines(w.axis.direction, pitch->normal) > A_)
-        continue;
-      if (bore == 0.0 || w.f.diameter < bore) bore = w.f.diameter;
-    }
+    // Its size as a catalogue gives it: the bore (above), the outer ring's outside diameter
+    // and width (between its end faces, which chamfers do not shorten as they do its outside
+    // cylinder).
+    double outside = 0.0, width = 0.0;
     for (std::size_t f = 0; f < assembly_.FeatureCount(outer->ref.part); ++f) {
       const WorldFeature& w = At({outer->ref.part, f});
-      if (w.f.kind != FeatureKind::kShaft ||
-          AngleBetweenLines(w.axis.direction, pitch->normal) > A_) {
-        continue;
+      if (w.f.kind == FeatureKind::kShaft && on_axis(w) && w.f.diameter > outside) {
+        outside = w.f.diameter, width = w.axis.length;
       }
-      if (w.f.diameter > outside) outside = w.f.diameter, width = w.axis.length;
     }
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::size_t f = 0; f < assembly_.FeatureCount(outer->ref.part); ++f) {
@@ -227,7 +237,6 @@ void Recognizer::AddBearings() {
       lo = std::min(lo, at), hi = std::max(hi, at);
     }
     if (hi > lo) width = hi - lo;
-    if (bore == 0.0) bore = inner->f.diameter;
     const std::string size = bore > 0 && outside > 0
                                  ? fmt::format(", {} x {} x {} mm", FormatNumber(bore),
                                                FormatNumber(outside), FormatNumber(width))

@@ -10,6 +10,7 @@
 #include "kernel/features/involute_gear.h"
 #include "kernel/features/part_library.h"
 #include "kernel/mesh/mesh_builder.h"
+#include "spring_mesh.h"
 
 namespace mechanist {
 namespace {
@@ -147,6 +148,30 @@ TEST(FeatureRecognition, StraightBevelGearsGiveTheirTeethModulePitchAngleAndApex
     EXPECT_GT(gear->feature.axis.dot(X.RotateDirection(Eigen::Vector3d::UnitZ())), 1 - 1e-6);
     EXPECT_LT((gear->feature.origin - X * Eigen::Vector3d::Zero()).norm(), 0.02) << c.teeth;
   }
+  // A tapered knob with six lobes and a bore, r = R (1 + 0.05 cos 6 theta) shrinking toward
+  // one apex, sized so that its "pitch radius" at the heel, a 2.25th of its depth below its
+  // lobes, is that of 6 teeth of module 4 (R = 11.933): far shallower than a gear's teeth
+  // (at least 0.85 x 2.25 x 4 cos 50 = 4.9 mm; it has 1.19), so no gear.
+  Ring2d knob, small;
+  for (int k = 0; k < 240; ++k) {
+    const double t = 2 * M_PI * k / 240;
+    knob.push_back(11.933 * (1 + 0.05 * std::cos(6 * t)) *
+                   Eigen::Vector2d(std::cos(t), std::sin(t)));
+    small.push_back(knob.back() * 0.6);
+  }
+  {
+    const Ring2d bore = Oriented(CircleRing(Eigen::Vector2d::Zero(), 3, 32), false);
+    MeshBuilder b;
+    const MeshBuilder::Indices o0 = b.AddRing(small, 6), o1 = b.AddRing(knob, 10);
+    const MeshBuilder::Indices h0 = b.AddRing(bore, 6), h1 = b.AddRing(bore, 10);
+    b.AddWall(o0, o1);
+    b.AddWall(h0, h1);
+    b.AddCap(o0, {h0}, /*facing_up=*/false);
+    b.AddCap(o1, {h1}, /*facing_up=*/true);
+    const MeshFeatures found = RecognizeFeatures(b.Release());
+    EXPECT_EQ(Find(found, FeatureKind::kBevelGear), nullptr);
+    EXPECT_EQ(Find(found, FeatureKind::kGear), nullptr);
+  }
   // A spur gear's tip and root do not shrink: it stays a spur gear.
   SpurGearSpec spur;
   spur.teeth = 20;
@@ -193,7 +218,7 @@ TEST(FeatureRecognition, WormsGiveTheirStartsModuleHandAndPitchDiameter) {
     EXPECT_NEAR(worm->feature.length, c.length, 1e-3);
     EXPECT_EQ(Find(found, FeatureKind::kGear), nullptr);
   }
-  // A plain shaft, a helical gear and a spring are no worm.
+  // A plain shaft, a helical gear and springs, open and closely wound, are no worm.
   ShaftSpec shaft;
   shaft.diameter = 10;
   shaft.length = 40;
@@ -205,6 +230,11 @@ TEST(FeatureRecognition, WormsGiveTheirStartsModuleHandAndPitchDiameter) {
   helical.bore_diameter = 6;
   helical.helix_angle = 20 * M_PI / 180;
   EXPECT_EQ(Find(RecognizeFeatures(MakeLibraryPart(helical).mesh), FeatureKind::kWorm), nullptr);
+  for (const double pitch : {4.0, 1.5}) {
+    EXPECT_EQ(Find(RecognizeFeatures(testing::SpringMesh(6, 1.5, pitch, 8)), FeatureKind::kWorm),
+              nullptr)
+        << pitch;
+  }
 }
 
 TEST(FeatureRecognition, SpurTeethBesideAHubAreFoundInSections) {

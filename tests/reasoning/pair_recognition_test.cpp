@@ -872,15 +872,15 @@ TEST(PairRecognition, CycloidDiscInItsPinRingCouplesLikeAnInternalGear) {
 
 // An output flange with `pins` pins of 6 mm on a 40 mm circle about z, and a disc with as
 // many 9 mm holes on the same circle shifted by `shift` (the eccentricity): the holes of a
-// cycloidal disc on its eccentric. `stray` moves the first hole by that much more along x.
-Assembly PinsInHoles(int pins, V shift, double stray = 0.0) {
+// cycloidal disc on its eccentric. `stray` moves the first hole by that much more.
+Assembly PinsInHoles(int pins, V shift, V stray = V::Zero()) {
   std::vector<Feature> pin_features, hole_features;
   for (int k = 0; k < pins; ++k) {
     const double a = 2 * kPi * k / pins;
     const V c(20 * std::cos(a), 20 * std::sin(a), 0);
     pin_features.push_back(Shaft(6, 24, c));
     pin_features.back().id = "pin" + std::to_string(k + 1);
-    hole_features.push_back(Hole(9, 10, c + shift + V(k == 0 ? stray : 0, 0, 0), V::UnitZ()));
+    hole_features.push_back(Hole(9, 10, c + shift + (k == 0 ? stray : V(V::Zero())), V::UnitZ()));
     hole_features.back().id = "hole" + std::to_string(k + 1);
   }
   return MakeAssembly({MakePart("output", pin_features), MakePart("disc", hole_features)});
@@ -905,9 +905,11 @@ TEST(PairRecognition, PinsInHolesOffCentreAlikeCoupleTheirParts) {
           .type,
       PairType::kPinsInHoles);
   // None: pins centred in their holes (nothing makes them touch), one hole 0.2 mm further
-  // off (it would not touch), offsets short of the clearance, two pins.
+  // off (its pin would not touch it), one hole 0.2 mm aside (touching, but off another way
+  // than the others), offsets short of the clearance, two pins.
   EXPECT_TRUE(Recognize(PinsInHoles(6, V::Zero())).pairs.empty());
-  EXPECT_TRUE(Recognize(PinsInHoles(6, V(0, 1.5, 0), 0.2)).pairs.empty());
+  EXPECT_TRUE(Recognize(PinsInHoles(6, V(0, 1.5, 0), V(0, 0.2, 0))).pairs.empty());
+  EXPECT_TRUE(Recognize(PinsInHoles(6, V(0, 1.5, 0), V(0.2, 0, 0))).pairs.empty());
   EXPECT_TRUE(Recognize(PinsInHoles(6, V(0, 1.0, 0))).pairs.empty());
   EXPECT_TRUE(Recognize(PinsInHoles(2, V(0, 1.5, 0))).pairs.empty());
 }
