@@ -14,8 +14,8 @@
 namespace mechanist {
 namespace {
 
-/// The gears, bevel gears, worms, racks and cycloidal discs found on one solid's tessellation, in the solid's
-/// frame.
+/// The gears, bevel gears, worms, racks and cycloidal discs found on one solid's
+/// tessellation, in the solid's frame.
 struct TessellationGears {
   std::vector<Feature> features;
   std::vector<std::string> notes;

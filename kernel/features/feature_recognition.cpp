@@ -412,6 +412,37 @@ std::optional<SectionTeeth> TeethOfSection(const Outline& o, const Vector2d& cen
   return std::nullopt;
 }
 
+// Directions across `axis` (u, v: with the axis a right-handed frame) and the mesh's extent
+// along it.
+struct AxisFrame {
+  Vector3d u, v;
+  double t_min = 1e300, t_max = -1e300;
+  double width() const { return t_max - t_min; }
+};
+
+AxisFrame FrameAbout(const TriangleMesh& mesh, const Vector3d& axis) {
+  AxisFrame f;
+  const Vector3d e = std::abs(axis.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
+  f.u = axis.cross(e).normalized();
+  f.v = axis.cross(f.u);
+  for (const Vector3d& p : mesh.vertices) {
+    f.t_min = std::min(f.t_min, p.dot(axis));
+    f.t_max = std::max(f.t_max, p.dot(axis));
+  }
+  return f;
+}
+
+// The length-weighted middle of a section's segments (teeth and bore are symmetric about it).
+Vector2d CentreOf(const Outline& o) {
+  Vector2d sum = Vector2d::Zero();
+  double length = 0.0;
+  for (const auto& [a, b] : o.edges) {
+    sum += (b - a).norm() * (a + b) / 2;
+    length += (b - a).norm();
+  }
+  return length > 0 ? Vector2d(sum / length) : Vector2d::Zero();
+}
+
 // A gear whose faces are not all along or across its axis (a helical gear, or a spur gear with
 // a hub or chamfers): sections across `axis` that show the same teeth, whose angular position
 // theta = -phase / z is fitted as a line in the height h (sections close enough that the teeth
@@ -419,27 +450,10 @@ std::optional<SectionTeeth> TeethOfSection(const Outline& o, const Vector2d& cen
 // the helix rises by dh = r dtheta / tan(b), so sin(b) = m z (dtheta / dh) / 2 with the normal
 // module m; theta growing with h about the axis is a right-hand helix.
 std::optional<RecognizedFeature> SectionGear(const TriangleMesh& mesh, const Vector3d& axis) {
-  const Vector3d e = std::abs(axis.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
-  const Vector3d u = axis.cross(e).normalized();
-  const Vector3d v = axis.cross(u);
-  double t_min = 1e300, t_max = -1e300;
-  for (const Vector3d& p : mesh.vertices) {
-    t_min = std::min(t_min, p.dot(axis));
-    t_max = std::max(t_max, p.dot(axis));
-  }
-  const double width = t_max - t_min;
+  const AxisFrame frame = FrameAbout(mesh, axis);
+  const Vector3d &u = frame.u, &v = frame.v;
+  const double t_min = frame.t_min, t_max = frame.t_max, width = frame.width();
   if (!(width > 0)) return std::nullopt;
-  // The centre: the length-weighted middle of a section's segments (teeth and bore are
-  // symmetric about it).
-  auto centre_of = [](const Outline& o) {
-    Vector2d sum = Vector2d::Zero();
-    double length = 0.0;
-    for (const auto& [a, b] : o.edges) {
-      sum += (b - a).norm() * (a + b) / 2;
-      length += (b - a).norm();
-    }
-    return length > 0 ? Vector2d(sum / length) : Vector2d::Zero();
-  };
   // Coarse sections, off any round height (a CAD vertex plane would cut faces edge-on).
   constexpr int kCoarse = 24;
   const double coarse_step = width / kCoarse;
@@ -449,7 +463,7 @@ std::optional<RecognizedFeature> SectionGear(const TriangleMesh& mesh, const Vec
   for (int i = 0; i < kCoarse; ++i) {
     const Outline o = Section(mesh, axis, u, v, height(i, coarse_step, t_min));
     if (o.edges.empty()) continue;
-    if (!centre) centre = centre_of(Section(mesh, axis, u, v, t_min + 0.5013 * width));
+    if (!centre) centre = CentreOf(Section(mesh, axis, u, v, t_min + 0.5013 * width));
     coarse[i] = TeethOfSection(o, *centre);
   }
   // The longest run of sections with the same teeth.
@@ -582,26 +596,14 @@ std::optional<BevelSection> BevelTeethOfSection(const Outline& o, const Vector2d
 // radius is m z / 2: the module there, rounded to ISO 54 (within 3%), with a tooth depth there
 // of 2.25 m (radial) down to 2.25 m cos(pitch angle) (teeth on the back cone), within 15%.
 std::optional<RecognizedFeature> SectionBevelGear(const TriangleMesh& mesh, const Vector3d& axis) {
-  const Vector3d e = std::abs(axis.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
-  const Vector3d u = axis.cross(e).normalized();
-  const Vector3d v = axis.cross(u);
-  double t_min = 1e300, t_max = -1e300;
-  for (const Vector3d& p : mesh.vertices) {
-    t_min = std::min(t_min, p.dot(axis));
-    t_max = std::max(t_max, p.dot(axis));
-  }
-  const double width = t_max - t_min;
+  const AxisFrame frame = FrameAbout(mesh, axis);
+  const Vector3d &u = frame.u, &v = frame.v;
+  const double t_min = frame.t_min, width = frame.width();
   if (!(width > 0)) return std::nullopt;
-  // The axis' point: the middle of a middle section's segments, weighted by length.
+  // The axis' point: the middle of a middle section.
   const Outline middle = Section(mesh, axis, u, v, t_min + 0.5013 * width);
-  Vector2d centre = Vector2d::Zero();
-  double length = 0.0;
-  for (const auto& [a, b] : middle.edges) {
-    centre += (b - a).norm() * (a + b) / 2;
-    length += (b - a).norm();
-  }
-  if (!(length > 0)) return std::nullopt;
-  centre /= length;
+  if (middle.edges.empty()) return std::nullopt;
+  const Vector2d centre = CentreOf(middle);
   constexpr int kSections = 24;
   const double step = width / kSections;
   std::vector<std::optional<BevelSection>> sections(kSections);
@@ -801,16 +803,10 @@ std::optional<RecognizedFeature> AxialWorm(const TriangleMesh& mesh, const Vecto
     if (axis.dot(axis_guess) < 0) axis = -axis;
     c = (centres[0] + centres[1]) / 2;
   }
-  const Vector3d e = std::abs(axis.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
-  const Vector3d u = axis.cross(e).normalized();
-  const Vector3d v = axis.cross(u);
   c -= c.dot(axis) * axis;  // heights are measured from the origin's plane, as elsewhere
-  double t_min = 1e300, t_max = -1e300;
-  for (const Vector3d& p : mesh.vertices) {
-    t_min = std::min(t_min, p.dot(axis));
-    t_max = std::max(t_max, p.dot(axis));
-  }
-  const double width = t_max - t_min;
+  const AxisFrame frame = FrameAbout(mesh, axis);
+  const Vector3d &u = frame.u, &v = frame.v;
+  const double t_min = frame.t_min, t_max = frame.t_max, width = frame.width();
   if (!(width > 0)) return std::nullopt;
   constexpr int kBins = 1024, kWedges = 16;
   const double lo = t_min + 0.05 * width, hi = t_max - 0.05 * width;

@@ -78,8 +78,8 @@ std::optional<HelicalSpring> RecognizeHelicalSpring(const TriangleMesh& mesh) {
         length < 1.5 * wire) {
       continue;
     }
-    // The pitch: turns from 2.5 to length / (0.95 wire) in twentieths, both hands, then the
-    // best in two-hundredths (the peak is about a third of a turn wide: a phase error of 2 pi
+    // The pitch: turns from 2.5 to (length - wire) / (0.95 wire) in twentieths, both hands, then
+    // the best in two-hundredths (the peak is about a third of a turn wide: a phase error of 2 pi
     // x turns over the length).
     // Only the wire's outermost and innermost vertices (within a tenth of its radius of the
     // annulus' rims) lie on the helix through its centre; the others stand up to half the wire

@@ -279,10 +279,13 @@ void WriteRackAndPinionStep(const std::filesystem::path& file, int pinion_teeth,
   WriteStep(all, file);
 }
 
-void WriteStepVariant(const std::filesystem::path& in, const std::filesystem::path& out,
-                      StepVariant variant) {
-  Message::DefaultMessenger()->ChangePrinters().Clear();  // the reader's and writer's statistics
-  Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
+namespace {
+
+// The STEP file `in` read into a new XCAF document of `app`, with its names (the reader's and
+// writer's statistics silenced). Throws std::runtime_error when it cannot read.
+Handle(TDocStd_Document)
+    ReadXcaf(const std::filesystem::path& in, const Handle(XCAFApp_Application) & app) {
+  Message::DefaultMessenger()->ChangePrinters().Clear();
   Handle(TDocStd_Document) document;
   app->NewDocument("MDTV-XCAF", document);
   STEPCAFControl_Reader reader;
@@ -290,6 +293,15 @@ void WriteStepVariant(const std::filesystem::path& in, const std::filesystem::pa
   if (reader.ReadFile(in.string().c_str()) != IFSelect_RetDone || !reader.Transfer(document)) {
     throw std::runtime_error("cannot read " + in.string());
   }
+  return document;
+}
+
+}  // namespace
+
+void WriteStepVariant(const std::filesystem::path& in, const std::filesystem::path& out,
+                      StepVariant variant) {
+  const Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
+  const Handle(TDocStd_Document) document = ReadXcaf(in, app);
   const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(document->Main());
   TDF_LabelSequence roots;
   tool->GetFreeShapes(roots);
@@ -333,15 +345,8 @@ void WriteStepVariant(const std::filesystem::path& in, const std::filesystem::pa
 }
 
 void WriteNurbsCopy(const std::filesystem::path& in, const std::filesystem::path& out) {
-  Message::DefaultMessenger()->ChangePrinters().Clear();  // the reader's and writer's statistics
-  Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
-  Handle(TDocStd_Document) document;
-  app->NewDocument("MDTV-XCAF", document);
-  STEPCAFControl_Reader reader;
-  reader.SetNameMode(true);
-  if (reader.ReadFile(in.string().c_str()) != IFSelect_RetDone || !reader.Transfer(document)) {
-    throw std::runtime_error("cannot read " + in.string());
-  }
+  const Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
+  const Handle(TDocStd_Document) document = ReadXcaf(in, app);
   const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(document->Main());
   TDF_LabelSequence shapes;
   tool->GetShapes(shapes);
