@@ -137,14 +137,22 @@ void Recognizer::Test(const WorldFeature& x, const WorldFeature& y) {
     else if (is(q, p))
       rule(y, x);
   };
-  either(K::kShaft, K::kHole, [this](auto& s, auto& h) { ShaftHole(s, h); });
+  either(K::kShaft, K::kHole, [this](auto& s, auto& h) {
+    ShaftHole(s, h);
+    const double offset = DistanceToLine(s.axis.origin, h.axis.origin, h.axis.direction);
+    if (h.f.diameter - s.f.diameter > 2 * L_ && offset > L_ &&
+        offset <= (h.f.diameter - s.f.diameter) / 2 + L_ &&
+        AngleBetweenLines(s.axis.direction, h.axis.direction) <= A_) {
+      pin_hole_candidates_.emplace_back(&s, &h);
+    }
+  });
   either(K::kThread, K::kHole, [this](auto& t, auto& h) { ThreadHole(t, h); });
   either(K::kThread, K::kTappedHole, [this](auto& t, auto& h) { ThreadTapped(t, h); });
   either(K::kShaft, K::kSlot, [this](auto& s, auto& sl) { PinSlot(s, sl); });
   either(K::kKey, K::kSlot, [this](auto& k, auto& sl) { KeySlot(k, sl); });
   either(K::kWorm, K::kWormWheel, [this](auto& w, auto& g) { WormWheel(w, g); });
-  // A gear found on a mesh or a STEP solid's tessellation serves as a worm wheel (its throat,
-  // if any, is not seen in its sections).
+  // An external gear serves as a worm wheel: one found on a mesh or a STEP solid's
+  // tessellation is a gear, as a throated wheel's sections show no single module.
   either(K::kWorm, K::kGear, [this](auto& w, auto& g) {
     if (!g.f.internal) WormWheel(w, g);
   });

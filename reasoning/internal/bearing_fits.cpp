@@ -5,6 +5,9 @@
 #include <fmt/ranges.h>  // fmt::join
 
 #include <Eigen/Dense>
+#include <array>
+#include <cstdint>
+#include <map>
 
 #include "kernel/geometry/circle_fit.h"
 #include "reasoning/internal/recognizer.h"
@@ -100,26 +103,53 @@ void Recognizer::AddBearings() {
                                                         : NameLess(*x.w, *y.w);
             });
   // Sets of elements of one size whose neighbours lie at most four diameters apart (single
-  // linkage): the rolling elements of one bearing each.
+  // linkage): the rolling elements of one bearing each. Elements of one size are consecutive
+  // in that order; their neighbours are looked for in a grid of cells four diameters wide.
   std::vector<std::vector<const RollingElement*>> sets;
-  std::vector<bool> taken(elements.size(), false);
-  for (std::size_t first = 0; first < elements.size(); ++first) {
-    if (taken[first]) continue;
-    std::vector<const RollingElement*> set{&elements[first]};
-    taken[first] = true;
-    for (std::size_t k = 0; k < set.size(); ++k) {
-      for (std::size_t j = first + 1; j < elements.size(); ++j) {
-        const RollingElement& e = elements[j];
-        if (taken[j] || std::abs(e.w->f.diameter - set[k]->w->f.diameter) > L_ ||
-            std::abs(e.length - set[k]->length) > L_ ||
-            (e.center - set[k]->center).norm() > 4 * e.w->f.diameter) {
-          continue;
-        }
-        taken[j] = true;
-        set.push_back(&e);
-      }
+  for (std::size_t begin = 0, end = 0; begin < elements.size(); begin = end) {
+    const RollingElement& size = elements[begin];
+    double cell = 0.0;
+    for (end = begin; end < elements.size() &&
+                      std::abs(elements[end].w->f.diameter - size.w->f.diameter) <= L_ &&
+                      std::abs(elements[end].length - size.length) <= L_;
+         ++end) {
+      cell = std::max(cell, 4 * elements[end].w->f.diameter);
     }
-    if (set.size() >= 3) sets.push_back(std::move(set));
+    if (end - begin < 3 || !(cell > 0)) continue;
+    using Cell = std::array<std::int64_t, 3>;
+    auto cell_of = [&](const Eigen::Vector3d& p) {
+      return Cell{static_cast<std::int64_t>(std::floor(p.x() / cell)),
+                  static_cast<std::int64_t>(std::floor(p.y() / cell)),
+                  static_cast<std::int64_t>(std::floor(p.z() / cell))};
+    };
+    std::map<Cell, std::vector<std::size_t>> grid;
+    for (std::size_t k = begin; k < end; ++k) grid[cell_of(elements[k].center)].push_back(k);
+    std::vector<bool> taken(end - begin, false);
+    for (std::size_t first = begin; first < end; ++first) {
+      if (taken[first - begin]) continue;
+      taken[first - begin] = true;
+      std::vector<const RollingElement*> set{&elements[first]};
+      for (std::size_t k = 0; k < set.size(); ++k) {
+        const Cell c = cell_of(set[k]->center);
+        for (std::int64_t dx = -1; dx <= 1; ++dx) {
+          for (std::int64_t dy = -1; dy <= 1; ++dy) {
+            for (std::int64_t dz = -1; dz <= 1; ++dz) {
+              const auto near = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
+              if (near == grid.end()) continue;
+              for (const std::size_t j : near->second) {
+                const RollingElement& e = elements[j];
+                if (taken[j - begin] || (e.center - set[k]->center).norm() > 4 * e.w->f.diameter) {
+                  continue;
+                }
+                taken[j - begin] = true;
+                set.push_back(&e);
+              }
+            }
+          }
+        }
+      }
+      if (set.size() >= 3) sets.push_back(std::move(set));
+    }
   }
   for (std::vector<const RollingElement*>& set : sets) {
     std::vector<Eigen::Vector3d> centers;

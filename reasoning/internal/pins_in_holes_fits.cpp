@@ -9,15 +9,21 @@
 namespace mechanist::internal {
 
 void Recognizer::AddPinsInHoles() {
-  // Candidate pins and holes, by part.
-  std::map<std::size_t, std::vector<const WorldFeature*>> shafts, holes;
+  if (pin_hole_candidates_.empty()) return;
+  // Candidate pins by part; each pin's candidate holes (a larger parallel hole it stands in,
+  // off its axis), by the hole's part.
+  std::map<std::size_t, std::vector<const WorldFeature*>> shafts;
+  std::map<const WorldFeature*, std::map<std::size_t, std::vector<const WorldFeature*>>> around;
   for (const WorldFeature& w : features_) {
     if (w.f.kind == FeatureKind::kShaft) shafts[w.ref.part].push_back(&w);
-    if (w.f.kind == FeatureKind::kHole) holes[w.ref.part].push_back(&w);
   }
+  for (const auto& [pin, hole] : pin_hole_candidates_) around[pin][hole->ref.part].push_back(hole);
   std::set<std::pair<std::size_t, std::size_t>> joined;
   for (const auto& [pin_part, own] : shafts) {
     for (const WorldFeature* first : own) {
+      // Every pin stands in a hole, the first too.
+      const auto first_around = around.find(first);
+      if (first_around == around.end()) continue;
       // The pins: this part's shafts of the first one's size, parallel to it.
       const Eigen::Vector3d u = first->axis.direction;
       std::vector<const WorldFeature*> pins;
@@ -43,8 +49,9 @@ void Recognizer::AddPinsInHoles() {
         round = round && std::abs((c - circle.center).norm() - circle.radius) <= L_;
       }
       if (!round) continue;
-      for (const auto& [hole_part, theirs] : holes) {
-        if (hole_part == pin_part || joined.count({pin_part, hole_part})) continue;
+      for (const auto& by_part : first_around->second) {
+        const std::size_t hole_part = by_part.first;
+        if (joined.count({pin_part, hole_part})) continue;
         // Each pin in a hole of one larger size, touching its wall: its axis off the hole's
         // by the radial clearance, the same offset for every pin.
         std::vector<const WorldFeature*> matched;
@@ -52,7 +59,9 @@ void Recognizer::AddPinsInHoles() {
         for (std::size_t k = 0; k < pins.size(); ++k) {
           const WorldFeature* pin = pins[k];
           const WorldFeature* found = nullptr;
-          for (const WorldFeature* h : theirs) {
+          const auto pin_around = around.find(pin);
+          if (pin_around == around.end() || !pin_around->second.count(hole_part)) break;
+          for (const WorldFeature* h : pin_around->second.at(hole_part)) {
             const double clearance = (h->f.diameter - pin->f.diameter) / 2;
             if (clearance <= L_ || AngleBetweenLines(h->axis.direction, u) > A_ ||
                 AxialOverlap(h->axis, pin->axis) <= L_ ||

@@ -311,6 +311,9 @@ class Recognizer {
   std::vector<std::pair<const WorldFeature*, const WorldFeature*>> setscrew_candidates_;
   /// Hole pairs whose reach boxes overlap: possible implied pins.
   std::vector<std::pair<const WorldFeature*, const WorldFeature*>> hole_candidates_;
+  /// (shaft, hole) pairs of different parts whose reach boxes overlap, the hole larger and
+  /// parallel, the shaft's axis inside it off its axis: possible pins in holes.
+  std::vector<std::pair<const WorldFeature*, const WorldFeature*>> pin_hole_candidates_;
   /// (shaft, hole) pairs too loose to touch: possible loose fits.
   std::vector<std::pair<const WorldFeature*, const WorldFeature*>> loose_candidates_;
 };
