@@ -246,6 +246,16 @@ std::set<std::pair<std::size_t, std::size_t>> Recognizer::UnclampedParts(
   }
   std::map<std::size_t, std::set<std::size_t>> nuts;  // thread -> every part it is fixed in
   for (const Screwed& s : tight_) nuts[s.thread].insert(s.hole.part);
+  // Each part's face contacts (planar pairs), so that a stack is walked without scanning
+  // every pair for each thread.
+  std::map<std::size_t, std::vector<const Pair*>> planar_of;
+  if (!passes.empty()) {
+    for (const Pair& p : pairs_) {
+      if (p.type != PairType::kPlanar) continue;
+      planar_of[p.a.part].push_back(&p);
+      planar_of[p.b.part].push_back(&p);
+    }
+  }
   for (const auto& [thread, through] : passes) {
     const std::set<std::size_t>& parts = through;  // clang 14 cannot capture a binding
     const WorldFeature& t = features_[thread];
@@ -254,11 +264,19 @@ std::set<std::pair<std::size_t, std::size_t>> Recognizer::UnclampedParts(
     ends.insert(t.ref.part);
     auto in_stack = [&](std::size_t part) { return ends.count(part) > 0 || parts.count(part) > 0; };
     std::map<std::size_t, std::vector<std::size_t>> touching;  // face contacts across the axis
-    for (const Pair& p : pairs_) {
-      if (p.type != PairType::kPlanar || !in_stack(p.a.part) || !in_stack(p.b.part)) continue;
-      if (AngleBetweenLines(At(p.a).axis.direction, t.axis.direction) > A_) continue;
-      touching[p.a.part].push_back(p.b.part);
-      touching[p.b.part].push_back(p.a.part);
+    std::set<const Pair*> seen;
+    for (const std::set<std::size_t>* group :
+         std::array<const std::set<std::size_t>*, 2>{&ends, &parts}) {
+      for (const std::size_t part : *group) {
+        const auto contacts = planar_of.find(part);
+        if (contacts == planar_of.end()) continue;
+        for (const Pair* p : contacts->second) {
+          if (!in_stack(p->a.part) || !in_stack(p->b.part) || !seen.insert(p).second) continue;
+          if (AngleBetweenLines(At(p->a).axis.direction, t.axis.direction) > A_) continue;
+          touching[p->a.part].push_back(p->b.part);
+          touching[p->b.part].push_back(p->a.part);
+        }
+      }
     }
     if (std::none_of(ends.begin(), ends.end(), [&](std::size_t e) { return touching.count(e); })) {
       continue;
