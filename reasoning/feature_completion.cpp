@@ -10,6 +10,7 @@
 #include "kernel/features/feature_recognition.h"
 #include "kernel/features/spring_recognition.h"
 #include "kernel/support/number_format.h"
+#include "kernel/support/parallel_for.h"
 
 namespace mechanist {
 namespace {
@@ -60,8 +61,28 @@ bool PartOrigin::Inferred(const Part& part, std::size_t feature) const {
 
 std::vector<Diagnostic> CompleteFeatures(std::vector<Part>* parts,
                                          const std::vector<PartOrigin>& origins) {
-  std::map<const TriangleMesh*, TessellationGears> gears_of;  // instances share their mesh
+  // The recognisers look at each mesh once (instances share theirs), all meshes in parallel.
+  std::map<const TriangleMesh*, TessellationGears> gears_of;
   std::map<const TriangleMesh*, std::optional<HelicalSpring>> springs_of;
+  for (std::size_t p = 0; p < parts->size(); ++p) {
+    if (origins.at(p).features_written) continue;
+    for (const auto& solid : origins[p].step_solids)
+      gears_of.emplace(solid.mesh.get(), TessellationGears());
+    const Part& part = (*parts)[p];
+    if (!part.compliant && part.HasGeometry()) springs_of.emplace(part.mesh.get(), std::nullopt);
+  }
+  std::vector<std::pair<const TriangleMesh*, TessellationGears*>> gear_work;
+  for (auto& [mesh, gears] : gears_of) gear_work.emplace_back(mesh, &gears);
+  std::vector<std::pair<const TriangleMesh*, std::optional<HelicalSpring>*>> spring_work;
+  for (auto& [mesh, spring] : springs_of) spring_work.emplace_back(mesh, &spring);
+  ParallelFor(gear_work.size() + spring_work.size(), [&](std::size_t k) {
+    if (k < gear_work.size()) {
+      *gear_work[k].second = FindTessellationGears(*gear_work[k].first);
+    } else {
+      const auto& [mesh, spring] = spring_work[k - gear_work.size()];
+      *spring = RecognizeHelicalSpring(*mesh);
+    }
+  });
   std::vector<Diagnostic> springs;
   std::vector<std::string> recognised;
   std::vector<std::string> with_gears;
@@ -72,18 +93,15 @@ std::vector<Diagnostic> CompleteFeatures(std::vector<Part>* parts,
     // Backwards, so that each solid's insertion points stay where the reader put them.
     bool found_gears = false;
     for (auto solid = origin.step_solids.rbegin(); solid != origin.step_solids.rend(); ++solid) {
-      auto cached = gears_of.find(solid->mesh.get());
-      if (cached == gears_of.end()) {
-        cached = gears_of.emplace(solid->mesh.get(), FindTessellationGears(*solid->mesh)).first;
-      }
-      std::vector<Feature> features = cached->second.features;
+      const TessellationGears& found = gears_of.at(solid->mesh.get());
+      std::vector<Feature> features = found.features;
       for (Feature& f : features) {
         f.id = solid->prefix + f.id;
         f.origin = solid->X_PS * f.origin;
         f.axis = solid->X_PS.RotateDirection(f.axis);
         f.normal = solid->X_PS.RotateDirection(f.normal);
       }
-      std::vector<std::string> notes = cached->second.notes;
+      std::vector<std::string> notes = found.notes;
       if (!solid->prefix.empty()) {
         const std::string label = solid->prefix.substr(0, solid->prefix.size() - 1);
         for (std::string& note : notes) note = fmt::format("{}: {}", label, note);
@@ -97,11 +115,7 @@ std::vector<Diagnostic> CompleteFeatures(std::vector<Part>* parts,
     if (found_gears) with_gears.push_back(part.id);
     // A helical spring is no rigid link (spec: `compliant`), whichever way its mesh came.
     if (!part.compliant && part.HasGeometry()) {
-      auto coil = springs_of.find(part.mesh.get());
-      if (coil == springs_of.end()) {
-        coil = springs_of.emplace(part.mesh.get(), RecognizeHelicalSpring(*part.mesh)).first;
-      }
-      if (const std::optional<HelicalSpring>& spring = coil->second) {
+      if (const std::optional<HelicalSpring>& spring = springs_of.at(part.mesh.get())) {
         part.compliant = true;
         springs.push_back(
             {Severity::kInfo,

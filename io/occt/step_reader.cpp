@@ -50,6 +50,7 @@
 
 #include "kernel/geometry/circle_fit.h"
 #include "kernel/support/number_format.h"
+#include "kernel/support/parallel_for.h"
 
 namespace mechanist {
 namespace {
@@ -501,8 +502,8 @@ std::vector<Feature> PinRings(std::vector<Pin> pins, double tolerance) {
 
 // The mesh and features of one solid in its product's frame, and notes on the faces that give
 // no feature.
-void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>* features,
-             std::vector<std::string>* notes) {
+void ConvertSolid(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>* features,
+                  std::vector<std::string>* notes) {
   Bnd_Box box;
   BRepBndLib::Add(solid, box);
   const double size = box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());
@@ -776,74 +777,8 @@ void Convert(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>
   count(free_form, "free-form");
 }
 
-class Walker {
- public:
-  Walker(Handle(XCAFDoc_ShapeTool) tool, std::vector<StepSolid>* out) : tool_(tool), out_(out) {}
-
-  void Walk(const TDF_Label& label, const std::string& path, const TopLoc_Location& location) {
-    if (tool_->IsAssembly(label)) {
-      TDF_LabelSequence components;
-      tool_->GetComponents(label, components);
-      std::map<std::string, int> seen;
-      for (int i = 1; i <= components.Length(); ++i) {
-        TDF_Label referred;
-        tool_->GetReferredShape(components(i), referred);
-        std::string name = NameOf(components(i));
-        if (name.rfind("=>", 0) == 0) name.clear();  // an unnamed instance
-        name = Sanitised(name);
-        if (!name.empty() && ++seen[name] > 1) name += fmt::format("_{}", seen[name]);
-        Walk(referred,
-             name.empty()   ? path
-             : path.empty() ? name
-                            : fmt::format("{}.{}", path, name),
-             location * tool_->GetLocation(components(i)));
-      }
-      return;
-    }
-    const TopoDS_Shape shape = tool_->GetShape(label);
-    const std::size_t first = out_->size();
-    int index = 0;
-    for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next(), ++index) {
-      const auto key = std::make_pair(label.Tag(), index);
-      auto cached = cache_.find(key);
-      if (cached == cache_.end()) {
-        auto mesh = std::make_shared<TriangleMesh>();
-        Definition definition;
-        Convert(e.Current(), mesh.get(), &definition.features, &definition.notes);
-        definition.mesh = mesh;
-        cached = cache_.emplace(key, std::move(definition)).first;
-      }
-      StepSolid s;
-      s.path = index == 0 ? path : fmt::format("{}_solid{}", path, index + 1);
-      s.product = NameOf(label);
-      s.X_WP = ToRigid(location.Transformation());
-      s.mesh = cached->second.mesh;
-      s.features = cached->second.features;
-      s.notes = cached->second.notes;
-      out_->push_back(std::move(s));
-    }
-    // The instance's solids, one CAD part of several bodies: marked by the instance's number
-    // until the paths are unique (ReadSolids names it then).
-    ++instances_;
-    if (index > 1) {
-      for (std::size_t k = first; k < out_->size(); ++k) {
-        (*out_)[k].body_of = std::to_string(instances_);
-      }
-    }
-  }
-
- private:
-  Handle(XCAFDoc_ShapeTool) tool_;
-  std::vector<StepSolid>* out_;
-  int instances_ = 0;  // product instances walked
-  // A product's solid, converted once for all its instances.
-  struct Definition {
-    std::shared_ptr<const TriangleMesh> mesh;
-    std::vector<Feature> features;
-    std::vector<std::string> notes;
-  };
-  std::map<std::pair<int, int>, Definition> cache_;
-};
+// Where CollectingPrinter puts the messages sent on this thread, if not in its own list.
+thread_local std::vector<StepMessage>* thread_messages = nullptr;
 
 // Keeps Open CASCADE's messages about the file (which its default printer writes on stdout, in
 // the middle of reports): those of warning gravity and above, and the reader's "*** ERR"
@@ -872,11 +807,21 @@ class CollectingPrinter : public Message_Printer {
       }
     }
     while (!line.empty() && line.back() == ' ') line.pop_back();
-    if (!line.empty()) messages_->push_back({error, line});
+    if (line.empty()) return;
+    (thread_messages ? thread_messages : messages_)->push_back({error, line});
   }
 
  private:
   std::vector<StepMessage>* messages_;
+};
+
+// While alive, the messages CollectingPrinter receives on this thread go to `messages`.
+class ThreadMessages {
+ public:
+  explicit ThreadMessages(std::vector<StepMessage>* messages) { thread_messages = messages; }
+  ~ThreadMessages() { thread_messages = nullptr; }
+  ThreadMessages(const ThreadMessages&) = delete;
+  ThreadMessages& operator=(const ThreadMessages&) = delete;
 };
 
 // While alive, Open CASCADE's default messenger sends to a CollectingPrinter instead of its
@@ -897,6 +842,26 @@ class MessageCapture {
   Message_SequenceOfPrinters saved_;
 };
 
+// While alive, this thread handles signals on a stack of its own, so that an endless recursion
+// can be caught (each thread needs its own; the previous one comes back on destruction).
+class AlternateSignalStack {
+ public:
+  AlternateSignalStack() : stack_(kStackSize) {
+    stack_t alternate{};
+    alternate.ss_sp = stack_.data();
+    alternate.ss_size = stack_.size();
+    sigaltstack(&alternate, &saved_);
+  }
+  ~AlternateSignalStack() { sigaltstack(&saved_, nullptr); }
+  AlternateSignalStack(const AlternateSignalStack&) = delete;
+  AlternateSignalStack& operator=(const AlternateSignalStack&) = delete;
+
+ private:
+  static constexpr std::size_t kStackSize = 1 << 18;
+  std::vector<char> stack_;
+  stack_t saved_{};
+};
+
 // While alive, Open CASCADE's handlers catch the signals of a crash (segmentation and bus
 // faults, illegal instructions, floating-point traps), on a stack of their own, so that an
 // endless recursion (an edge loop of a damaged file that refers to itself) is caught too. They
@@ -907,17 +872,13 @@ class MessageCapture {
 // checks, still come). The previous handlers and stack come back on destruction.
 class SignalsAsExceptions {
  public:
-  SignalsAsExceptions() : stack_(kStackSize) {
+  SignalsAsExceptions() {
     for (std::size_t k = 0; k < kSignals.size(); ++k) {
       struct sigaction fallback {};
       fallback.sa_handler = SIG_DFL;
       sigaction(kSignals[k], &fallback, &saved_[k]);
     }
     OSD::SetSignal(OSD_SignalMode_SetUnhandled, Standard_False);
-    stack_t alternate{};
-    alternate.ss_sp = stack_.data();
-    alternate.ss_size = stack_.size();
-    sigaltstack(&alternate, &saved_stack_);
     for (std::size_t k = 0; k < kSignals.size(); ++k) {
       struct sigaction action;
       sigaction(kSignals[k], nullptr, &action);
@@ -927,17 +888,108 @@ class SignalsAsExceptions {
   }
   ~SignalsAsExceptions() {
     for (std::size_t k = 0; k < kSignals.size(); ++k) sigaction(kSignals[k], &saved_[k], nullptr);
-    sigaltstack(&saved_stack_, nullptr);
   }
   SignalsAsExceptions(const SignalsAsExceptions&) = delete;
   SignalsAsExceptions& operator=(const SignalsAsExceptions&) = delete;
 
  private:
   static constexpr std::array<int, 4> kSignals = {SIGSEGV, SIGBUS, SIGILL, SIGFPE};
-  static constexpr std::size_t kStackSize = 1 << 18;
   std::array<struct sigaction, 4> saved_{};
-  std::vector<char> stack_;
-  stack_t saved_stack_{};
+  AlternateSignalStack stack_;  // this thread's; the converting threads set up their own
+};
+
+// Walks an XCAF document's products to their solids (Walk), then converts each product's
+// solids once (ConvertAll).
+class Walker {
+ public:
+  Walker(Handle(XCAFDoc_ShapeTool) tool, std::vector<StepSolid>* out) : tool_(tool), out_(out) {}
+
+  void Walk(const TDF_Label& label, const std::string& path, const TopLoc_Location& location) {
+    if (tool_->IsAssembly(label)) {
+      TDF_LabelSequence components;
+      tool_->GetComponents(label, components);
+      std::map<std::string, int> seen;
+      for (int i = 1; i <= components.Length(); ++i) {
+        TDF_Label referred;
+        tool_->GetReferredShape(components(i), referred);
+        std::string name = NameOf(components(i));
+        if (name.rfind("=>", 0) == 0) name.clear();  // an unnamed instance
+        name = Sanitised(name);
+        if (!name.empty() && ++seen[name] > 1) name += fmt::format("_{}", seen[name]);
+        Walk(referred,
+             name.empty()   ? path
+             : path.empty() ? name
+                            : fmt::format("{}.{}", path, name),
+             location * tool_->GetLocation(components(i)));
+      }
+      return;
+    }
+    const TopoDS_Shape shape = tool_->GetShape(label);
+    const std::size_t first = out_->size();
+    int index = 0;
+    for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next(), ++index) {
+      const auto [cached, added] =
+          definition_of_.emplace(std::make_pair(label.Tag(), index), definitions_.size());
+      if (added) {
+        definitions_.push_back({e.Current(), std::make_shared<TriangleMesh>(), {}, {}, {}});
+      }
+      StepSolid s;
+      s.path = index == 0 ? path : fmt::format("{}_solid{}", path, index + 1);
+      s.product = NameOf(label);
+      s.X_WP = ToRigid(location.Transformation());
+      s.mesh = definitions_[cached->second].mesh;
+      out_->push_back(std::move(s));
+      definition_of_solid_.push_back(cached->second);
+    }
+    // The instance's solids, one CAD part of several bodies: marked by the instance's number
+    // until the paths are unique (ReadSolids names it then).
+    ++instances_;
+    if (index > 1) {
+      for (std::size_t k = first; k < out_->size(); ++k) {
+        (*out_)[k].body_of = std::to_string(instances_);
+      }
+    }
+  }
+
+  // Converts each product's solid walked (once for all its instances), in parallel, and gives
+  // every solid walked its features and notes; Open CASCADE's messages meanwhile go to
+  // `messages` in the order of the solids, whichever thread sent them. Rethrows the
+  // Standard_Failure of the first solid, in walking order, on which Open CASCADE failed or
+  // crashed.
+  void ConvertAll(std::vector<StepMessage>* messages) {
+    ParallelFor(definitions_.size(), [this](std::size_t d) {
+      Definition& definition = definitions_[d];
+      const ThreadMessages redirect(&definition.messages);
+      const AlternateSignalStack stack;
+      OCC_CATCH_SIGNALS
+      ConvertSolid(definition.solid, definition.mesh.get(), &definition.features,
+                   &definition.notes);
+    });
+    for (const Definition& definition : definitions_) {
+      messages->insert(messages->end(), definition.messages.begin(), definition.messages.end());
+    }
+    for (std::size_t k = 0; k < out_->size(); ++k) {
+      const Definition& definition = definitions_[definition_of_solid_[k]];
+      (*out_)[k].features = definition.features;
+      (*out_)[k].notes = definition.notes;
+    }
+  }
+
+ private:
+  Handle(XCAFDoc_ShapeTool) tool_;
+  std::vector<StepSolid>* out_;
+  int instances_ = 0;  // product instances walked
+  // A product's solid, converted once for all its instances.
+  struct Definition {
+    TopoDS_Shape solid;
+    std::shared_ptr<TriangleMesh> mesh;
+    std::vector<Feature> features;
+    std::vector<std::string> notes;
+    std::vector<StepMessage> messages;  // Open CASCADE's, while converting it
+  };
+  std::vector<Definition> definitions_;
+  std::map<std::pair<int, int>, std::size_t> definition_of_;  // by label tag and solid index
+  std::vector<std::size_t> definition_of_solid_;              // of each solid in out_
 };
 
 // The first error report of Open CASCADE's reader, which usually names the entity at fault.
@@ -968,7 +1020,7 @@ std::string ReadFailure(IFSelect_ReturnStatus status) {
 // The solids of `file`; `messages` (Open CASCADE's, collected while reading) name the entity
 // at fault when it cannot be read.
 std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
-                                  const std::vector<StepMessage>& messages) {
+                                  std::vector<StepMessage>* messages) {
   Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
   Handle(TDocStd_Document) document;
   app->NewDocument("MDTV-XCAF", document);
@@ -978,13 +1030,13 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
   if (status != IFSelect_RetDone) {
     app->Close(document);
     throw std::runtime_error(fmt::format("cannot read it as STEP (AP203/AP214): {}{}",
-                                         ReadFailure(status), FirstError(messages)));
+                                         ReadFailure(status), FirstError(*messages)));
   }
   if (!reader.Transfer(document)) {
     app->Close(document);
     throw std::runtime_error(
         fmt::format("cannot read it as STEP (AP203/AP214): its entities give no shape{}",
-                    FirstError(messages)));
+                    FirstError(*messages)));
   }
   const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(document->Main());
   TDF_LabelSequence roots;
@@ -994,6 +1046,7 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
   for (int i = 1; i <= roots.Length(); ++i) {
     walker.Walk(roots(i), Sanitised(NameOf(roots(i))), TopLoc_Location());
   }
+  walker.ConvertAll(messages);
   app->Close(document);
   if (solids.empty()) throw std::runtime_error("the STEP file holds no solid");
   // Unique paths (two solids named alike at the top level).
@@ -1023,7 +1076,7 @@ std::vector<StepSolid> ReadStep(const std::filesystem::path& file,
   const SignalsAsExceptions signals;
   try {
     OCC_CATCH_SIGNALS
-    return ReadSolids(file, kept);
+    return ReadSolids(file, &kept);
   } catch (const Standard_Failure& failure) {
     // A crash inside Open CASCADE (a null entity of a damaged file dereferenced) or one of its
     // exceptions: the file cannot be read, and the process goes on.
