@@ -9,6 +9,7 @@
 #include "reasoning/fastener_inference.h"
 #include "reasoning/feature_completion.h"
 #include "reasoning/ground_choice.h"
+#include "reasoning/implied_frame.h"
 #include "reasoning/placement.h"
 
 namespace mechanist {
@@ -37,6 +38,7 @@ Assembly Load(AssemblyFileReader reader, const std::string& file, const LoadOpti
   Append(
       InferScrewsInPlainHoles(&spec.parts, spec.tolerance.length, spec.tolerance.angle, inferred),
       &spec);
+  Append(ImplyGearFrame(&spec), &spec);
   Append(ChooseGround(&spec.parts), &spec);
   std::optional<Assembly> assembly;
   try {

@@ -9,7 +9,7 @@ static_assert(sizeof(Pair) <= 88, "Pair has grown: the analysis reads every pair
 
 namespace {
 
-constexpr EnumNames<PairSource, 10> kSources = {{
+constexpr EnumNames<PairSource, 11> kSources = {{
     {PairSource::kRecognised, "recognised"},
     {PairSource::kOverride, "override"},
     {PairSource::kClamp, "clamp"},
@@ -20,6 +20,7 @@ constexpr EnumNames<PairSource, 10> kSources = {{
     {PairSource::kLooseFit, "loose_fit"},
     {PairSource::kOnePart, "one_part"},
     {PairSource::kShaftFlat, "shaft_flat"},
+    {PairSource::kImpliedFrame, "implied_frame"},
 }};
 
 constexpr EnumNames<PairFastening, 6> kFastenings = {{

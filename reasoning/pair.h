@@ -23,6 +23,7 @@ enum class PairSource : std::uint8_t {
   kLooseFit,    ///< a shaft loose in its hole guiding a part that nothing else holds
   kOnePart,     ///< two bodies of one CAD part touching face to face: one piece
   kShaftFlat,   ///< a hub on a shaft's flat (a setscrew or D-bore not modelled)
+  kImpliedFrame,  ///< a gear turning on an axle of the frame the file leaves out
 };
 
 /// How a pair is held, where that matters to the user.

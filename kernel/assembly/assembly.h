@@ -70,6 +70,8 @@ struct AssemblyStep {
 struct PairOverride {
   std::array<FeatureRef, 2> features;
   std::optional<PairType> type;
+  /// Not written in the file: an axle of the frame ImplyGearFrame adds.
+  bool implied_frame = false;
 };
 
 /// A ratio as written in an expectation: exact `numerator/denominator` (reduced, positive

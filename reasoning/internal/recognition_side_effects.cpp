@@ -29,7 +29,7 @@ void Recognizer::ApplyOverrides() {
       std::swap(a, b);
     }
     AddPair(*o.type, *a, *b);
-    pairs_.back().source = PairSource::kOverride;
+    pairs_.back().source = o.implied_frame ? PairSource::kImpliedFrame : PairSource::kOverride;
   }
 }
 

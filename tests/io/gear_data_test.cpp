@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -81,10 +83,13 @@ TEST(GearData, StlPartsAloneMeshAsGearAndRackPairs) {
   const Assembly spur = StlAssembly(
       "spur", {"spur_pair/spur_pair_gear_A_z17_m1.stl", "spur_pair/spur_pair_gear_B_z31_m1.stl"});
   const Analysis a = Analyze(spur);
-  ASSERT_EQ(a.pairs.size(), 1u);
-  EXPECT_EQ(a.pairs[0].type, PairType::kGear);
-  ASSERT_TRUE(a.pairs[0].ratio.has_value());
-  EXPECT_EQ(a.pairs[0].ratio->ToString(), "-17/31");
+  // The gear pair and each gear's revolute on the frame implied for them (no shafts).
+  ASSERT_EQ(a.pairs.size(), 3u);
+  const auto gear = std::find_if(a.pairs.begin(), a.pairs.end(),
+                                 [](const Pair& p) { return p.type == PairType::kGear; });
+  ASSERT_NE(gear, a.pairs.end());
+  ASSERT_TRUE(gear->ratio.has_value());
+  EXPECT_EQ(gear->ratio->ToString(), "-17/31");
 
   const Assembly rack = StlAssembly("rack", {"rack_pinion/rack_pinion_pinion_z20_m1.stl",
                                              "rack_pinion/rack_pinion_rack_m1_19t.stl"});

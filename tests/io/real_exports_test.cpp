@@ -70,11 +70,11 @@ std::vector<Expected> Cases() {
        4,
        0,
        2},
-      // The file has the two gears and no shafts: the pinion meshes with the gear taken as
-      // ground but nothing holds its axis.
+      // The file has the two gears and no frame or shafts: each turns on an axle of the
+      // implied frame through its bore, so no warning.
       {"spur_pair_20T_40T_solidworks/ISO standard Spur Gear Drive (2-1 ratio).STEP",
-       "ISO_standard_Spur_Gear_Drive__2-1_ratio_.NAUO1",
-       {"free_motion: ISO_standard_Spur_Gear_Drive__2-1_ratio_.NAUO2"}},
+       "implied_frame",
+       {}},
   };
 }
 

@@ -324,7 +324,8 @@ TEST(StepImport, GearTeethWithFreeFormFlanksAreFoundOnTheSolidsTessellation) {
   std::filesystem::create_directories(dir);
   testing::WriteSpurGearPairStep(dir / "pair.step", 10, 27, 1.5);
   const Assembly a = LoadAssembly(dir / "pair.step");
-  ASSERT_EQ(a.parts().size(), 2u);
+  ASSERT_EQ(a.parts().size(), 3u);  // the two gears and the frame implied for them
+  EXPECT_EQ(a.parts().back().id, "implied_frame");
   const Analysis an = Analyze(a);
   const Gears g(a, an);
   ASSERT_EQ(g.of_part.size(), 2u);
@@ -343,6 +344,7 @@ TEST(StepImport, GearTeethWithFreeFormFlanksAreFoundOnTheSolidsTessellation) {
   EXPECT_EQ(ratio, pinion_first ? Rational(-10, 27) : Rational(-27, 10));
   // The flanks are free-form faces; the notes say so, and how the teeth were found.
   for (const Part& p : a.parts()) {
+    if (!p.HasGeometry()) continue;  // the implied frame
     bool free_form = false, found = false;
     for (const std::string& n : p.notes) {
       free_form = free_form || n.find("free-form face") != std::string::npos;
@@ -362,7 +364,8 @@ TEST(StepImport, HelicalGearsWithLoftedFlanksMeshWithOppositeHands) {
   const double helix = 20 * M_PI / 180;
   testing::WriteHelicalGearPairStep(dir / "pair.step", 12, 30, 2.0, helix);
   const Assembly a = LoadAssembly(dir / "pair.step");
-  ASSERT_EQ(a.parts().size(), 2u);
+  ASSERT_EQ(a.parts().size(), 3u);  // the two gears and the frame implied for them
+  EXPECT_EQ(a.parts().back().id, "implied_frame");
   const Analysis an = Analyze(a);
   const Gears g(a, an);
   ASSERT_EQ(g.of_part.size(), 2u);
@@ -388,7 +391,8 @@ TEST(StepImport, StraightBevelGearsFromStepSolidsMeshAtRightAngles) {
   std::filesystem::create_directories(dir);
   testing::WriteBevelGearPairStep(dir / "bevel.step", 15, 30, 2.0);
   const Assembly a = LoadAssembly(dir / "bevel.step");
-  ASSERT_EQ(a.parts().size(), 2u);
+  ASSERT_EQ(a.parts().size(), 3u);  // the two gears and the frame implied for them
+  EXPECT_EQ(a.parts().back().id, "implied_frame");
   const double kDeg = std::numbers::pi / 180;
   const std::array<int, 2> teeth = {15, 30};
   const std::array<Eigen::Vector3d, 2> axes = {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX()};
@@ -478,8 +482,10 @@ TEST(StepImport, TheSolidWorksSpurPairMeshesAtMinusOneHalf) {
   const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) / "real" /
                                   "spur_pair_20T_40T_solidworks" /
                                   "ISO standard Spur Gear Drive (2-1 ratio).STEP");
-  ASSERT_EQ(a.parts().size(), 2u);
+  // The gears and the frame implied for them (the file has neither frame nor shafts).
+  ASSERT_EQ(a.parts().size(), 3u);
   const Analysis an = Analyze(a);
+  EXPECT_EQ(an.motion.mobility.dof, 1);  // the truth's: the gears on fixed axes
   const Gears g(a, an);
   ASSERT_EQ(g.of_part.size(), 2u);
   for (const auto& [part, f] : g.of_part) EXPECT_EQ(f->module, 2.0) << part;
@@ -491,6 +497,7 @@ TEST(StepImport, TheSolidWorksSpurPairMeshesAtMinusOneHalf) {
   EXPECT_EQ(*pair.ratio, Rational(-teeth_a, teeth_b));
   // No tiny shafts or holes from the flank patches: each gear keeps its bore.
   for (const Part& p : a.parts()) {
+    if (!p.HasGeometry()) continue;  // the implied frame
     int cylinders = 0;
     for (const Feature& f : p.features) {
       cylinders += f.kind == FeatureKind::kShaft || f.kind == FeatureKind::kHole;
