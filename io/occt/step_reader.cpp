@@ -24,7 +24,12 @@
 #include <Message_Printer.hxx>
 #include <OSD.hxx>
 #include <Poly_Triangulation.hxx>
+#include <Precision.hxx>
 #include <STEPCAFControl_Reader.hxx>
+#include <ShapeFix_Face.hxx>
+#include <ShapeFix_Shape.hxx>
+#include <ShapeFix_Solid.hxx>
+#include <ShapeFix_Wire.hxx>
 #include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
 #include <TDF_LabelSequence.hxx>
@@ -32,9 +37,12 @@
 #include <TDocStd_Document.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_TShape.hxx>
 #include <XCAFApp_Application.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
+#include <XSAlgo.hxx>
+#include <XSAlgo_AlgoContainer.hxx>
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -898,8 +906,82 @@ class SignalsAsExceptions {
   AlternateSignalStack stack_;  // this thread's; the converting threads set up their own
 };
 
-// Walks an XCAF document's products to their solids (Walk), then converts each product's
-// solids once (ConvertAll).
+// The tolerances Open CASCADE's reader heals a shape with (the file's uncertainty, and the
+// largest tolerance healing may set).
+struct Healing {
+  double precision = 0.0;
+  double max_tolerance = 0.0;
+};
+
+// While alive, Open CASCADE's reader leaves the shapes it reads unhealed and records, for each
+// solid, the tolerances it would have healed it with (HealedSolid heals it later): healing
+// (mostly computing the curves of edges on faces, which some exporters, Onshape among them,
+// leave out) is most of the transfer's time, and done per solid it runs in parallel. Writing
+// and the reading of other formats are untouched.
+class DeferredHealing : public XSAlgo_AlgoContainer {
+ public:
+  DeferredHealing() : previous_(XSAlgo::AlgoContainer()) {}
+  ~DeferredHealing() override = default;
+
+  // Reading: records the tolerances for each solid of `shape` and returns it as read. Writing:
+  // the previous processing.
+  TopoDS_Shape ProcessShape(const TopoDS_Shape& shape, const Standard_Real precision,
+                            const Standard_Real max_tolerance, const Standard_CString resources,
+                            const Standard_CString sequence, Handle(Standard_Transient) & info,
+                            const Message_ProgressRange& progress,
+                            const Standard_Boolean non_manifold) const override {
+    if (std::string_view(sequence).rfind("read.", 0) != 0) {
+      return previous_->ProcessShape(shape, precision, max_tolerance, resources, sequence, info,
+                                     progress, non_manifold);
+    }
+    for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next()) {
+      healing_[e.Current().TShape().get()] = {precision, max_tolerance};
+    }
+    return shape;
+  }
+
+  // How the reader would have healed `solid` (its default when it did not say).
+  Healing Of(const TopoDS_Shape& solid) const {
+    const auto found = healing_.find(solid.TShape().get());
+    return found == healing_.end() ? Healing{Precision::Confusion(), 1.0} : found->second;
+  }
+
+  const Handle(XSAlgo_AlgoContainer) & previous() const { return previous_; }
+
+ private:
+  Handle(XSAlgo_AlgoContainer) previous_;
+  mutable std::map<const TopoDS_TShape*, Healing> healing_;
+};
+
+// While alive, `deferred` is the reader's processing; the previous one comes back after.
+class HealingDeferred {
+ public:
+  explicit HealingDeferred(const Handle(DeferredHealing) & deferred) : deferred_(deferred) {
+    XSAlgo::SetAlgoContainer(deferred_);
+  }
+  ~HealingDeferred() { XSAlgo::SetAlgoContainer(deferred_->previous()); }
+  HealingDeferred(const HealingDeferred&) = delete;
+  HealingDeferred& operator=(const HealingDeferred&) = delete;
+
+ private:
+  Handle(DeferredHealing) deferred_;
+};
+
+// `solid` healed as Open CASCADE's reader heals what it reads by default (XSAlgo_AlgoContainer::
+// ProcessShape without a resource file: ShapeFix_Shape, same-parameter fixes of wires off, no
+// open solids made).
+TopoDS_Shape HealedSolid(const TopoDS_Shape& solid, const Healing& healing) {
+  Handle(ShapeFix_Shape) fix = new ShapeFix_Shape(solid);
+  fix->SetPrecision(healing.precision);
+  fix->SetMaxTolerance(healing.max_tolerance);
+  fix->FixFaceTool()->FixWireTool()->FixSameParameterMode() = Standard_False;
+  fix->FixSolidTool()->CreateOpenSolidMode() = Standard_False;
+  fix->Perform();
+  return fix->Shape().IsNull() ? solid : fix->Shape();
+}
+
+// Walks an XCAF document's products to their solids (Walk), then heals and converts each
+// product's solids once (ConvertAll).
 class Walker {
  public:
   Walker(Handle(XCAFDoc_ShapeTool) tool, std::vector<StepSolid>* out) : tool_(tool), out_(out) {}
@@ -951,19 +1033,20 @@ class Walker {
     }
   }
 
-  // Converts each product's solid walked (once for all its instances), in parallel, and gives
+  // Heals (as `healing` says) and converts each product's solid walked (once for all its
+  // instances), in parallel, and gives
   // every solid walked its features and notes; Open CASCADE's messages meanwhile go to
   // `messages` in the order of the solids, whichever thread sent them. Rethrows the
   // Standard_Failure of the first solid, in walking order, on which Open CASCADE failed or
   // crashed.
-  void ConvertAll(std::vector<StepMessage>* messages) {
-    ParallelFor(definitions_.size(), [this](std::size_t d) {
+  void ConvertAll(const DeferredHealing& healing, std::vector<StepMessage>* messages) {
+    ParallelFor(definitions_.size(), [&](std::size_t d) {
       Definition& definition = definitions_[d];
       const ThreadMessages redirect(&definition.messages);
       const AlternateSignalStack stack;
       OCC_CATCH_SIGNALS
-      ConvertSolid(definition.solid, definition.mesh.get(), &definition.features,
-                   &definition.notes);
+      const TopoDS_Shape healed = HealedSolid(definition.solid, healing.Of(definition.solid));
+      ConvertSolid(healed, definition.mesh.get(), &definition.features, &definition.notes);
     });
     for (const Definition& definition : definitions_) {
       messages->insert(messages->end(), definition.messages.begin(), definition.messages.end());
@@ -1024,8 +1107,10 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
   Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
   Handle(TDocStd_Document) document;
   app->NewDocument("MDTV-XCAF", document);
-  STEPCAFControl_Reader reader;
+  STEPCAFControl_Reader reader;  // initialises the reader's processing (XSAlgo) first
   reader.SetNameMode(true);
+  const Handle(DeferredHealing) healing = new DeferredHealing();
+  const HealingDeferred deferred(healing);
   const IFSelect_ReturnStatus status = reader.ReadFile(file.string().c_str());
   if (status != IFSelect_RetDone) {
     app->Close(document);
@@ -1046,7 +1131,7 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
   for (int i = 1; i <= roots.Length(); ++i) {
     walker.Walk(roots(i), Sanitised(NameOf(roots(i))), TopLoc_Location());
   }
-  walker.ConvertAll(messages);
+  walker.ConvertAll(*healing, messages);
   app->Close(document);
   if (solids.empty()) throw std::runtime_error("the STEP file holds no solid");
   // Unique paths (two solids named alike at the top level).
