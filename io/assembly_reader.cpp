@@ -694,10 +694,7 @@ class Reader {
     const auto parsed = ParseFeatureKind(kind.is_string() ? kind.get<std::string>() : "");
     if (!parsed) {
       Fail(p + "/kind",
-           fmt::format("expected one of shaft, hole, thread, tapped_hole, slot, key, gear, "
-                       "bevel_gear, worm, worm_wheel, rack, ball, socket, face, cycloid_disc, "
-                       "pin_ring, found {}",
-                       Describe(kind)));
+           fmt::format("expected one of {}, found {}", FeatureKindNames(), Describe(kind)));
     }
     f.kind = *parsed;
     const bool point_feature = f.kind == FeatureKind::kBall || f.kind == FeatureKind::kSocket;
@@ -1276,11 +1273,7 @@ class Reader {
     if (name == "none") return std::nullopt;
     const auto parsed = ParsePairType(name);
     if (!parsed) {
-      Fail(p,
-           fmt::format("expected one of fixed, revolute, cylindrical, screw, prismatic, pin_slot, "
-                       "spherical, planar, gear, worm_gear, rack_pinion, cycloidal, bevel_gear, "
-                       "pins_in_holes, none, found {}",
-                       Describe(type)));
+      Fail(p, fmt::format("expected one of {}, none, found {}", PairTypeNames(), Describe(type)));
     }
     return parsed;
   }

@@ -152,8 +152,8 @@ std::vector<Diagnostic> CompleteFeatures(std::vector<Part>* parts,
     done.push_back(
         {Severity::kInfo,
          "tessellation_gears",
-         fmt::format("gears, racks or cycloidal discs of {} {} were found on the tessellation of "
-                     "their free-form faces (the part's notes say which): {}",
+         fmt::format("gears, bevel gears, worms, racks or cycloidal discs of {} {} were found on "
+                     "the tessellation of their faces (the part's notes say which): {}",
                      with_gears.size(), with_gears.size() == 1 ? "STEP solid" : "STEP solids",
                      FewNames(with_gears)),
          with_gears,

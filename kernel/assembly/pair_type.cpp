@@ -28,4 +28,6 @@ std::string_view ToString(PairType type) { return NameOf(kNames, type); }
 
 std::optional<PairType> ParsePairType(std::string_view name) { return ValueOf(kNames, name); }
 
+std::string PairTypeNames() { return JoinNames(kNames); }
+
 }  // namespace mechanist

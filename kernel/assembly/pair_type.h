@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace mechanist {
@@ -41,5 +42,7 @@ constexpr bool IsCoupling(PairType type) {
 std::string_view ToString(PairType type);
 /// The type spelled `name`, or nothing.
 std::optional<PairType> ParsePairType(std::string_view name);
+/// Every type's spelling, comma-separated ("fixed, revolute, ..."), for messages.
+std::string PairTypeNames();
 
 }  // namespace mechanist

@@ -32,6 +32,8 @@ std::string_view ToString(FeatureKind kind) { return NameOf(kNames, kind); }
 
 std::optional<FeatureKind> ParseFeatureKind(std::string_view name) { return ValueOf(kNames, name); }
 
+std::string FeatureKindNames() { return JoinNames(kNames); }
+
 bool IsConvex(FeatureKind kind) {
   switch (kind) {
     case FeatureKind::kShaft:

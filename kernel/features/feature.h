@@ -35,6 +35,8 @@ enum class FeatureKind : std::uint8_t {
 std::string_view ToString(FeatureKind kind);
 /// The kind spelled `name`, or nothing.
 std::optional<FeatureKind> ParseFeatureKind(std::string_view name);
+/// Every kind's spelling, comma-separated ("shaft, hole, ..."), for messages.
+std::string FeatureKindNames();
 /// Convex features lead into concave ones: shaft, thread, gear, bevel_gear, worm, worm_wheel,
 /// key, ball.
 bool IsConvex(FeatureKind kind);

@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <numeric>
 #include <optional>
+#include <tuple>
+#include <utility>
 
 #include "kernel/geometry/circle_fit.h"
 #include "kernel/support/number_format.h"
@@ -420,11 +422,16 @@ struct AxisFrame {
   double width() const { return t_max - t_min; }
 };
 
+// Unit directions u, v across the unit `axis`, with it a right-handed frame.
+std::pair<Vector3d, Vector3d> Across(const Vector3d& axis) {
+  const Vector3d e = std::abs(axis.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
+  const Vector3d u = axis.cross(e).normalized();
+  return {u, axis.cross(u)};
+}
+
 AxisFrame FrameAbout(const TriangleMesh& mesh, const Vector3d& axis) {
   AxisFrame f;
-  const Vector3d e = std::abs(axis.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
-  f.u = axis.cross(e).normalized();
-  f.v = axis.cross(f.u);
+  std::tie(f.u, f.v) = Across(axis);
   for (const Vector3d& p : mesh.vertices) {
     f.t_min = std::min(f.t_min, p.dot(axis));
     f.t_max = std::max(f.t_max, p.dot(axis));
@@ -776,8 +783,7 @@ std::optional<RecognizedFeature> AxialWorm(const TriangleMesh& mesh, const Vecto
   for (const Vector3d& p : mesh.vertices) c += p / static_cast<double>(mesh.vertices.size());
   double tip = 0.0;
   for (int round = 0; round < 3; ++round) {
-    const Vector3d e = std::abs(axis.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
-    const Vector3d u = axis.cross(e).normalized(), v = axis.cross(u);
+    const auto [u, v] = Across(axis);
     tip = 0.0;
     for (const Vector3d& p : mesh.vertices) {
       const Vector3d d = p - c;

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <utility>
 
@@ -27,6 +28,17 @@ constexpr std::optional<E> ValueOf(const EnumNames<E, N>& names, std::string_vie
     if (n == name) return v;
   }
   return std::nullopt;
+}
+
+/// Every spelling in `names`, in the table's order, separated by ", " (for messages).
+template <typename E, std::size_t N>
+std::string JoinNames(const EnumNames<E, N>& names) {
+  std::string joined;
+  for (const auto& [v, name] : names) {
+    if (!joined.empty()) joined += ", ";
+    joined += name;
+  }
+  return joined;
 }
 
 }  // namespace mechanist
