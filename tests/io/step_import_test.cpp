@@ -383,6 +383,48 @@ TEST(StepImport, HelicalGearsWithLoftedFlanksMeshWithOppositeHands) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(StepImport, WormsFromStepSolidsDriveTheirWheels) {
+  // Our own fixture: a worm of module 2 (pitch diameter 20) along x, lofted through its
+  // transverse sections (B-spline faces), over a 30-tooth spur gear about z. The worm's
+  // starts, hand, axial module and pitch diameter come from its tessellation, and the wheel
+  // turns starts / 30 per worm turn. Oracle for the sign: a right-hand worm turning
+  // positively about +x screws itself along +x through the wheel's teeth, so it pushes the
+  // teeth nearest it (at -y from the wheel's axis) along -x: the wheel turns negatively
+  // about +z; a left hand the other way.
+  struct Case {
+    int starts;
+    bool right;
+  };
+  for (const Case c : {Case{1, true}, Case{2, false}}) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_worm";
+    std::filesystem::create_directories(dir);
+    testing::WriteWormAndWheelStep(dir / "worm.step", c.starts, c.right, 30, 2.0);
+    const Assembly a = LoadAssembly(dir / "worm.step");
+    const Analysis an = Analyze(a);
+    std::vector<const Pair*> worm_gears;
+    for (const Pair& p : an.pairs) {
+      if (p.type == PairType::kWormGear) worm_gears.push_back(&p);
+    }
+    ASSERT_EQ(worm_gears.size(), 1u) << c.starts << ::testing::PrintToString(PairNames(a, an));
+    const Pair& pair = *worm_gears[0];
+    const Feature& worm = a.feature(pair.a);
+    ASSERT_EQ(worm.kind, FeatureKind::kWorm);
+    EXPECT_EQ(worm.starts, c.starts);
+    EXPECT_EQ(worm.hand, c.right ? Hand::kRight : Hand::kLeft) << c.starts;
+    EXPECT_EQ(worm.module, 2.0) << c.starts;
+    EXPECT_NEAR(worm.pitch_diameter, 20.0, 0.1) << c.starts;
+    const Eigen::Vector3d u_worm = a.part(pair.a.part).X_WP.RotateDirection(worm.axis);
+    const Eigen::Vector3d u_wheel =
+        a.part(pair.b.part).X_WP.RotateDirection(a.feature(pair.b).axis);
+    EXPECT_GT(std::abs(u_worm.x()), 1 - 1e-6) << c.starts;
+    EXPECT_GT(std::abs(u_wheel.z()), 1 - 1e-6) << c.starts;
+    EXPECT_EQ(a.feature(pair.b).teeth, 30);
+    const int sign = (c.right ? -1 : 1) * (u_worm.x() > 0 ? 1 : -1) * (u_wheel.z() > 0 ? 1 : -1);
+    EXPECT_EQ(*pair.ratio, Rational(sign * c.starts, 30)) << c.starts;
+    std::filesystem::remove_all(dir);
+  }
+}
+
 TEST(StepImport, StraightBevelGearsFromStepSolidsMeshAtRightAngles) {
   // A 15- and a 30-tooth bevel gear, module 2, shafts at right angles, flanks as B-splines:
   // found on the solids' tessellation with their teeth, module, pitch angles (26.57 and 63.43

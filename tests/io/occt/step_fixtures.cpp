@@ -161,7 +161,71 @@ TopoDS_Shape BevelGear(int teeth, double module, double pitch_angle) {
       .Shape();
 }
 
+// A cylindrical worm about +z from z = 0 to `length`: `starts` threads of axial module
+// `module` (axial pitch pi m, lead starts pi m), hand `right`, pitch diameter 10 m, addendum m,
+// dedendum 1.25 m, the axial section's flanks at 20 degrees. A ruled loft (B-spline faces)
+// through its transverse section at 32 heights per lead, each the one at z = 0 turned by
+// 2 pi z / lead (the other way for a left hand); each section is split where the profile
+// meets the tip and the root, each piece an interpolated B-spline.
+TopoDS_Shape Worm(int starts, double module, bool right, double length) {
+  const double pitch = M_PI * module, lead = starts * pitch, r_pitch = 5 * module;
+  const double tan_a = std::tan(20.0 * M_PI / 180.0);
+  const double tip_half = pitch / 4 - module * tan_a, root_half = pitch / 4 + 1.25 * module * tan_a;
+  // The radius where the section at z = 0 meets the thread at axial offset u from a tooth's
+  // middle (within half a pitch).
+  const auto radius = [&](double u) {
+    return std::clamp(r_pitch + (pitch / 4 - std::abs(u)) / tan_a, r_pitch - 1.25 * module,
+                      r_pitch + module);
+  };
+  // At angle theta the section at z = 0 shows the thread at axial offset -lead theta / 2 pi
+  // (the profile is symmetric, so the offset's sign does not matter): per period of 2 pi /
+  // starts, the pieces between these offsets (root, flank, tip, flank, root).
+  const std::vector<double> breaks = {-pitch / 2, -root_half, -tip_half, tip_half, root_half};
+  const double hand = right ? 1.0 : -1.0;
+  const auto section = [&](double z) {
+    BRepBuilderAPI_MakeWire wire;
+    for (int period = 0; period < starts; ++period) {
+      for (std::size_t k = 0; k < breaks.size(); ++k) {
+        const double u0 = breaks[k], u1 = k + 1 < breaks.size() ? breaks[k + 1] : pitch / 2;
+        std::vector<gp_Pnt> run;
+        for (int i = 0; i <= 8; ++i) {
+          const double u = u0 + (u1 - u0) * i / 8;
+          const double theta =
+              2 * M_PI * (period + (u + pitch / 2) / pitch) / starts + hand * 2 * M_PI * z / lead;
+          run.emplace_back(radius(u) * std::cos(theta), radius(u) * std::sin(theta), z);
+        }
+        wire.Add(Through(run));
+      }
+    }
+    return wire.Wire();
+  };
+  BRepOffsetAPI_ThruSections loft(true, true, 1e-6);
+  loft.CheckCompatibility(false);
+  const int sections = static_cast<int>(std::ceil(32 * length / lead));
+  for (int k = 0; k <= sections; ++k) loft.AddWire(section(length * k / sections));
+  loft.Build();
+  if (!loft.IsDone()) throw std::runtime_error("cannot loft a worm");
+  return loft.Shape();
+}
+
 }  // namespace
+
+void WriteWormAndWheelStep(const std::filesystem::path& file, int starts, bool right,
+                           int wheel_teeth, double module) {
+  const double centre = module * (10 + wheel_teeth) / 2.0;
+  const double length = 6 * M_PI * module;
+  gp_Trsf across, place;
+  across.SetRotation(gp::OY(), M_PI / 2);  // +z onto +x
+  place.SetTranslation(gp_Vec(-length / 2, -centre, 5));
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  builder.Add(
+      all,
+      BRepBuilderAPI_Transform(Worm(starts, module, right, length), place * across, true).Shape());
+  builder.Add(all, SpurGear(wheel_teeth, module));
+  WriteStep(all, file);
+}
 
 void WriteSpurGearPairStep(const std::filesystem::path& file, int teeth_a, int teeth_b,
                            double module) {

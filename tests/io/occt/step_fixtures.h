@@ -33,6 +33,17 @@ void WriteSpurGearPairStep(const std::filesystem::path& file, int teeth_a, int t
 void WriteHelicalGearPairStep(const std::filesystem::path& file, int teeth_a, int teeth_b,
                               double module, double helix);
 
+/// Writes a STEP file (AP214, no product names) of a cylindrical worm and its wheel: the worm
+/// of `starts` threads of axial module `module`, hand right or left, pitch diameter 10 m,
+/// addendum m, dedendum 1.25 m, flanks at 20 degrees in the axial section, 6 pi m long along
+/// +x, centred over the wheel's face width at z = 5 and at y = -m (10 + z_wheel) / 2; the wheel
+/// a spur gear of `wheel_teeth` teeth and module `module` about +z (as in
+/// WriteSpurGearPairStep, straight teeth: a test fixture, not a meshing worm wheel). The worm
+/// is a ruled loft (B-spline faces) through its transverse section at 32 heights per lead.
+/// Throws std::runtime_error when it cannot build or write.
+void WriteWormAndWheelStep(const std::filesystem::path& file, int starts, bool right,
+                           int wheel_teeth, double module);
+
 /// Writes a STEP file (AP214, no product names) of two straight bevel gears of module
 /// `module` (at the heel) meshing on shafts at right angles, their pitch cones' apex at the
 /// origin: `teeth_a` teeth about +z, `teeth_b` about +x, pitch angles atan(z_a / z_b) and
