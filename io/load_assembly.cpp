@@ -10,6 +10,7 @@
 #include "reasoning/feature_completion.h"
 #include "reasoning/ground_choice.h"
 #include "reasoning/implied_frame.h"
+#include "reasoning/pin_ring_inference.h"
 #include "reasoning/placement.h"
 
 namespace mechanist {
@@ -38,6 +39,8 @@ Assembly Load(AssemblyFileReader reader, const std::string& file, const LoadOpti
   Append(
       InferScrewsInPlainHoles(&spec.parts, spec.tolerance.length, spec.tolerance.angle, inferred),
       &spec);
+  Append(InferPinRingsOfParts(&spec.parts, spec.tolerance.length, spec.tolerance.angle, inferred),
+         &spec);
   Append(ImplyGearFrame(&spec), &spec);
   Append(ChooseGround(&spec.parts), &spec);
   std::optional<Assembly> assembly;

@@ -18,12 +18,14 @@
 #include <set>
 #include <sstream>
 
+#include "cycloid_outline.h"
 #include "io/feature_report.h"
 #include "io/input_error.h"
 #include "io/load_assembly.h"
 #include "io/occt/step_fixtures.h"
 #include "io/step_reader.h"
 #include "kernel/features/part_library.h"
+#include "kernel/mesh/mesh_builder.h"
 #include "kernel/mesh/mesh_check.h"
 #include "reasoning/analysis.h"
 
@@ -834,6 +836,60 @@ TEST(MeshRecognition, AWormAndAGearAsSTLsMakeTheirWormGearPair) {
   EXPECT_GT(a.feature(worm_gears[0]->a).axis.z(), 1 - 1e-6);
   EXPECT_GT(a.feature(worm_gears[0]->b).axis.z(), 1 - 1e-6);  // in the wheel's frame
   EXPECT_EQ(*worm_gears[0]->ratio, Rational(-1, 30));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(MeshRecognition, SeparatePinsInAHousingAreItsPinRing) {
+  // A housing (80 mm square, 10 thick) with seven 6 mm holes on a 50 mm circle, a 6 mm pin
+  // (a part of its own, 25 long) pressed into each, and a 6-lobe cycloidal disc for them
+  // (eccentricity 2) between z = 12 and 20 on the pins: the pins become the housing's pin
+  // ring, and the disc makes its cycloidal pair with it. One pin 1 mm off the circle: none.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_pins";
+  std::filesystem::create_directories(dir);
+  for (const double stray : {0.0, 1.0}) {
+    Region2d housing{{{-40, -40}, {40, -40}, {40, 40}, {-40, 40}}, {}};
+    std::string parts = R"({"id": "housing", "mesh": "housing.stl"}, {"id": "disc", "mesh":
+        "disc.stl", "pose": {"position": [0, 2, 0]}})";
+    for (int k = 0; k < 7; ++k) {
+      const double a = 2 * std::numbers::pi * k / 7, r = 25 + (k == 3 ? stray : 0.0);
+      const Eigen::Vector2d c(r * std::cos(a), r * std::sin(a));
+      housing.holes.push_back(CircleRing(c, 3, 48));
+      parts += fmt::format(R"(, {{"id": "pin{}", "mesh": "pin.stl", "pose": {{"position": [{},
+          {}, 0]}}}})",
+                           k + 1, c.x(), c.y());
+    }
+    WriteStl(ExtrudeRegion(housing, 0, 10), dir / "housing.stl");
+    WriteStl(ExtrudeRegion({CircleRing(Eigen::Vector2d::Zero(), 3, 48), {}}, 0, 25),
+             dir / "pin.stl");
+    Region2d disc{testing::CycloidOutline(7, 25, 3, 2, 720), {}};
+    disc.holes.push_back(CircleRing(Eigen::Vector2d::Zero(), 5, 64));
+    WriteStl(ExtrudeRegion(disc, 12, 20), dir / "disc.stl");
+    const Assembly a =
+        LoadAssemblyText(R"({"mechanist": 1, "parts": [)" + parts + "]}", dir / "reducer.json");
+    const Part& h = a.part(*a.FindPart("housing"));
+    const auto ring = h.FindFeature("pins_1");
+    const Analysis an = Analyze(a);
+    const auto cycloidal = std::count_if(an.pairs.begin(), an.pairs.end(), [](const Pair& p) {
+      return p.type == PairType::kCycloidal;
+    });
+    if (stray > 0) {
+      EXPECT_FALSE(ring.has_value());
+      EXPECT_EQ(cycloidal, 0);
+      continue;
+    }
+    ASSERT_TRUE(ring.has_value()) << ::testing::PrintToString(PairNames(a, an));
+    const Feature& f = h.features[*ring];
+    EXPECT_EQ(f.kind, FeatureKind::kPinRing);
+    EXPECT_EQ(f.teeth, 7);
+    EXPECT_NEAR(f.diameter, 50, 0.01);
+    EXPECT_NEAR(f.pin_diameter, 6, 0.01);
+    EXPECT_NEAR(f.length, 25, 0.01);
+    EXPECT_LT(f.origin.head<2>().norm(), 0.01);
+    EXPECT_EQ(cycloidal, 1) << ::testing::PrintToString(PairNames(a, an));
+    EXPECT_EQ(std::count_if(a.findings().begin(), a.findings().end(),
+                            [](const Diagnostic& d) { return d.code == "pin_ring_of_parts"; }),
+              1);
+  }
   std::filesystem::remove_all(dir);
 }
 

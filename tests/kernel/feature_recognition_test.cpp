@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "cycloid_outline.h"
 #include "kernel/features/involute_gear.h"
 #include "kernel/features/part_library.h"
 #include "kernel/mesh/mesh_builder.h"
@@ -436,27 +437,13 @@ TEST(FeatureRecognition, ABallHasNoFeatures) {
 namespace mechanist {
 namespace {
 
-// A cycloidal disc's outline for `pins` pins of radius r_p on a circle of radius R and an
-// eccentricity e, from the textbook parametric form (the pins' envelope), as a ring of points.
-Ring2d CycloidOutline(int pins, double R, double r_p, double e, int samples) {
-  Ring2d ring;
-  for (int i = 0; i < samples; ++i) {
-    const double t = 2 * 3.14159265358979323846 * i / samples;
-    const double psi =
-        std::atan2(std::sin((1 - pins) * t), R / (e * pins) - std::cos((1 - pins) * t));
-    ring.emplace_back(R * std::cos(t) - r_p * std::cos(t + psi) - e * std::cos(pins * t),
-                      -R * std::sin(t) + r_p * std::sin(t + psi) + e * std::sin(pins * t));
-  }
-  return ring;
-}
-
 TEST(FeatureRecognition, CycloidalDiscsGiveTheirLobesAndEccentricity) {
   struct Disc {
     int pins;
     double R, r_p, e;
   };
   for (const Disc d : {Disc{7, 25, 3, 2}, Disc{11, 40, 4, 1.5}, Disc{16, 30, 2.5, 0.8}}) {
-    Region2d region{CycloidOutline(d.pins, d.R, d.r_p, d.e, 720), {}};
+    Region2d region{testing::CycloidOutline(d.pins, d.R, d.r_p, d.e, 720), {}};
     region.holes.push_back(CircleRing(Eigen::Vector2d::Zero(), 5, 64));
     const RigidTransform X(
         Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix(),
