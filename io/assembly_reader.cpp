@@ -91,8 +91,8 @@ class Reader {
     const Json& root = src_.root;
     ExpectObject(root, "");
     CheckKeys(root, "",
-              {"mechanist", "name", "units", "tolerance", "friction", "import", "parts", "drivers",
-               "adjustments", "goals", "steps", "overrides", "expect"});
+              {"mechanist", "name", "units", "tolerance", "friction", "infer", "import", "parts",
+               "drivers", "adjustments", "goals", "steps", "overrides", "expect"});
     const Json* version = Find(root, "mechanist");
     if (!version) Fail("", "expected the format version \"mechanist\": 1, found no such key");
     if (!version->is_number_integer() || version->get<long long>() != 1) {
@@ -102,6 +102,7 @@ class Reader {
     if (const Json* name = Find(root, "name")) spec_.name = String(*name, "/name");
     if (const Json* units = Find(root, "units")) ReadUnits(*units, "/units");
     if (const Json* tol = Find(root, "tolerance")) ReadTolerance(*tol, "/tolerance");
+    if (const Json* infer = Find(root, "infer")) ReadInference(*infer, "/infer");
     if (const Json* friction = Find(root, "friction")) {
       spec_.friction = Number(*friction, "/friction");
       if (spec_.friction < 0) {
@@ -347,6 +348,17 @@ class Reader {
         Fail(pointer + "/angle",
              fmt::format("expected a positive angle, found {}", Describe(*angle)));
       }
+    }
+  }
+
+  void ReadInference(const Json& v, const std::string& pointer) {
+    ExpectObject(v, pointer);
+    CheckKeys(v, pointer, {"implied_pins", "implied_frame"});
+    if (const Json* pins = Find(v, "implied_pins")) {
+      spec_.inference.implied_pins = Bool(*pins, pointer + "/implied_pins");
+    }
+    if (const Json* frame = Find(v, "implied_frame")) {
+      spec_.inference.implied_frame = Bool(*frame, pointer + "/implied_frame");
     }
   }
 

@@ -50,6 +50,7 @@ std::optional<std::size_t> BoreOfGear(const Part& part, const Tolerance& toleran
 }  // namespace
 
 std::vector<Diagnostic> ImplyGearFrame(AssemblySpec* spec) {
+  if (!spec->inference.implied_frame) return {};
   std::vector<Part>& parts = spec->parts;
   if (std::any_of(parts.begin(), parts.end(), [](const Part& p) { return p.ground; })) return {};
   struct Bore {
@@ -103,7 +104,8 @@ std::vector<Diagnostic> ImplyGearFrame(AssemblySpec* spec) {
     axle.length = hole.length;
     spec->overrides.push_back(
         {{FeatureRef(frame_index, frame.features.size()), FeatureRef(bore.part, bore.hole)},
-         PairType::kRevolute, /*implied_frame=*/true});
+         PairType::kRevolute,
+         /*implied_frame=*/true});
     frame.features.push_back(axle);
     gears.push_back(fmt::format("'{}' ({} mm bore)", owner.id, FormatNumber(hole.diameter, 4)));
   }
@@ -116,7 +118,8 @@ std::vector<Diagnostic> ImplyGearFrame(AssemblySpec* spec) {
            fmt::format("no part is ground and the file models the gears alone, without a frame "
                        "or shafts: each is taken to turn on an axle fixed to the world through "
                        "its bore, {}, held by the features-only part '{}' (set \"ground\": true "
-                       "on a part to count from it instead)",
+                       "on a part to count from it instead, or \"infer\": {{\"implied_frame\": "
+                       "false}})",
                        fmt::join(gears, ", "), parts.back().id),
            ids,
            {}}};

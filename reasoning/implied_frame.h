@@ -17,7 +17,8 @@ namespace mechanist {
 /// pair's source) between each axle and its bore: each gear turns about its bore's axis, as the frame the file leaves out would hold
 /// it. Returns the info finding `implied_frame` naming the gears and their bores' diameters,
 /// or nothing when the rule does not apply (then ChooseGround picks a ground part). Needs at
-/// least two gear parts. Part ids stay unique (`implied_frame_2` if the name is taken).
+/// least two gear parts, and the spec's `inference.implied_frame`. Part ids stay unique
+/// (`implied_frame_2` if the name is taken).
 std::vector<Diagnostic> ImplyGearFrame(AssemblySpec* spec);
 
 }  // namespace mechanist

@@ -100,6 +100,15 @@ struct Expectation {
   std::string diagnostic;             ///< diagnostic: a code or a substring of the message
 };
 
+/// Which of the engine's guesses at what a CAD export leaves out may run (file: `infer`, our
+/// addition to the format); all on by default.
+struct Inference {
+  /// Two parts' coaxial holes with nothing in them turn on a pin the file leaves out.
+  bool implied_pins = true;
+  /// Gears exported without frame or shafts turn on a frame's axles (ImplyGearFrame).
+  bool implied_frame = true;
+};
+
 /// Everything an assembly file describes, as plain data; Assembly checks and indexes it.
 struct AssemblySpec {
   std::string name;
@@ -107,6 +116,7 @@ struct AssemblySpec {
   Units units;
   Tolerance tolerance;
   double friction = 0.1;
+  Inference inference;
   std::vector<Part> parts;
   std::vector<Driver> drivers;
   std::vector<Adjustment> adjustments;
@@ -137,6 +147,7 @@ class Assembly {
   const std::string& source() const { return spec_.source; }
   const Units& units() const { return spec_.units; }
   const Tolerance& tolerance() const { return spec_.tolerance; }
+  const Inference& inference() const { return spec_.inference; }
   double friction() const { return spec_.friction; }
   const std::vector<Part>& parts() const { return spec_.parts; }
   const Part& part(std::size_t index) const { return spec_.parts.at(index); }

@@ -34,7 +34,7 @@ void Recognizer::ApplyOverrides() {
 }
 
 void Recognizer::AddImpliedPins() {
-  if (hole_candidates_.empty()) return;
+  if (hole_candidates_.empty() || !assembly_.inference().implied_pins) return;
   std::vector<bool> filled(features_.size(), false);
   for (const Pair& p : pairs_) {
     const FeatureKind k = assembly_.kind(p.a);
@@ -207,7 +207,7 @@ void Recognizer::ReportImpliedPins() {
          "implied_pin",
          fmt::format("{} and {} turn on a pin of about {} that the file does not "
                      "model, in holes {} (a revolute pair; an override of type "
-                     "none forbids it)",
+                     "none forbids it, \"infer\": {{\"implied_pins\": false}} all of them)",
                      parts.first, parts.second, Mm(pin), fmt::join(holes, ", ")),
          {parts.first, parts.second},
          {holes.begin(), holes.end()}});

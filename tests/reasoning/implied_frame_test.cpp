@@ -110,6 +110,11 @@ TEST(ImplyGearFrame, NotWhenAPartIsGroundAShaftFillsABoreOrAPartHasNoGear) {
   AssemblySpec one = TwoGears();
   one.parts.pop_back();
   EXPECT_TRUE(ImplyGearFrame(&one).empty());
+
+  AssemblySpec off = TwoGears();  // the file's "infer": {"implied_frame": false}
+  off.inference.implied_frame = false;
+  EXPECT_TRUE(ImplyGearFrame(&off).empty());
+  EXPECT_EQ(off.parts.size(), 2u);
 }
 
 }  // namespace

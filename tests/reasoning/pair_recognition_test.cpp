@@ -753,6 +753,13 @@ TEST(PairRecognition, CoaxialEmptyHolesOfTwoPartsAreAnImpliedPin) {
                            PairOverride{{FeatureRef{0, 1}, FeatureRef{1, 0}}, std::nullopt}}));
   EXPECT_TRUE(forbidden.pairs.empty());
   EXPECT_FALSE(HasDiagnostic(forbidden, "implied_pin"));
+  // So does the file's "infer": {"implied_pins": false}, for all of them.
+  AssemblySpec off;
+  off.parts = Hinge(3.45, 3.2).parts();
+  off.inference.implied_pins = false;
+  const Recognition none = Recognize(Assembly(std::move(off)));
+  EXPECT_TRUE(none.pairs.empty());
+  EXPECT_FALSE(HasDiagnostic(none, "implied_pin"));
 }
 
 TEST(PairRecognition, ALooseShaftGuidesOnlyAPartNothingElseHolds) {
