@@ -320,39 +320,42 @@ TEST(StepImport, As1InInchesFlatOrNestedGivesTheSamePairsUpToNames) {
 }
 
 TEST(StepImport, GearTeethWithFreeFormFlanksAreFoundOnTheSolidsTessellation) {
-  // Our own fixture: a 10-tooth pinion (undercut) meshing a 27-tooth gear, module 1.5, their
-  // involute flanks drawn as B-spline curves, so that the exact faces give no feature.
+  // Our own fixture: a pinion of 6, 8 or 10 teeth (undercut: its flanks run radially below
+  // the base circle) meshing a 27-tooth gear, module 1.5, their involute flanks drawn as
+  // B-spline curves, so that the exact faces give no feature.
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_step_gears";
   std::filesystem::create_directories(dir);
-  testing::WriteSpurGearPairStep(dir / "pair.step", 10, 27, 1.5);
-  const Assembly a = LoadAssembly(dir / "pair.step");
-  ASSERT_EQ(a.parts().size(), 3u);  // the two gears and the frame implied for them
-  EXPECT_EQ(a.parts().back().id, "implied_frame");
-  const Analysis an = Analyze(a);
-  const Gears g(a, an);
-  ASSERT_EQ(g.of_part.size(), 2u);
-  std::vector<int> teeth;
-  for (const auto& [part, f] : g.of_part) {
-    teeth.push_back(f->teeth);
-    EXPECT_EQ(f->module, 1.5) << part;
-    EXPECT_NEAR(std::abs(f->axis.z()), 1.0, 1e-9) << part;
-    EXPECT_FALSE(f->internal) << part;
-  }
-  std::sort(teeth.begin(), teeth.end());
-  EXPECT_EQ(teeth, (std::vector<int>{10, 27}));
-  ASSERT_EQ(g.pairs.size(), 1u);
-  const Rational ratio = *g.pairs[0]->ratio;
-  const bool pinion_first = a.feature(g.pairs[0]->a).teeth == 10;
-  EXPECT_EQ(ratio, pinion_first ? Rational(-10, 27) : Rational(-27, 10));
-  // The flanks are free-form faces; the notes say so, and how the teeth were found.
-  for (const Part& p : a.parts()) {
-    if (!p.HasGeometry()) continue;  // the implied frame
-    bool free_form = false, found = false;
-    for (const std::string& n : p.notes) {
-      free_form = free_form || n.find("free-form face") != std::string::npos;
-      found = found || n.find("(found on the solid's tessellation)") != std::string::npos;
+  for (const int pinion : {6, 8, 10}) {
+    testing::WriteSpurGearPairStep(dir / "pair.step", pinion, 27, 1.5);
+    const Assembly a = LoadAssembly(dir / "pair.step");
+    ASSERT_EQ(a.parts().size(), 3u);  // the two gears and the frame implied for them
+    EXPECT_EQ(a.parts().back().id, "implied_frame");
+    const Analysis an = Analyze(a);
+    const Gears g(a, an);
+    ASSERT_EQ(g.of_part.size(), 2u) << pinion;
+    std::vector<int> teeth;
+    for (const auto& [part, f] : g.of_part) {
+      teeth.push_back(f->teeth);
+      EXPECT_EQ(f->module, 1.5) << part;
+      EXPECT_NEAR(std::abs(f->axis.z()), 1.0, 1e-9) << part;
+      EXPECT_FALSE(f->internal) << part;
     }
-    EXPECT_TRUE(free_form && found) << p.id;
+    std::sort(teeth.begin(), teeth.end());
+    EXPECT_EQ(teeth, (std::vector<int>{pinion, 27}));
+    ASSERT_EQ(g.pairs.size(), 1u) << pinion;
+    const Rational ratio = *g.pairs[0]->ratio;
+    const bool pinion_first = a.feature(g.pairs[0]->a).teeth == pinion;
+    EXPECT_EQ(ratio, pinion_first ? Rational(-pinion, 27) : Rational(-27, pinion));
+    // The flanks are free-form faces; the notes say so, and how the teeth were found.
+    for (const Part& p : a.parts()) {
+      if (!p.HasGeometry()) continue;  // the implied frame
+      bool free_form = false, found = false;
+      for (const std::string& n : p.notes) {
+        free_form = free_form || n.find("free-form face") != std::string::npos;
+        found = found || n.find("(found on the solid's tessellation)") != std::string::npos;
+      }
+      EXPECT_TRUE(free_form && found) << p.id;
+    }
   }
   std::filesystem::remove_all(dir);
 }
