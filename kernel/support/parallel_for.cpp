@@ -29,7 +29,14 @@ void ParallelFor(std::size_t count, const std::function<void(std::size_t)>& body
   const std::size_t threads =
       std::min<std::size_t>(count, std::max(1u, std::thread::hardware_concurrency()));
   std::vector<std::thread> helpers;
-  for (std::size_t t = 1; t < threads; ++t) helpers.emplace_back(work);
+  helpers.reserve(threads);
+  for (std::size_t t = 1; t < threads; ++t) {
+    try {
+      helpers.emplace_back(work);
+    } catch (const std::exception&) {
+      break;  // no more threads to be had (an address-space limit): those started do the work
+    }
+  }
   work();
   for (std::thread& helper : helpers) helper.join();
   for (const std::exception_ptr& failure : failures) {
