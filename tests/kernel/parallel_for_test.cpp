@@ -1,10 +1,13 @@
 #include "kernel/support/parallel_for.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 
 #include <atomic>
+#include <fstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace mechanist {
@@ -34,6 +37,44 @@ TEST(ParallelFor, RethrowsTheExceptionOfTheLowestFailingIndex) {
     }
     EXPECT_EQ(below, 500);
   }
+}
+
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define MECHANIST_ASAN 1
+#endif
+#endif
+
+// This process's address space in use (kB), from /proc/self/status.
+long VmSizeKilobytes() {
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  long value = 0;
+  while (status >> key) {
+    if (key == "VmSize:") {
+      status >> value;
+      return value;
+    }
+  }
+  return 0;
+}
+
+TEST(ParallelFor, RunsOnTheCallingThreadWhenTheSystemGivesNoOther) {
+#ifdef MECHANIST_ASAN
+  GTEST_SKIP() << "AddressSanitizer's shadow memory does not fit under an address-space limit";
+#endif
+  // An address-space limit 4 MB above what the process uses: no thread's 8 MB stack fits.
+  std::vector<std::thread::id> ran(200);
+  rlimit saved{};
+  ASSERT_EQ(getrlimit(RLIMIT_AS, &saved), 0);
+  const long used = VmSizeKilobytes();
+  ASSERT_GT(used, 0);
+  rlimit tight = saved;
+  tight.rlim_cur = static_cast<rlim_t>(used + 4096) * 1024;
+  ASSERT_EQ(setrlimit(RLIMIT_AS, &tight), 0);
+  ParallelFor(ran.size(), [&](std::size_t i) { ran[i] = std::this_thread::get_id(); });
+  ASSERT_EQ(setrlimit(RLIMIT_AS, &saved), 0);
+  for (const std::thread::id id : ran) EXPECT_EQ(id, std::this_thread::get_id());
 }
 
 }  // namespace
