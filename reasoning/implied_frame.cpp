@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "kernel/geometry/line_geometry.h"
 #include "kernel/support/number_format.h"
 
 namespace mechanist {
@@ -29,8 +30,8 @@ bool IsExternalGear(const Feature& f) {
 // `tolerance` (mm, radians). All in one frame.
 bool Collinear(const Eigen::Vector3d& p_a, const Eigen::Vector3d& u_a, const Eigen::Vector3d& p_b,
                const Eigen::Vector3d& u_b, const Tolerance& tolerance) {
-  if (u_a.cross(u_b).norm() > std::sin(tolerance.angle)) return false;
-  return (p_b - p_a).cross(u_a).norm() <= tolerance.length;
+  return AngleBetweenLines(u_a, u_b) <= tolerance.angle &&
+         DistanceToLine(p_b, p_a, u_a) <= tolerance.length;
 }
 
 // The index of `part`'s first hole collinear with its first external gear, or nothing.

@@ -13,16 +13,16 @@ namespace mechanist {
 
 /// Why a pair exists.
 enum class PairSource : std::uint8_t {
-  kRecognised,  ///< the features satisfy a row of the recognition table
-  kOverride,    ///< forced by the file's `overrides`
-  kClamp,       ///< a tight fastener through a clearance hole clamps the hole's part
-  kSetscrew,    ///< a tight setscrew's tip bears on a shaft
-  kInferred,    ///< the running mechanism's sweep found one part pushing the other along
-  kImpliedPin,  ///< two coaxial holes with nothing in them: a pin the CAD file left out
-  kBearing,     ///< a rolling bearing's rings, or a rolling element held with its outer ring
-  kLooseFit,    ///< a shaft loose in its hole guiding a part that nothing else holds
-  kOnePart,     ///< two bodies of one CAD part touching face to face: one piece
-  kShaftFlat,   ///< a hub on a shaft's flat (a setscrew or D-bore not modelled)
+  kRecognised,    ///< the features satisfy a row of the recognition table
+  kOverride,      ///< forced by the file's `overrides`
+  kClamp,         ///< a tight fastener through a clearance hole clamps the hole's part
+  kSetscrew,      ///< a tight setscrew's tip bears on a shaft
+  kInferred,      ///< the running mechanism's sweep found one part pushing the other along
+  kImpliedPin,    ///< two coaxial holes with nothing in them: a pin the CAD file left out
+  kBearing,       ///< a rolling bearing's rings, or a rolling element held with its outer ring
+  kLooseFit,      ///< a shaft loose in its hole guiding a part that nothing else holds
+  kOnePart,       ///< two bodies of one CAD part touching face to face: one piece
+  kShaftFlat,     ///< a hub on a shaft's flat (a setscrew or D-bore not modelled)
   kImpliedFrame,  ///< a gear turning on an axle of the frame the file leaves out
 };
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>  // fmt::join
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "kernel/geometry/circle_fit.h"
+#include "kernel/geometry/line_geometry.h"
 #include "kernel/support/number_format.h"
 
 namespace mechanist {
@@ -49,14 +51,11 @@ bool HoldsPin(const Part& host, const Pin& pin, double L, double A) {
   for (const Feature& f : host.features) {
     if (f.kind != FeatureKind::kHole) continue;
     if (std::abs(f.diameter - pin.diameter) > std::max(L, 0.05 * pin.diameter)) continue;
-    const Eigen::Vector3d u = host.X_WP.RotateDirection(f.axis).normalized();
-    if (u.cross(pin.u_W).norm() > std::sin(A)) continue;
-    const Eigen::Vector3d p = host.X_WP * f.origin;
-    if ((p - pin.p_W).cross(pin.u_W).norm() > L) continue;
-    // Overlap along the pin's axis.
-    const double a0 = 0.0, a1 = pin.length;
-    const double b0 = (p - pin.p_W).dot(pin.u_W), b1 = b0 + f.length * u.dot(pin.u_W);
-    if (std::min(a1, std::max(b0, b1)) - std::max(a0, std::min(b0, b1)) > L) return true;
+    const AxisSegment hole{host.X_WP * f.origin, host.X_WP.RotateDirection(f.axis).normalized(),
+                           f.length};
+    if (AngleBetweenLines(hole.direction, pin.u_W) > A) continue;
+    if (DistanceToLine(hole.origin, pin.p_W, pin.u_W) > L) continue;
+    if (AxialOverlap({pin.p_W, pin.u_W, pin.length}, hole) > L) return true;
   }
   return false;
 }
@@ -68,9 +67,7 @@ std::optional<Diagnostic> RingOf(const std::vector<Pin>& ring, std::size_t host,
   if (ring.size() < 3) return std::nullopt;
   const Pin& first = ring.front();
   const Eigen::Vector3d u = first.u_W;
-  const Eigen::Vector3d e =
-      std::abs(u.x()) < 0.6 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
-  const Eigen::Vector3d x = u.cross(e).normalized(), y = u.cross(x);
+  const Eigen::Vector3d x = u.unitOrthogonal(), y = u.cross(x);
   std::vector<Eigen::Vector2d> centres;
   for (const Pin& pin : ring) centres.emplace_back(pin.p_W.dot(x), pin.p_W.dot(y));
   const FittedCircle circle = FitCircle(centres);
@@ -151,7 +148,7 @@ std::vector<Diagnostic> InferPinRingsOfParts(
       Pin pin = pins[k];
       auto same = std::find_if(sets.begin(), sets.end(), [&](const std::vector<Pin>& set) {
         return std::abs(pin.diameter - set.front().diameter) <= L &&
-               pin.u_W.cross(set.front().u_W).norm() <= std::sin(A);
+               AngleBetweenLines(pin.u_W, set.front().u_W) <= A;
       });
       if (same == sets.end()) {
         sets.push_back({pin});

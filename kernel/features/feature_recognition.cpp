@@ -971,9 +971,8 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
   for (std::size_t candidate = 0; candidate < candidates.size(); ++candidate) {
     const Vector3d& axis = candidates[candidate];
     const bool full = prismatic && candidate == 0;
-    const Vector3d e = std::abs(axis.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
-    const Vector3d u = axis.cross(e).normalized();
-    const Vector3d v = axis.cross(u);
+    Vector3d u, v;
+    std::tie(u, v) = Across(axis);
     auto project = [&](const Vector3d& p) { return Vector2d(p.dot(u), p.dot(v)); };
     double t_min = 1e300, t_max = -1e300;
     for (const Vector3d& p : mesh.vertices) {
