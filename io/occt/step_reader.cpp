@@ -19,19 +19,23 @@
 #include <Eigen/SVD>
 #include <GProp_GProps.hxx>
 #include <GeomLib_IsPlanarSurface.hxx>
+#include <Interface_InterfaceModel.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_Printer.hxx>
 #include <OSD.hxx>
 #include <Poly_Triangulation.hxx>
 #include <Precision.hxx>
+#include <STEPCAFControl_ExternFile.hxx>
 #include <STEPCAFControl_Reader.hxx>
+#include <STEPConstruct_ExternRefs.hxx>
 #include <ShapeFix_Face.hxx>
 #include <ShapeFix_Shape.hxx>
 #include <ShapeFix_Solid.hxx>
 #include <ShapeFix_Wire.hxx>
 #include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
+#include <StepBasic_DocumentFile.hxx>
 #include <TDF_LabelSequence.hxx>
 #include <TDataStd_Name.hxx>
 #include <TDocStd_Document.hxx>
@@ -43,6 +47,7 @@
 #include <XCAFDoc_ShapeTool.hxx>
 #include <XSAlgo.hxx>
 #include <XSAlgo_AlgoContainer.hxx>
+#include <XSControl_WorkSession.hxx>
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -1100,6 +1105,34 @@ std::string ReadFailure(IFSelect_ReturnStatus status) {
   }
 }
 
+// The part files that `reader`'s assembly file (`file`) refers to and that gave no shape (a
+// multi-file export, each part in a file of its own, with one missing or damaged), each with
+// its DOCUMENT_FILE entity, where it was looked for (as Open CASCADE's reader does: beside
+// `file`, unless the reference is absolute) and why it gave nothing; sorted.
+std::vector<std::string> UnreadPartFiles(const STEPCAFControl_Reader& reader,
+                                         const std::filesystem::path& file) {
+  const Handle(XSControl_WorkSession) session = reader.Reader().WS();
+  STEPConstruct_ExternRefs references(session);
+  references.LoadExternRefs();
+  std::vector<std::string> unread;
+  for (int i = 1; i <= references.NbExternRefs(); ++i) {
+    const char* name = references.FileName(i);
+    Handle(STEPCAFControl_ExternFile) part;
+    if (name == nullptr || !reader.ExternFile(name, part) || part.IsNull()) continue;
+    if (part->GetLoadStatus() == IFSelect_RetDone && !part->GetLabel().IsNull()) continue;
+    const std::filesystem::path path = file.parent_path() / name;
+    const std::string why = !std::filesystem::exists(path)              ? "no such file"
+                            : part->GetLoadStatus() != IFSelect_RetDone ? "not readable as STEP"
+                                                                        : "it holds no shape";
+    unread.push_back(fmt::format("'{}' (#{} DOCUMENT_FILE; looked for at {}: {})", name,
+                                 session->Model()->Number(references.DocFile(i)),
+                                 path.lexically_normal().string(), why));
+  }
+  std::sort(unread.begin(), unread.end());
+  unread.erase(std::unique(unread.begin(), unread.end()), unread.end());
+  return unread;
+}
+
 // The solids of `file`; `messages` (Open CASCADE's, collected while reading) name the entity
 // at fault when it cannot be read.
 std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
@@ -1122,6 +1155,14 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
     throw std::runtime_error(
         fmt::format("cannot read it as STEP (AP203/AP214): its entities give no shape{}",
                     FirstError(*messages)));
+  }
+  // Parts left out would change the answer unseen (free bolts where the nuts went missing).
+  if (const std::vector<std::string> unread = UnreadPartFiles(reader, file); !unread.empty()) {
+    app->Close(document);
+    throw std::runtime_error(fmt::format(
+        "it refers to part files (an assembly exported one file per part), and {} cannot be "
+        "read: {}",
+        unread.size() == 1 ? "one" : std::to_string(unread.size()), fmt::join(unread, ", ")));
   }
   const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(document->Main());
   TDF_LabelSequence roots;

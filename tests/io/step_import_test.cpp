@@ -287,9 +287,10 @@ std::vector<std::string> PairsUpToNames(const Assembly& a, const Analysis& an) {
   return names;
 }
 
-TEST(StepImport, As1InInchesFlatOrNestedGivesTheSamePairsUpToNames) {
+TEST(StepImport, As1InInchesFlatNestedOrInPartFilesGivesTheSamePairsUpToNames) {
   // The same product as other exporters write it: lengths in inches, a flat compound of
-  // unnamed solids, or the assembly inside three more levels of unnamed assemblies.
+  // unnamed solids, the assembly inside three more levels of unnamed assemblies, or one file
+  // per part beside the assembly's, some parts in inches and the rest in millimetres.
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_variants";
   std::filesystem::create_directories(dir);
   const Assembly original = LoadAssembly(kAs1);
@@ -298,10 +299,22 @@ TEST(StepImport, As1InInchesFlatOrNestedGivesTheSamePairsUpToNames) {
   ASSERT_GT(expected.size(), 20u);
   for (const auto& [variant, name] : {std::pair{testing::StepVariant::kInches, "inches"},
                                       std::pair{testing::StepVariant::kFlat, "flat"},
-                                      std::pair{testing::StepVariant::kNested, "nested"}}) {
+                                      std::pair{testing::StepVariant::kNested, "nested"},
+                                      std::pair{testing::StepVariant::kPartFiles, "parts"}}) {
     SCOPED_TRACE(name);
     const std::filesystem::path file = dir / (std::string(name) + ".stp");
-    testing::WriteStepVariant(kAs1, file, variant);
+    const std::vector<std::string> part_files = testing::WriteStepVariant(kAs1, file, variant);
+    if (variant == testing::StepVariant::kPartFiles) {
+      // Units of their own: the part files alternate, so both units are there.
+      ASSERT_GE(part_files.size(), 2u);
+      const auto has_inches = [&](const std::string& part) {
+        std::ifstream in(dir / part);
+        const std::string text((std::istreambuf_iterator<char>(in)), {});
+        return text.find("CONVERSION_BASED_UNIT('INCH'") != std::string::npos;
+      };
+      EXPECT_TRUE(has_inches(part_files[0]));
+      EXPECT_FALSE(has_inches(part_files[1]));
+    }
     const Assembly a = LoadAssembly(file);
     ASSERT_EQ(a.parts().size(), original.parts().size());
     const Analysis an = Analyze(a);
@@ -315,6 +328,36 @@ TEST(StepImport, As1InInchesFlatOrNestedGivesTheSamePairsUpToNames) {
       EXPECT_EQ(a.part(*plate).features.size(),
                 original.part(*original.FindPart("AS1_PE_ASM.PLATE")).features.size());
     }
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(StepImport, AnAssemblysPartFileThatCannotBeReadIsAnErrorNamingIt) {
+  // A multi-file export with a part file missing, or damaged, would lose parts unseen (the
+  // bolts without their nuts turn free): the import fails, naming the file and its entity.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_parts";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path file = dir / "as1.stp";
+  const std::vector<std::string> parts =
+      testing::WriteStepVariant(kAs1, file, testing::StepVariant::kPartFiles);
+  ASSERT_GE(parts.size(), 3u);
+  std::filesystem::remove(dir / parts[0]);
+  std::ofstream(dir / parts[2]) << "ISO-10303-21;\nHEADER;\n";  // cut short
+  try {
+    LoadAssembly(file);
+    FAIL() << "no error";
+  } catch (const std::exception& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("2 cannot be read"), std::string::npos) << what;
+    EXPECT_NE(what.find("'" + parts[0] + "' (#"), std::string::npos) << what;
+    EXPECT_NE(
+        what.find("DOCUMENT_FILE; looked for at " + (dir / parts[0]).string() + ": no such file)"),
+        std::string::npos)
+        << what;
+    EXPECT_NE(what.find((dir / parts[2]).string() + ": not readable as STEP)"), std::string::npos)
+        << what;
+    EXPECT_EQ(what.find(parts[1]), std::string::npos) << what;
   }
   std::filesystem::remove_all(dir);
 }

@@ -35,10 +35,13 @@
 #include <XCAFDoc_ShapeTool.hxx>
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <gp_Ax2.hxx>
 #include <gp_Trsf.hxx>
 #include <gp_Vec.hxx>
+#include <map>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "kernel/features/involute_gear.h"
@@ -360,10 +363,55 @@ Handle(TDocStd_Document)
   return document;
 }
 
+// Writes `document` as an assembly file `out` whose products are each in a file of their own
+// beside it, every other one (by name) in inches; returns the part files' names.
+std::vector<std::string> WritePartFiles(const Handle(TDocStd_Document) & document,
+                                        const std::filesystem::path& out) {
+  // Written twice, in each unit, into directories of their own (the writer names the part
+  // files after their shapes); then the references lose the directories, as exporters write
+  // them, and the files are taken from either.
+  const std::filesystem::path dir = out.parent_path();
+  std::map<std::string, std::filesystem::path> written;  // unit -> directory
+  for (const char* unit : {"MM", "INCH"}) {
+    const std::filesystem::path into = dir / (out.stem().string() + "_" + unit);
+    std::filesystem::create_directories(into);
+    Interface_Static::SetCVal("write.step.unit", unit);
+    STEPCAFControl_Writer writer;
+    writer.SetNameMode(true);
+    const std::string prefix = into.string() + "/";
+    const bool ok = writer.Transfer(document, STEPControl_AsIs, prefix.c_str()) &&
+                    writer.Write((into / out.filename()).string().c_str()) == IFSelect_RetDone;
+    Interface_Static::SetCVal("write.step.unit", "MM");
+    if (!ok) throw std::runtime_error("cannot write " + (into / out.filename()).string());
+    written[unit] = into;
+  }
+  std::vector<std::string> parts;
+  for (const auto& entry : std::filesystem::directory_iterator(written["MM"])) {
+    if (entry.path().filename() != out.filename()) parts.push_back(entry.path().filename());
+  }
+  std::sort(parts.begin(), parts.end());
+  auto copy_bare = [&](const std::filesystem::path& from, const std::filesystem::path& to) {
+    std::ifstream in(from, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (const auto& [unit, into] : written) {
+      const std::string prefix = into.string() + "/";
+      for (std::size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix))
+        text.erase(at, prefix.size());
+    }
+    std::ofstream(to, std::ios::binary) << text;
+  };
+  copy_bare(written["MM"] / out.filename(), out);
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    copy_bare(written[k % 2 == 0 ? "INCH" : "MM"] / parts[k], dir / parts[k]);
+  }
+  for (const auto& [unit, into] : written) std::filesystem::remove_all(into);
+  return parts;
+}
+
 }  // namespace
 
-void WriteStepVariant(const std::filesystem::path& in, const std::filesystem::path& out,
-                      StepVariant variant) {
+std::vector<std::string> WriteStepVariant(const std::filesystem::path& in,
+                                          const std::filesystem::path& out, StepVariant variant) {
   const Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
   const Handle(TDocStd_Document) document = ReadXcaf(in, app);
   const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(document->Main());
@@ -374,7 +422,11 @@ void WriteStepVariant(const std::filesystem::path& in, const std::filesystem::pa
   builder.MakeCompound(all);
   for (int i = 1; i <= roots.Length(); ++i) builder.Add(all, tool->GetShape(roots(i)));
   bool written = false;
-  if (variant == StepVariant::kInches) {
+  std::vector<std::string> part_files;
+  if (variant == StepVariant::kPartFiles) {
+    part_files = WritePartFiles(document, out);
+    written = true;
+  } else if (variant == StepVariant::kInches) {
     Interface_Static::SetCVal("write.step.unit", "INCH");
     STEPCAFControl_Writer writer;
     writer.SetNameMode(true);
@@ -406,6 +458,7 @@ void WriteStepVariant(const std::filesystem::path& in, const std::filesystem::pa
   }
   app->Close(document);
   if (!written) throw std::runtime_error("cannot write " + out.string());
+  return part_files;
 }
 
 void WriteNurbsCopy(const std::filesystem::path& in, const std::filesystem::path& out) {

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace mechanist::testing {
 
@@ -99,12 +101,17 @@ enum class StepVariant {
   kInches,  ///< the product structure and names kept, lengths in inches
   kFlat,    ///< one compound of the solids in their places: no structure, no names
   kNested,  ///< the whole assembly three levels deeper, in unnamed assemblies
+  /// the assembly's structure in `out`, each product's shape in a file of its own beside it
+  /// (external references by bare file name); every other part file, by name, in inches, the
+  /// rest and `out` in millimetres: parts that carry their own units
+  kPartFiles,
 };
 
 /// Copies the STEP assembly `in` to `out` written as `variant` says (Open CASCADE's XCAF
-/// reader and writer). Throws std::runtime_error when it cannot read or write.
-void WriteStepVariant(const std::filesystem::path& in, const std::filesystem::path& out,
-                      StepVariant variant);
+/// reader and writer; kPartFiles writes more files beside `out`, and returns their names).
+/// Throws std::runtime_error when it cannot read or write.
+std::vector<std::string> WriteStepVariant(const std::filesystem::path& in,
+                                          const std::filesystem::path& out, StepVariant variant);
 
 /// Copies the STEP assembly `in` to `out` with every surface of every solid converted to a
 /// B-spline (Open CASCADE's BRepBuilderAPI_NurbsConvert), keeping the product structure and
