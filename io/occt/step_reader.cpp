@@ -19,6 +19,7 @@
 #include <Eigen/SVD>
 #include <GProp_GProps.hxx>
 #include <GeomLib_IsPlanarSurface.hxx>
+#include <IMeshData_Status.hxx>
 #include <Interface_InterfaceModel.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
@@ -62,6 +63,7 @@
 #include <tuple>
 
 #include "kernel/geometry/circle_fit.h"
+#include "kernel/mesh/mesh_check.h"
 #include "kernel/support/number_format.h"
 #include "kernel/support/parallel_for.h"
 
@@ -513,14 +515,29 @@ std::vector<Feature> PinRings(std::vector<Pin> pins, double tolerance) {
   return rings;
 }
 
-// The mesh and features of one solid in its product's frame, and notes on the faces that give
-// no feature.
-void ConvertSolid(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>* features,
-                  std::vector<std::string>* notes) {
+// The length of `solid`'s bounding box's diagonal, mm (1 for an empty solid).
+double SizeOf(const TopoDS_Shape& solid) {
   Bnd_Box box;
   BRepBndLib::Add(solid, box);
-  const double size = box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());
-  BRepMesh_IncrementalMesh(solid, std::max(0.01, 1e-3 * size), false, 0.3, false);
+  return box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());
+}
+
+// Meshes the faces of `solid` (within 1/1000 of its size) and tells whether the mesher found
+// none of the defects healing repairs: open, self-intersecting or misoriented wires, faces it
+// could not mesh.
+bool MeshedCleanly(const TopoDS_Shape& solid) {
+  const BRepMesh_IncrementalMesh mesher(solid, std::max(0.01, 1e-3 * SizeOf(solid)), false, 0.3,
+                                        false);
+  constexpr int kDefects = IMeshData_OpenWire | IMeshData_SelfIntersectingWire | IMeshData_Failure |
+                           IMeshData_UnorientedWire | IMeshData_TooFewPoints;
+  return (mesher.GetStatusFlags() & kDefects) == 0;
+}
+
+// The mesh and features of one solid, meshed (MeshedCleanly), in its product's frame, and
+// notes on the faces that give no feature.
+void ConvertSolid(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>* features,
+                  std::vector<std::string>* notes) {
+  const double size = SizeOf(solid);
   std::vector<Cylinder> cylinders;
   std::vector<Cone> cones;
   std::vector<Sphere> spheres;
@@ -974,13 +991,27 @@ class HealingDeferred {
 
 // `solid` healed as Open CASCADE's reader heals what it reads by default (XSAlgo_AlgoContainer::
 // ProcessShape without a resource file: ShapeFix_Shape, same-parameter fixes of wires off, no
-// open solids made).
-TopoDS_Shape HealedSolid(const TopoDS_Shape& solid, const Healing& healing) {
+// open solids made); unless `thorough`, without the checks that only a damaged solid needs and
+// that take half of healing's time (on the robot hand): of the orientation of wires, faces,
+// shells and the solid, and of edges that intersect. The mesh tells when they were needed
+// (ConvertAll).
+TopoDS_Shape HealedSolid(const TopoDS_Shape& solid, const Healing& healing, bool thorough) {
   Handle(ShapeFix_Shape) fix = new ShapeFix_Shape(solid);
   fix->SetPrecision(healing.precision);
   fix->SetMaxTolerance(healing.max_tolerance);
-  fix->FixFaceTool()->FixWireTool()->FixSameParameterMode() = Standard_False;
+  const Handle(ShapeFix_Face) faces = fix->FixFaceTool();
+  const Handle(ShapeFix_Wire) wires = faces->FixWireTool();
+  wires->FixSameParameterMode() = Standard_False;
   fix->FixSolidTool()->CreateOpenSolidMode() = Standard_False;
+  if (!thorough) {
+    fix->FixSolidTool()->FixShellOrientationMode() = 0;
+    fix->FixShellTool()->FixOrientationMode() = 0;
+    faces->FixOrientationMode() = 0;
+    wires->FixSelfIntersectionMode() = 0;
+    wires->FixSelfIntersectingEdgeMode() = 0;
+    wires->FixIntersectingEdgesMode() = 0;
+    wires->FixNonAdjacentIntersectingEdgesMode() = 0;
+  }
   fix->Perform();
   return fix->Shape().IsNull() ? solid : fix->Shape();
 }
@@ -1047,11 +1078,27 @@ class Walker {
   void ConvertAll(const DeferredHealing& healing, std::vector<StepMessage>* messages) {
     ParallelFor(definitions_.size(), [&](std::size_t d) {
       Definition& definition = definitions_[d];
-      const ThreadMessages redirect(&definition.messages);
       const AlternateSignalStack stack;
       OCC_CATCH_SIGNALS
-      const TopoDS_Shape healed = HealedSolid(definition.solid, healing.Of(definition.solid));
-      ConvertSolid(healed, definition.mesh.get(), &definition.features, &definition.notes);
+      // Healed quickly, then thoroughly when the mesh shows a defect that the checks left out
+      // would have repaired: the mesher's, two faces running along an edge the same way (a
+      // face turned over), or the solid inside out.
+      for (const bool thorough : {false, true}) {
+        definition.messages.clear();
+        const ThreadMessages redirect(&definition.messages);
+        *definition.mesh = TriangleMesh();
+        definition.features.clear();
+        definition.notes.clear();
+        const TopoDS_Shape healed =
+            HealedSolid(definition.solid, healing.Of(definition.solid), thorough);
+        const bool clean = MeshedCleanly(healed);
+        ConvertSolid(healed, definition.mesh.get(), &definition.features, &definition.notes);
+        const MeshCheck check = CheckMesh(*definition.mesh);
+        if (thorough || (clean && check.consistently_oriented() && check.signed_volume > 0)) {
+          break;
+        }
+        BRepTools::Clean(definition.solid);  // the first try's face meshes
+      }
     });
     for (const Definition& definition : definitions_) {
       messages->insert(messages->end(), definition.messages.begin(), definition.messages.end());

@@ -740,6 +740,32 @@ TEST(StepImport, ACallersCrashHandlerGivesWayWhileOpenCascadeReadsAndComesBackAf
   std::filesystem::remove_all(dir);
 }
 
+TEST(StepImport, AFaceTurnedOverOrASolidInsideOutIsHealedAsTheReaderWould) {
+  // Healing first leaves out the orientation checks; the mesh shows when they were needed
+  // (two faces running along an edge the same way, a negative volume), and the solid is then
+  // healed thoroughly: each box comes out as the sound one, outward, 6000 mm^3, its faces
+  // facing out.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_boxes";
+  std::filesystem::create_directories(dir);
+  testing::WriteMisorientedBoxesStep(dir / "boxes.step");
+  const std::vector<StepSolid> solids = ReadStep(dir / "boxes.step");
+  ASSERT_EQ(solids.size(), 3u);
+  for (std::size_t k = 0; k < solids.size(); ++k) {
+    SCOPED_TRACE(k);
+    const MeshCheck check = CheckMesh(*solids[k].mesh);
+    EXPECT_TRUE(check.ok()) << ::testing::PrintToString(check.Problems());
+    EXPECT_NEAR(check.signed_volume, 6000, 1e-6);
+    ASSERT_EQ(solids[k].features.size(), 6u);
+    for (const Feature& f : solids[k].features) {
+      EXPECT_EQ(f.kind, FeatureKind::kFace) << f.id;
+      // Outward: from the box's centre towards the face.
+      const Eigen::Vector3d centre(50.0 * k + 5, 10, 15);
+      EXPECT_GT(f.axis.dot(f.origin - centre), 0) << f.id;
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(StepImport, ConesAreNamedInNotesAndSpheresAreBalls) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_cones";
   std::filesystem::create_directories(dir);

@@ -1,6 +1,7 @@
 // Test fixtures built with Open CASCADE: the only test translation unit that includes it.
 #include "io/occt/step_fixtures.h"
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -29,7 +30,10 @@
 #include <TDF_LabelSequence.hxx>
 #include <TDocStd_Document.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Solid.hxx>
 #include <XCAFApp_Application.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
@@ -343,6 +347,28 @@ void WriteRackAndPinionStep(const std::filesystem::path& file, int pinion_teeth,
   builder.MakeCompound(all);
   builder.Add(all, rack);
   builder.Add(all, pinion);
+  WriteStep(all, file);
+}
+
+void WriteMisorientedBoxesStep(const std::filesystem::path& file) {
+  BRep_Builder builder;
+  TopoDS_Compound all;
+  builder.MakeCompound(all);
+  for (int k = 0; k < 3; ++k) {
+    const TopoDS_Shape box = BRepPrimAPI_MakeBox(gp_Pnt(50.0 * k, 0, 0), 10, 20, 30).Shape();
+    TopoDS_Shell shell;
+    builder.MakeShell(shell);
+    for (TopExp_Explorer e(box, TopAbs_FACE); e.More(); e.Next()) {
+      const TopoDS_Face& face = TopoDS::Face(e.Current());
+      const bool top = BRepAdaptor_Surface(face).Plane().Location().Z() > 29.9 &&
+                       std::abs(BRepAdaptor_Surface(face).Plane().Axis().Direction().Z()) > 0.5;
+      builder.Add(shell, (k == 1 && top) || k == 2 ? face.Reversed() : TopoDS_Shape(face));
+    }
+    TopoDS_Solid solid;
+    builder.MakeSolid(solid);
+    builder.Add(solid, shell);
+    builder.Add(all, solid);
+  }
   WriteStep(all, file);
 }
 

@@ -96,6 +96,12 @@ void WriteRollerBearingStep(const std::filesystem::path& file);
 /// own. Throws std::runtime_error when it cannot write.
 void WriteNeedleBearingStep(const std::filesystem::path& file);
 
+/// Writes a STEP file (AP214, no product names) of three 10 x 20 x 30 mm boxes as damaged
+/// exports hold them, each its own solid, corners at x = 0, 50 and 100 (y = z = 0): a sound
+/// one; one whose top face (z = 30) is turned over in its shell; one inside out (its shell's
+/// faces all turned inwards). Throws std::runtime_error when it cannot write.
+void WriteMisorientedBoxesStep(const std::filesystem::path& file);
+
 /// How WriteStepVariant rewrites an assembly, as other exporters would write the same product.
 enum class StepVariant {
   kInches,  ///< the product structure and names kept, lengths in inches
