@@ -287,10 +287,11 @@ std::vector<std::string> PairsUpToNames(const Assembly& a, const Analysis& an) {
   return names;
 }
 
-TEST(StepImport, As1InInchesFlatNestedOrInPartFilesGivesTheSamePairsUpToNames) {
+TEST(StepImport, As1InInchesFlatNestedInPartFilesOrMixedUnitsGivesTheSamePairsUpToNames) {
   // The same product as other exporters write it: lengths in inches, a flat compound of
-  // unnamed solids, the assembly inside three more levels of unnamed assemblies, or one file
-  // per part beside the assembly's, some parts in inches and the rest in millimetres.
+  // unnamed solids, the assembly inside three more levels of unnamed assemblies, one file per
+  // part beside the assembly's, some parts in inches and the rest in millimetres, or one file
+  // in which some solids' representations declare inches and the rest millimetres.
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_variants";
   std::filesystem::create_directories(dir);
   const Assembly original = LoadAssembly(kAs1);
@@ -300,10 +301,16 @@ TEST(StepImport, As1InInchesFlatNestedOrInPartFilesGivesTheSamePairsUpToNames) {
   for (const auto& [variant, name] : {std::pair{testing::StepVariant::kInches, "inches"},
                                       std::pair{testing::StepVariant::kFlat, "flat"},
                                       std::pair{testing::StepVariant::kNested, "nested"},
-                                      std::pair{testing::StepVariant::kPartFiles, "parts"}}) {
+                                      std::pair{testing::StepVariant::kPartFiles, "parts"},
+                                      std::pair{testing::StepVariant::kMixedUnits, "mixed"}}) {
     SCOPED_TRACE(name);
     const std::filesystem::path file = dir / (std::string(name) + ".stp");
     const std::vector<std::string> part_files = testing::WriteStepVariant(kAs1, file, variant);
+    if (variant == testing::StepVariant::kMixedUnits) {
+      std::ifstream in(file);
+      const std::string text((std::istreambuf_iterator<char>(in)), {});
+      EXPECT_NE(text.find("CONVERSION_BASED_UNIT('INCH'"), std::string::npos);
+    }
     if (variant == testing::StepVariant::kPartFiles) {
       // Units of their own: the part files alternate, so both units are there.
       ASSERT_GE(part_files.size(), 2u);

@@ -38,12 +38,16 @@
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
+#include <functional>
 #include <gp_Ax2.hxx>
 #include <gp_Trsf.hxx>
 #include <gp_Vec.hxx>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -389,6 +393,156 @@ Handle(TDocStd_Document)
   return document;
 }
 
+// The entities of the STEP text `text` as written (lines joined): their numbers, types and
+// the text after "#n = " up to the closing ';'; and the text before and after them.
+struct StepText {
+  std::string head, tail;
+  std::map<int, std::string> entities;
+};
+
+StepText ParseStepText(const std::string& text) {
+  StepText t;
+  const std::size_t data = text.find("DATA;");
+  const std::size_t end = text.find("ENDSEC;", data);
+  if (data == std::string::npos || end == std::string::npos) {
+    throw std::runtime_error("no DATA section");
+  }
+  t.head = text.substr(0, data + 5);
+  t.tail = text.substr(end);
+  std::string body = text.substr(data + 5, end - data - 5);
+  std::erase(body, '\n');
+  std::erase(body, '\r');
+  for (std::size_t at = body.find('#'); at != std::string::npos;) {
+    const std::size_t eq = body.find('=', at), semi = body.find(';', at);
+    const int id = std::stoi(body.substr(at + 1, eq - at - 1));
+    std::size_t from = eq + 1;
+    while (body[from] == ' ') ++from;
+    t.entities[id] = body.substr(from, semi - from);
+    at = body.find('#', semi);
+  }
+  return t;
+}
+
+// The entity numbers `text` refers to.
+std::vector<int> References(const std::string& text) {
+  std::vector<int> ids;
+  for (std::size_t at = text.find('#'); at != std::string::npos; at = text.find('#', at + 1)) {
+    ids.push_back(std::stoi(text.substr(at + 1)));
+  }
+  return ids;
+}
+
+// `text` (an entity's arguments) with its real numbers whose position `scaled(k)` accepts
+// (k counting the real numbers from 0) divided by `factor`.
+std::string Rescaled(const std::string& text, double factor,
+                     const std::function<bool(int)>& scaled) {
+  std::string out;
+  int k = 0;
+  for (std::size_t i = 0; i < text.size();) {
+    const bool starts_number =
+        (std::isdigit(static_cast<unsigned char>(text[i])) || text[i] == '-') && i > 0 &&
+        (text[i - 1] == '(' || text[i - 1] == ',');
+    if (!starts_number) {
+      out += text[i++];
+      continue;
+    }
+    std::size_t length = 0;
+    const double value = std::stod(text.substr(i), &length);
+    const std::string number = text.substr(i, length);
+    i += length;
+    if (number.find_first_of(".E") == std::string::npos || !scaled(k++)) {
+      out += number;  // an integer (a degree, a count) or a real left as it is
+      continue;
+    }
+    char written[64];
+    std::snprintf(written, sizeof written, "%.17G", value / factor);
+    std::string r = written;
+    if (r.find('.') == std::string::npos) {
+      const std::size_t e = r.find('E');
+      r.insert(e == std::string::npos ? r.size() : e, ".");
+    }
+    out += r;
+  }
+  return out;
+}
+
+// Rewrites the single STEP file `file` (written by Open CASCADE in millimetres, without curves
+// on surfaces) so that every other solid's shape representation declares inches and holds its
+// lengths in inches. Throws std::runtime_error on an entity whose lengths it does not know.
+void DeclareInchesInEveryOtherSolid(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  StepText t = ParseStepText(
+      std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
+  in.close();
+  auto type_of = [&](int id) { return t.entities.at(id).substr(0, t.entities.at(id).find('(')); };
+  std::vector<int> solids;
+  for (const auto& [id, text] : t.entities) {
+    if (text.rfind("ADVANCED_BREP_SHAPE_REPRESENTATION(", 0) == 0) solids.push_back(id);
+  }
+  // Which real arguments are lengths, by entity type (directions and angles are not).
+  const std::map<std::string, std::function<bool(int)>> lengths = {
+      {"CARTESIAN_POINT", [](int) { return true; }},
+      {"VECTOR", [](int) { return true; }},
+      {"CIRCLE", [](int) { return true; }},
+      {"CYLINDRICAL_SURFACE", [](int) { return true; }},
+      {"SPHERICAL_SURFACE", [](int) { return true; }},
+      {"TOROIDAL_SURFACE", [](int) { return true; }},
+      {"CONICAL_SURFACE", [](int k) { return k == 0; }}};
+  int next = t.entities.rbegin()->first + 1;
+  std::set<int> done;
+  for (std::size_t k = 0; k < solids.size(); k += 2) {
+    std::string& representation = t.entities[solids[k]];
+    const int context = References(representation).back();
+    // Its geometry, everything it refers to short of its context, in inches.
+    std::vector<int> stack = References(representation);
+    stack.pop_back();
+    while (!stack.empty()) {
+      const int id = stack.back();
+      stack.pop_back();
+      if (!done.insert(id).second) continue;
+      std::string& text = t.entities.at(id);
+      for (const int r : References(text)) stack.push_back(r);
+      const std::string type = type_of(id);
+      const auto known = lengths.find(type);
+      if (known != lengths.end()) {
+        text = Rescaled(text, 25.4, known->second);
+      } else if (type != "DIRECTION") {
+        int reals = 0;
+        Rescaled(text, 1.0, [&](int) { return ++reals, false; });
+        if (reals > 0) throw std::runtime_error("cannot rewrite the lengths of " + type);
+      }
+    }
+    // Its own context, the length unit an inch.
+    // Whatever else lies in that context must be that geometry too.
+    for (const auto& [id, text] : t.entities) {
+      std::vector<int> refers = References(text);
+      if (id == solids[k] || std::find(refers.begin(), refers.end(), context) == refers.end()) {
+        continue;
+      }
+      std::erase(refers, context);
+      if (!std::all_of(refers.begin(), refers.end(), [&](int r) { return done.count(r) > 0; })) {
+        throw std::runtime_error("a representation context shared with other items");
+      }
+    }
+    std::string& units = t.entities.at(context);
+    const std::size_t list = units.find("GLOBAL_UNIT_ASSIGNED_CONTEXT((");
+    if (list == std::string::npos) throw std::runtime_error("no units in a context");
+    const std::size_t mm = units.find('#', list);
+    const int millimetre = std::stoi(units.substr(mm + 1));
+    units.replace(mm, units.find(',', mm) - mm, "#" + std::to_string(next));
+    t.entities[next] = "( CONVERSION_BASED_UNIT('INCH',#" + std::to_string(next + 1) +
+                       ") LENGTH_UNIT() NAMED_UNIT(#" + std::to_string(next + 2) + ") )";
+    t.entities[next + 1] =
+        "LENGTH_MEASURE_WITH_UNIT(LENGTH_MEASURE(25.4),#" + std::to_string(millimetre) + ")";
+    t.entities[next + 2] = "DIMENSIONAL_EXPONENTS(1.,0.,0.,0.,0.,0.,0.)";
+    next += 3;
+  }
+  std::ofstream out(file, std::ios::binary);
+  out << t.head << "\n";
+  for (const auto& [id, text] : t.entities) out << "#" << id << " = " << text << ";\n";
+  out << t.tail;
+}
+
 // Writes `document` as an assembly file `out` whose products are each in a file of their own
 // beside it, every other one (by name) in inches; returns the part files' names.
 std::vector<std::string> WritePartFiles(const Handle(TDocStd_Document) & document,
@@ -452,6 +606,18 @@ std::vector<std::string> WriteStepVariant(const std::filesystem::path& in,
   if (variant == StepVariant::kPartFiles) {
     part_files = WritePartFiles(document, out);
     written = true;
+  } else if (variant == StepVariant::kMixedUnits) {
+    Interface_Static::SetIVal("write.surfacecurve.mode", 0);  // only 3D geometry to rewrite
+    STEPCAFControl_Writer writer;
+    writer.SetNameMode(true);
+    // No colours, layers or validation properties: their lengths would stay in millimetres.
+    writer.SetColorMode(false);
+    writer.SetLayerMode(false);
+    writer.SetPropsMode(false);
+    written = writer.Transfer(document, STEPControl_AsIs) &&
+              writer.Write(out.string().c_str()) == IFSelect_RetDone;
+    Interface_Static::SetIVal("write.surfacecurve.mode", 1);
+    if (written) DeclareInchesInEveryOtherSolid(out);
   } else if (variant == StepVariant::kInches) {
     Interface_Static::SetCVal("write.step.unit", "INCH");
     STEPCAFControl_Writer writer;

@@ -111,6 +111,10 @@ enum class StepVariant {
   /// (external references by bare file name); every other part file, by name, in inches, the
   /// rest and `out` in millimetres: parts that carry their own units
   kPartFiles,
+  /// one file in millimetres whose every other solid's shape representation (by entity
+  /// number) declares inches, its lengths rewritten in inches: parts that carry their own
+  /// units in one file (Open CASCADE's writer gives one unit per file; this rewrites its text)
+  kMixedUnits,
 };
 
 /// Copies the STEP assembly `in` to `out` written as `variant` says (Open CASCADE's XCAF
