@@ -88,10 +88,14 @@ std::string FeatureJson(const std::vector<FeatureReportEntry>& entries) {
       if (f.kind == FeatureKind::kGear) {
         j["teeth"] = f.teeth;
         j["internal"] = f.internal;
+        if (f.helix_angle != 0.0) j["helix_angle"] = Num(f.helix_angle * 180.0 / std::numbers::pi);
       }
       if (f.kind == FeatureKind::kBevelGear) {
         j["teeth"] = f.teeth;
         j["pitch_angle"] = Num(f.pitch_angle * 180.0 / std::numbers::pi);
+        if (f.spiral_angle != 0.0) {
+          j["spiral_angle"] = Num(f.spiral_angle * 180.0 / std::numbers::pi);
+        }
       }
       if (f.kind == FeatureKind::kGear || f.kind == FeatureKind::kBevelGear ||
           f.kind == FeatureKind::kRack) {

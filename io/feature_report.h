@@ -30,8 +30,9 @@ std::vector<FeatureReportEntry> RecogniseAssemblyFeatures(const Assembly& assemb
 void WriteFeatureReport(const std::vector<FeatureReportEntry>& entries, std::ostream& out);
 
 /// {"parts": [{"part", "axis", "used", "features": [{"id", "kind", "origin", "axis", "length",
-/// "diameter", "teeth", "module", "internal", "normal", "fit_error", "detail"}], "notes"}]};
-/// world coordinates, mm.
+/// "diameter", "teeth", "module", "internal", "helix_angle", "pitch_angle", "spiral_angle",
+/// "normal", "fit_error", "detail"}], "notes"}]}; world coordinates, mm, angles in degrees
+/// (a helix or spiral angle only when not 0).
 std::string FeatureJson(const std::vector<FeatureReportEntry>& entries);
 
 }  // namespace mechanist

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -575,6 +576,7 @@ std::optional<RecognizedFeature> SectionGear(const TriangleMesh& mesh, const Vec
 struct BevelSection {
   int teeth = 0;
   double tip = 0.0, root = 0.0;  // mm: the largest and smallest of the largest radius
+  double phase = 0.0;            // of the teeth's harmonic (HarmonicPhase)
 };
 
 std::optional<BevelSection> BevelTeethOfSection(const Outline& o, const Vector2d& centre) {
@@ -592,16 +594,51 @@ std::optional<BevelSection> BevelTeethOfSection(const Outline& o, const Vector2d
       SelfMismatch(r, static_cast<int>(std::lround(kBins / double(z)))) >= 0.05) {
     return std::nullopt;
   }
-  return BevelSection{z, *hi, *lo};
+  return BevelSection{z, *hi, *lo, HarmonicPhase(r, z)};
 }
 
-// A straight bevel gear about `axis`: sections across it show the same teeth, whose tip and
-// root radii shrink along lines toward one apex (the gear's tip and root cones). As for a spur
-// gear, the pitch line lies a 2.25th of the tooth depth below the tip (addendum m, dedendum
-// 1.25 m, measured in any section across the axis); it meets the axis at the apex, at the pitch
-// angle d = atan(dr / dh). The teeth end at the heel, farthest from the apex, where the pitch
-// radius is m z / 2: the module there, rounded to ISO 54 (within 3%), with a tooth depth there
-// of 2.25 m (radial) down to 2.25 m cos(pitch angle) (teeth on the back cone), within 15%.
+// The spiral angle, radians, of a bevel gear's teeth at the middle of its face, from their
+// angular position theta = -phase / z in sections at heights `ts` along the axis (neighbours
+// turned by less than half a tooth), pitch angle `d`, apex at height `apex`, pitch radius
+// r(t) = `slope` |t - apex|. On the pitch cone (r = s sin d at cone distance s, s = |t - apex|
+// / cos d) a tooth trace at spiral angle psi turns by dtheta = tan(psi) ds / r, so tan(psi) =
+// r cos(d) dtheta/dt, with dtheta/dt the slope at the face's middle of a cubic fitted to
+// theta(t) (a constant-angle spiral turns as the logarithm of s, whose third-order term a
+// parabola's slope would take in: +0.2 degree at 35 over a face of a third of the cone).
+// Positive, a right-hand spiral, when theta grows about the axis away from the apex (either
+// way along the axis: turning both ways over, it keeps its sign). Nothing when the teeth
+// follow no smooth spiral (off the cubic by a tenth of a tooth).
+std::optional<double> SpiralAngle(const std::vector<double>& ts, const std::vector<double>& phases,
+                                  int z, double d, double apex, double slope) {
+  std::vector<double> thetas;
+  for (std::size_t i = 0; i < phases.size(); ++i) {
+    const double at = -phases[i] / z;
+    thetas.push_back(
+        i == 0 ? at : thetas.back() + std::remainder(at - (-phases[i - 1] / z), 2 * kPi / z));
+  }
+  const double middle = (ts.front() + ts.back()) / 2;
+  Eigen::MatrixXd a(ts.size(), 4);
+  Eigen::VectorXd b(ts.size());
+  for (std::size_t i = 0; i < ts.size(); ++i) {
+    const double x = ts[i] - middle;
+    a.row(static_cast<Eigen::Index>(i)) << 1.0, x, x * x, x * x * x;
+    b[static_cast<Eigen::Index>(i)] = thetas[i];
+  }
+  const Eigen::Vector4d c = a.colPivHouseholderQr().solve(b);
+  if ((a * c - b).cwiseAbs().maxCoeff() > 0.1 * 2 * kPi / z) return std::nullopt;
+  const double radius = slope * std::abs(middle - apex);
+  const double psi = std::atan(radius * std::cos(d) * c[1]);
+  return std::abs(psi) < 0.25 * kPi / 180 ? 0.0 : psi;  // a straight gear's sections barely turn
+}
+
+// A straight or spiral bevel gear about `axis`: sections across it show the same teeth, whose
+// tip and root radii shrink along lines toward one apex (the gear's tip and root cones). As for
+// a spur gear, the pitch line lies a 2.25th of the tooth depth below the tip (addendum m,
+// dedendum 1.25 m, measured in any section across the axis); it meets the axis at the apex, at
+// the pitch angle d = atan(dr / dh). The teeth end at the heel, farthest from the apex, where
+// the pitch radius is m z / 2: the module there, rounded to ISO 54 (within 3%), with a tooth
+// depth there of 2.25 m (radial) down to 2.25 m cos(pitch angle) (teeth on the back cone),
+// within 15%. The spiral angle (SpiralAngle) from the teeth's turn along the axis.
 std::optional<RecognizedFeature> SectionBevelGear(const TriangleMesh& mesh, const Vector3d& axis) {
   const AxisFrame frame = FrameAbout(mesh, axis);
   const Vector3d &u = frame.u, &v = frame.v;
@@ -642,11 +679,12 @@ std::optional<RecognizedFeature> SectionBevelGear(const TriangleMesh& mesh, cons
   if (count < 5) return std::nullopt;
   const int z = sections[first]->teeth;
   // Tip and root radius as lines in the height: r = a + b t, by least squares.
-  std::vector<double> ts, tips, roots;
+  std::vector<double> ts, tips, roots, phases;
   for (int i = first; i < first + count; ++i) {
     ts.push_back(t_min + (i + 0.5013) * step);
     tips.push_back(sections[i]->tip);
     roots.push_back(sections[i]->root);
+    phases.push_back(sections[i]->phase);
   }
   const auto line = [&](const std::vector<double>& r) {
     const double n = static_cast<double>(ts.size());
@@ -706,12 +744,20 @@ std::optional<RecognizedFeature> SectionBevelGear(const TriangleMesh& mesh, cons
   f.module = *m;
   f.pitch_angle = angle;
   f.length = count * step / std::cos(angle);  // the face width along the pitch line
+  const std::optional<double> spiral = SpiralAngle(ts, phases, z, angle, apex, std::abs(pitch_b));
+  f.spiral_angle = spiral.value_or(0.0);
   g.fit_error = std::abs(raw_module - *m) * z / 2;
+  const std::string kind =
+      !spiral ? "bevel gear (its teeth follow no smooth spiral: taken as straight)"
+      : *spiral == 0.0
+          ? "straight bevel gear"
+          : fmt::format("spiral bevel gear (spiral angle {} deg at the face's middle, {} hand)",
+                        FormatNumber(std::abs(*spiral) * 180 / kPi, 3),
+                        *spiral > 0 ? "right" : "left");
   g.detail = fmt::format(
-      "straight bevel gear from {} sections across the axis, {} teeth, tip and root radii "
-      "shrinking toward one apex: pitch angle {} deg, pitch radius {} at the heel, module {} "
-      "(ISO 54; measured {})",
-      count, z, FormatNumber(angle * 180 / kPi, 4), Mm(heel_radius), FormatNumber(*m),
+      "{} from {} sections across the axis, {} teeth, tip and root radii shrinking toward one "
+      "apex: pitch angle {} deg, pitch radius {} at the heel, module {} (ISO 54; measured {})",
+      kind, count, z, FormatNumber(angle * 180 / kPi, 4), Mm(heel_radius), FormatNumber(*m),
       FormatNumber(raw_module, 5));
   return g;
 }

@@ -517,6 +517,52 @@ TEST(StepImport, StraightBevelGearsFromStepSolidsMeshAtRightAngles) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(StepImport, SpiralBevelGearsFromStepSolidsMeshWithOppositeHands) {
+  // The 15- and 30-tooth bevel pair with teeth at a 35 degree spiral angle, right hand on the
+  // pinion and left on the gear (built as such: the oracle): each measured at 35 degrees with
+  // its hand, and their bevel_gear pair at -1/2. Both right-handed, they are no pair: a near
+  // miss names the spiral.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_spiral";
+  std::filesystem::create_directories(dir);
+  const double kDeg = std::numbers::pi / 180;
+  testing::WriteBevelGearPairStep(dir / "spiral.step", 15, 30, 2.0, 35 * kDeg, -35 * kDeg);
+  const Assembly a = LoadAssembly(dir / "spiral.step");
+  ASSERT_EQ(a.parts().size(), 3u);
+  const std::array<int, 2> teeth = {15, 30};
+  const std::array<double, 2> spiral = {35 * kDeg, -35 * kDeg};
+  for (std::size_t p = 0; p < 2; ++p) {
+    const Feature* gear = nullptr;
+    for (const Feature& f : a.part(p).features) {
+      if (f.kind == FeatureKind::kBevelGear) gear = &f;
+    }
+    ASSERT_NE(gear, nullptr) << ::testing::PrintToString(a.part(p).notes);
+    EXPECT_EQ(gear->teeth, teeth[p]);
+    EXPECT_EQ(gear->module, 2.0);
+    EXPECT_NEAR(gear->pitch_angle, std::atan2(teeth[p], teeth[1 - p]), 0.05 * kDeg);
+    EXPECT_NEAR(gear->spiral_angle, spiral[p], 0.25 * kDeg);
+  }
+  // `mechanist features --json` gives the spiral angle, in degrees.
+  const std::string json = FeatureJson(RecogniseAssemblyFeatures(a));
+  EXPECT_NE(json.find("\"spiral_angle\": 34.9"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"spiral_angle\": -34.8"), std::string::npos) << json;
+  const Analysis an = Analyze(a);
+  std::vector<const Pair*> bevel;
+  for (const Pair& p : an.pairs) {
+    if (p.type == PairType::kBevelGear) bevel.push_back(&p);
+  }
+  ASSERT_EQ(bevel.size(), 1u) << ::testing::PrintToString(PairNames(a, an));
+  const bool pinion_first = a.feature(bevel[0]->a).teeth == 15;
+  EXPECT_EQ(*bevel[0]->ratio, pinion_first ? Rational(-1, 2) : Rational(-2));
+  testing::WriteBevelGearPairStep(dir / "same.step", 15, 30, 2.0, 35 * kDeg, 35 * kDeg);
+  const Assembly same = LoadAssembly(dir / "same.step");
+  const Analysis an_same = Analyze(same);
+  for (const Pair& p : an_same.pairs) EXPECT_NE(p.type, PairType::kBevelGear);
+  EXPECT_TRUE(std::any_of(an_same.diagnostics.begin(), an_same.diagnostics.end(),
+                          [](const Diagnostic& d) { return d.code == "bevel_spiral_mismatch"; }))
+      << ::testing::PrintToString(PairNames(same, an_same));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(StepImport, ARingGearCutIntoAHousingMeshesWithItsPinion) {
   // A 36-tooth ring gear cut into a bolted housing block (module 2) and a 12-tooth pinion
   // inside it: the internal gear is one feature of the housing, beside its bolt holes, and the
@@ -915,6 +961,41 @@ TEST(MeshRecognition, AWormAndAGearAsSTLsMakeTheirWormGearPair) {
   EXPECT_GT(a.feature(worm_gears[0]->a).axis.z(), 1 - 1e-6);
   EXPECT_GT(a.feature(worm_gears[0]->b).axis.z(), 1 - 1e-6);  // in the wheel's frame
   EXPECT_EQ(*worm_gears[0]->ratio, Rational(-1, 30));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(MeshRecognition, SpiralBevelGearsAsSTLsMakeTheirPair) {
+  // The spiral bevel pair of the STEP test (35 degrees, right hand on the 15-tooth pinion,
+  // left on the 30-tooth gear) as two STL files of their tessellations: the same spiral
+  // angles from the meshes alone, and the pair at -1/2.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_spiral_stl";
+  std::filesystem::create_directories(dir);
+  const double kDeg = std::numbers::pi / 180;
+  testing::WriteBevelGearPairStep(dir / "spiral.step", 15, 30, 2.0, 35 * kDeg, -35 * kDeg);
+  const std::vector<StepSolid> solids = ReadStep(dir / "spiral.step");
+  ASSERT_EQ(solids.size(), 2u);
+  WriteStl(*solids[0].mesh, dir / "pinion.stl");
+  WriteStl(*solids[1].mesh, dir / "gear.stl");
+  const Assembly a = LoadAssemblyText(R"({"mechanist": 1, "parts": [
+    {"id": "pinion", "mesh": "pinion.stl"}, {"id": "gear", "mesh": "gear.stl"}]})",
+                                      dir / "a.json");
+  const std::array<double, 2> spiral = {35 * kDeg, -35 * kDeg};
+  for (std::size_t p = 0; p < 2; ++p) {
+    const Feature* gear = nullptr;
+    for (const Feature& f : a.part(p).features) {
+      if (f.kind == FeatureKind::kBevelGear) gear = &f;
+    }
+    ASSERT_NE(gear, nullptr);
+    EXPECT_NEAR(gear->spiral_angle, spiral[p], 0.25 * kDeg);
+  }
+  const Analysis an = Analyze(a);
+  std::vector<const Pair*> bevel;
+  for (const Pair& p : an.pairs) {
+    if (p.type == PairType::kBevelGear) bevel.push_back(&p);
+  }
+  ASSERT_EQ(bevel.size(), 1u) << ::testing::PrintToString(PairNames(a, an));
+  EXPECT_EQ(*bevel[0]->ratio,
+            a.PartId(bevel[0]->a.part) == "pinion" ? Rational(-1, 2) : Rational(-2));
   std::filesystem::remove_all(dir);
 }
 

@@ -152,17 +152,24 @@ TopoDS_Shape HelicalGear(int teeth, double module, double helix) {
   return Bored(loft.Shape(), teeth, module);
 }
 
-// A straight bevel gear about +z with its pitch cone's apex at the origin (see
+// A straight or spiral bevel gear about +z with its pitch cone's apex at the origin (see
 // WriteBevelGearPairStep).
-TopoDS_Shape BevelGear(int teeth, double module, double pitch_angle) {
+TopoDS_Shape BevelGear(int teeth, double module, double pitch_angle, double spiral) {
   const double L = module * teeth / (2.0 * std::sin(pitch_angle)), toe = 2.0 / 3.0;
   const Ring2d heel = GearOutline(teeth, module, 0.0);
-  Ring2d inner = heel;
-  for (Eigen::Vector2d& p : inner) p *= toe;
-  BRepOffsetAPI_ThruSections loft(true, true, 1e-6);
+  // Straight: a ruled loft from toe to heel. Spiral: a smooth one through 7 sections, each
+  // turned by theta(s) = tan(spiral) ln(s / L) / sin(pitch angle) at cone distance s, which
+  // keeps the teeth at the spiral angle all along the pitch cone.
+  const int sections = spiral == 0.0 ? 2 : 7;
+  BRepOffsetAPI_ThruSections loft(true, spiral == 0.0, 1e-6);
   loft.CheckCompatibility(false);
-  loft.AddWire(OutlineWire(inner, toe * L * std::cos(pitch_angle), 0.0));
-  loft.AddWire(OutlineWire(heel, L * std::cos(pitch_angle), 0.0));
+  for (int i = 0; i < sections; ++i) {
+    const double scale = toe + (1.0 - toe) * i / (sections - 1);
+    Ring2d ring = heel;
+    for (Eigen::Vector2d& p : ring) p *= scale;
+    const double theta = std::tan(spiral) * std::log(scale) / std::sin(pitch_angle);
+    loft.AddWire(OutlineWire(ring, scale * L * std::cos(pitch_angle), theta));
+  }
   loft.Build();
   if (!loft.IsDone()) throw std::runtime_error("cannot loft a bevel gear");
   const double bore = 0.15 * toe * module * teeth;
@@ -271,7 +278,7 @@ void WriteHelicalGearPairStep(const std::filesystem::path& file, int teeth_a, in
 }
 
 void WriteBevelGearPairStep(const std::filesystem::path& file, int teeth_a, int teeth_b,
-                            double module) {
+                            double module, double spiral_a, double spiral_b) {
   const double angle_a = std::atan2(teeth_a, teeth_b), angle_b = std::atan2(teeth_b, teeth_a);
   gp_Trsf phase, across;
   phase.SetRotation(gp::OZ(), M_PI / teeth_b);  // a tooth space of b faces a tooth of a
@@ -279,10 +286,10 @@ void WriteBevelGearPairStep(const std::filesystem::path& file, int teeth_a, int 
   TopoDS_Compound all;
   BRep_Builder builder;
   builder.MakeCompound(all);
-  builder.Add(all, BevelGear(teeth_a, module, angle_a));
-  builder.Add(
-      all,
-      BRepBuilderAPI_Transform(BevelGear(teeth_b, module, angle_b), across * phase, true).Shape());
+  builder.Add(all, BevelGear(teeth_a, module, angle_a, spiral_a));
+  builder.Add(all, BRepBuilderAPI_Transform(BevelGear(teeth_b, module, angle_b, spiral_b),
+                                            across * phase, true)
+                       .Shape());
   WriteStep(all, file);
 }
 

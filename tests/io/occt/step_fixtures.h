@@ -46,16 +46,19 @@ void WriteHelicalGearPairStep(const std::filesystem::path& file, int teeth_a, in
 void WriteWormAndWheelStep(const std::filesystem::path& file, int starts, bool right,
                            int wheel_teeth, double module);
 
-/// Writes a STEP file (AP214, no product names) of two straight bevel gears of module
-/// `module` (at the heel) meshing on shafts at right angles, their pitch cones' apex at the
-/// origin: `teeth_a` teeth about +z, `teeth_b` about +x, pitch angles atan(z_a / z_b) and
-/// atan(z_b / z_a). Each is a ruled loft (B-spline faces) between its outline at the heel, a
-/// spur gear's of the same teeth and module (addendum m, dedendum 1.25 m) in the plane across
-/// its axis at the outer cone distance L = m z / (2 sin(pitch angle)), and that outline scaled
-/// toward the apex to L - L / 3 (face width L / 3), with a bore of 0.3 times the toe's pitch
+/// Writes a STEP file (AP214, no product names) of two bevel gears of module `module` (at the
+/// heel) on shafts at right angles, their pitch cones' apex at the origin: `teeth_a` teeth
+/// about +z, `teeth_b` about +x, pitch angles atan(z_a / z_b) and atan(z_b / z_a), spiral
+/// angles `spiral_a` and `spiral_b` (radians, positive for a right hand: the teeth turn about
+/// the axis the right-hand way going away from the apex; opposite hands mesh). Each is a loft
+/// (B-spline faces) of its outline at the heel, a spur gear's of the same teeth and module
+/// (addendum m, dedendum 1.25 m) in the plane across its axis at the outer cone distance
+/// L = m z / (2 sin(pitch angle)), scaled toward the apex down to L - L / 3 (face width L / 3):
+/// straight, a ruled loft of the two; spiral, a smooth one through sections turned so that the
+/// teeth keep the spiral angle along the pitch cone. A bore of 0.3 times the toe's pitch
 /// diameter. Throws std::runtime_error when it cannot build or write.
 void WriteBevelGearPairStep(const std::filesystem::path& file, int teeth_a, int teeth_b,
-                            double module);
+                            double module, double spiral_a = 0.0, double spiral_b = 0.0);
 
 /// Writes a STEP file (AP214, no product names) of a housing with a ring gear cut into it and
 /// a pinion inside: a block of 2.5 m (z_ring + 10) square, 10 mm thick from z = 0, centred on
