@@ -1171,8 +1171,10 @@ std::vector<std::string> UnreadPartFiles(const STEPCAFControl_Reader& reader,
     const std::string why = !std::filesystem::exists(path)              ? "no such file"
                             : part->GetLoadStatus() != IFSelect_RetDone ? "not readable as STEP"
                                                                         : "it holds no shape";
-    unread.push_back(fmt::format("'{}' (#{} DOCUMENT_FILE; looked for at {}: {})", name,
-                                 session->Model()->Number(references.DocFile(i)),
+    const Handle(StepBasic_DocumentFile) entity = references.DocFile(i);
+    const std::string where =
+        entity.IsNull() ? "" : fmt::format("#{} DOCUMENT_FILE; ", session->Model()->Number(entity));
+    unread.push_back(fmt::format("'{}' ({}looked for at {}: {})", name, where,
                                  path.lexically_normal().string(), why));
   }
   std::sort(unread.begin(), unread.end());
