@@ -522,22 +522,20 @@ double SizeOf(const TopoDS_Shape& solid) {
   return box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());
 }
 
-// Meshes the faces of `solid` (within 1/1000 of its size) and tells whether the mesher found
-// none of the defects healing repairs: open, self-intersecting or misoriented wires, faces it
-// could not mesh.
-bool MeshedCleanly(const TopoDS_Shape& solid) {
-  const BRepMesh_IncrementalMesh mesher(solid, std::max(0.01, 1e-3 * SizeOf(solid)), false, 0.3,
-                                        false);
+// Meshes the faces of `solid` (within 1/1000 of its `size`, SizeOf) and tells whether the
+// mesher found none of the defects healing repairs: open, self-intersecting or misoriented
+// wires, faces it could not mesh.
+bool MeshedCleanly(const TopoDS_Shape& solid, double size) {
+  const BRepMesh_IncrementalMesh mesher(solid, std::max(0.01, 1e-3 * size), false, 0.3, false);
   constexpr int kDefects = IMeshData_OpenWire | IMeshData_SelfIntersectingWire | IMeshData_Failure |
                            IMeshData_UnorientedWire | IMeshData_TooFewPoints;
   return (mesher.GetStatusFlags() & kDefects) == 0;
 }
 
-// The mesh and features of one solid, meshed (MeshedCleanly), in its product's frame, and
-// notes on the faces that give no feature.
-void ConvertSolid(const TopoDS_Shape& solid, TriangleMesh* mesh, std::vector<Feature>* features,
-                  std::vector<std::string>* notes) {
-  const double size = SizeOf(solid);
+// The mesh and features of one solid of `size` (SizeOf), meshed (MeshedCleanly), in its
+// product's frame, and notes on the faces that give no feature.
+void ConvertSolid(const TopoDS_Shape& solid, double size, TriangleMesh* mesh,
+                  std::vector<Feature>* features, std::vector<std::string>* notes) {
   std::vector<Cylinder> cylinders;
   std::vector<Cone> cones;
   std::vector<Sphere> spheres;
@@ -1091,8 +1089,9 @@ class Walker {
         definition.notes.clear();
         const TopoDS_Shape healed =
             HealedSolid(definition.solid, healing.Of(definition.solid), thorough);
-        const bool clean = MeshedCleanly(healed);
-        ConvertSolid(healed, definition.mesh.get(), &definition.features, &definition.notes);
+        const double size = SizeOf(healed);
+        const bool clean = MeshedCleanly(healed, size);
+        ConvertSolid(healed, size, definition.mesh.get(), &definition.features, &definition.notes);
         const MeshCheck check = CheckMesh(*definition.mesh);
         if (thorough || (clean && check.consistently_oriented() && check.signed_volume > 0)) {
           break;

@@ -230,6 +230,23 @@ struct Gears {
   }
 };
 
+// The first feature of `kind` on `part`, or null.
+const Feature* FeatureOfKind(const Part& part, FeatureKind kind) {
+  for (const Feature& f : part.features) {
+    if (f.kind == kind) return &f;
+  }
+  return nullptr;
+}
+
+// The pairs of `type` in `an`.
+std::vector<const Pair*> PairsOfType(const Analysis& an, PairType type) {
+  std::vector<const Pair*> found;
+  for (const Pair& p : an.pairs) {
+    if (p.type == type) found.push_back(&p);
+  }
+  return found;
+}
+
 // The pairs of an analysis as "type a b" with the features' names, sorted.
 std::vector<std::string> PairNames(const Assembly& a, const Analysis& an) {
   std::vector<std::string> names;
@@ -456,10 +473,7 @@ TEST(StepImport, WormsFromStepSolidsDriveTheirWheels) {
     testing::WriteWormAndWheelStep(dir / "worm.step", c.starts, c.right, 30, 2.0);
     const Assembly a = LoadAssembly(dir / "worm.step");
     const Analysis an = Analyze(a);
-    std::vector<const Pair*> worm_gears;
-    for (const Pair& p : an.pairs) {
-      if (p.type == PairType::kWormGear) worm_gears.push_back(&p);
-    }
+    const std::vector<const Pair*> worm_gears = PairsOfType(an, PairType::kWormGear);
     ASSERT_EQ(worm_gears.size(), 1u) << c.starts << ::testing::PrintToString(PairNames(a, an));
     const Pair& pair = *worm_gears[0];
     const Feature& worm = a.feature(pair.a);
@@ -494,10 +508,7 @@ TEST(StepImport, StraightBevelGearsFromStepSolidsMeshAtRightAngles) {
   const std::array<int, 2> teeth = {15, 30};
   const std::array<Eigen::Vector3d, 2> axes = {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitX()};
   for (std::size_t p = 0; p < 2; ++p) {
-    const Feature* gear = nullptr;
-    for (const Feature& f : a.part(p).features) {
-      if (f.kind == FeatureKind::kBevelGear) gear = &f;
-    }
+    const Feature* gear = FeatureOfKind(a.part(p), FeatureKind::kBevelGear);
     ASSERT_NE(gear, nullptr) << ::testing::PrintToString(a.part(p).notes);
     EXPECT_EQ(gear->teeth, teeth[p]);
     EXPECT_EQ(gear->module, 2.0);
@@ -507,10 +518,7 @@ TEST(StepImport, StraightBevelGearsFromStepSolidsMeshAtRightAngles) {
     EXPECT_NEAR(axis.origin.norm(), 0.0, 0.005);
   }
   const Analysis an = Analyze(a);
-  std::vector<const Pair*> bevel;
-  for (const Pair& p : an.pairs) {
-    if (p.type == PairType::kBevelGear) bevel.push_back(&p);
-  }
+  const std::vector<const Pair*> bevel = PairsOfType(an, PairType::kBevelGear);
   ASSERT_EQ(bevel.size(), 1u) << ::testing::PrintToString(PairNames(a, an));
   const bool pinion_first = a.feature(bevel[0]->a).teeth == 15;
   EXPECT_EQ(*bevel[0]->ratio, pinion_first ? Rational(-1, 2) : Rational(-2));
@@ -531,10 +539,7 @@ TEST(StepImport, SpiralBevelGearsFromStepSolidsMeshWithOppositeHands) {
   const std::array<int, 2> teeth = {15, 30};
   const std::array<double, 2> spiral = {35 * kDeg, -35 * kDeg};
   for (std::size_t p = 0; p < 2; ++p) {
-    const Feature* gear = nullptr;
-    for (const Feature& f : a.part(p).features) {
-      if (f.kind == FeatureKind::kBevelGear) gear = &f;
-    }
+    const Feature* gear = FeatureOfKind(a.part(p), FeatureKind::kBevelGear);
     ASSERT_NE(gear, nullptr) << ::testing::PrintToString(a.part(p).notes);
     EXPECT_EQ(gear->teeth, teeth[p]);
     EXPECT_EQ(gear->module, 2.0);
@@ -546,10 +551,7 @@ TEST(StepImport, SpiralBevelGearsFromStepSolidsMeshWithOppositeHands) {
   EXPECT_NE(json.find("\"spiral_angle\": 34.9"), std::string::npos) << json;
   EXPECT_NE(json.find("\"spiral_angle\": -34.8"), std::string::npos) << json;
   const Analysis an = Analyze(a);
-  std::vector<const Pair*> bevel;
-  for (const Pair& p : an.pairs) {
-    if (p.type == PairType::kBevelGear) bevel.push_back(&p);
-  }
+  const std::vector<const Pair*> bevel = PairsOfType(an, PairType::kBevelGear);
   ASSERT_EQ(bevel.size(), 1u) << ::testing::PrintToString(PairNames(a, an));
   const bool pinion_first = a.feature(bevel[0]->a).teeth == 15;
   EXPECT_EQ(*bevel[0]->ratio, pinion_first ? Rational(-1, 2) : Rational(-2));
@@ -585,10 +587,7 @@ TEST(StepImport, ARingGearCutIntoAHousingMeshesWithItsPinion) {
   EXPECT_EQ(ring->module, 2.0);
   EXPECT_EQ(holes, 4);
   const Analysis an = Analyze(a);
-  std::vector<const Pair*> gears;
-  for (const Pair& p : an.pairs) {
-    if (p.type == PairType::kGear) gears.push_back(&p);
-  }
+  const std::vector<const Pair*> gears = PairsOfType(an, PairType::kGear);
   ASSERT_EQ(gears.size(), 1u) << ::testing::PrintToString(PairNames(a, an));
   const bool pinion_first = a.feature(gears[0]->a).teeth == 12;
   EXPECT_EQ(*gears[0]->ratio, pinion_first ? Rational(1, 3) : Rational(3));
@@ -949,10 +948,7 @@ TEST(MeshRecognition, AWormAndAGearAsSTLsMakeTheirWormGearPair) {
      "pose": {"position": [30, -4, 20], "quaternion": [0.7071067811865476, -0.7071067811865476, 0, 0]}}]})";
   const Assembly a = LoadAssemblyText(text, dir / "a.json");
   const Analysis an = Analyze(a);
-  std::vector<const Pair*> worm_gears;
-  for (const Pair& p : an.pairs) {
-    if (p.type == PairType::kWormGear) worm_gears.push_back(&p);
-  }
+  const std::vector<const Pair*> worm_gears = PairsOfType(an, PairType::kWormGear);
   ASSERT_EQ(worm_gears.size(), 1u) << ::testing::PrintToString(PairNames(a, an));
   EXPECT_EQ(a.PartId(worm_gears[0]->a.part), "worm");
   EXPECT_EQ(a.feature(worm_gears[0]->a).starts, 1);
@@ -981,18 +977,12 @@ TEST(MeshRecognition, SpiralBevelGearsAsSTLsMakeTheirPair) {
                                       dir / "a.json");
   const std::array<double, 2> spiral = {35 * kDeg, -35 * kDeg};
   for (std::size_t p = 0; p < 2; ++p) {
-    const Feature* gear = nullptr;
-    for (const Feature& f : a.part(p).features) {
-      if (f.kind == FeatureKind::kBevelGear) gear = &f;
-    }
+    const Feature* gear = FeatureOfKind(a.part(p), FeatureKind::kBevelGear);
     ASSERT_NE(gear, nullptr);
     EXPECT_NEAR(gear->spiral_angle, spiral[p], 0.25 * kDeg);
   }
   const Analysis an = Analyze(a);
-  std::vector<const Pair*> bevel;
-  for (const Pair& p : an.pairs) {
-    if (p.type == PairType::kBevelGear) bevel.push_back(&p);
-  }
+  const std::vector<const Pair*> bevel = PairsOfType(an, PairType::kBevelGear);
   ASSERT_EQ(bevel.size(), 1u) << ::testing::PrintToString(PairNames(a, an));
   EXPECT_EQ(*bevel[0]->ratio,
             a.PartId(bevel[0]->a.part) == "pinion" ? Rational(-1, 2) : Rational(-2));
