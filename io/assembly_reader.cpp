@@ -353,12 +353,15 @@ class Reader {
 
   void ReadInference(const Json& v, const std::string& pointer) {
     ExpectObject(v, pointer);
-    CheckKeys(v, pointer, {"implied_pins", "implied_frame"});
+    CheckKeys(v, pointer, {"implied_pins", "implied_frame", "seated_parts"});
     if (const Json* pins = Find(v, "implied_pins")) {
       spec_.inference.implied_pins = Bool(*pins, pointer + "/implied_pins");
     }
     if (const Json* frame = Find(v, "implied_frame")) {
       spec_.inference.implied_frame = Bool(*frame, pointer + "/implied_frame");
+    }
+    if (const Json* seated = Find(v, "seated_parts")) {
+      spec_.inference.seated_parts = Bool(*seated, pointer + "/seated_parts");
     }
   }
 

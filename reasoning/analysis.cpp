@@ -7,6 +7,7 @@
 #include "reasoning/adjustment.h"
 #include "reasoning/fastener_check.h"
 #include "reasoning/pair_recognition.h"
+#include "reasoning/seated_parts.h"
 
 namespace mechanist {
 
@@ -20,8 +21,20 @@ Analysis Analyze(const Assembly& assembly, const std::vector<Pair>& extra) {
   analysis.graph = std::make_shared<const PairGraph>(assembly, analysis.pairs);
   analysis.subassemblies = analysis.graph->Subassemblies();
   analysis.subassembly_of = analysis.graph->SubassemblyOf();
-  analysis.motion =
-      AnalyzeMotion(assembly, analysis.pairs, analysis.graph, std::move(recognition.axes_W));
+  analysis.motion = AnalyzeMotion(assembly, analysis.pairs, analysis.graph, recognition.axes_W);
+  // Slides that the parts around stop within a play are no motion: the pairs change, and the
+  // subassemblies and motion with them.
+  Seating seating = SeatParts(assembly, analysis.motion, analysis.subassembly_of, &analysis.pairs);
+  if (seating.changed) {
+    analysis.graph = std::make_shared<const PairGraph>(assembly, analysis.pairs);
+    analysis.subassemblies = analysis.graph->Subassemblies();
+    analysis.subassembly_of = analysis.graph->SubassemblyOf();
+    analysis.motion =
+        AnalyzeMotion(assembly, analysis.pairs, analysis.graph, std::move(recognition.axes_W));
+    recognition.diagnostics.insert(recognition.diagnostics.end(),
+                                   std::make_move_iterator(seating.diagnostics.begin()),
+                                   std::make_move_iterator(seating.diagnostics.end()));
+  }
   analysis.diagnostics = CheckAssembly(assembly);
   std::vector<Diagnostic> fasteners = CheckFasteners(assembly, analysis.pairs);
   std::vector<std::size_t> run_starts = {0};

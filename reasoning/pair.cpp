@@ -9,7 +9,7 @@ static_assert(sizeof(Pair) <= 88, "Pair has grown: the analysis reads every pair
 
 namespace {
 
-constexpr EnumNames<PairSource, 11> kSources = {{
+constexpr EnumNames<PairSource, 12> kSources = {{
     {PairSource::kRecognised, "recognised"},
     {PairSource::kOverride, "override"},
     {PairSource::kClamp, "clamp"},
@@ -21,6 +21,7 @@ constexpr EnumNames<PairSource, 11> kSources = {{
     {PairSource::kOnePart, "one_part"},
     {PairSource::kShaftFlat, "shaft_flat"},
     {PairSource::kImpliedFrame, "implied_frame"},
+    {PairSource::kSeated, "seated"},
 }};
 
 constexpr EnumNames<PairFastening, 6> kFastenings = {{

@@ -24,6 +24,7 @@ enum class PairSource : std::uint8_t {
   kOnePart,       ///< two bodies of one CAD part touching face to face: one piece
   kShaftFlat,     ///< a hub on a shaft's flat (a setscrew or D-bore not modelled)
   kImpliedFrame,  ///< a gear turning on an axle of the frame the file leaves out
+  kSeated,        ///< faces that stop a part's only slide within a small play (SeatParts)
 };
 
 /// How a pair is held, where that matters to the user.

@@ -107,6 +107,9 @@ struct Inference {
   bool implied_pins = true;
   /// Gears exported without frame or shafts turn on a frame's axles (ImplyGearFrame).
   bool implied_frame = true;
+  /// A part whose faces or pin leave it only a slide that the parts around stop within a small
+  /// play is held there (SeatParts).
+  bool seated_parts = true;
 };
 
 /// Everything an assembly file describes, as plain data; Assembly checks and indexes it.

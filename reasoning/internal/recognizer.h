@@ -288,6 +288,7 @@ class Recognizer {
   static_assert(static_cast<int>(PairSource::kLooseFit) < (1 << kSourceBits));
   static_assert(static_cast<int>(PairSource::kShaftFlat) < (1 << kSourceBits));
   static_assert(static_cast<int>(PairSource::kImpliedFrame) < (1 << kSourceBits));
+  static_assert(static_cast<int>(PairSource::kSeated) < (1 << kSourceBits));
 
   /// Pairs order by feature names, then source, then as found, not by indices, so that
   /// reordering the file changes nothing: the name ranks and the source packed in one key.

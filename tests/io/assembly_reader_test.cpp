@@ -73,6 +73,19 @@ TEST_F(AssemblyReaderTest, ReadsMinimalFileWithDefaults) {
   EXPECT_DOUBLE_EQ(a.friction(), 0.1);
 }
 
+TEST_F(AssemblyReaderTest, ReadsTheInferSwitchesEachOnWhenNotGiven) {
+  const Inference given =
+      Parse(OnePart("", R"("infer": {"implied_pins": false, "seated_parts": false}, )"))
+          .inference();
+  EXPECT_FALSE(given.implied_pins);
+  EXPECT_TRUE(given.implied_frame);
+  EXPECT_FALSE(given.seated_parts);
+  const Inference defaults = Parse(OnePart("")).inference();
+  EXPECT_TRUE(defaults.implied_pins && defaults.implied_frame && defaults.seated_parts);
+  ExpectError(OnePart("", R"("infer": {"seated_parts": 0}, )"), "/infer/seated_parts",
+              "expected true or false");
+}
+
 TEST_F(AssemblyReaderTest, AcceptsCommentsAndExtra) {
   const Assembly a = Parse(R"(// leading comment
     {"mechanist": 1, /* block

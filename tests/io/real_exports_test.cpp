@@ -30,6 +30,10 @@ struct Expected {
   int solid_bearings = 0;
   // Pins in holes (a cycloidal reducer's output mechanism).
   int pins_in_holes = 0;
+  // Pairs of parts whose only slide the parts around stop within a small play (SeatParts).
+  int seated_pairs = 0;
+  // The mobility, where the test states it (a negative value: not stated here).
+  int mobility = -1;
 };
 
 std::vector<Expected> Cases() {
@@ -50,26 +54,49 @@ std::vector<Expected> Cases() {
       // only guide (loose fits), so no warning.
       {"hinge_clamshell_build123d/clamshell_full.step", "COMPOUND_solid2", {}, 0, 0, 6},
       // A near miss a designer checks (a shaft 0.07 mm off its hole's axis), and a part that
-      // nothing holds to the frame. Ten M5 screws end in nuts or tap-drilled holes.
+      // nothing holds to the frame. Ten M5 screws end in nuts or tap-drilled holes. Two axle
+      // bolts are held along their holes within 0.14 mm, and a part stands wedged against
+      // another: 31, where the truth has 1 (5 with the wheels' spins), the rest resting on
+      // faces whose screws the file leaves out.
       {"lead_screw_linear_actuator_onshape/Assembly.step",
        "Assembly_1._C_V",
        {"axes_not_collinear: Assembly_1.p____V", "free_motion: Assembly_1.__V_4"},
        0,
        10,
        0,
-       10},
+       10,
+       0,
+       3,
+       31},
       // Every finger hinge is found (the palm's fold included), so no warning. The thumb's M4
-      // pivot screw ends in its nut's hole (drawn at the minor diameter).
-      {"robot_hand_finger_hinges_onshape/Assembly 1.step", "Assembly_1.FOREARM", {}, 0, 1},
+      // pivot screw ends in its nut's hole (drawn at the minor diameter). 22 where the truth
+      // has 16: the five servos rest in the forearm's pockets with 1.4 to 27 mm of room along
+      // x, and the thumb's knuckle has 2.5 mm between the palm's cheeks, more than a seat's
+      // play (kMaxSeatPlay), so their slides stay.
+      {"robot_hand_finger_hinges_onshape/Assembly 1.step",
+       "Assembly_1.FOREARM",
+       {},
+       0,
+       1,
+       0,
+       0,
+       0,
+       0,
+       22},
       // The motor's connector, which nothing in the file holds. The motor's four long M3
       // screws (cross-recessed pan heads) run through the tap-drilled stator into the flange.
+      // 10 where the truth has 2: the connector floats (6), and the rod's hub on the joint
+      // rod is a cylindrical pair (2), stopped 0.5 mm one way and open the other.
       {"rotary_pendulum_ball_bearing_fusion/Assembly.step",
        "Assembly_v14.base_link_v4_1.NEMA_v6_1.Middle_part_1",
        {"part_unconnected: Assembly_v14.base_link_v4_1.NEMA_v6_1.JST-S6B-PH-K-S_1"},
        0,
        4,
        0,
-       2},
+       2,
+       0,
+       0,
+       10},
       // The file has the two gears and no frame or shafts: each turns on an axle of the
       // implied frame through its bore, so no warning.
       {"spur_pair_20T_40T_solidworks/ISO standard Spur Gear Drive (2-1 ratio).STEP",
@@ -126,6 +153,10 @@ TEST_P(RealExports, GroundAndWarningsAreTheOnesADesignerActsOn) {
         return d.code == "bearing" && d.message.find("modelled as one solid") != std::string::npos;
       }));
   EXPECT_EQ(solid_bearings, e.solid_bearings);
+  EXPECT_EQ(std::count_if(an.pairs.begin(), an.pairs.end(),
+                          [](const Pair& p) { return p.source == PairSource::kSeated; }),
+            e.seated_pairs);
+  if (e.mobility >= 0) EXPECT_EQ(an.motion.mobility.dof, e.mobility);
 }
 
 TEST(RealExports, TheRobotHandsThumbTurnsOnItsPivotScrew) {

@@ -1,0 +1,297 @@
+#include "reasoning/seated_parts.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>  // fmt::join
+
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "kernel/collision/collision_mesh.h"
+#include "kernel/collision/translational_sweep.h"
+#include "kernel/geometry/aabb.h"
+#include "kernel/support/number_format.h"
+
+namespace mechanist {
+namespace {
+
+// An orthonormal basis of m's null space, as columns: the right singular vectors whose
+// singular values are at most `tolerance`.
+Eigen::MatrixXd NullSpace(const Eigen::MatrixXd& m, double tolerance) {
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(m, Eigen::ComputeFullV);
+  const Eigen::Index rank = (svd.singularValues().array() > tolerance).count();
+  return svd.matrixV().rightCols(m.cols() - rank);
+}
+
+// The relative twists (rotation; velocity of the point at the origin) of body B against S
+// that the pairs between them allow: the null space of their velocity constraints, as
+// columns. Points are taken from `p_WR` and in units of `scale`, so rotation and translation
+// rows weigh alike.
+Eigen::MatrixXd AllowedTwists(const Assembly& assembly, const std::vector<const Pair*>& pairs,
+                              const Eigen::Vector3d& p_WR, double scale) {
+  Eigen::MatrixXd rows(4 * pairs.size(), 6);
+  Eigen::Index r = 0;
+  auto add = [&](const Eigen::Vector3d& rotation, const Eigen::Vector3d& translation) {
+    rows.row(r).head<3>() = rotation;
+    rows.row(r).tail<3>() = translation;
+    ++r;
+  };
+  for (const Pair* p : pairs) {
+    const Part& part = assembly.part(p->a.part);
+    const AxisSegment axis = assembly.feature(p->a).WorldAxis(part.X_WP);
+    const Eigen::Vector3d u = axis.direction, q = (axis.origin - p_WR) / scale;
+    const Eigen::Vector3d e1 = u.unitOrthogonal(), e2 = u.cross(e1);
+    // A point's velocity is v + w x q: its component along n is (q x n) . w + n . v.
+    add(e1, Eigen::Vector3d::Zero());  // both: turning about u only
+    add(e2, Eigen::Vector3d::Zero());
+    if (p->type == PairType::kPlanar) {
+      add(q.cross(u), u);
+    } else {  // cylindrical: the axis' points move along it
+      add(q.cross(e1), e1);
+      add(q.cross(e2), e2);
+    }
+  }
+  return NullSpace(rows.topRows(r), std::sin(assembly.tolerance().angle));
+}
+
+// mm: the unit of the constraints' lever arms, so that within a machine's size they weigh
+// about as much as the unit rotation rows.
+constexpr double kLeverArm = 100.0;
+
+// The unit direction of the only pure translation among `twists`, if there is exactly one.
+std::optional<Eigen::Vector3d> OnlyTranslation(const Eigen::MatrixXd& twists, double tolerance) {
+  if (twists.cols() == 0) return std::nullopt;
+  const Eigen::MatrixXd still = NullSpace(twists.topRows(3), tolerance);  // no rotation
+  if (still.cols() != 1) return std::nullopt;
+  const Eigen::Vector3d d = twists.bottomRows(3) * still;
+  if (d.norm() <= tolerance) return std::nullopt;
+  return d.normalized();
+}
+
+// The first part met on a slide, and after how far (mm).
+struct Stop {
+  double travel = 0.0;
+  std::size_t part = 0;
+};
+
+// What a seat found: the body, its seat, the parts that stop the slide and its play.
+struct Seat {
+  std::size_t body = 0;
+  bool on_axis = false;  // cylindrical pairs made revolute; else planar pairs made fixed
+  std::vector<std::size_t> pairs;
+  std::set<std::size_t> stops;
+  double play = 0.0;  // mm, both ways together
+};
+
+class Seater {
+ public:
+  Seater(const Assembly& assembly, const std::vector<std::size_t>& subassembly_of)
+      : assembly_(assembly), min_approach_(std::sin(assembly.tolerance().angle)) {
+    for (std::size_t p = 0; p < subassembly_of.size(); ++p) {
+      if (subassembly_of[p] >= parts_of_.size()) parts_of_.resize(subassembly_of[p] + 1);
+      parts_of_[subassembly_of[p]].push_back(p);
+    }
+  }
+
+  // How far the parts `moving` travel along d before a part of `obstacles` stops them, up to
+  // kMaxSeatPlay; empty when nothing does, or a part has no mesh.
+  std::optional<Stop> Travel(const std::vector<std::size_t>& moving,
+                             const std::vector<std::size_t>& obstacles, const Eigen::Vector3d& d) {
+    SweepOptions options;
+    options.max_travel = kMaxSeatPlay;
+    options.min_approach = min_approach_;
+    std::optional<Stop> first;
+    for (std::size_t m : moving) {
+      const CollisionMesh* mesh_m = Mesh(m);
+      if (!mesh_m) return std::nullopt;
+      for (std::size_t o : obstacles) {
+        const CollisionMesh* mesh_o = Mesh(o);
+        if (!mesh_o) continue;
+        const std::optional<SweepContact> contact = FirstBlockingContact(
+            *mesh_m, assembly_.part(m).X_WP, *mesh_o, assembly_.part(o).X_WP, d, options);
+        if (contact && (!first || contact->travel < first->travel)) {
+          first = Stop{contact->travel, o};
+        }
+      }
+    }
+    return first;
+  }
+
+  // Whether feature f lies within its part's mesh's bounds: the mesh is the part's shape
+  // where the pair is (a stand-in mesh far from the features says nothing about the seat).
+  bool OnMesh(FeatureRef f) {
+    const Part& part = assembly_.part(f.part);
+    if (!part.HasGeometry()) return false;
+    auto [it, added] = bounds_.try_emplace(part.mesh.get());
+    if (added) {
+      for (const Eigen::Vector3d& v : part.mesh->vertices) it->second.Extend(v);
+    }
+    const Eigen::Vector3d p = assembly_.feature(f).origin;
+    const double margin = assembly_.tolerance().length;
+    return (p.array() >= it->second.min.array() - margin).all() &&
+           (p.array() <= it->second.max.array() + margin).all();
+  }
+
+  const std::vector<std::size_t>& PartsOf(std::size_t body) const { return parts_of_[body]; }
+
+ private:
+  const CollisionMesh* Mesh(std::size_t part) {
+    const Part& p = assembly_.part(part);
+    if (!p.HasGeometry()) return nullptr;
+    auto [it, added] = meshes_.try_emplace(p.mesh.get());
+    if (added) it->second = std::make_unique<CollisionMesh>(p.mesh);
+    return it->second.get();
+  }
+
+  const Assembly& assembly_;
+  double min_approach_ = 0.0;
+  std::vector<std::vector<std::size_t>> parts_of_;  // per body
+  std::map<const TriangleMesh*, std::unique_ptr<CollisionMesh>> meshes_;
+  std::map<const TriangleMesh*, Aabb> bounds_;
+};
+
+}  // namespace
+
+Seating SeatParts(const Assembly& assembly, const MotionAnalysis& motion,
+                  const std::vector<std::size_t>& subassembly_of, std::vector<Pair>* pairs) {
+  Seating seating;
+  if (!assembly.inference().seated_parts) return seating;
+  std::set<std::size_t> moving_bodies;
+  for (const FreeMotion& f : motion.mobility.free_motions) {
+    if (f.pair) moving_bodies.insert(subassembly_of[f.part]);
+  }
+  if (moving_bodies.empty()) return seating;
+
+  // The pairs of each moving body, by the body on their other side.
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t>> between;
+  for (std::size_t i = 0; i < pairs->size(); ++i) {
+    const Pair& p = (*pairs)[i];
+    const std::size_t a = subassembly_of[p.a.part], b = subassembly_of[p.b.part];
+    if (a == b) continue;
+    if (moving_bodies.count(a)) between[{a, b}].push_back(i);
+    if (moving_bodies.count(b)) between[{b, a}].push_back(i);
+  }
+  Seater seater(assembly, subassembly_of);
+  const double tolerance = std::sin(assembly.tolerance().angle);
+  std::vector<Seat> seats;
+  std::vector<bool> seated(pairs->size(), false);  // a body pair is settled once, either way
+  for (const auto& [bodies, indices] : between) {
+    if (seated[indices.front()]) continue;
+    std::vector<const Pair*> group;
+    bool planar = true, cylindrical = true;
+    for (std::size_t i : indices) {
+      const Pair& p = (*pairs)[i];
+      planar = planar && p.type == PairType::kPlanar;
+      cylindrical = cylindrical && p.type == PairType::kCylindrical;
+      group.push_back(&p);
+    }
+    if (!planar && !cylindrical) continue;
+    if (!std::all_of(group.begin(), group.end(),
+                     [&](const Pair* p) { return seater.OnMesh(p->a) && seater.OnMesh(p->b); })) {
+      continue;
+    }
+    const std::vector<std::size_t>& body_parts = seater.PartsOf(bodies.first);
+    const Part& first = assembly.part(group.front()->a.part);
+    const Eigen::Vector3d p_WR = assembly.feature(group.front()->a).WorldAxis(first.X_WP).origin;
+    const Eigen::MatrixXd twists = AllowedTwists(assembly, group, p_WR, kLeverArm);
+    // Planar pairs: a slide and nothing else. Cylindrical pairs: a turn and a slide.
+    if (twists.cols() != (planar ? 1 : 2)) continue;
+    const std::optional<Eigen::Vector3d> d = OnlyTranslation(twists, tolerance);
+    if (!d) continue;
+    const std::vector<std::size_t>& seat_parts = seater.PartsOf(bodies.second);
+    const std::optional<Stop> ahead = seater.Travel(body_parts, seat_parts, *d);
+    if (!ahead) continue;
+    const std::optional<Stop> behind = seater.Travel(body_parts, seat_parts, -*d);
+    if (!behind) continue;
+    const double play = ahead->travel + behind->travel;
+    if (play >= kMaxSeatPlay) continue;
+    seats.push_back({bodies.first, cylindrical, indices, {ahead->part, behind->part}, play});
+    for (std::size_t i : indices) seated[i] = true;
+  }
+  if (seats.empty()) return seating;
+
+  // Reports, one per seat and kind, grouping the parts alike (five servos in one forearm).
+  struct Group {
+    std::vector<std::string> parts;
+    std::set<std::string> features, stops;
+    double play = 0.0;
+  };
+  std::map<std::tuple<bool, std::string>, Group> groups;
+  std::vector<bool> drop(pairs->size(), false);
+  std::vector<Pair> fixed;
+  for (const Seat& s : seats) {
+    // Named by the part the first pair seats it on (a forearm, a pivot screw).
+    const Pair& front = (*pairs)[s.pairs.front()];
+    const bool a_moves = subassembly_of[front.a.part] == s.body;
+    Group& g =
+        groups[{s.on_axis, std::string(assembly.PartId(a_moves ? front.b.part : front.a.part))}];
+    g.parts.emplace_back(assembly.PartId(a_moves ? front.a.part : front.b.part));
+    for (std::size_t part : s.stops) g.stops.insert(std::string(assembly.PartId(part)));
+    for (std::size_t i : s.pairs) {
+      const Pair& p = (*pairs)[i];
+      g.features.insert(assembly.FeatureName(p.a));
+      g.features.insert(assembly.FeatureName(p.b));
+    }
+    g.play = std::max(g.play, s.play);
+    if (s.on_axis) {
+      for (std::size_t i : s.pairs) {
+        (*pairs)[i].type = PairType::kRevolute;
+        (*pairs)[i].dof = DegreesOfFreedom(PairType::kRevolute);
+        (*pairs)[i].source = PairSource::kSeated;
+      }
+    } else {
+      for (std::size_t i : s.pairs) drop[i] = true;
+      Pair held = front;
+      held.type = PairType::kFixed;
+      held.dof = DegreesOfFreedom(PairType::kFixed);
+      held.source = PairSource::kSeated;
+      fixed.push_back(held);
+    }
+  }
+  std::size_t i = 0;
+  std::erase_if(*pairs, [&](const Pair&) { return drop[i++]; });
+  pairs->insert(pairs->end(), fixed.begin(), fixed.end());
+
+  for (auto& [key, g] : groups) {
+    const auto& [on_axis, seat] = key;
+    std::sort(g.parts.begin(), g.parts.end());
+    const bool several = g.parts.size() > 1;
+    const std::string who =
+        several ? fmt::format("{} parts, {}, each", g.parts.size(), fmt::join(g.parts, ", "))
+                : g.parts.front();
+    const std::string within =
+        g.play <= assembly.tolerance().length
+            ? std::string("at once")
+            : fmt::format("within {} mm, both ways together", FormatNumber(g.play, 3));
+    const std::string stops = fmt::format("{}", fmt::join(g.stops, " or "));
+    const std::string message =
+        on_axis ? fmt::format(
+                      "{} turns on one axis with {} (cylindrical pairs), and {} stops "
+                      "its slide along it {}: held along the axis, as in a fork (the "
+                      "pairs taken as revolute; \"infer\": {{\"seated_parts\": false}} "
+                      "leaves them cylindrical)",
+                      who, seat, stops, within)
+                : fmt::format(
+                      "{} rests on faces of {} that leave it a single slide, and {} "
+                      "stops it {}: seated, taken as fixed there (what holds it, screws "
+                      "or glue, is not in the file; \"infer\": {{\"seated_parts\": "
+                      "false}} leaves it on its faces)",
+                      who, seat, stops, within);
+    std::vector<std::string> parts = g.parts;
+    parts.push_back(seat);
+    seating.diagnostics.push_back({Severity::kInfo,
+                                   on_axis ? "retained" : "seated",
+                                   message,
+                                   parts,
+                                   {g.features.begin(), g.features.end()}});
+  }
+  seating.changed = true;
+  return seating;
+}
+
+}  // namespace mechanist
