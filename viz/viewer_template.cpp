@@ -811,7 +811,9 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     camera.aspect = w / Math.max(h, 1);
     camera.updateProjectionMatrix();
   };
-  window.addEventListener("resize", resize);
+  // The view's own size, not the window's: its layout may settle after this script runs (a
+  // busy machine), and a canvas sized 0 then would stay blank until the window was resized.
+  new ResizeObserver(resize).observe(view);
   resize();
   fit();
   // Drawn when something changed, not every frame: a still page costs nothing.

@@ -63,6 +63,19 @@ function fail(message) {
     await page.screenshot({ path: file });
     return fs.readFileSync(file);
   };
+  // The canvas takes the view's size once its layout settles (a ResizeObserver); under load
+  // that can be after the page's script has run.
+  try {
+    await page.waitForFunction(() => {
+      const canvas = document.querySelector("canvas");
+      const gl = canvas && (canvas.getContext("webgl2") || canvas.getContext("webgl"));
+      return gl && gl.drawingBufferWidth > 0 && gl.drawingBufferHeight > 0;
+    }, { timeout: 30000 });
+  } catch (e) {
+    fail("the 3D view's canvas has no size: " + e.message);
+  }
+  // Then a frame drawn at that size (the page draws on the next animation frame).
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   const first = await shot("viewer_start.png");
   const pixels = await page.evaluate(() => {
     const canvas = document.querySelector("canvas");
