@@ -99,19 +99,26 @@ class Seater {
   }
 
   // How far the parts `moving` travel along d before a part of `obstacles` stops them, up to
-  // kMaxSeatPlay; empty when nothing does, or a part has no mesh.
+  // kMaxSeatPlay; empty when nothing does, or a part has no mesh. Obstacles beyond the moving
+  // parts' reach (their bounds grown by kMaxSeatPlay) are not swept, nor their meshes built.
   std::optional<Stop> Travel(const std::vector<std::size_t>& moving,
                              const std::vector<std::size_t>& obstacles, const Eigen::Vector3d& d) {
     SweepOptions options;
     options.max_travel = kMaxSeatPlay;
     options.min_approach = min_approach_;
+    Aabb reach_W;
+    for (std::size_t m : moving) {
+      if (!assembly_.part(m).HasGeometry()) return std::nullopt;
+      reach_W.Extend(BoundsInWorld(m));
+    }
+    reach_W.min.array() -= kMaxSeatPlay + assembly_.tolerance().length;
+    reach_W.max.array() += kMaxSeatPlay + assembly_.tolerance().length;
     std::optional<Stop> first;
     for (std::size_t m : moving) {
       const CollisionMesh* mesh_m = Mesh(m);
-      if (!mesh_m) return std::nullopt;
       for (std::size_t o : obstacles) {
+        if (!assembly_.part(o).HasGeometry() || !BoundsInWorld(o).Intersects(reach_W)) continue;
         const CollisionMesh* mesh_o = Mesh(o);
-        if (!mesh_o) continue;
         const std::optional<SweepContact> contact = FirstBlockingContact(
             *mesh_m, assembly_.part(m).X_WP, *mesh_o, assembly_.part(o).X_WP, d, options);
         if (contact && (!first || contact->travel < first->travel)) {
@@ -125,24 +132,31 @@ class Seater {
   // Whether feature f lies within its part's mesh's bounds: the mesh is the part's shape
   // where the pair is (a stand-in mesh far from the features says nothing about the seat).
   bool OnMesh(FeatureRef f) {
-    const Part& part = assembly_.part(f.part);
-    if (!part.HasGeometry()) return false;
-    auto [it, added] = bounds_.try_emplace(part.mesh.get());
-    if (added) {
-      for (const Eigen::Vector3d& v : part.mesh->vertices) it->second.Extend(v);
-    }
+    if (!assembly_.part(f.part).HasGeometry()) return false;
+    const Aabb& box_P = Bounds(f.part);
     const Eigen::Vector3d p = assembly_.feature(f).origin;
     const double margin = assembly_.tolerance().length;
-    return (p.array() >= it->second.min.array() - margin).all() &&
-           (p.array() <= it->second.max.array() + margin).all();
+    return (p.array() >= box_P.min.array() - margin).all() &&
+           (p.array() <= box_P.max.array() + margin).all();
   }
 
   const std::vector<std::size_t>& PartsOf(std::size_t body) const { return parts_of_[body]; }
 
  private:
+  // The bounds of part `part`'s mesh, which it must have, in its frame and in the world's.
+  const Aabb& Bounds(std::size_t part) {
+    const TriangleMesh& mesh = *assembly_.part(part).mesh;
+    auto [it, added] = bounds_.try_emplace(&mesh);
+    if (added) it->second = mesh.Bounds();
+    return it->second;
+  }
+  Aabb BoundsInWorld(std::size_t part) {
+    return TransformBox(assembly_.part(part).X_WP, Bounds(part));
+  }
+
+  // The collision mesh of part `part`, which must have a mesh.
   const CollisionMesh* Mesh(std::size_t part) {
     const Part& p = assembly_.part(part);
-    if (!p.HasGeometry()) return nullptr;
     auto [it, added] = meshes_.try_emplace(p.mesh.get());
     if (added) it->second = std::make_unique<CollisionMesh>(p.mesh);
     return it->second.get();
