@@ -107,7 +107,11 @@ void WriteAnalysisSummary(const Assembly& assembly, const Analysis& analysis, st
   }
   const Mobility& mobility = analysis.motion.mobility;
   out << "mobility: " << mobility.dof << " (" << mobility.redundant << " redundant constraints, "
-      << mobility.free_motions.size() << " free motions)\n";
+      << mobility.free_motions.size() << " free motions";
+  if (mobility.on_faces > 0) {
+    out << ", " << mobility.on_faces << " of them of parts held by face contacts alone";
+  }
+  out << ")\n";
   for (const DrivenMotion& m : analysis.motion.driven) {
     out << DrivenTitle(assembly, m) << ":\n";
     if (!m.possible) {
@@ -191,6 +195,7 @@ std::string AnalysisJson(const Assembly& assembly, const Analysis& analysis) {
                         {"redundant", mobility.redundant},
                         {"redundant_constraints", redundant},
                         {"free_motions", free},
+                        {"on_faces", mobility.on_faces},
                         {"part_freedoms", freedoms}};
   Json motion = Json::array();
   for (const DrivenMotion& m : analysis.motion.driven) {

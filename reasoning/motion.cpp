@@ -53,6 +53,7 @@ class MotionModel {
       outcomes_.push_back(structural_.AddRow(row.terms));
     }
     has_pair_.assign(model_.body_count(), false);
+    on_faces_.assign(model_.body_count(), true);
     for (std::size_t i = 0; i < pairs.size(); ++i) {
       if (pairs[i].type == PairType::kWormGear) {
         worms_.emplace(i, pairs[i]);
@@ -61,6 +62,7 @@ class MotionModel {
       const std::size_t a = model_.body_of_part(pairs[i].a.part);
       const std::size_t b = model_.body_of_part(pairs[i].b.part);
       has_pair_[a] = has_pair_[b] = true;
+      if (a != b && pairs[i].type != PairType::kPlanar) on_faces_[a] = on_faces_[b] = false;
     }
   }
 
@@ -125,6 +127,10 @@ class MotionModel {
 
   /// Whether a part of `body` is in a pair (with a part of another body or of its own).
   bool HasPair(std::size_t body) const { return has_pair_[body]; }
+
+  /// Whether `body` is held to the others by face contacts (planar pairs) alone, when it has a
+  /// pair: a part resting on faces, which something the file leaves out fastens.
+  bool OnFacesAlone(std::size_t body) const { return has_pair_[body] && on_faces_[body]; }
 
   /// The parts of a body, ascending.
   std::span<const std::size_t> PartsOf(std::size_t body) const { return parts_of_body_[body]; }
@@ -283,6 +289,7 @@ class MotionModel {
   ExactReal mm_per_length_;          // reports give lengths in the file's units
   bool self_locking_worms_ = false;  // whether any worm gear pair is self-locking
   std::vector<bool> has_pair_;       // per body: HasPair
+  std::vector<bool> on_faces_;       // per body: no pair but planar ones with another body
 };
 
 namespace {
@@ -601,6 +608,7 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   // whose free motions read alike (five servos resting on one face).
   struct Unheld {
     std::size_t part = 0;
+    bool on_faces = false;             // held by face contacts alone
     std::vector<std::string> motions;  // distinct, in the order found
     std::vector<std::size_t> moved;    // the parts that move with it
     std::vector<std::string> features;
@@ -633,6 +641,8 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     if (motion_model.HasPair(child)) {
       Unheld& u = unheld[assembly.PartRank(free.part)];
       u.part = free.part;
+      u.on_faces = motion_model.OnFacesAlone(child);
+      mobility.on_faces += u.on_faces ? 1 : 0;
       u.moved.insert(u.moved.end(), free.parts.begin(), free.parts.end());
       const std::string motion =
           free.pair ? fmt::format("{} ({} pair)", free.freedom, ToString(pairs[*free.pair].type))
@@ -650,9 +660,11 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     }
     mobility.free_motions.push_back(std::move(free));
   }
-  std::map<std::vector<std::string>, std::vector<std::size_t>> alike;  // motions -> part ranks
-  for (const auto& [rank, u] : unheld) alike[u.motions].push_back(rank);
-  for (const auto& [motions, ranks] : alike) {
+  // Motions, and whether the parts rest on faces alone -> part ranks.
+  std::map<std::pair<std::vector<std::string>, bool>, std::vector<std::size_t>> alike;
+  for (const auto& [rank, u] : unheld) alike[{u.motions, u.on_faces}].push_back(rank);
+  for (const auto& [key, ranks] : alike) {
+    const auto& [motions, on_faces] = key;
     std::vector<std::string> named, features;
     std::vector<std::size_t> moved;
     for (std::size_t rank : ranks) {
@@ -672,12 +684,18 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     // it (a CAD export has no drivers, and its joints' motions are what it is for).
     const bool floats = features.empty();
     const bool finding = floats || !imposed.empty();
+    // A part that rests on faces and nothing else is held there by what the file leaves out
+    // (screws, glue), not moved by the mechanism: say so, for the designer to fasten it.
+    const char* allowed =
+        on_faces ? "held by face contacts alone, which nothing in the file fastens (screws or "
+                   "glue not modelled?)"
+                 : "a motion the mechanism allows (the file has no driver)";
     std::string message = fmt::format(
         "{}{}{}{}: {}", several ? fmt::format("{} parts, ", named.size()) : "", who,
         several ? ", each " : " ", what,
         finding ? fmt::format("nothing drives or holds {}",
                               motions.size() > 1 || several ? "these motions" : "this motion")
-                : "a motion the mechanism allows (the file has no driver)");
+                : allowed);
     result.diagnostics.push_back({finding ? Severity::kWarning : Severity::kInfo, "free_motion",
                                   std::move(message), part_ids(moved), std::move(features)});
   }

@@ -86,7 +86,10 @@ struct Mobility {
   int redundant = 0;  ///< constraint rows implied by the rows before them
   std::vector<RedundantConstraint> redundant_pairs;
   std::vector<FreeMotion> free_motions;  ///< with the drivers applied
-  std::vector<int> part_freedoms;        ///< per part: dimension of its allowable motion
+  /// Of free_motions, those of parts held by face contacts alone (planar pairs: a part
+  /// resting on faces whose fasteners the file leaves out).
+  int on_faces = 0;
+  std::vector<int> part_freedoms;  ///< per part: dimension of its allowable motion
 };
 
 /// The velocity model an analysis solved (its kinematic model and constraint rows reduced

@@ -552,6 +552,38 @@ TEST(Motion, FreeMotionsAreSaidOncePerPartAndOnceForPartsAlike) {
                      "pair) and slides along frame/seat's axis (planar pair)"),
               std::string::npos)
         << m;
+    // Held by nothing but their faces: what fastens them is what the file leaves out.
+    EXPECT_EQ(an.motion.mobility.on_faces, 6);
+    EXPECT_EQ(m.find("held by face contacts alone") != std::string::npos, !driven) << m;
+  }
+}
+
+TEST(Motion, APartOnAShaftWithAThrustFaceIsNotHeldByFacesAlone) {
+  // The gear's hub rests on the frame's seat, but its fit on the shaft is a pair of another
+  // kind: its turn is the mechanism's, not a part lying loose on a face.
+  const Feature seat = MakeFeature("seat", K::kFace, {0, 0, -10}, kZ, [](Feature& f) {
+    f.width = 10;
+    f.height = 10;
+  });
+  Builder b;
+  b.Gear("g1", 0, 0, {{20, 0}}, 1, /*retained=*/false);
+  b.FrameFeature(seat);
+  AssemblySpec spec = b.Build().spec();
+  for (mechanist::Part& p : spec.parts) {
+    if (p.id == "g1") {
+      p.features.push_back(MakeFeature("hub", K::kFace, {0, 0, -10}, -kZ, [](Feature& f) {
+        f.width = 10;
+        f.height = 10;
+      }));
+    }
+  }
+  const Analysis an = Analyze(Assembly(std::move(spec)));
+  EXPECT_EQ(an.motion.mobility.dof, 1);
+  EXPECT_EQ(an.motion.mobility.on_faces, 0);
+  for (const Diagnostic& d : an.diagnostics) {
+    if (d.code != "free_motion") continue;
+    EXPECT_EQ(d.message.find("face contacts alone"), std::string::npos) << d.message;
+    EXPECT_NE(d.message.find("a motion the mechanism allows"), std::string::npos) << d.message;
   }
 }
 
