@@ -79,7 +79,8 @@ struct Stop {
   std::size_t part = 0;
 };
 
-// What a seat found: the body, its seat, the parts that stop the slide and its play.
+// What a seat found: the moving body, its pairs with the seat, the parts that stop the slide
+// and the play.
 struct Seat {
   std::size_t body = 0;
   bool on_axis = false;  // cylindrical pairs made revolute; else planar pairs made fixed
