@@ -24,7 +24,8 @@ Analysis Analyze(const Assembly& assembly, const std::vector<Pair>& extra) {
   analysis.motion = AnalyzeMotion(assembly, analysis.pairs, analysis.graph, recognition.axes_W);
   // Slides that the parts around stop within a play are no motion: the pairs change, and the
   // subassemblies and motion with them.
-  Seating seating = SeatParts(assembly, analysis.motion, analysis.subassembly_of, &analysis.pairs);
+  Seating seating = SeatParts(assembly, analysis.motion, analysis.subassemblies,
+                              analysis.subassembly_of, &analysis.pairs);
   if (seating.changed) {
     analysis.graph = std::make_shared<const PairGraph>(assembly, analysis.pairs);
     analysis.subassemblies = analysis.graph->Subassemblies();

@@ -91,13 +91,8 @@ struct Seat {
 
 class Seater {
  public:
-  Seater(const Assembly& assembly, const std::vector<std::size_t>& subassembly_of)
-      : assembly_(assembly), min_approach_(std::sin(assembly.tolerance().angle)) {
-    for (std::size_t p = 0; p < subassembly_of.size(); ++p) {
-      if (subassembly_of[p] >= parts_of_.size()) parts_of_.resize(subassembly_of[p] + 1);
-      parts_of_[subassembly_of[p]].push_back(p);
-    }
-  }
+  explicit Seater(const Assembly& assembly)
+      : assembly_(assembly), min_approach_(std::sin(assembly.tolerance().angle)) {}
 
   // How far the parts `moving` travel along d before a part of `obstacles` stops them, up to
   // kMaxSeatPlay; empty when nothing does, or a part has no mesh. Obstacles beyond the moving
@@ -141,8 +136,6 @@ class Seater {
            (p.array() <= box_P.max.array() + margin).all();
   }
 
-  const std::vector<std::size_t>& PartsOf(std::size_t body) const { return parts_of_[body]; }
-
  private:
   // The bounds of part `part`'s mesh, which it must have, in its frame and in the world's.
   const Aabb& Bounds(std::size_t part) {
@@ -155,7 +148,8 @@ class Seater {
     return TransformBox(assembly_.part(part).X_WP, Bounds(part));
   }
 
-  // The collision mesh of part `part`, which must have a mesh.
+  // The collision mesh of part `part`, which must have a mesh: built on first use, one per
+  // distinct mesh (a CollisionModel would build every part's, most of them never swept here).
   const CollisionMesh* Mesh(std::size_t part) {
     const Part& p = assembly_.part(part);
     auto [it, added] = meshes_.try_emplace(p.mesh.get());
@@ -165,7 +159,6 @@ class Seater {
 
   const Assembly& assembly_;
   double min_approach_ = 0.0;
-  std::vector<std::vector<std::size_t>> parts_of_;  // per body
   std::map<const TriangleMesh*, std::unique_ptr<CollisionMesh>> meshes_;
   std::map<const TriangleMesh*, Aabb> bounds_;
 };
@@ -173,6 +166,7 @@ class Seater {
 }  // namespace
 
 Seating SeatParts(const Assembly& assembly, const MotionAnalysis& motion,
+                  const std::vector<Subassembly>& subassemblies,
                   const std::vector<std::size_t>& subassembly_of, std::vector<Pair>* pairs) {
   Seating seating;
   if (!assembly.inference().seated_parts) return seating;
@@ -191,7 +185,7 @@ Seating SeatParts(const Assembly& assembly, const MotionAnalysis& motion,
     if (moving_bodies.count(a)) between[{a, b}].push_back(i);
     if (moving_bodies.count(b)) between[{b, a}].push_back(i);
   }
-  Seater seater(assembly, subassembly_of);
+  Seater seater(assembly);
   const double tolerance = std::sin(assembly.tolerance().angle);
   std::vector<Seat> seats;
   std::vector<bool> seated(pairs->size(), false);  // a body pair is settled once, either way
@@ -210,7 +204,7 @@ Seating SeatParts(const Assembly& assembly, const MotionAnalysis& motion,
                      [&](const Pair* p) { return seater.OnMesh(p->a) && seater.OnMesh(p->b); })) {
       continue;
     }
-    const std::vector<std::size_t>& body_parts = seater.PartsOf(bodies.first);
+    const std::vector<std::size_t>& body_parts = subassemblies[bodies.first].parts;
     const Part& first = assembly.part(group.front()->a.part);
     const Eigen::Vector3d p_WR = assembly.feature(group.front()->a).WorldAxis(first.X_WP).origin;
     const Eigen::MatrixXd twists = AllowedTwists(assembly, group, p_WR, kLeverArm);
@@ -218,7 +212,7 @@ Seating SeatParts(const Assembly& assembly, const MotionAnalysis& motion,
     if (twists.cols() != (planar ? 1 : 2)) continue;
     const std::optional<Eigen::Vector3d> d = OnlyTranslation(twists, tolerance);
     if (!d) continue;
-    const std::vector<std::size_t>& seat_parts = seater.PartsOf(bodies.second);
+    const std::vector<std::size_t>& seat_parts = subassemblies[bodies.second].parts;
     const std::optional<Stop> ahead = seater.Travel(body_parts, seat_parts, *d);
     if (!ahead) continue;
     const std::optional<Stop> behind = seater.Travel(body_parts, seat_parts, -*d);

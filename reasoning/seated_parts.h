@@ -7,6 +7,7 @@
 #include "kernel/assembly/diagnostic.h"
 #include "reasoning/motion.h"
 #include "reasoning/pair.h"
+#include "reasoning/pair_graph.h"
 
 namespace mechanist {
 
@@ -24,7 +25,8 @@ struct Seating {
 };
 
 /// Settles free translations that the geometry stops within kMaxSeatPlay, for the rigid
-/// bodies (`subassembly_of`, per part) that make a free motion of `motion`. The pairs between
+/// bodies (`subassemblies`, and `subassembly_of` per part, as PairGraph gives them) that make
+/// a free motion of `motion`. The pairs between
 /// such a body B and one other body S are examined alone (their relative twists are the null
 /// space of the pairs' velocity constraints, by SVD, at the assembly's angle tolerance):
 /// - face contacts (planar pairs only) that leave B nothing but one translation d: B sits in
@@ -39,6 +41,7 @@ struct Seating {
 /// (a stand-in mesh), are left as they are. Does nothing when the file's
 /// `infer` turns `seated_parts` off.
 Seating SeatParts(const Assembly& assembly, const MotionAnalysis& motion,
+                  const std::vector<Subassembly>& subassemblies,
                   const std::vector<std::size_t>& subassembly_of, std::vector<Pair>* pairs);
 
 }  // namespace mechanist
