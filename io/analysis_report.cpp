@@ -111,6 +111,11 @@ void WriteAnalysisSummary(const Assembly& assembly, const Analysis& analysis, st
   if (mobility.on_faces > 0) {
     out << ", " << mobility.on_faces << " of them of parts held by face contacts alone";
   }
+  if (mobility.idle > 0) {
+    out << ", " << mobility.idle
+        << (mobility.idle == 1 ? " of them an idle spin" : " of them idle spins")
+        << " of round parts";
+  }
   out << ")\n";
   for (const DrivenMotion& m : analysis.motion.driven) {
     out << DrivenTitle(assembly, m) << ":\n";
@@ -183,7 +188,8 @@ std::string AnalysisJson(const Assembly& assembly, const Analysis& analysis) {
     free.push_back({{"part", assembly.part(f.part).id},
                     {"pair", f.pair ? Json(fmt::format("P{}", *f.pair + 1)) : Json(nullptr)},
                     {"freedom", f.freedom},
-                    {"parts", parts}});
+                    {"parts", parts},
+                    {"idle", f.idle}});
   }
   Json freedoms = Json::array();
   for (std::size_t p : ById(assembly)) {
@@ -196,6 +202,7 @@ std::string AnalysisJson(const Assembly& assembly, const Analysis& analysis) {
                         {"redundant_constraints", redundant},
                         {"free_motions", free},
                         {"on_faces", mobility.on_faces},
+                        {"idle", mobility.idle},
                         {"part_freedoms", freedoms}};
   Json motion = Json::array();
   for (const DrivenMotion& m : analysis.motion.driven) {

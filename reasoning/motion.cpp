@@ -11,6 +11,8 @@
 #include <span>
 #include <stdexcept>
 
+#include "kernel/collision/collision_mesh.h"
+#include "kernel/collision/rotational_symmetry.h"
 #include "kernel/support/compressed_rows.h"
 #include "kernel/support/enum_names.h"
 #include "reasoning/kinematic_model.h"
@@ -327,6 +329,104 @@ std::vector<std::size_t> MovedBodies(const KinematicModel& model,
   return bodies;
 }
 
+/// Which parts are round about a line, their meshes prepared once (built only for the parts
+/// of the few free motions that turn).
+class RoundParts {
+ public:
+  explicit RoundParts(const Assembly& assembly) : assembly_(assembly) {}
+
+  /// Whether part p's mesh is a solid of revolution about the world line through p_W along
+  /// axis_W, within twice the STEP mesher's chordal deviation (0.1% of a part's size, at least
+  /// 0.01 mm): 0.2% of its box's diagonal, at least 0.02 mm. A part without a mesh is not.
+  bool IsRound(std::size_t p, const Eigen::Vector3d& p_W, const Eigen::Vector3d& axis_W) {
+    const Part& part = assembly_.part(p);
+    if (!part.mesh || part.mesh->faces.empty()) return false;
+    auto [it, added] = meshes_.try_emplace(part.mesh.get());
+    if (added) it->second = std::make_unique<CollisionMesh>(part.mesh);
+    const CollisionMesh& mesh = *it->second;
+    const RigidTransform X_PW = part.X_WP.inverse();
+    const double tolerance = std::max(0.002 * mesh.bounds().size().norm(), 0.02);
+    return IsRoundAbout(mesh, X_PW * p_W, X_PW.RotateDirection(axis_W), tolerance);
+  }
+
+ private:
+  const Assembly& assembly_;
+  std::map<const TriangleMesh*, std::unique_ptr<CollisionMesh>> meshes_;
+};
+
+/// A body that can turn alone about a line around which each of its parts is round: an idle
+/// spin (a wheel, a bearing, a spacer turning in place), which moves nothing else.
+struct IdleSpin {
+  std::size_t body = 0;
+  std::size_t pair = 0;   ///< the revolute or cylindrical pair whose axis it turns about
+  std::size_t other = 0;  ///< the body of that pair's other part
+};
+
+/// Whether the pair lets its part on `axis` turn about that line (through axis.origin along
+/// axis.direction) while the other part stays still: a revolute or cylindrical pair on the
+/// line, a face contact across it, a ball joint centred on it.
+bool AllowsTurnAbout(const Assembly& assembly, const KinematicModel& model, const Pair& pair,
+                     const AxisSegment& axis) {
+  const AxisSegment& f = model.WorldAxis(pair.a);
+  const double parallel = std::abs(f.direction.dot(axis.direction));
+  const bool along = parallel >= std::cos(assembly.tolerance().angle);
+  const Eigen::Vector3d offset = f.origin - axis.origin;
+  const double off_line = (offset - offset.dot(axis.direction) * axis.direction).norm();
+  const bool on_line = off_line <= assembly.tolerance().length;
+  switch (pair.type) {
+    case PairType::kRevolute:
+    case PairType::kCylindrical:
+      return along && on_line;
+    case PairType::kPlanar:
+      return along;
+    case PairType::kSpherical:
+      return on_line;
+    default:
+      return false;
+  }
+}
+
+/// The bodies of `model` that can turn alone about the axis of one of their revolute or
+/// cylindrical pairs with another body (every other pair they have with other bodies allows
+/// that turn, AllowsTurnAbout) and whose parts are all round about it (RoundParts): found on
+/// the geometry, whatever the basis the free motions are given in. One per body, about its
+/// first such pair's axis.
+std::vector<IdleSpin> FindIdleSpins(const Assembly& assembly, const std::vector<Pair>& pairs,
+                                    const KinematicModel& model, const MotionModel& motion_model) {
+  std::vector<std::pair<std::size_t, std::size_t>> entries;  // (body, pair) across bodies
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const std::size_t a = model.body_of_part(pairs[i].a.part);
+    const std::size_t b = model.body_of_part(pairs[i].b.part);
+    if (a == b) continue;
+    entries.emplace_back(a, i);
+    entries.emplace_back(b, i);
+  }
+  const CompressedRows<std::size_t> pairs_of(model.body_count(), entries);
+  std::vector<IdleSpin> spins;
+  RoundParts round_parts(assembly);
+  for (std::size_t body = 0; body < model.body_count(); ++body) {
+    if (body == model.ground()) continue;
+    for (std::size_t candidate : pairs_of[body]) {
+      const Pair& pair = pairs[candidate];
+      if (pair.type != PairType::kRevolute && pair.type != PairType::kCylindrical) continue;
+      const AxisSegment& axis = model.WorldAxis(pair.a);
+      const auto allows = [&](std::size_t i) {
+        return AllowsTurnAbout(assembly, model, pairs[i], axis);
+      };
+      if (!std::all_of(pairs_of[body].begin(), pairs_of[body].end(), allows)) continue;
+      const std::span<const std::size_t> parts = motion_model.PartsOf(body);
+      const auto round = [&](std::size_t p) {
+        return round_parts.IsRound(p, axis.origin, axis.direction);
+      };
+      if (!std::all_of(parts.begin(), parts.end(), round)) continue;
+      const std::size_t a = model.body_of_part(pair.a.part);
+      spins.push_back({body, candidate, a == body ? model.body_of_part(pair.b.part) : a});
+      break;
+    }
+  }
+  return spins;
+}
+
 // "a", "a and b", "a, b and c".
 std::string Enumeration(const std::vector<std::string>& items) {
   std::string out;
@@ -601,7 +701,21 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   // that basis motion sets at 1, the others following it). A floating body is one free motion
   // with all its freedoms; a body with no pair at all is reported as unconnected already.
   std::vector<bool> reported(model.joints().size(), false);
-  const LinearSystem& free_system = imposed.empty() ? motion_model.structural() : driven_system;
+  const LinearSystem& unheld_system = imposed.empty() ? motion_model.structural() : driven_system;
+  // Idle spins are free motions of their own (each turns one body, the rest still): held
+  // here, so that the basis below gives the others, and listed after them.
+  std::vector<IdleSpin> spins = FindIdleSpins(assembly, pairs, model, motion_model);
+  std::optional<LinearSystem> spins_held;
+  if (!spins.empty()) {
+    spins_held = unheld_system;
+    std::erase_if(spins, [&](const IdleSpin& spin) {
+      const Eigen::Vector3d& axis_W = model.WorldAxis(pairs[spin.pair].a).direction;
+      // Not independent: a driver turns or holds it, so it is no free motion.
+      return spins_held->AddRow(model.Angular(spin.body, spin.other, axis_W)) !=
+             LinearSystem::Outcome::kIndependent;
+    });
+  }
+  const LinearSystem& free_system = spins_held ? *spins_held : unheld_system;
   const std::vector<LinearSystem::Row> basis = free_system.NullSpace();
   const std::vector<std::size_t> free_variables = free_system.FreeVariables();
   // The warnings, said once per part with all its free motions, and once for all the parts
@@ -699,6 +813,55 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     result.diagnostics.push_back({finding ? Severity::kWarning : Severity::kInfo, "free_motion",
                                   std::move(message), part_ids(moved), std::move(features)});
   }
+  // Idle spins, all in one info whatever the drivers: turning a round part in place changes
+  // nothing a designer would fix (fourteen rollers say so once).
+  std::vector<std::pair<std::size_t, FreeMotion>> idle;  // by part rank
+  for (const IdleSpin& spin : spins) {
+    FreeMotion free;
+    const std::span<const std::size_t> own = motion_model.PartsOf(spin.body);
+    free.parts.assign(own.begin(), own.end());
+    std::sort(free.parts.begin(), free.parts.end(), [&](std::size_t x, std::size_t y) {
+      return assembly.PartRank(x) < assembly.PartRank(y);
+    });
+    free.part = free.parts.front();
+    free.pair = spin.pair;
+    const Pair& pair = pairs[spin.pair];
+    const FeatureRef& axis = model.body_of_part(pair.a.part) == spin.body ? pair.b : pair.a;
+    free.freedom = fmt::format("turns about {}'s axis", assembly.FeatureName(axis));
+    free.idle = true;
+    idle.emplace_back(assembly.PartRank(free.part), std::move(free));
+  }
+  std::sort(idle.begin(), idle.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  if (!idle.empty()) {
+    std::vector<std::string> named, features;
+    std::vector<std::size_t> moved;
+    for (const auto& [rank, free] : idle) {
+      named.emplace_back(assembly.PartId(free.part));
+      moved.insert(moved.end(), free.parts.begin(), free.parts.end());
+      for (std::string& name : pair_features(*free.pair)) features.push_back(std::move(name));
+    }
+    std::sort(moved.begin(), moved.end(), [&](std::size_t x, std::size_t y) {
+      return assembly.PartRank(x) < assembly.PartRank(y);
+    });
+    const FreeMotion& first = idle.front().second;
+    std::string message =
+        idle.size() > 1
+            ? fmt::format(
+                  "{} parts, {}, each turns idly about its own axis: each is round "
+                  "about it",
+                  named.size(), Enumeration(named))
+            : fmt::format("{} {} ({} pair), idly: it is round about that axis", named.front(),
+                          first.freedom, ToString(pairs[*first.pair].type));
+    message += fmt::format(
+        ", so the turn moves nothing else (a wheel, a bearing, a spacer, or a shaft whose drive "
+        "the file does not show; the mobility counts {} among its idle spins)",
+        idle.size() > 1 ? "these" : "it");
+    result.diagnostics.push_back(
+        {Severity::kInfo, "idle_spin", std::move(message), part_ids(moved), std::move(features)});
+  }
+  mobility.idle = static_cast<int>(idle.size());
+  for (auto& [rank, free] : idle) mobility.free_motions.push_back(std::move(free));
   return result;
 }
 

@@ -77,6 +77,9 @@ struct FreeMotion {
   std::optional<std::size_t> pair;  ///< the pair that allows it; empty: the part floats
   std::string freedom;              ///< "turns about shaft/axis", "slides along ..."
   std::vector<std::size_t> parts;   ///< parts that move with it, by part id
+  /// An idle spin: the parts turn together about a line around which each is round (a wheel,
+  /// a bearing, a spacer turning in place), so the motion moves nothing else.
+  bool idle = false;
 };
 
 /// Mobility by the rank of the velocity constraints, which stays right for over-constrained
@@ -89,6 +92,9 @@ struct Mobility {
   /// Of free_motions, those of parts held by face contacts alone (planar pairs: a part
   /// resting on faces whose fasteners the file leaves out).
   int on_faces = 0;
+  /// Of free_motions, the idle spins (FreeMotion::idle): dof - idle counts the motions that
+  /// change the assembly's shape, as a mechanism's mobility leaves out a roller's spin.
+  int idle = 0;
   std::vector<int> part_freedoms;  ///< per part: dimension of its allowable motion
 };
 

@@ -34,6 +34,8 @@ struct Expected {
   int seated_pairs = 0;
   // The mobility, where the test states it (a negative value: not stated here).
   int mobility = -1;
+  // Of its free motions, the idle spins of round parts (a spacer, a bearing, a bare shaft).
+  int idle = 0;
 };
 
 std::vector<Expected> Cases() {
@@ -49,6 +51,9 @@ std::vector<Expected> Cases() {
        2,
        0,
        0,
+       1,
+       0,
+       2,
        1},
       // The print-in-place hinge: its pin stubs, 0.3 mm clear of the bores, are the lid's
       // only guide (loose fits), so no warning.
@@ -57,7 +62,9 @@ std::vector<Expected> Cases() {
       // nothing holds to the frame. Ten M5 screws end in nuts or tap-drilled holes. Two axle
       // bolts are held along their holes within 0.14 mm, and a part stands wedged against
       // another: 31, where the truth has 1 (5 with the wheels' spins), the rest resting on
-      // faces whose screws the file leaves out.
+      // faces whose screws the file leaves out. Five of them are idle spins: two spacers on
+      // the wheels' axle bolts, the two bearings of the lead screw in their seats, and the
+      // lead screw, a bare round rod whose coupler stands 0.07 mm off its axis.
       {"lead_screw_linear_actuator_onshape/Assembly.step",
        "Assembly_1._C_V",
        {"axes_not_collinear: Assembly_1.p____V", "free_motion: Assembly_1.__V_4"},
@@ -67,7 +74,8 @@ std::vector<Expected> Cases() {
        10,
        0,
        3,
-       31},
+       31,
+       5},
       // Every finger hinge is found (the palm's fold included), so no warning. The thumb's M4
       // pivot screw ends in its nut's hole (drawn at the minor diameter). 22 where the truth
       // has 16: the five servos rest in the forearm's pockets with 1.4 to 27 mm of room along
@@ -157,6 +165,7 @@ TEST_P(RealExports, GroundAndWarningsAreTheOnesADesignerActsOn) {
                           [](const Pair& p) { return p.source == PairSource::kSeated; }),
             e.seated_pairs);
   if (e.mobility >= 0) EXPECT_EQ(an.motion.mobility.dof, e.mobility);
+  EXPECT_EQ(an.motion.mobility.idle, e.idle);
 }
 
 TEST(RealExports, TheRobotHandsThumbTurnsOnItsPivotScrew) {
@@ -261,6 +270,10 @@ TEST(RealExports, TheOnshapeReducersDiscRollsInItsPinRingAndTurnsTheOutput) {
   EXPECT_EQ(a.PartId(output[0]->a.part), "Full_Assembly.Output_Ring");
   EXPECT_EQ(a.PartId(output[0]->b.part), "Full_Assembly.Cycloidal_Disk");
   EXPECT_EQ(an.motion.mobility.dof, 2);  // the input, and the placeholder's idle spin
+  ASSERT_EQ(an.motion.mobility.idle, 1);
+  for (const FreeMotion& f : an.motion.mobility.free_motions) {
+    EXPECT_EQ(f.idle, a.PartId(f.part) == "Full_Assembly.Bearing_Placeholder") << f.freedom;
+  }
   // The input's shaft_1 points down (-z): one turn of it is -1 about z, the disc's +1/6 to
   // rounding: the cover's screws (threads not modelled) hold it to the housing, so the input,
   // turning in the cover, carries both axes and the pair is in Willis' form. (Not carried as

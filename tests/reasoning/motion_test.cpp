@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
+#include "kernel/mesh/mesh_builder.h"
 #include "reasoning/analysis.h"
 #include "reasoning/motion_run.h"
 #include "reasoning/pair_graph.h"
@@ -585,6 +587,87 @@ TEST(Motion, APartOnAShaftWithAThrustFaceIsNotHeldByFacesAlone) {
     EXPECT_EQ(d.message.find("face contacts alone"), std::string::npos) << d.message;
     EXPECT_NE(d.message.find("a motion the mechanism allows"), std::string::npos) << d.message;
   }
+}
+
+// A disc about the part's z axis with `sides` facets (10 mm radius, a 2 mm bore): round at
+// 96 facets, a hexagonal nut at 6.
+std::shared_ptr<const TriangleMesh> Disc(int sides) {
+  RadialGrid grid;
+  grid.radius = [](double, double) { return 10.0; };
+  grid.angular_segments = sides;
+  grid.axial_segments = 1;
+  grid.z0 = -5;
+  grid.z1 = 5;
+  grid.bore_radius = 2;
+  grid.bore_segments = sides;
+  return std::make_shared<TriangleMesh>(MakeRadialGridSolid(grid));
+}
+
+// A driven gear g1 and two parts s1, s2 alone on the frame's shafts (their teeth meet
+// nothing), with the meshes given.
+Analysis SpinningParts(int g1_sides, int s1_sides, int s2_sides) {
+  AssemblySpec spec = Builder()
+                          .Gear("g1", 0, 0, {{20, 0}})
+                          .Gear("s1", 100, 0, {{20, 0}})
+                          .Gear("s2", -100, 0, {{20, 0}})
+                          .Drive("g1", "teeth")
+                          .Build()
+                          .spec();
+  for (mechanist::Part& p : spec.parts) {
+    if (p.id == "g1") p.mesh = Disc(g1_sides);
+    if (p.id == "s1") p.mesh = Disc(s1_sides);
+    if (p.id == "s2") p.mesh = Disc(s2_sides);
+  }
+  return Analyze(Assembly(std::move(spec)));
+}
+
+std::vector<const Diagnostic*> WithCode(const Analysis& an, const std::string& code) {
+  std::vector<const Diagnostic*> found;
+  for (const Diagnostic& d : an.diagnostics) {
+    if (d.code == code) found.push_back(&d);
+  }
+  return found;
+}
+
+TEST(Motion, RoundPartsTurningAloneAreIdleSpinsSaidOnce) {
+  const Analysis an = SpinningParts(96, 96, 96);
+  const Mobility& mobility = an.motion.mobility;
+  EXPECT_EQ(mobility.dof, 3);
+  ASSERT_EQ(mobility.free_motions.size(), 2u);
+  EXPECT_EQ(mobility.idle, 2);
+  for (const FreeMotion& f : mobility.free_motions) {
+    EXPECT_TRUE(f.idle);
+    EXPECT_EQ(f.parts.size(), 1u);
+  }
+  // The driven gear is round too, but the driver turns it: no free motion.
+  EXPECT_TRUE(WithCode(an, "free_motion").empty());
+  const auto idle = WithCode(an, "idle_spin");
+  ASSERT_EQ(idle.size(), 1u);
+  EXPECT_EQ(idle[0]->severity, Severity::kInfo);
+  EXPECT_NE(idle[0]->message.find("2 parts, s1 and s2, each turns idly about its own axis"),
+            std::string::npos)
+      << idle[0]->message;
+  EXPECT_EQ(idle[0]->parts, (std::vector<std::string>{"s1", "s2"}));
+}
+
+TEST(Motion, APartThatIsNotRoundMakesAFreeMotionNotAnIdleSpin) {
+  // s2 is a hexagon about its shaft: turning it changes the assembly's shape.
+  const Analysis an = SpinningParts(96, 96, 6);
+  const Mobility& mobility = an.motion.mobility;
+  EXPECT_EQ(mobility.dof, 3);
+  EXPECT_EQ(mobility.free_motions.size(), 2u);
+  EXPECT_EQ(mobility.idle, 1);
+  const auto idle = WithCode(an, "idle_spin");
+  ASSERT_EQ(idle.size(), 1u);
+  EXPECT_NE(idle[0]->message.find("s1 turns about frame/bearing_s1's axis (revolute pair), idly"),
+            std::string::npos)
+      << idle[0]->message;
+  const auto free = WithCode(an, "free_motion");
+  ASSERT_EQ(free.size(), 1u);
+  EXPECT_EQ(free[0]->severity, Severity::kWarning);  // the file drives g1, not s2
+  EXPECT_EQ(free[0]->parts, std::vector<std::string>{"s2"});
+  // Stand-in cubes are no round parts either.
+  EXPECT_EQ(Analyze(Builder().Gear("g1", 0, 0, {{20, 0}}).Build()).motion.mobility.idle, 0);
 }
 
 TEST(Motion, GearFreeToSlideOnItsShaftIsAFreeMotion) {
