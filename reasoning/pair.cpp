@@ -9,7 +9,7 @@ static_assert(sizeof(Pair) <= 88, "Pair has grown: the analysis reads every pair
 
 namespace {
 
-constexpr EnumNames<PairSource, 12> kSources = {{
+constexpr EnumNames<PairSource, 13> kSources = {{
     {PairSource::kRecognised, "recognised"},
     {PairSource::kOverride, "override"},
     {PairSource::kClamp, "clamp"},
@@ -22,6 +22,7 @@ constexpr EnumNames<PairSource, 12> kSources = {{
     {PairSource::kShaftFlat, "shaft_flat"},
     {PairSource::kImpliedFrame, "implied_frame"},
     {PairSource::kSeated, "seated"},
+    {PairSource::kSetscrewHole, "setscrew_hole"},
 }};
 
 constexpr EnumNames<PairFastening, 6> kFastenings = {{

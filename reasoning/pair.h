@@ -25,6 +25,7 @@ enum class PairSource : std::uint8_t {
   kShaftFlat,     ///< a hub on a shaft's flat (a setscrew or D-bore not modelled)
   kImpliedFrame,  ///< a gear turning on an axle of the frame the file leaves out
   kSeated,        ///< faces that stop a part's only slide within a small play (SeatParts)
+  kSetscrewHole,  ///< a hub with an empty radial hole into its bore (a setscrew not modelled)
 };
 
 /// How a pair is held, where that matters to the user.

@@ -51,6 +51,7 @@ Recognition Recognizer::Run() {
   AddBearings();
   AddSolidBearings();
   FixHubsOnFlats();
+  FixHubsBySetscrewHoles();
   AddImpliedPins();
   AddLooseFits();
   AddPinsInHoles();

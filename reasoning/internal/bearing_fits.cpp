@@ -415,4 +415,75 @@ void Recognizer::FixHubsOnFlats() {
   }
 }
 
+void Recognizer::FixHubsBySetscrewHoles() {
+  std::vector<std::size_t> candidates;  // pairs whose hub has a radial hole into its bore
+  std::vector<const WorldFeature*> setscrew_holes;
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    const Pair& p = pairs_[i];
+    if (p.type != PairType::kCylindrical || p.source != PairSource::kRecognised) continue;
+    const WorldFeature& s = At(p.a);
+    const WorldFeature& h = At(p.b);
+    if (s.f.kind != FeatureKind::kShaft || h.f.kind != FeatureKind::kHole) continue;
+    const Eigen::Vector3d& u = s.axis.direction;
+    const double bore = h.f.diameter / 2;
+    // Where the hub and the shaft overlap along the shaft's axis.
+    const double h0 = (h.axis.origin - s.axis.origin).dot(u);
+    const double h1 = h0 + h.axis.length * h.axis.direction.dot(u);
+    const double lo = std::max(std::min(h0, h1), 0.0);
+    const double hi = std::min(std::max(h0, h1), s.axis.length);
+    // Distance of a point from the shaft's axis, and its place along it.
+    const auto radial = [&](const Eigen::Vector3d& p_W) {
+      const Eigen::Vector3d d = p_W - s.axis.origin;
+      return (d - d.dot(u) * u).norm();
+    };
+    const WorldFeature* found = nullptr;
+    for (std::size_t f = 0; f < assembly_.FeatureCount(h.ref.part) && !found; ++f) {
+      const WorldFeature& t = At({h.ref.part, f});
+      if (t.f.kind != FeatureKind::kHole || t.ref == h.ref || t.f.diameter >= h.f.diameter) {
+        continue;
+      }
+      if (std::abs(t.axis.direction.dot(u)) > std::sin(A_)) continue;  // not across the shaft
+      // Through the shaft's axis: the foot of the axis on the hole's line lies on the hole's.
+      const Eigen::Vector3d d = s.axis.origin - t.axis.origin;
+      const double along_hole = d.dot(t.axis.direction);
+      const Eigen::Vector3d foot = t.axis.origin + along_hole * t.axis.direction;
+      if (radial(foot) > L_) continue;
+      const double along = (foot - s.axis.origin).dot(u);
+      if (along < lo - L_ || along > hi + L_) continue;
+      const double r0 = radial(t.axis.origin), r1 = radial(t.axis.end());
+      if (std::min(r0, r1) > bore + L_ || std::max(r0, r1) <= bore + L_) continue;
+      found = &t;
+    }
+    if (!found) continue;
+    candidates.push_back(i);
+    setscrew_holes.push_back(found);
+  }
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    Pair& p = pairs_[candidates[k]];
+    const WorldFeature& t = *setscrew_holes[k];
+    const std::size_t hub = p.b.part, shaft_part = p.a.part;
+    // Nothing in the hole, and nothing but the shaft's part and face contacts on the hub.
+    const bool free_hub = std::none_of(pairs_.begin(), pairs_.end(), [&](const Pair& q) {
+      if (q.a == t.ref || q.b == t.ref) return true;
+      if (q.a.part != hub && q.b.part != hub) return false;
+      const std::size_t other = q.a.part == hub ? q.b.part : q.a.part;
+      return other != shaft_part && q.type != PairType::kPlanar;
+    });
+    if (!free_hub) continue;
+    p.type = PairType::kFixed;
+    p.dof = 0;
+    p.source = PairSource::kSetscrewHole;
+    const WorldFeature& s = At(p.a);
+    diagnostics_.push_back(
+        {Severity::kInfo,
+         "setscrew_hole",
+         fmt::format("{} sits on {} with an empty radial hole {} ({}) into its bore: fixed to it "
+                     "by a setscrew the file does not model (an override of type none forbids "
+                     "it)",
+                     assembly_.PartId(hub), Name(s), Name(t), Mm(t.f.diameter)),
+         {std::string(assembly_.PartId(hub)), std::string(assembly_.PartId(shaft_part))},
+         {Name(s), Name(At(p.b)), Name(t)}});
+  }
+}
+
 }  // namespace mechanist::internal

@@ -194,6 +194,14 @@ class Recognizer {
   /// shaft_flat), with one info `shaft_flat` per pair.
   void FixHubsOnFlats();
 
+  /// A hub on a shaft (a cylindrical pair) with a radial hole that opens into its bore within
+  /// the shaft's reach (its axis across the shaft's and through it, no wider than the bore)
+  /// and has nothing in it, when nothing but the shaft's part and face contacts holds the
+  /// hub: a shaft collar whose setscrew the file leaves out. The pair becomes fixed (source
+  /// setscrew_hole), with one info `setscrew_hole` per pair. A bushing with an oil hole is
+  /// held in its housing, so it is left turning. After FixHubsOnFlats.
+  void FixHubsBySetscrewHoles();
+
   // ---- overrides and side effects (recognition_side_effects.cpp; the order of the
   // pairs in pair_recognition.cpp) ----
 
@@ -289,6 +297,7 @@ class Recognizer {
   static_assert(static_cast<int>(PairSource::kShaftFlat) < (1 << kSourceBits));
   static_assert(static_cast<int>(PairSource::kImpliedFrame) < (1 << kSourceBits));
   static_assert(static_cast<int>(PairSource::kSeated) < (1 << kSourceBits));
+  static_assert(static_cast<int>(PairSource::kSetscrewHole) < (1 << kSourceBits));
 
   /// Pairs order by feature names, then source, then as found, not by indices, so that
   /// reordering the file changes nothing: the name ranks and the source packed in one key.

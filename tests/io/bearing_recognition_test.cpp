@@ -310,6 +310,58 @@ TEST(Bearing, AHubOnAShaftsFlatIsFixedToIt) {
   EXPECT_EQ(Find(beside, "shaft_flat"), nullptr);
 }
 
+// A shaft collar (bore 8, outside 14, 7 long) on a ground rod, with a hole of 4.2 mm across
+// its axis at mid-length whose ends lie `inner` and 7 mm from the rod's axis, `offset` mm
+// beside it; `extra`: more parts.
+Assembly CollarOnRod(double inner, double offset, const std::string& extra = "") {
+  return LoadAssemblyText(fmt::format(R"({{"mechanist": 1, "parts": [
+    {{"id": "rod", "ground": true, "features": [
+      {{"id": "shaft", "kind": "shaft", "origin": [0, 0, -10], "axis": [0, 0, 1], "diameter": 8,
+       "length": 30}}]}},
+    {{"id": "collar", "features": [
+      {{"id": "bore", "kind": "hole", "origin": [0, 0, 0], "axis": [0, 0, 1], "diameter": 8,
+       "length": 7, "through": true}},
+      {{"id": "outside", "kind": "shaft", "origin": [0, 0, 0], "axis": [0, 0, 1], "diameter": 14,
+       "length": 7}},
+      {{"id": "setscrew", "kind": "hole", "origin": [{}, {}, 3.5], "axis": [1, 0, 0],
+       "diameter": 4.2, "length": {}, "through": true}}]}}{}]}})",
+                                      inner, offset, 7 - inner, extra),
+                          "collar.json");
+}
+
+TEST(Bearing, AShaftCollarWithAnEmptySetscrewHoleIsFixedToItsShaft) {
+  // The hole's inner end at 3.4 mm, inside the 4 mm bore (a drilled hole meets a bore on a
+  // saddle curve, closer than the bore's radius at its sides): a setscrew's hole.
+  const Analysis collar = Analyze(CollarOnRod(3.4, 0));
+  EXPECT_EQ(CountSource(collar, PairSource::kSetscrewHole), 1);
+  EXPECT_EQ(collar.motion.mobility.dof, 0);
+  const Diagnostic* info = Find(collar, "setscrew_hole");
+  ASSERT_NE(info, nullptr);
+  EXPECT_NE(info->message.find("collar sits on rod/shaft with an empty radial hole "
+                               "collar/setscrew (4.2 mm) into its bore"),
+            std::string::npos)
+      << info->message;
+  // A blind hole that stops short of the bore, and one beside the axis (a bolt hole through a
+  // clamp collar's ear), leave it on the shaft: it turns and slides.
+  for (const Assembly& a : {CollarOnRod(5, 0), CollarOnRod(3.4, 2.5)}) {
+    const Analysis an = Analyze(a);
+    EXPECT_EQ(CountSource(an, PairSource::kSetscrewHole), 0);
+    EXPECT_EQ(an.motion.mobility.dof, 2);
+  }
+  // Held in a housing too, it is a bushing with an oil hole: the rod turns in it.
+  const Analysis bushing = Analyze(CollarOnRod(3.4, 0, R"(,
+    {"id": "housing", "ground": true, "features": [
+      {"id": "bore", "kind": "hole", "origin": [0, 0, 0], "axis": [0, 0, 1], "diameter": 14,
+       "length": 7, "through": true}]})"));
+  EXPECT_EQ(CountSource(bushing, PairSource::kSetscrewHole), 0);
+  // A pin in the hole is modelled: what it does is the pin's pairs' to say.
+  const Analysis pinned = Analyze(CollarOnRod(3.4, 0, R"(,
+    {"id": "pin", "features": [
+      {"id": "pin", "kind": "shaft", "origin": [3.4, 0, 3.5], "axis": [1, 0, 0], "diameter": 4.2,
+       "length": 3.6}]})"));
+  EXPECT_EQ(CountSource(pinned, PairSource::kSetscrewHole), 0);
+}
+
 TEST(Bearing, TheFusionPendulumsSkf6002IsFoundWithItsNineBalls) {
   // Truth: a deep-groove ball bearing, 9 balls of r about 2.36 on a pitch circle of r about
   // 11.7, races of bore r 7.5 and outside r 16 (an SKF 6002: 15 x 32 x 9).
