@@ -330,7 +330,7 @@ std::vector<std::size_t> MovedBodies(const KinematicModel& model,
 }
 
 /// Which parts are round about a line, their meshes prepared once (built only for the parts
-/// of the few free motions that turn).
+/// of bodies whose pairs let them turn alone, a few in a mechanism).
 class RoundParts {
  public:
   explicit RoundParts(const Assembly& assembly) : assembly_(assembly) {}
@@ -341,12 +341,14 @@ class RoundParts {
   bool IsRound(std::size_t p, const Eigen::Vector3d& p_W, const Eigen::Vector3d& axis_W) {
     const Part& part = assembly_.part(p);
     if (!part.mesh || part.mesh->faces.empty()) return false;
+    const RigidTransform X_PW = part.X_WP.inverse();
+    const Eigen::Vector3d p_P = X_PW * p_W, axis_P = X_PW.RotateDirection(axis_W);
+    const double tolerance = std::max(0.002 * part.mesh->Bounds().size().norm(), 0.02);
+    // Most parts that fail, fail this without a hierarchy (a lever with its pivot at one end).
+    if (!ReachesEquallyAround(*part.mesh, p_P, axis_P, tolerance)) return false;
     auto [it, added] = meshes_.try_emplace(part.mesh.get());
     if (added) it->second = std::make_unique<CollisionMesh>(part.mesh);
-    const CollisionMesh& mesh = *it->second;
-    const RigidTransform X_PW = part.X_WP.inverse();
-    const double tolerance = std::max(0.002 * mesh.bounds().size().norm(), 0.02);
-    return IsRoundAbout(mesh, X_PW * p_W, X_PW.RotateDirection(axis_W), tolerance);
+    return IsRoundAbout(*it->second, p_P, axis_P, tolerance);
   }
 
  private:

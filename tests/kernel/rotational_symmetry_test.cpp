@@ -60,6 +60,20 @@ TEST(RotationalSymmetry, SymmetricPatternsAreNotRound) {
                            kZ, kTolerance));
 }
 
+TEST(RotationalSymmetry, ALeverDoesNotReachEquallyAroundItsPivot) {
+  // A 40 x 10 x 5 lever whose pivot is 5 mm from one end: 35 mm one way, 5 mm the others.
+  Region2d r;
+  r.outer = {{-5, -5}, {35, -5}, {35, 5}, {-5, 5}};
+  const TriangleMesh lever = ExtrudeRegion(r, 0, 5);
+  EXPECT_FALSE(ReachesEquallyAround(lever, Eigen::Vector3d::Zero(), kZ, 0.1));
+  EXPECT_FALSE(IsRoundAbout(CollisionMesh(std::make_shared<TriangleMesh>(lever)),
+                            Eigen::Vector3d::Zero(), kZ, 0.1));
+  // The washer reaches 10 mm all round its axis, not round a line 1 mm beside it.
+  const CollisionMesh washer = Solid([](double) { return 10.0; }, 96);
+  EXPECT_TRUE(ReachesEquallyAround(washer.mesh(), Eigen::Vector3d::Zero(), kZ, 0.02));
+  EXPECT_FALSE(ReachesEquallyAround(washer.mesh(), Eigen::Vector3d(1, 0, 0), kZ, 0.02));
+}
+
 TEST(RotationalSymmetry, ASphereIsRoundAboutEveryLineThroughItsCentre) {
   const CollisionMesh ball(std::make_shared<TriangleMesh>(MakeUvSphere(5, 64, 128)));
   EXPECT_TRUE(IsRoundAbout(ball, Eigen::Vector3d::Zero(), kZ, 0.02));
