@@ -1,5 +1,6 @@
 // Rolling bearings modelled as they are sold: rings and balls or rollers (AddBearings), and
-// bearings of one solid (AddSolidBearings).
+// bearings of one solid (AddSolidBearings); hubs fixed on their shafts by what the file leaves
+// out (FixHubsOnFlats, FixHubsBySetscrewHoles).
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>  // fmt::join
@@ -14,6 +15,26 @@
 
 namespace mechanist::internal {
 namespace {
+
+/// A hub on a shaft: a recognised cylindrical pair of a shaft `s` in a hole `h`, and where the
+/// hole spans along the shaft's axis (mm from the shaft's origin, lo <= hi).
+struct HubOnShaft {
+  const WorldFeature& s;
+  const WorldFeature& h;
+  double lo = 0.0, hi = 0.0;
+};
+
+template <typename At>
+std::optional<HubOnShaft> AsHubOnShaft(const Pair& p, const At& at) {
+  if (p.type != PairType::kCylindrical || p.source != PairSource::kRecognised) return {};
+  const WorldFeature& s = at(p.a);
+  const WorldFeature& h = at(p.b);
+  if (s.f.kind != FeatureKind::kShaft || h.f.kind != FeatureKind::kHole) return {};
+  const Eigen::Vector3d& u = s.axis.direction;
+  const double h0 = (h.axis.origin - s.axis.origin).dot(u);
+  const double h1 = h0 + h.axis.length * h.axis.direction.dot(u);
+  return HubOnShaft{s, h, std::min(h0, h1), std::max(h0, h1)};
+}
 
 /// A circle in space through points: its centre, unit normal and radius, and the largest
 /// distance of a point from it.
@@ -374,17 +395,15 @@ void Recognizer::AddSolidBearings() {
 }
 
 void Recognizer::FixHubsOnFlats() {
+  const auto at = [this](FeatureRef f) -> const WorldFeature& { return At(f); };
   for (Pair& p : pairs_) {
-    if (p.type != PairType::kCylindrical || p.source != PairSource::kRecognised) continue;
-    const WorldFeature& s = At(p.a);
-    const WorldFeature& h = At(p.b);
-    if (s.f.kind != FeatureKind::kShaft || h.f.kind != FeatureKind::kHole) continue;
+    const std::optional<HubOnShaft> hub = AsHubOnShaft(p, at);
+    if (!hub) continue;
+    const WorldFeature& s = hub->s;
+    const WorldFeature& h = hub->h;
     const Eigen::Vector3d& u = s.axis.direction;
     const double r = s.f.diameter / 2;
-    // The hole's span along the shaft's axis.
-    const double h0 = (h.axis.origin - s.axis.origin).dot(u);
-    const double h1 = h0 + h.axis.length * h.axis.direction.dot(u);
-    const double lo = std::min(h0, h1), hi = std::max(h0, h1);
+    const double lo = hub->lo, hi = hub->hi;
     const WorldFeature* flat = nullptr;
     for (std::size_t f = 0; f < assembly_.FeatureCount(s.ref.part) && !flat; ++f) {
       const WorldFeature& w = At({s.ref.part, f});
@@ -418,19 +437,16 @@ void Recognizer::FixHubsOnFlats() {
 void Recognizer::FixHubsBySetscrewHoles() {
   std::vector<std::size_t> candidates;  // pairs whose hub has a radial hole into its bore
   std::vector<const WorldFeature*> setscrew_holes;
+  const auto at = [this](FeatureRef f) -> const WorldFeature& { return At(f); };
   for (std::size_t i = 0; i < pairs_.size(); ++i) {
-    const Pair& p = pairs_[i];
-    if (p.type != PairType::kCylindrical || p.source != PairSource::kRecognised) continue;
-    const WorldFeature& s = At(p.a);
-    const WorldFeature& h = At(p.b);
-    if (s.f.kind != FeatureKind::kShaft || h.f.kind != FeatureKind::kHole) continue;
+    const std::optional<HubOnShaft> hub = AsHubOnShaft(pairs_[i], at);
+    if (!hub) continue;
+    const WorldFeature& s = hub->s;
+    const WorldFeature& h = hub->h;
     const Eigen::Vector3d& u = s.axis.direction;
     const double bore = h.f.diameter / 2;
     // Where the hub and the shaft overlap along the shaft's axis.
-    const double h0 = (h.axis.origin - s.axis.origin).dot(u);
-    const double h1 = h0 + h.axis.length * h.axis.direction.dot(u);
-    const double lo = std::max(std::min(h0, h1), 0.0);
-    const double hi = std::min(std::max(h0, h1), s.axis.length);
+    const double lo = std::max(hub->lo, 0.0), hi = std::min(hub->hi, s.axis.length);
     // Distance of a point from the shaft's axis, and its place along it.
     const auto radial = [&](const Eigen::Vector3d& p_W) {
       const Eigen::Vector3d d = p_W - s.axis.origin;
