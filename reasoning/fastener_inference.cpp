@@ -239,7 +239,12 @@ std::vector<Diagnostic> InferScrewsInPlainHoles(
       const Part& part = (*parts)[p];
       for (std::size_t f = 0; f < part.features.size(); ++f) {
         const Feature& hole = part.features[f];
-        if (hole.kind != FeatureKind::kHole || !inferred(p, f)) continue;
+        // A plain hole, or one tapped tight at the shank's size already: a screw from its
+        // other end (an extrusion's long core hole takes one at each end).
+        const bool tapped = hole.kind == FeatureKind::kTappedHole &&
+                            hole.fastening == Fastening::kTight &&
+                            std::abs(hole.diameter - thread.diameter) <= length_tolerance;
+        if ((hole.kind != FeatureKind::kHole && !tapped) || !inferred(p, f)) continue;
         const AxisSegment h = hole.WorldAxis(part.X_WP);
         if (hole.diameter < 0.75 * thread.diameter ||
             hole.diameter > 1.1 * thread.diameter + length_tolerance ||

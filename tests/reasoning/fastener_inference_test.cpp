@@ -107,6 +107,23 @@ TEST(ScrewsInPlainHoles, AHeadThatIsNoCylinderAndHolesDrilledAtTheTapSize) {
   EXPECT_TRUE(Infer(&narrow).empty());
 }
 
+TEST(ScrewsInPlainHoles, ALongHoleTakesAScrewAtEachEnd) {
+  // The housing's hole runs 60 mm (z 5 to -55), like an extrusion's core: the first screw taps
+  // it from the top, and a second one, turned over under the housing (its head's underside at
+  // z = -55, its tip at -39), is screwed into the same hole from below.
+  std::vector<Part> parts = Parts(16, 60);
+  Part below = parts[0];
+  below.id = "screw_below";
+  below.X_WP = RigidTransform::Translation({0, 0, -45}) *
+               RigidTransform::AxisAngle(Eigen::Vector3d::UnitX(), 3.14159265358979);
+  parts.push_back(below);
+  const std::vector<Diagnostic> found = Infer(&parts);
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[1].parts, (std::vector<std::string>{"screw_below", "housing"}));
+  EXPECT_EQ(parts[3].features[1].kind, FeatureKind::kThread);
+  EXPECT_EQ(Analyze(testing::MakeAssembly(parts)).motion.mobility.dof, 0);
+}
+
 TEST(ScrewsInPlainHoles, OnlyScrewsThatEndInsideTheirLastHole) {
   // The tip comes out of the housing's hole (z -6 below its end at -1): a pin, not a screw.
   std::vector<Part> through = Parts(16, 6);
