@@ -447,7 +447,7 @@ void Recognizer::FixHubsBySetscrewHoles() {
     const double bore = h.f.diameter / 2;
     // Where the hub and the shaft overlap along the shaft's axis.
     const double lo = std::max(hub->lo, 0.0), hi = std::min(hub->hi, s.axis.length);
-    // Distance of a point from the shaft's axis, and its place along it.
+    // A point's distance from the shaft's axis.
     const auto radial = [&](const Eigen::Vector3d& p_W) {
       const Eigen::Vector3d d = p_W - s.axis.origin;
       return (d - d.dot(u) * u).norm();
