@@ -11,8 +11,9 @@
 #include <span>
 #include <stdexcept>
 
-#include "kernel/collision/collision_mesh.h"
+#include "kernel/collision/collision_mesh_cache.h"
 #include "kernel/collision/rotational_symmetry.h"
+#include "kernel/geometry/line_geometry.h"
 #include "kernel/support/compressed_rows.h"
 #include "kernel/support/enum_names.h"
 #include "reasoning/kinematic_model.h"
@@ -346,14 +347,12 @@ class RoundParts {
     const double tolerance = std::max(0.002 * part.mesh->Bounds().size().norm(), 0.02);
     // Most parts that fail, fail this without a hierarchy (a lever with its pivot at one end).
     if (!ReachesEquallyAround(*part.mesh, p_P, axis_P, tolerance)) return false;
-    auto [it, added] = meshes_.try_emplace(part.mesh.get());
-    if (added) it->second = std::make_unique<CollisionMesh>(part.mesh);
-    return IsRoundAbout(*it->second, p_P, axis_P, tolerance);
+    return IsRoundAbout(meshes_.Get(part.mesh), p_P, axis_P, tolerance);
   }
 
  private:
   const Assembly& assembly_;
-  std::map<const TriangleMesh*, std::unique_ptr<CollisionMesh>> meshes_;
+  CollisionMeshCache meshes_;
 };
 
 /// A body that can turn alone about a line around which each of its parts is round: an idle
@@ -370,11 +369,9 @@ struct IdleSpin {
 bool AllowsTurnAbout(const Assembly& assembly, const KinematicModel& model, const Pair& pair,
                      const AxisSegment& axis) {
   const AxisSegment& f = model.WorldAxis(pair.a);
-  const double parallel = std::abs(f.direction.dot(axis.direction));
-  const bool along = parallel >= std::cos(assembly.tolerance().angle);
-  const Eigen::Vector3d offset = f.origin - axis.origin;
-  const double off_line = (offset - offset.dot(axis.direction) * axis.direction).norm();
-  const bool on_line = off_line <= assembly.tolerance().length;
+  const bool along = AngleBetweenLines(f.direction, axis.direction) <= assembly.tolerance().angle;
+  const bool on_line =
+      DistanceToLine(f.origin, axis.origin, axis.direction) <= assembly.tolerance().length;
   switch (pair.type) {
     case PairType::kRevolute:
     case PairType::kCylindrical:
@@ -730,6 +727,10 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     std::vector<std::string> features;
   };
   std::map<std::size_t, Unheld> unheld;  // by part rank
+  // Parts are named by id, so that the file's order of parts changes nothing.
+  const auto by_id = [&](std::size_t x, std::size_t y) {
+    return assembly.PartRank(x) < assembly.PartRank(y);
+  };
   for (std::size_t k = 0; k < basis.size(); ++k) {
     const LinearSystem::Row& n = basis[k];
     if (n.empty()) continue;
@@ -745,10 +746,6 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     free.freedom = j.pair ? FreedomWords(assembly, pairs, model, free_variables[k], child)
                           : "floats: no pair holds it";
     const std::span<const std::size_t> own = motion_model.PartsOf(child);
-    // Named by part ids, so that the file's order of parts changes nothing.
-    const auto by_id = [&](std::size_t x, std::size_t y) {
-      return assembly.PartRank(x) < assembly.PartRank(y);
-    };
     free.part = own.empty() ? 0 : *std::min_element(own.begin(), own.end(), by_id);
     for (std::size_t body : MovedBodies(model, children, n)) {
       for (std::size_t p : motion_model.PartsOf(body)) free.parts.push_back(p);
@@ -789,9 +786,7 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
       moved.insert(moved.end(), u.moved.begin(), u.moved.end());
       features.insert(features.end(), u.features.begin(), u.features.end());
     }
-    std::sort(moved.begin(), moved.end(), [&](std::size_t x, std::size_t y) {
-      return assembly.PartRank(x) < assembly.PartRank(y);
-    });
+    std::sort(moved.begin(), moved.end(), by_id);
     moved.erase(std::unique(moved.begin(), moved.end()), moved.end());
     const std::string what = Enumeration(motions), who = Enumeration(named);
     const bool several = named.size() > 1;
@@ -817,24 +812,20 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   }
   // Idle spins, all in one info whatever the drivers: turning a round part in place changes
   // nothing a designer would fix (fourteen rollers say so once).
-  std::vector<std::pair<std::size_t, FreeMotion>> idle;  // by part rank
+  std::map<std::size_t, FreeMotion> idle;  // by part rank
   for (const IdleSpin& spin : spins) {
     FreeMotion free;
     const std::span<const std::size_t> own = motion_model.PartsOf(spin.body);
     free.parts.assign(own.begin(), own.end());
-    std::sort(free.parts.begin(), free.parts.end(), [&](std::size_t x, std::size_t y) {
-      return assembly.PartRank(x) < assembly.PartRank(y);
-    });
+    std::sort(free.parts.begin(), free.parts.end(), by_id);
     free.part = free.parts.front();
     free.pair = spin.pair;
     const Pair& pair = pairs[spin.pair];
     const FeatureRef& axis = model.body_of_part(pair.a.part) == spin.body ? pair.b : pair.a;
     free.freedom = fmt::format("turns about {}'s axis", assembly.FeatureName(axis));
     free.idle = true;
-    idle.emplace_back(assembly.PartRank(free.part), std::move(free));
+    idle.emplace(assembly.PartRank(free.part), std::move(free));
   }
-  std::sort(idle.begin(), idle.end(),
-            [](const auto& x, const auto& y) { return x.first < y.first; });
   if (!idle.empty()) {
     std::vector<std::string> named, features;
     std::vector<std::size_t> moved;
@@ -843,10 +834,8 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
       moved.insert(moved.end(), free.parts.begin(), free.parts.end());
       for (std::string& name : pair_features(*free.pair)) features.push_back(std::move(name));
     }
-    std::sort(moved.begin(), moved.end(), [&](std::size_t x, std::size_t y) {
-      return assembly.PartRank(x) < assembly.PartRank(y);
-    });
-    const FreeMotion& first = idle.front().second;
+    std::sort(moved.begin(), moved.end(), by_id);
+    const FreeMotion& first = idle.begin()->second;
     std::string message =
         idle.size() > 1
             ? fmt::format(

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "kernel/collision/collision_mesh.h"
+#include "kernel/collision/collision_mesh_cache.h"
 #include "kernel/collision/translational_sweep.h"
 #include "kernel/geometry/aabb.h"
 #include "kernel/support/number_format.h"
@@ -148,18 +149,13 @@ class Seater {
     return TransformBox(assembly_.part(part).X_WP, Bounds(part));
   }
 
-  // The collision mesh of part `part`, which must have a mesh: built on first use, one per
-  // distinct mesh (a CollisionModel would build every part's, most of them never swept here).
-  const CollisionMesh* Mesh(std::size_t part) {
-    const Part& p = assembly_.part(part);
-    auto [it, added] = meshes_.try_emplace(p.mesh.get());
-    if (added) it->second = std::make_unique<CollisionMesh>(p.mesh);
-    return it->second.get();
-  }
+  // The collision mesh of part `part`, which must have a mesh: built on first use (a
+  // CollisionModel would build every part's, most of them never swept here).
+  const CollisionMesh* Mesh(std::size_t part) { return &meshes_.Get(assembly_.part(part).mesh); }
 
   const Assembly& assembly_;
   double min_approach_ = 0.0;
-  std::map<const TriangleMesh*, std::unique_ptr<CollisionMesh>> meshes_;
+  CollisionMeshCache meshes_;
   std::map<const TriangleMesh*, Aabb> bounds_;
 };
 

@@ -16,26 +16,6 @@
 namespace mechanist::internal {
 namespace {
 
-/// A hub on a shaft: a recognised cylindrical pair of a shaft `s` in a hole `h`, and where the
-/// hole spans along the shaft's axis (mm from the shaft's origin, lo <= hi).
-struct HubOnShaft {
-  const WorldFeature& s;
-  const WorldFeature& h;
-  double lo = 0.0, hi = 0.0;
-};
-
-template <typename At>
-std::optional<HubOnShaft> AsHubOnShaft(const Pair& p, const At& at) {
-  if (p.type != PairType::kCylindrical || p.source != PairSource::kRecognised) return {};
-  const WorldFeature& s = at(p.a);
-  const WorldFeature& h = at(p.b);
-  if (s.f.kind != FeatureKind::kShaft || h.f.kind != FeatureKind::kHole) return {};
-  const Eigen::Vector3d& u = s.axis.direction;
-  const double h0 = (h.axis.origin - s.axis.origin).dot(u);
-  const double h1 = h0 + h.axis.length * h.axis.direction.dot(u);
-  return HubOnShaft{s, h, std::min(h0, h1), std::max(h0, h1)};
-}
-
 /// A circle in space through points: its centre, unit normal and radius, and the largest
 /// distance of a point from it.
 struct SpaceCircle {
@@ -394,10 +374,20 @@ void Recognizer::AddSolidBearings() {
   }
 }
 
+std::optional<Recognizer::HubOnShaft> Recognizer::AsHubOnShaft(const Pair& p) const {
+  if (p.type != PairType::kCylindrical || p.source != PairSource::kRecognised) return {};
+  const WorldFeature& s = At(p.a);
+  const WorldFeature& h = At(p.b);
+  if (s.f.kind != FeatureKind::kShaft || h.f.kind != FeatureKind::kHole) return {};
+  const Eigen::Vector3d& u = s.axis.direction;
+  const double h0 = (h.axis.origin - s.axis.origin).dot(u);
+  const double h1 = h0 + h.axis.length * h.axis.direction.dot(u);
+  return HubOnShaft{s, h, std::min(h0, h1), std::max(h0, h1)};
+}
+
 void Recognizer::FixHubsOnFlats() {
-  const auto at = [this](FeatureRef f) -> const WorldFeature& { return At(f); };
   for (Pair& p : pairs_) {
-    const std::optional<HubOnShaft> hub = AsHubOnShaft(p, at);
+    const std::optional<HubOnShaft> hub = AsHubOnShaft(p);
     if (!hub) continue;
     const WorldFeature& s = hub->s;
     const WorldFeature& h = hub->h;
@@ -435,11 +425,8 @@ void Recognizer::FixHubsOnFlats() {
 }
 
 void Recognizer::FixHubsBySetscrewHoles() {
-  std::vector<std::size_t> candidates;  // pairs whose hub has a radial hole into its bore
-  std::vector<const WorldFeature*> setscrew_holes;
-  const auto at = [this](FeatureRef f) -> const WorldFeature& { return At(f); };
-  for (std::size_t i = 0; i < pairs_.size(); ++i) {
-    const std::optional<HubOnShaft> hub = AsHubOnShaft(pairs_[i], at);
+  for (Pair& p : pairs_) {
+    const std::optional<HubOnShaft> hub = AsHubOnShaft(p);
     if (!hub) continue;
     const WorldFeature& s = hub->s;
     const WorldFeature& h = hub->h;
@@ -447,10 +434,8 @@ void Recognizer::FixHubsBySetscrewHoles() {
     const double bore = h.f.diameter / 2;
     // Where the hub and the shaft overlap along the shaft's axis.
     const double lo = std::max(hub->lo, 0.0), hi = std::min(hub->hi, s.axis.length);
-    // A point's distance from the shaft's axis.
     const auto radial = [&](const Eigen::Vector3d& p_W) {
-      const Eigen::Vector3d d = p_W - s.axis.origin;
-      return (d - d.dot(u) * u).norm();
+      return DistanceToLine(p_W, s.axis.origin, u);
     };
     const WorldFeature* found = nullptr;
     for (std::size_t f = 0; f < assembly_.FeatureCount(h.ref.part) && !found; ++f) {
@@ -459,46 +444,37 @@ void Recognizer::FixHubsBySetscrewHoles() {
         continue;
       }
       if (std::abs(t.axis.direction.dot(u)) > std::sin(A_)) continue;  // not across the shaft
-      // Through the shaft's axis: the foot of the axis on the hole's line lies on the hole's.
-      const Eigen::Vector3d d = s.axis.origin - t.axis.origin;
-      const double along_hole = d.dot(t.axis.direction);
-      const Eigen::Vector3d foot = t.axis.origin + along_hole * t.axis.direction;
-      if (radial(foot) > L_) continue;
-      const double along = (foot - s.axis.origin).dot(u);
-      if (along < lo - L_ || along > hi + L_) continue;
+      // Through the shaft's axis, within the overlap.
+      const LineLineClosest c =
+          ClosestPointsOfLines(s.axis.origin, u, t.axis.origin, t.axis.direction);
+      if (c.distance > L_ || c.s < lo - L_ || c.s > hi + L_) continue;
       const double r0 = radial(t.axis.origin), r1 = radial(t.axis.end());
       if (std::min(r0, r1) > bore + L_ || std::max(r0, r1) <= bore + L_) continue;
       found = &t;
     }
     if (!found) continue;
-    candidates.push_back(i);
-    setscrew_holes.push_back(found);
-  }
-  for (std::size_t k = 0; k < candidates.size(); ++k) {
-    Pair& p = pairs_[candidates[k]];
-    const WorldFeature& t = *setscrew_holes[k];
-    const std::size_t hub = p.b.part, shaft_part = p.a.part;
+    const WorldFeature& t = *found;
+    const std::size_t hub_part = h.ref.part, shaft_part = s.ref.part;
     // Nothing in the hole, and nothing but the shaft's part and face contacts on the hub.
     const bool free_hub = std::none_of(pairs_.begin(), pairs_.end(), [&](const Pair& q) {
       if (q.a == t.ref || q.b == t.ref) return true;
-      if (q.a.part != hub && q.b.part != hub) return false;
-      const std::size_t other = q.a.part == hub ? q.b.part : q.a.part;
+      if (q.a.part != hub_part && q.b.part != hub_part) return false;
+      const std::size_t other = q.a.part == hub_part ? q.b.part : q.a.part;
       return other != shaft_part && q.type != PairType::kPlanar;
     });
     if (!free_hub) continue;
     p.type = PairType::kFixed;
     p.dof = 0;
     p.source = PairSource::kSetscrewHole;
-    const WorldFeature& s = At(p.a);
     diagnostics_.push_back(
         {Severity::kInfo,
          "setscrew_hole",
          fmt::format("{} sits on {} with an empty radial hole {} ({}) into its bore: fixed to it "
                      "by a setscrew the file does not model (an override of type none forbids "
                      "it)",
-                     assembly_.PartId(hub), Name(s), Name(t), Mm(t.f.diameter)),
-         {std::string(assembly_.PartId(hub)), std::string(assembly_.PartId(shaft_part))},
-         {Name(s), Name(At(p.b)), Name(t)}});
+                     assembly_.PartId(hub_part), Name(s), Name(t), Mm(t.f.diameter)),
+         {std::string(assembly_.PartId(hub_part)), std::string(assembly_.PartId(shaft_part))},
+         {Name(s), Name(h), Name(t)}});
   }
 }
 

@@ -202,6 +202,16 @@ class Recognizer {
   /// held in its housing, so it is left turning. After FixHubsOnFlats.
   void FixHubsBySetscrewHoles();
 
+  /// A hub on a shaft: a recognised cylindrical pair of a shaft `s` in a hole `h`, and where
+  /// the hole spans along the shaft's axis (mm from the shaft's origin, lo <= hi).
+  struct HubOnShaft {
+    const WorldFeature& s;
+    const WorldFeature& h;
+    double lo = 0.0, hi = 0.0;
+  };
+  /// `p` as a hub on a shaft, if it is one.
+  std::optional<HubOnShaft> AsHubOnShaft(const Pair& p) const;
+
   // ---- overrides and side effects (recognition_side_effects.cpp; the order of the
   // pairs in pair_recognition.cpp) ----
 
