@@ -353,7 +353,7 @@ class Reader {
 
   void ReadInference(const Json& v, const std::string& pointer) {
     ExpectObject(v, pointer);
-    CheckKeys(v, pointer, {"implied_pins", "implied_frame", "seated_parts"});
+    CheckKeys(v, pointer, {"implied_pins", "implied_frame", "seated_parts", "embedded_parts"});
     if (const Json* pins = Find(v, "implied_pins")) {
       spec_.inference.implied_pins = Bool(*pins, pointer + "/implied_pins");
     }
@@ -362,6 +362,9 @@ class Reader {
     }
     if (const Json* seated = Find(v, "seated_parts")) {
       spec_.inference.seated_parts = Bool(*seated, pointer + "/seated_parts");
+    }
+    if (const Json* embedded = Find(v, "embedded_parts")) {
+      spec_.inference.embedded_parts = Bool(*embedded, pointer + "/embedded_parts");
     }
   }
 

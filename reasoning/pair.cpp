@@ -9,7 +9,7 @@ static_assert(sizeof(Pair) <= 88, "Pair has grown: the analysis reads every pair
 
 namespace {
 
-constexpr EnumNames<PairSource, 13> kSources = {{
+constexpr EnumNames<PairSource, 14> kSources = {{
     {PairSource::kRecognised, "recognised"},
     {PairSource::kOverride, "override"},
     {PairSource::kClamp, "clamp"},
@@ -23,6 +23,7 @@ constexpr EnumNames<PairSource, 13> kSources = {{
     {PairSource::kImpliedFrame, "implied_frame"},
     {PairSource::kSeated, "seated"},
     {PairSource::kSetscrewHole, "setscrew_hole"},
+    {PairSource::kEmbedded, "embedded"},
 }};
 
 constexpr EnumNames<PairFastening, 6> kFastenings = {{

@@ -26,6 +26,7 @@ enum class PairSource : std::uint8_t {
   kImpliedFrame,  ///< a gear turning on an axle of the frame the file leaves out
   kSeated,        ///< faces that stop a part's only slide within a small play (SeatParts)
   kSetscrewHole,  ///< a hub with an empty radial hole into its bore (a setscrew not modelled)
+  kEmbedded,      ///< a part in no other pair, sunk into another part's solid
 };
 
 /// How a pair is held, where that matters to the user.

@@ -9,6 +9,7 @@ namespace mechanist::internal {
 
 Recognizer::Recognizer(const Assembly& assembly, std::span<const RigidTransform> X_WP)
     : assembly_(assembly),
+      X_WP_(X_WP),
       L_(assembly.tolerance().length),
       A_(assembly.tolerance().angle),
       near_L_(std::max(4 * L_, 0.5)),
@@ -67,6 +68,7 @@ Recognition Recognizer::Run() {
   }
   const auto unclamped = UnclampedParts(screwed);
   for (Pair& p : pairs_) ApplyClamp(p, screwed, unclamped);
+  FixEmbeddedParts();
   ReportUnconnected();
   Recognition out{Sorted(), std::move(diagnostics_), {}};
   std::sort(out.diagnostics.begin(), out.diagnostics.end(), DiagnosticLess);

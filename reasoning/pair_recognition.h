@@ -36,7 +36,8 @@ struct Recognition {
 ///   pin_wider_than_slot, key_wider_than_slot, gear_center_distance, gear_module_mismatch,
 ///   gear_axes_not_parallel, worm_center_distance, worm_module_mismatch,
 ///   worm_axes_not_perpendicular, rack_pitch_line_distance, rack_module_mismatch,
-///   ball_socket_mismatch; and part_unconnected for a non-ground part in no pair.
+///   ball_socket_mismatch; and part_unconnected for a non-ground part in no pair;
+/// - a part in no pair sunk into another part's solid is fixed to it (source embedded).
 /// Near-miss windows: angles up to max(4 x tolerance, 2 degrees), offsets up to
 /// max(4 x tolerance, 0.5 mm), centre distances off by less than one module.
 /// Throws std::invalid_argument unless `state` has one pose per part.

@@ -110,6 +110,8 @@ struct Inference {
   /// A part whose faces or pin leave it only a slide that the parts around stop within a small
   /// play is held there (SeatParts).
   bool seated_parts = true;
+  /// A part in no pair that is sunk into another part is fixed to it (embedded parts).
+  bool embedded_parts = true;
 };
 
 /// Everything an assembly file describes, as plain data; Assembly checks and indexes it.

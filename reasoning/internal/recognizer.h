@@ -290,6 +290,13 @@ class Recognizer {
   /// A tight thread in a tapped hole whose tip bears on a third part's shaft fixes the shaft.
   void ApplySetscrews(const std::vector<Screwed>& screwed);
 
+  /// Embedded parts (README, "Real CAD exports"): a non-ground, rigid part in no pair whose
+  /// mesh penetrates another part's deeper than the length tolerance (MeasureContact: a
+  /// connector sunk into a motor's end cap, an insert) is fixed to the part it goes deepest
+  /// into (source `embedded`), on the two features nearest the deepest point, with one info
+  /// `embedded` per host part. Off when the file's `infer` turns `embedded_parts` off.
+  void FixEmbeddedParts();
+
   /// One warning `part_unconnected` naming every non-ground, rigid part in no pair (the nine
   /// balls of a bearing are one finding, not nine).
   void ReportUnconnected();
@@ -308,6 +315,7 @@ class Recognizer {
   static_assert(static_cast<int>(PairSource::kImpliedFrame) < (1 << kSourceBits));
   static_assert(static_cast<int>(PairSource::kSeated) < (1 << kSourceBits));
   static_assert(static_cast<int>(PairSource::kSetscrewHole) < (1 << kSourceBits));
+  static_assert(static_cast<int>(PairSource::kEmbedded) < (1 << kSourceBits));
 
   /// Pairs order by feature names, then source, then as found, not by indices, so that
   /// reordering the file changes nothing: the name ranks and the source packed in one key.
@@ -317,6 +325,7 @@ class Recognizer {
   std::vector<Pair> Sorted();
 
   const Assembly& assembly_;
+  const std::span<const RigidTransform> X_WP_;  ///< the poses recognised at, one per part
   const double L_, A_, near_L_, near_A_;
   const int rank_bits_;                 ///< bits of a feature's name rank
   std::vector<AxisSegment> axes_;       ///< per Assembly::FeatureIndex: world axes

@@ -38,6 +38,8 @@ struct Expected {
   int idle = 0;
   // Hubs fixed by a setscrew the file leaves out (an empty radial hole into the bore).
   int setscrew_holes = 0;
+  // Parts in no pair fixed to the part they are sunk into.
+  int embedded = 0;
 };
 
 std::vector<Expected> Cases() {
@@ -96,20 +98,24 @@ std::vector<Expected> Cases() {
        0,
        0,
        22},
-      // The motor's connector, which nothing in the file holds. The motor's four long M3
-      // screws (cross-recessed pan heads) run through the tap-drilled stator into the flange.
-      // 10 where the truth has 2: the connector floats (6), and the rod's hub on the joint
-      // rod is a cylindrical pair (2), stopped 0.5 mm one way and open the other.
+      // The motor's connector is in no pair, sunk 2.1 mm into the motor's end cap: fixed to
+      // it, so no warning. The motor's four long M3 screws (cross-recessed pan heads) run
+      // through the tap-drilled stator into the flange. 4 where the truth has 2: the rod's hub
+      // on the joint rod is a cylindrical pair (2), stopped 0.5 mm one way and open the other
+      // (10 before the connector was fixed).
       {"rotary_pendulum_ball_bearing_fusion/Assembly.step",
        "Assembly_v14.base_link_v4_1.NEMA_v6_1.Middle_part_1",
-       {"part_unconnected: Assembly_v14.base_link_v4_1.NEMA_v6_1.JST-S6B-PH-K-S_1"},
+       {},
        0,
        4,
        0,
        2,
        0,
        0,
-       10},
+       4,
+       0,
+       0,
+       1},
       // The file has the two gears and no frame or shafts: each turns on an axle of the
       // implied frame through its bore, so no warning.
       {"spur_pair_20T_40T_solidworks/ISO standard Spur Gear Drive (2-1 ratio).STEP",
@@ -169,11 +175,16 @@ TEST_P(RealExports, GroundAndWarningsAreTheOnesADesignerActsOn) {
   EXPECT_EQ(std::count_if(an.pairs.begin(), an.pairs.end(),
                           [](const Pair& p) { return p.source == PairSource::kSeated; }),
             e.seated_pairs);
-  if (e.mobility >= 0) EXPECT_EQ(an.motion.mobility.dof, e.mobility);
+  if (e.mobility >= 0) {
+    EXPECT_EQ(an.motion.mobility.dof, e.mobility);
+  }
   EXPECT_EQ(an.motion.mobility.idle, e.idle);
   EXPECT_EQ(std::count_if(an.pairs.begin(), an.pairs.end(),
                           [](const Pair& p) { return p.source == PairSource::kSetscrewHole; }),
             e.setscrew_holes);
+  EXPECT_EQ(std::count_if(an.pairs.begin(), an.pairs.end(),
+                          [](const Pair& p) { return p.source == PairSource::kEmbedded; }),
+            e.embedded);
 }
 
 TEST(RealExports, TheRobotHandsThumbTurnsOnItsPivotScrew) {
