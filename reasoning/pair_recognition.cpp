@@ -68,6 +68,8 @@ Recognition Recognizer::Run() {
   }
   const auto unclamped = UnclampedParts(screwed);
   for (Pair& p : pairs_) ApplyClamp(p, screwed, unclamped);
+  ReportSolidBearings();
+  ClampSandwichedParts();
   FixEmbeddedParts();
   ReportUnconnected();
   Recognition out{Sorted(), std::move(diagnostics_), {}};

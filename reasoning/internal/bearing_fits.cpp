@@ -355,22 +355,55 @@ void Recognizer::AddSolidBearings() {
       }
     }
     if (seats.empty() && turning.empty()) continue;
-    std::vector<std::string> parts{std::string(assembly_.PartId(part))};
-    parts.insert(parts.end(), seats.begin(), seats.end());
-    parts.insert(parts.end(), turning.begin(), turning.end());
+    solid_bearings_.push_back({outside->ref, bore->ref, std::move(seats), std::move(turning)});
+  }
+}
+
+void Recognizer::ReportSolidBearings() {
+  for (SolidBearing& b : solid_bearings_) {
+    std::set<std::string> bolts;  // the parts whose threads clamp the bore
+    for (const Pair& p : pairs_) {
+      if (p.b == b.bore && p.type == PairType::kFixed && p.source == PairSource::kClamp) {
+        bolts.insert(std::string(assembly_.PartId(p.a.part)));
+      }
+    }
+    b.clamped = !bolts.empty() && !b.seats.empty();
+    const bool clamped = b.clamped;
+    if (clamped) {
+      for (Pair& p : pairs_) {
+        if (p.a == b.outside && p.type == PairType::kFixed && p.source == PairSource::kBearing) {
+          p.type = PairType::kRevolute;
+          p.dof = 1;
+        }
+      }
+    }
+    const WorldFeature& outside = At(b.outside);
+    const WorldFeature& bore = At(b.bore);
+    const std::string_view part = assembly_.PartId(b.outside.part);
+    std::string how;
+    if (clamped) {
+      how = fmt::format(" clamped through its bore by {}, {} turning on it (a revolute pair)",
+                        fmt::join(bolts, " and "), fmt::join(b.seats, " and "));
+    } else {
+      how =
+          b.seats.empty() ? "" : fmt::format(" fitted (fixed) in {}", fmt::join(b.seats, " and "));
+      if (!b.turning.empty()) {
+        how += fmt::format(", {} turning in its bore (a revolute pair)",
+                           fmt::join(b.turning, " and "));
+      }
+    }
+    std::vector<std::string> parts{std::string(part)};
+    parts.insert(parts.end(), b.seats.begin(), b.seats.end());
+    parts.insert(parts.end(), b.turning.begin(), b.turning.end());
+    if (clamped) parts.insert(parts.end(), bolts.begin(), bolts.end());
     diagnostics_.push_back(
         {Severity::kInfo,
          "bearing",
-         fmt::format(
-             "a bearing modelled as one solid, {} x {} x {} mm: {}{}{}",
-             FormatNumber(bore->f.diameter), FormatNumber(outside->f.diameter),
-             FormatNumber(outside->axis.length), assembly_.PartId(part),
-             seats.empty() ? "" : fmt::format(" fitted (fixed) in {}", fmt::join(seats, " and ")),
-             turning.empty() ? ""
-                             : fmt::format(", {} turning in its bore (a revolute pair)",
-                                           fmt::join(turning, " and "))),
-         parts,
-         {Name(*outside), Name(*bore)}});
+         fmt::format("a bearing modelled as one solid, {} x {} x {} mm: {}{}",
+                     FormatNumber(bore.f.diameter), FormatNumber(outside.f.diameter),
+                     FormatNumber(outside.axis.length), part, how),
+         std::move(parts),
+         {Name(outside), Name(bore)}});
   }
 }
 

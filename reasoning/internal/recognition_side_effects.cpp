@@ -310,6 +310,80 @@ void Recognizer::ApplyClamp(Pair& p, const std::vector<Screwed>& screwed,
   }
 }
 
+void Recognizer::ClampSandwichedParts() {
+  // Thread (by FeatureIndex) -> the parts of its stack, and the parts it passes through.
+  std::map<std::size_t, std::set<std::size_t>> stack, pierced;
+  for (const Screwed& s : tight_) {
+    stack[s.thread].insert(s.hole.part);
+    stack[s.thread].insert(features_[s.thread].ref.part);
+  }
+  for (const Pair& p : pairs_) {
+    if (assembly_.kind(p.a) != FeatureKind::kThread || assembly_.kind(p.b) != FeatureKind::kHole) {
+      continue;
+    }
+    const auto thread = stack.find(Index(p.a));
+    if (thread == stack.end()) continue;
+    pierced[thread->first].insert(p.b.part);
+    if (p.source == PairSource::kClamp) thread->second.insert(p.b.part);
+  }
+  // (bearing part, seat part) of the one-solid bearings whose bore is clamped.
+  std::set<std::pair<std::size_t, std::string_view>> turning_seats;
+  for (const SolidBearing& b : solid_bearings_) {
+    if (!b.clamped) continue;
+    for (const std::string& seat : b.seats) turning_seats.insert({b.outside.part, seat});
+  }
+  // Each part's face contacts (planar pairs), so that a stack's neighbours are found without
+  // scanning every pair for each thread.
+  std::map<std::size_t, std::vector<Pair*>> planar_of;
+  if (!stack.empty()) {
+    for (Pair& p : pairs_) {
+      if (p.type != PairType::kPlanar) continue;
+      planar_of[p.a.part].push_back(&p);
+      planar_of[p.b.part].push_back(&p);
+    }
+  }
+  // The contact a clamp is recorded on: the first by feature names, whatever the file's order.
+  auto by_names = [&](const Pair& p) {
+    return std::pair(assembly_.FeatureNameRank(p.a), assembly_.FeatureNameRank(p.b));
+  };
+  for (auto& [thread, parts] : stack) {
+    const WorldFeature& t = features_[thread];
+    const std::set<std::size_t>& passed = pierced[thread];
+    for (bool added = true; added;) {
+      added = false;
+      // Per part outside the stack: its first face contact with the stack on the side of +axis
+      // and on the side of -axis (its face's normal along +axis or -axis).
+      std::map<std::size_t, std::array<Pair*, 2>> sides;
+      for (const std::size_t inner_part : parts) {
+        const auto contacts = planar_of.find(inner_part);
+        if (contacts == planar_of.end()) continue;
+        for (Pair* p : contacts->second) {
+          if (p->type != PairType::kPlanar) continue;  // clamped on an earlier pass
+          const bool a_in = p->a.part == inner_part;
+          const FeatureRef outer = a_in ? p->b : p->a;
+          if (parts.count(outer.part) || passed.count(outer.part)) continue;  // see UnclampedParts
+          if (turning_seats.count({inner_part, assembly_.PartId(outer.part)})) continue;
+          const Eigen::Vector3d& n = At(outer).axis.direction;
+          if (AngleBetweenLines(n, t.axis.direction) > A_) continue;
+          Pair*& side = sides[outer.part][n.dot(t.axis.direction) > 0 ? 0 : 1];
+          if (!side || by_names(*p) < by_names(*side)) side = p;
+        }
+      }
+      for (const auto& [part, contacts] : sides) {
+        if (!contacts[0] || !contacts[1]) continue;
+        Pair& p = *contacts[0];
+        p.type = PairType::kFixed;
+        p.dof = 0;
+        p.source = PairSource::kClamp;
+        p.fastening = PairFastening::kClamp;
+        p.via = t.ref;
+        parts.insert(part);
+        added = true;
+      }
+    }
+  }
+}
+
 void Recognizer::ApplySetscrews(const std::vector<Screwed>& screwed) {
   for (const auto& [thread, s] : setscrew_candidates_) {
     const FeatureRef* hole = ScrewedInto(screwed, Index(thread->ref));

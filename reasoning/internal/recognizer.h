@@ -185,8 +185,14 @@ class Recognizer {
   /// ring's and the outer ring's: a washer or spacer has one). Fitted like a bearing: its
   /// outside in a bore of its size is fixed there and a shaft in its bore turns (the
   /// cylindrical pair becomes revolute: the bearing locates it along the axis), all source
-  /// bearing; one info `bearing` per such part. After AddBearings.
+  /// bearing; each is kept in solid_bearings_ for ReportSolidBearings. After AddBearings.
   void AddSolidBearings();
+
+  /// One info `bearing` per bearing of one solid. A bolt that clamps its bore (a fixed pair,
+  /// source clamp, on the bore: an axle bolt through a wheel's bearings) holds the inner ring,
+  /// so the part turns with the bolt and its seats turn on it: the fitted pairs become
+  /// revolute. After the clamps.
+  void ReportSolidBearings();
 
   /// A part on a shaft with a flat (a face of the shaft's part across the axis direction,
   /// inside its radius, within the bore's span) cannot turn on it: a setscrew on the flat or a
@@ -290,6 +296,17 @@ class Recognizer {
   /// A tight thread in a tapped hole whose tip bears on a third part's shaft fixes the shaft.
   void ApplySetscrews(const std::vector<Screwed>& screwed);
 
+  /// A part that a tight thread's clamp stack (its own part, the parts it is fixed in and the
+  /// parts it clamps) presses from both sides along the thread's axis is clamped too, though
+  /// the thread does not pass through a hole of it: a plate between a bolt's head and a
+  /// spacer whose boss fills the plate's hole, the bolt running through the boss. Its face
+  /// contact with the stack on the side of +axis (the first by feature names) becomes fixed,
+  /// source clamp; repeated
+  /// until no part is added (a stack of such plates). The seat of a one-solid bearing whose
+  /// bore is clamped touches the bearing's outer ring, which turns with it: no clamp. After
+  /// ReportSolidBearings.
+  void ClampSandwichedParts();
+
   /// Embedded parts (README, "Real CAD exports"): a non-ground, rigid part in no pair whose
   /// mesh penetrates another part's deeper than the length tolerance (MeasureContact: a
   /// connector sunk into a motor's end cap, an insert) is fixed to the part it goes deepest
@@ -336,6 +353,15 @@ class Recognizer {
   std::vector<Pair> pairs_;
   /// Tight fixed pairs as recognised: (thread's FeatureIndex, tapped hole or nut).
   std::vector<Screwed> tight_;
+  /// A bearing of one solid (AddSolidBearings): its outside and bore, the parts it is fitted
+  /// in and those turning in its bore, by id.
+  struct SolidBearing {
+    FeatureRef outside, bore;
+    std::set<std::string> seats, turning;
+    /// Its bore clamped by a bolt, its seats turning on it (ReportSolidBearings).
+    bool clamped = false;
+  };
+  std::vector<SolidBearing> solid_bearings_;
   std::vector<Diagnostic> diagnostics_;
   /// (thread, shaft) feature pairs whose reach boxes overlap: possible setscrew contacts.
   std::vector<std::pair<const WorldFeature*, const WorldFeature*>> setscrew_candidates_;

@@ -310,6 +310,94 @@ TEST(Bearing, AHubOnAShaftsFlatIsFixedToIt) {
   EXPECT_EQ(Find(beside, "shaft_flat"), nullptr);
 }
 
+// A V-wheel on an eccentric spacer, as a carriage plate carries it (axis z, the bolt on the
+// z axis): an M5 bolt whose head bears on the plate's underside (z 0; none when `head_on_plate`
+// is false) runs through an eccentric spacer, whose boss (0.8 mm off the bolt) fills the
+// plate's 7.2 mm hole and whose shoulder sits on the plate (z 6), then through two bearings
+// of one solid (5 x 10 x 4, z 10..14 and 15..19) with a shim between their inner rings, into
+// a nut (z 19). The wheel holds the bearings' outsides, a shoulder between their outer rings.
+Assembly VWheel(bool head_on_plate) {
+  auto bearing = [](const std::string& id, double z) {
+    return fmt::format(R"({{"id": "{0}", "features": [
+      {{"id": "outside", "kind": "shaft", "origin": [0, 0, {1}], "axis": [0, 0, 1], "diameter": 10, "length": 4}},
+      {{"id": "bore", "kind": "hole", "origin": [0, 0, {1}], "axis": [0, 0, 1], "diameter": 5, "length": 4, "through": true}},
+      {{"id": "inner_bottom", "kind": "face", "origin": [2.8, 0, {1}], "axis": [0, 0, -1], "width": 0.5, "height": 0.5}},
+      {{"id": "outer_bottom", "kind": "face", "origin": [4.5, 0, {1}], "axis": [0, 0, -1], "width": 1, "height": 1}},
+      {{"id": "inner_top", "kind": "face", "origin": [2.8, 0, {2}], "axis": [0, 0, 1], "width": 0.5, "height": 0.5}},
+      {{"id": "outer_top", "kind": "face", "origin": [4.5, 0, {2}], "axis": [0, 0, 1], "width": 1, "height": 1}}]}})",
+                       id, z, z + 4);
+  };
+  const std::string plate_bottom = head_on_plate ? R"(,
+      {"id": "bottom", "kind": "face", "origin": [0, 0, 0], "axis": [0, 0, -1], "width": 8, "height": 8})"
+                                                 : "";
+  return LoadAssemblyText(
+      fmt::format(R"({{"mechanist": 1, "parts": [
+    {{"id": "plate", "ground": true, "features": [
+      {{"id": "hole", "kind": "hole", "origin": [0.8, 0, 0], "axis": [0, 0, 1], "diameter": 7.2, "length": 6, "through": true}},
+      {{"id": "top", "kind": "face", "origin": [0.8, 0, 6], "axis": [0, 0, 1], "width": 8, "height": 8}}{}]}},
+    {{"id": "bolt", "features": [
+      {{"id": "thread", "kind": "thread", "origin": [0, 0, 0], "axis": [0, 0, 1], "diameter": 5, "pitch": 0.8, "length": 26}},
+      {{"id": "head", "kind": "face", "origin": [0, 0, 0], "axis": [0, 0, 1], "width": 8, "height": 8}}]}},
+    {{"id": "spacer", "features": [
+      {{"id": "boss", "kind": "shaft", "origin": [0.8, 0, 2], "axis": [0, 0, 1], "diameter": 7.2, "length": 4}},
+      {{"id": "bore", "kind": "hole", "origin": [0, 0, 2], "axis": [0, 0, 1], "diameter": 5, "length": 8, "through": true}},
+      {{"id": "shoulder", "kind": "face", "origin": [0.8, 0, 6], "axis": [0, 0, -1], "width": 10, "height": 10}},
+      {{"id": "top", "kind": "face", "origin": [0, 0, 10], "axis": [0, 0, 1], "width": 4, "height": 4}}]}},
+    {},
+    {{"id": "shim", "features": [
+      {{"id": "hole", "kind": "hole", "origin": [0, 0, 14], "axis": [0, 0, 1], "diameter": 5, "length": 1, "through": true}},
+      {{"id": "bottom", "kind": "face", "origin": [0, 0, 14], "axis": [0, 0, -1], "width": 4, "height": 4}},
+      {{"id": "top", "kind": "face", "origin": [0, 0, 15], "axis": [0, 0, 1], "width": 4, "height": 4}}]}},
+    {},
+    {{"id": "nut", "features": [
+      {{"id": "thread", "kind": "tapped_hole", "origin": [0, 0, 19], "axis": [0, 0, 1], "diameter": 5, "pitch": 0.8, "length": 4, "through": true}},
+      {{"id": "bottom", "kind": "face", "origin": [0, 0, 19], "axis": [0, 0, -1], "width": 4, "height": 4}}]}},
+    {{"id": "wheel", "features": [
+      {{"id": "seat_a", "kind": "hole", "origin": [0, 0, 10], "axis": [0, 0, 1], "diameter": 10, "length": 4, "through": true}},
+      {{"id": "seat_b", "kind": "hole", "origin": [0, 0, 15], "axis": [0, 0, 1], "diameter": 10, "length": 4, "through": true}},
+      {{"id": "shoulder_low", "kind": "face", "origin": [4.5, 0, 14], "axis": [0, 0, -1], "width": 1, "height": 1}},
+      {{"id": "shoulder_high", "kind": "face", "origin": [4.5, 0, 15], "axis": [0, 0, 1], "width": 1, "height": 1}}]}}]}})",
+                  plate_bottom, bearing("bearing_a", 10), bearing("bearing_b", 15)),
+      "vwheel.json");
+}
+
+TEST(Bearing, AVWheelTurnsOnItsBearingsAndItsBoltClampsThePlateThroughItsSpacer) {
+  const Analysis wheel = Analyze(VWheel(true));
+  // The plate, between the bolt's head and the spacer's shoulder, is clamped though the bolt
+  // runs through the spacer's boss, not through the plate's hole.
+  int plate_clamps = 0;
+  for (const Pair& p : wheel.pairs) {
+    if (p.source != PairSource::kClamp) continue;
+    plate_clamps += p.a.part == 0 || p.b.part == 0 ? 1 : 0;
+  }
+  EXPECT_EQ(plate_clamps, 1);
+  // The bolt clamps the bearings' bores, so the wheel turns on their outsides.
+  int seats = 0;
+  for (const Pair& p : wheel.pairs) {
+    if (p.source != PairSource::kBearing) continue;
+    EXPECT_EQ(p.type, PairType::kRevolute);
+    ++seats;
+  }
+  EXPECT_EQ(seats, 2);
+  const Diagnostic* info = Find(wheel, "bearing");
+  ASSERT_NE(info, nullptr);
+  EXPECT_NE(info->message.find("5 x 10 x 4 mm: bearing_a clamped through its bore by bolt, "
+                               "wheel turning on it"),
+            std::string::npos)
+      << info->message;
+  // The wheel's turn alone.
+  EXPECT_EQ(wheel.motion.mobility.dof, 1);
+  // Without the head on the plate, nothing presses the plate: the stack turns in it (its
+  // shoulder on the plate holds it along the axis), and the wheel on the stack.
+  const Analysis loose = Analyze(VWheel(false));
+  for (const Pair& p : loose.pairs) {
+    if (p.source == PairSource::kClamp) {
+      EXPECT_FALSE(p.a.part == 0 || p.b.part == 0);
+    }
+  }
+  EXPECT_EQ(loose.motion.mobility.dof, 2);
+}
+
 // A shaft collar (bore 8, outside 14, 7 long) on a ground rod, with a hole of 4.2 mm across
 // its axis at mid-length whose ends lie `inner` and 7 mm from the rod's axis, `offset` mm
 // beside it; `extra`: more parts.
