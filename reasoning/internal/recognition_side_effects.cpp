@@ -78,11 +78,15 @@ void Recognizer::AddImpliedPins() {
 
 void Recognizer::AddLooseFits() {
   if (loose_candidates_.empty()) return;
-  std::vector<bool> paired(assembly_.parts().size(), false);
-  for (const Pair& p : pairs_) paired[p.a.part] = paired[p.b.part] = true;
+  // Parts held by a pair other than a face contact: a face leaves a washer free to slide off
+  // its shaft, so a part that only rests on faces is guided by nothing else.
+  std::vector<bool> held(assembly_.parts().size(), false);
+  for (const Pair& p : pairs_) {
+    if (p.type != PairType::kPlanar) held[p.a.part] = held[p.b.part] = true;
+  }
   std::vector<std::pair<const WorldFeature*, const WorldFeature*>> fits;
   for (const auto& [s, h] : loose_candidates_) {
-    if (!(paired[s->ref.part] && paired[h->ref.part]) && Collinear(*s, *h)) fits.emplace_back(s, h);
+    if (!(held[s->ref.part] && held[h->ref.part]) && Collinear(*s, *h)) fits.emplace_back(s, h);
   }
   // A hole that shafts of one part enter from both of its ends (a knuckle between two pin
   // stubs) cannot slide off them: retained.
@@ -109,6 +113,10 @@ void Recognizer::ReportLooseFits() {
     by_parts[{std::string(assembly_.PartId(p.a.part)), std::string(assembly_.PartId(p.b.part))}]
         .push_back(&p);
   }
+  std::set<std::size_t> on_faces;  // parts in face contacts
+  for (const Pair& p : pairs_) {
+    if (p.type == PairType::kPlanar) on_faces.insert({p.a.part, p.b.part});
+  }
   for (const auto& [parts, pairs] : by_parts) {
     std::set<std::string> features;
     std::set<std::string_view> types;
@@ -122,11 +130,15 @@ void Recognizer::ReportLooseFits() {
     diagnostics_.push_back(
         {Severity::kInfo,
          "loose_fit",
-         fmt::format("{} and {} are held by nothing but {} with at least {} of radial clearance "
-                     "({}; taken as their {} {}; an override of type none forbids one)",
+         fmt::format("{} and {} are held by nothing but {} with at least {} of radial clearance"
+                     "{} ({}; taken as their {} {}; an override of type none forbids one)",
                      parts.first, parts.second,
                      pairs.size() == 1 ? "a loose fit" : fmt::format("{} loose fits", pairs.size()),
-                     Mm(clearance), fmt::join(features, ", "), fmt::join(types, " and "),
+                     Mm(clearance),
+                     on_faces.count(pairs.front()->a.part) || on_faces.count(pairs.front()->b.part)
+                         ? " and face contacts"
+                         : "",
+                     fmt::join(features, ", "), fmt::join(types, " and "),
                      pairs.size() == 1 ? "pair" : "pairs"),
          {parts.first, parts.second},
          {features.begin(), features.end()}});

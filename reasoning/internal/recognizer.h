@@ -240,10 +240,10 @@ class Recognizer {
 
   /// Loose fits: a shaft more than kMaxShaftClearance but at most kMaxLooseClearance of the
   /// hole's diameter smaller, collinear and engaged, makes its pair (source `loose_fit`) when
-  /// one of the two parts is in no other pair: nothing else guides it, so the fit does (a
-  /// print-in-place hinge). Revolute when shafts of one part enter the hole from both ends (a
-  /// knuckle between two pin stubs cannot slide off them). After the implied pins, before the
-  /// overrides.
+  /// one of the two parts is in no other pair but face contacts: nothing else guides it, so
+  /// the fit does (a print-in-place hinge; a washer on a shaft between two faces). Revolute when
+  /// shafts of one part enter the hole from both ends (a knuckle between two pin stubs cannot slide
+  /// off them). After the implied pins, before the overrides.
   void AddLooseFits();
 
   /// Pins in holes (pair `pins_in_holes`, README "Real CAD exports"): three or more shafts of

@@ -801,6 +801,39 @@ TEST(PairRecognition, ALooseShaftGuidesOnlyAPartNothingElseHolds) {
   EXPECT_EQ(Analyze(knuckle).motion.mobility.dof, 1);
 }
 
+TEST(PairRecognition, AWasherBetweenTwoFacesTurnsOnItsLooseShaft) {
+  // A washer (8.5 mm hole, 1.15 thick) on an 8 mm shaft between two faces of the frame: the
+  // faces alone leave it a turn and two slides across the shaft, which the loose shaft takes
+  // away.
+  const auto face = [](const char* id, double z, double nz) {
+    return MakeFeature(id, K::kFace, V(0, 0, z), V(0, 0, nz), [](Feature& f) {
+      f.width = 12;
+      f.height = 12;
+    });
+  };
+  Feature bore = Hole(8.5, 1.15, V(0, 0, 1.15));
+  bore.through = true;
+  const Assembly washer =
+      MakeAssembly({MakePart("frame",
+                             {Shaft(8.0, 20, V(0, 0, -10), V::UnitZ()), face("below", 0, 1),
+                              face("above", 1.15, -1)},
+                             RigidTransform(), true),
+                    MakePart("washer", {bore, face("bottom", 0, -1), face("top", 1.15, 1)})});
+  const Recognition r = Recognize(washer);
+  int loose = 0;
+  for (const Pair& p : r.pairs) {
+    if (p.source != PairSource::kLooseFit) continue;
+    EXPECT_EQ(p.type, PairType::kCylindrical);
+    ++loose;
+  }
+  EXPECT_EQ(loose, 1);
+  const Diagnostic* d = FindDiagnostic(r, "loose_fit");
+  ASSERT_NE(d, nullptr);
+  EXPECT_NE(d->message.find("0.25 mm of radial clearance and face contacts"), std::string::npos)
+      << d->message;
+  EXPECT_EQ(Analyze(washer).motion.mobility.dof, 1);
+}
+
 TEST(PairRecognition, ACompliantPartJoinsNoPairAndSaysWhatItConnects) {
   // A spring whose end coils sit on the spigots of a frame and of a plunger whose rod runs in
   // the frame's bore: compliant, it joins nothing and moves with nothing, and the plunger keeps
