@@ -231,7 +231,8 @@ std::vector<Diagnostic> InferScrewsInPlainHoles(
     // at the tap drill's (down to 75% of it): engaged with the shank.
     struct Along {
       std::size_t part, feature;
-      bool tip;  // the shank's tip ends inside it
+      bool tip;      // the shank's tip ends inside it
+      double start;  // mm along the shank toward the tip from the tip to where the hole begins
     };
     std::vector<Along> along;
     for (std::size_t p = 0; p < parts->size(); ++p) {
@@ -256,11 +257,21 @@ std::vector<Diagnostic> InferScrewsInPlainHoles(
         const double s1 = (h.origin + h.length * h.direction - tip).dot(inward);
         const bool tip_inside =
             std::min(s0, s1) <= length_tolerance && std::max(s0, s1) >= -length_tolerance;
-        along.push_back({p, f, tip_inside});
+        along.push_back({p, f, tip_inside, std::min(s0, s1)});
       }
     }
     std::stable_partition(along.begin(), along.end(), [](const Along& x) { return x.tip; });
-    if (along.empty() || !along.front().tip) continue;
+    // A tip out past every hole still ends in the last hole narrower than the shank, which it
+    // can only pass threaded: a nut or a tapped plate it comes through.
+    const bool through = !along.empty() && !along.front().tip;
+    if (through) {
+      std::erase_if(along, [&](const Along& x) {
+        return (*parts)[x.part].features[x.feature].diameter >= thread.diameter - length_tolerance;
+      });
+      std::stable_sort(along.begin(), along.end(),
+                       [](const Along& x, const Along& y) { return x.start > y.start; });
+    }
+    if (along.empty()) continue;
     const Along tip_hole = along.front();
     // The tip's hole is tapped, and so is every hole the shank passes that is narrower than
     // the thread (it can only be threaded: a motor's long screws run through a tapped stator
@@ -280,9 +291,10 @@ std::vector<Diagnostic> InferScrewsInPlainHoles(
       pitch = ScrewTight(&thread, &hole);
     }
     std::string message = fmt::format(
-        "part '{}' (a head and a {} mm shank) ends in {}: taken as screwed into it, a tight "
+        "part '{}' (a head and a {} mm shank) {} {}: taken as screwed into it, a tight "
         "thread of pitch {} mm (heuristic: the file models no thread)",
-        screw.id, FormatNumber(thread.diameter), holes.front(), FormatNumber(pitch));
+        screw.id, FormatNumber(thread.diameter),
+        through ? "comes out through the narrower" : "ends in", holes.front(), FormatNumber(pitch));
     if (holes.size() > 1) {
       message += "; also threaded through";
       for (std::size_t k = 1; k < holes.size(); ++k) message += (k > 1 ? ", " : " ") + holes[k];

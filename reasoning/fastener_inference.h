@@ -31,8 +31,10 @@ std::vector<Diagnostic> InferNutsOnBolts(
 /// least 1.5 diameters long, the whole part within the head's cylinder), whose shank's tip
 /// ends inside a coaxial hole of another part (diameter 75% to 110% of the shank's: drawn at
 /// the tap drill or the thread size; or one this made a tight tapped hole of the shank's size
-/// for a screw from its other end; engaged, the tip not past the hole's end) and which no
-/// nut holds (its shank is still a shaft). That hole becomes a tight tapped hole of the
+/// for a screw from its other end; engaged, the tip not past the hole's end), or, when the
+/// tip is out past every such hole, that comes through a hole narrower than the shank (a nut
+/// or a tapped plate: the last such hole toward the tip), and which no nut holds (its shank
+/// is still a shaft). That hole becomes a tight tapped hole of the
 /// shank's diameter and the shank a tight thread (ISO coarse pitch), so that recognition fixes
 /// the screw there and clamps the parts whose holes it passes (a cover and its spacers on a
 /// housing); so does every other hole along the shank narrower than it (threaded through).

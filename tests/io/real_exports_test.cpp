@@ -63,28 +63,33 @@ std::vector<Expected> Cases() {
       {"hinge_clamshell_build123d/clamshell_full.step", "COMPOUND_solid2", {}, 0, 0, 6},
       // A near miss a designer checks (a shaft 0.07 mm off its hole's axis), and a part that
       // nothing holds to the frame. Fourteen M5 screws end in nuts or tap-drilled holes, eight
-      // of them two at each of the channel's four core holes, one from each end plate. Two
-      // axle bolts are held along their holes within 0.14 mm, and a part stands wedged against
-      // another. The lead screw's two collars have empty setscrew holes (M5 tap drill, 4.2
+      // of them two at each of the channel's four core holes, one from each end plate. The
+      // carriage plate stands wedged against the load cell (seated). The lead screw's two collars
+      // have empty setscrew holes (M5 tap drill, 4.2
       // mm): fixed to it. The axle bolts clamp the wheels' one-solid bearings through their
       // bores, so the four V-wheels turn on them; two of the bolts run through eccentric
       // spacers in the carriage plate, which they clamp between head and spacer. The two
       // washers on the lead screw (8.5 mm holes on 8 mm), held by face contacts alone, turn
-      // on it (loose fits). 23, where the truth has 1 (5 with the wheels' spins), the rest
-      // resting on faces whose screws the file leaves out. Ten of them are idle spins: the
-      // four wheels, the two washers, two spacers on the wheels' axle bolts, and the two
-      // bearings of the lead screw in their seats.
+      // on it (loose fits). The nut block's two M5 screws come out through their captive
+      // nuts' tap-drilled holes: screwed there, they clamp the block and its spacers to the
+      // carriage plate (before, seating held them along their holes within 0.14 mm, and the
+      // spacers were idle spins). 19, where the truth has 1 (5 with the wheels' spins): the push
+      // rod
+      // floats in its load cell's 12 mm hole (6) with the probe on its end (3), and the lead
+      // screw turns apart from the carriage (its thread is not modelled). Eight of them are
+      // idle spins: the four wheels, the two washers, and the two bearings of the lead screw
+      // in their seats.
       {"lead_screw_linear_actuator_onshape/Assembly.step",
        "Assembly_1._C_V",
        {"axes_not_collinear: Assembly_1.p____V", "free_motion: Assembly_1.__V_4"},
        0,
-       14,
+       16,
        2,
        10,
        0,
-       3,
-       23,
-       10,
+       1,
+       19,
+       8,
        2},
       // Every finger hinge is found (the palm's fold included), so no warning. The thumb's M4
       // pivot screw ends in its nut's hole (drawn at the minor diameter). 22 where the truth

@@ -1,7 +1,7 @@
 // The screw-in-a-plain-hole heuristic of CAD imports without modelled threads: a head and a
 // shank whose tip ends inside another part's hole is screwed there and clamps what it passes;
-// a motor with its shaft, a stepped shaft and a screw whose tip comes out of the last hole are
-// not.
+// a motor with its shaft, a stepped shaft and a screw whose tip comes out of the last hole,
+// wider than it, are not.
 
 #include "reasoning/fastener_inference.h"
 
@@ -124,8 +124,23 @@ TEST(ScrewsInPlainHoles, ALongHoleTakesAScrewAtEachEnd) {
   EXPECT_EQ(Analyze(testing::MakeAssembly(parts)).motion.mobility.dof, 0);
 }
 
+TEST(ScrewsInPlainHoles, AScrewComingOutThroughANarrowerHoleIsScrewedThere) {
+  // The tip comes out 5 mm past a hole drilled at the M4 tap size (3.3 mm, z 5 to -1), as
+  // through a nut: the shank can only pass it threaded.
+  std::vector<Part> parts = Parts(16, 6);
+  parts[2].features[0].diameter = 3.3;
+  const std::vector<Diagnostic> found = Infer(&parts);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_NE(found[0].message.find("comes out through the narrower 'housing/hole' (3.3 mm)"),
+            std::string::npos)
+      << found[0].message;
+  EXPECT_EQ(parts[2].features[0].kind, FeatureKind::kTappedHole);
+  EXPECT_EQ(Analyze(testing::MakeAssembly(parts)).motion.mobility.dof, 0);
+}
+
 TEST(ScrewsInPlainHoles, OnlyScrewsThatEndInsideTheirLastHole) {
-  // The tip comes out of the housing's hole (z -6 below its end at -1): a pin, not a screw.
+  // The tip comes out of the housing's hole (z -6 below its end at -1), wider than the
+  // shank: a pin, not a screw.
   std::vector<Part> through = Parts(16, 6);
   EXPECT_TRUE(Infer(&through).empty());
   // A stepped shaft: its wide part longer than its diameter.
