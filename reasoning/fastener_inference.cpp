@@ -232,7 +232,7 @@ std::vector<Diagnostic> InferScrewsInPlainHoles(
     struct Along {
       std::size_t part, feature;
       bool tip;      // the shank's tip ends inside it
-      double start;  // mm along the shank toward the tip from the tip to where the hole begins
+      double start;  // where the hole begins, mm from the tip toward it (negative: before it)
     };
     std::vector<Along> along;
     for (std::size_t p = 0; p < parts->size(); ++p) {

@@ -368,8 +368,7 @@ void Recognizer::ReportSolidBearings() {
       }
     }
     b.clamped = !bolts.empty() && !b.seats.empty();
-    const bool clamped = b.clamped;
-    if (clamped) {
+    if (b.clamped) {
       for (Pair& p : pairs_) {
         if (p.a == b.outside && p.type == PairType::kFixed && p.source == PairSource::kBearing) {
           p.type = PairType::kRevolute;
@@ -381,7 +380,7 @@ void Recognizer::ReportSolidBearings() {
     const WorldFeature& bore = At(b.bore);
     const std::string_view part = assembly_.PartId(b.outside.part);
     std::string how;
-    if (clamped) {
+    if (b.clamped) {
       how = fmt::format(" clamped through its bore by {}, {} turning on it (a revolute pair)",
                         fmt::join(bolts, " and "), fmt::join(b.seats, " and "));
     } else {
@@ -395,7 +394,7 @@ void Recognizer::ReportSolidBearings() {
     std::vector<std::string> parts{std::string(part)};
     parts.insert(parts.end(), b.seats.begin(), b.seats.end());
     parts.insert(parts.end(), b.turning.begin(), b.turning.end());
-    if (clamped) parts.insert(parts.end(), bolts.begin(), bolts.end());
+    if (b.clamped) parts.insert(parts.end(), bolts.begin(), bolts.end());
     diagnostics_.push_back(
         {Severity::kInfo,
          "bearing",

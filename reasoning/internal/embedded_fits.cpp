@@ -43,7 +43,10 @@ void Recognizer::FixEmbeddedParts() {
     double best_distance = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < features.size(); ++k) {
       const double distance = (X_WP_[i] * features[k].origin - p_W).norm();
-      if (distance < best_distance) best = k, best_distance = distance;
+      if (distance < best_distance) {
+        best = k;
+        best_distance = distance;
+      }
     }
     return FeatureRef{i, best};
   };

@@ -241,9 +241,9 @@ class Recognizer {
   /// Loose fits: a shaft more than kMaxShaftClearance but at most kMaxLooseClearance of the
   /// hole's diameter smaller, collinear and engaged, makes its pair (source `loose_fit`) when
   /// one of the two parts is in no other pair but face contacts: nothing else guides it, so
-  /// the fit does (a print-in-place hinge; a washer on a shaft between two faces). Revolute when
-  /// shafts of one part enter the hole from both ends (a knuckle between two pin stubs cannot slide
-  /// off them). After the implied pins, before the overrides.
+  /// the fit does (a print-in-place hinge; a washer on a shaft between two faces). Revolute
+  /// when shafts of one part enter the hole from both ends (a knuckle between two pin stubs
+  /// cannot slide off them). After the implied pins, before the overrides.
   void AddLooseFits();
 
   /// Pins in holes (pair `pins_in_holes`, README "Real CAD exports"): three or more shafts of
@@ -301,10 +301,9 @@ class Recognizer {
   /// the thread does not pass through a hole of it: a plate between a bolt's head and a
   /// spacer whose boss fills the plate's hole, the bolt running through the boss. Its face
   /// contact with the stack on the side of +axis (the first by feature names) becomes fixed,
-  /// source clamp; repeated
-  /// until no part is added (a stack of such plates). The seat of a one-solid bearing whose
-  /// bore is clamped touches the bearing's outer ring, which turns with it: no clamp. After
-  /// ReportSolidBearings.
+  /// source clamp; repeated until no part is added (a stack of such plates). The seat of a
+  /// one-solid bearing whose bore is clamped touches the bearing's outer ring, which turns
+  /// with it: no clamp. After ReportSolidBearings.
   void ClampSandwichedParts();
 
   /// Embedded parts (README, "Real CAD exports"): a non-ground, rigid part in no pair whose
