@@ -302,6 +302,7 @@ void Recognizer::AddBearings() {
 }
 
 void Recognizer::AddSolidBearings() {
+  std::vector<SolidBearing> found;
   for (std::size_t part = 0; part < assembly_.parts().size(); ++part) {
     const std::size_t n = assembly_.FeatureCount(part);
     const WorldFeature* outside = nullptr;
@@ -336,65 +337,90 @@ void Recognizer::AddSolidBearings() {
       at_end += std::abs(along - outside->axis.length) <= L_ ? 1 : 0;
     }
     if (at_start < 2 || at_end < 2) continue;
-    std::set<std::string> seats, turning;
-    for (Pair& p : pairs_) {
-      if (p.type != PairType::kCylindrical && p.type != PairType::kRevolute) continue;
-      const WorldFeature& s = At(p.a);
-      const WorldFeature& h = At(p.b);
-      if (s.ref == outside->ref && h.f.kind == FeatureKind::kHole &&
-          std::abs(s.f.diameter - h.f.diameter) <= L_) {
-        p.type = PairType::kFixed;
-        p.dof = 0;
-        p.source = PairSource::kBearing;
-        seats.insert(std::string(assembly_.PartId(h.ref.part)));
-      } else if (h.ref == bore->ref && s.f.kind == FeatureKind::kShaft) {
-        p.type = PairType::kRevolute;
-        p.dof = 1;
-        p.source = PairSource::kBearing;
-        turning.insert(std::string(assembly_.PartId(s.ref.part)));
-      }
+    found.push_back({outside->ref, bore->ref, {}, {}});
+  }
+  if (found.empty()) return;
+
+  // One pass over the pairs: a candidate's outside and bore, by FeatureIndex.
+  std::map<std::size_t, std::size_t> by_outside, by_bore;
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    by_outside[Index(found[i].outside)] = i;
+    by_bore[Index(found[i].bore)] = i;
+  }
+  for (Pair& p : pairs_) {
+    if (p.type != PairType::kCylindrical && p.type != PairType::kRevolute) continue;
+    const WorldFeature& s = At(p.a);
+    const WorldFeature& h = At(p.b);
+    if (const auto outside = by_outside.find(Index(p.a));
+        outside != by_outside.end() && h.f.kind == FeatureKind::kHole &&
+        std::abs(s.f.diameter - h.f.diameter) <= L_) {
+      p.type = PairType::kFixed;
+      p.dof = 0;
+      p.source = PairSource::kBearing;
+      found[outside->second].seats.insert(h.ref.part);
+    } else if (const auto bore = by_bore.find(Index(p.b));
+               bore != by_bore.end() && s.f.kind == FeatureKind::kShaft) {
+      p.type = PairType::kRevolute;
+      p.dof = 1;
+      p.source = PairSource::kBearing;
+      found[bore->second].turning.insert(s.ref.part);
     }
-    if (seats.empty() && turning.empty()) continue;
-    solid_bearings_.push_back({outside->ref, bore->ref, std::move(seats), std::move(turning)});
+  }
+  for (SolidBearing& b : found) {
+    if (!b.seats.empty() || !b.turning.empty()) solid_bearings_.push_back(std::move(b));
   }
 }
 
 void Recognizer::ReportSolidBearings() {
+  if (solid_bearings_.empty()) return;
+  // The parts whose threads clamp each bore (by the bore's FeatureIndex).
+  std::map<std::size_t, std::set<std::size_t>> bolts_on;
+  for (const Pair& p : pairs_) {
+    if (p.type == PairType::kFixed && p.source == PairSource::kClamp) {
+      bolts_on[Index(p.b)].insert(p.a.part);
+    }
+  }
+  std::set<std::size_t> clamped_outsides;  // by FeatureIndex
   for (SolidBearing& b : solid_bearings_) {
-    std::set<std::string> bolts;  // the parts whose threads clamp the bore
-    for (const Pair& p : pairs_) {
-      if (p.b == b.bore && p.type == PairType::kFixed && p.source == PairSource::kClamp) {
-        bolts.insert(std::string(assembly_.PartId(p.a.part)));
-      }
+    b.clamped = bolts_on.count(Index(b.bore)) && !b.seats.empty();
+    if (b.clamped) clamped_outsides.insert(Index(b.outside));
+  }
+  for (Pair& p : pairs_) {
+    if (p.type == PairType::kFixed && p.source == PairSource::kBearing &&
+        clamped_outsides.count(Index(p.a))) {
+      p.type = PairType::kRevolute;
+      p.dof = 1;
     }
-    b.clamped = !bolts.empty() && !b.seats.empty();
-    if (b.clamped) {
-      for (Pair& p : pairs_) {
-        if (p.a == b.outside && p.type == PairType::kFixed && p.source == PairSource::kBearing) {
-          p.type = PairType::kRevolute;
-          p.dof = 1;
-        }
-      }
-    }
+  }
+  // Part ids in the order of the ids, as the message lists them.
+  auto ids = [&](const std::set<std::size_t>& parts) {
+    std::set<std::string> named;
+    for (const std::size_t part : parts) named.insert(std::string(assembly_.PartId(part)));
+    return named;
+  };
+  for (const SolidBearing& b : solid_bearings_) {
+    const std::set<std::string> seats = ids(b.seats);
+    const std::set<std::string> turning = ids(b.turning);
+    const std::set<std::string> bolts =
+        b.clamped ? ids(bolts_on.at(Index(b.bore))) : std::set<std::string>{};
     const WorldFeature& outside = At(b.outside);
     const WorldFeature& bore = At(b.bore);
     const std::string_view part = assembly_.PartId(b.outside.part);
     std::string how;
     if (b.clamped) {
       how = fmt::format(" clamped through its bore by {}, {} turning on it (a revolute pair)",
-                        fmt::join(bolts, " and "), fmt::join(b.seats, " and "));
+                        fmt::join(bolts, " and "), fmt::join(seats, " and "));
     } else {
-      how =
-          b.seats.empty() ? "" : fmt::format(" fitted (fixed) in {}", fmt::join(b.seats, " and "));
-      if (!b.turning.empty()) {
-        how += fmt::format(", {} turning in its bore (a revolute pair)",
-                           fmt::join(b.turning, " and "));
+      how = seats.empty() ? "" : fmt::format(" fitted (fixed) in {}", fmt::join(seats, " and "));
+      if (!turning.empty()) {
+        how +=
+            fmt::format(", {} turning in its bore (a revolute pair)", fmt::join(turning, " and "));
       }
     }
     std::vector<std::string> parts{std::string(part)};
-    parts.insert(parts.end(), b.seats.begin(), b.seats.end());
-    parts.insert(parts.end(), b.turning.begin(), b.turning.end());
-    if (b.clamped) parts.insert(parts.end(), bolts.begin(), bolts.end());
+    parts.insert(parts.end(), seats.begin(), seats.end());
+    parts.insert(parts.end(), turning.begin(), turning.end());
+    parts.insert(parts.end(), bolts.begin(), bolts.end());
     diagnostics_.push_back(
         {Severity::kInfo,
          "bearing",

@@ -51,18 +51,18 @@ void Recognizer::FixEmbeddedParts() {
     return FeatureRef{i, best};
   };
 
-  std::vector<std::size_t> loose;
+  std::vector<std::size_t> unconnected;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!connected[i] && !assembly_.IsGround(i) && rigid_solid(i)) loose.push_back(i);
+    if (!connected[i] && !assembly_.IsGround(i) && rigid_solid(i)) unconnected.push_back(i);
   }
-  if (loose.empty()) return;
+  if (unconnected.empty()) return;
 
   CollisionMeshCache meshes;
   std::vector<Aabb> boxes_W(n);
   for (std::size_t i = 0; i < n; ++i) boxes_W[i] = TransformBox(X_WP_[i], assembly_.MeshBox(i));
   // Host part -> (embedded part, how deep), for one info per host.
   std::map<std::size_t, std::vector<std::pair<std::size_t, double>>> by_host;
-  for (const std::size_t i : loose) {
+  for (const std::size_t i : unconnected) {
     std::optional<Embedding> deepest;
     for (std::size_t j = 0; j < n; ++j) {
       if (j == i || !rigid_solid(j) || !boxes_W[i].Intersects(boxes_W[j])) continue;

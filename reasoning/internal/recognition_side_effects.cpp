@@ -339,10 +339,10 @@ void Recognizer::ClampSandwichedParts() {
     if (p.source == PairSource::kClamp) thread->second.insert(p.b.part);
   }
   // (bearing part, seat part) of the one-solid bearings whose bore is clamped.
-  std::set<std::pair<std::size_t, std::string_view>> turning_seats;
+  std::set<std::pair<std::size_t, std::size_t>> turning_seats;
   for (const SolidBearing& b : solid_bearings_) {
     if (!b.clamped) continue;
-    for (const std::string& seat : b.seats) turning_seats.insert({b.outside.part, seat});
+    for (const std::size_t seat : b.seats) turning_seats.insert({b.outside.part, seat});
   }
   // Each part's face contacts (planar pairs), so that a stack's neighbours are found without
   // scanning every pair for each thread.
@@ -374,7 +374,7 @@ void Recognizer::ClampSandwichedParts() {
           const bool a_in = p->a.part == inner_part;
           const FeatureRef outer = a_in ? p->b : p->a;
           if (parts.count(outer.part) || passed.count(outer.part)) continue;  // see UnclampedParts
-          if (turning_seats.count({inner_part, assembly_.PartId(outer.part)})) continue;
+          if (turning_seats.count({inner_part, outer.part})) continue;
           const Eigen::Vector3d& n = At(outer).axis.direction;
           if (AngleBetweenLines(n, t.axis.direction) > A_) continue;
           Pair*& side = sides[outer.part][n.dot(t.axis.direction) > 0 ? 0 : 1];

@@ -353,10 +353,10 @@ class Recognizer {
   /// Tight fixed pairs as recognised: (thread's FeatureIndex, tapped hole or nut).
   std::vector<Screwed> tight_;
   /// A bearing of one solid (AddSolidBearings): its outside and bore, the parts it is fitted
-  /// in and those turning in its bore, by id.
+  /// in and those turning in its bore (part indices).
   struct SolidBearing {
     FeatureRef outside, bore;
-    std::set<std::string> seats, turning;
+    std::set<std::size_t> seats, turning;
     /// Its bore clamped by a bolt, its seats turning on it (ReportSolidBearings).
     bool clamped = false;
   };
