@@ -24,7 +24,7 @@ struct TessellationGears {
 
 TessellationGears FindTessellationGears(const TriangleMesh& mesh) {
   TessellationGears gears;
-  for (RecognizedFeature& r : RecognizeFeatures(mesh).features) {
+  for (RecognizedFeature& r : RecognizeFeatures(mesh, MeshRecognition::kTeeth).features) {
     const FeatureKind k = r.feature.kind;
     if (k != FeatureKind::kGear && k != FeatureKind::kBevelGear && k != FeatureKind::kWorm &&
         k != FeatureKind::kRack && k != FeatureKind::kCycloidDisc) {

@@ -946,7 +946,7 @@ const std::vector<double>& StandardModules() {
   return modules;
 }
 
-MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
+MeshFeatures RecognizeFeatures(const TriangleMesh& mesh, MeshRecognition what) {
   MeshFeatures out;
   if (mesh.faces.empty()) {
     out.notes.push_back("no faces");
@@ -1000,11 +1000,13 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh) {
   }
   std::vector<Vector3d> candidates;
   if (prismatic) candidates.push_back(axis);
-  std::vector<Vector3d> directions = {
-      Vector3d(eigen.eigenvectors().col(0)), Vector3d(eigen.eigenvectors().col(1)),
-      Vector3d(eigen.eigenvectors().col(2)), Vector3d(Vector3d::UnitX()),
-      Vector3d(Vector3d::UnitY()),           Vector3d(Vector3d::UnitZ())};
-  for (const Vector3d& a : CylinderPatchAxes(mesh, normal, area)) directions.push_back(a);
+  std::vector<Vector3d> directions;
+  if (what == MeshRecognition::kAll) {
+    directions = {Vector3d(eigen.eigenvectors().col(0)), Vector3d(eigen.eigenvectors().col(1)),
+                  Vector3d(eigen.eigenvectors().col(2)), Vector3d(Vector3d::UnitX()),
+                  Vector3d(Vector3d::UnitY()),           Vector3d(Vector3d::UnitZ())};
+    for (const Vector3d& a : CylinderPatchAxes(mesh, normal, area)) directions.push_back(a);
+  }
   for (const Vector3d& c : directions) {
     const Vector3d a = Canonical(c.normalized());
     const bool known = std::any_of(candidates.begin(), candidates.end(), [&](const Vector3d& b) {

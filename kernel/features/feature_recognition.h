@@ -34,6 +34,13 @@ struct MeshFeatures {
 /// ISO 54 modules, first and second choice (mm), ascending.
 const std::vector<double>& StandardModules();
 
+/// What RecognizeFeatures looks for.
+enum class MeshRecognition {
+  kAll,    ///< every feature it knows
+  kTeeth,  ///< gears, bevel gears, worms, racks and cycloidal discs (and the extrusion axis'
+           ///< outlines they are found among)
+};
+
 /// Recognises the features of a prismatic part (an extrusion: a spur gear, a ring gear, a
 /// rack, a shaft, a plate with holes along one axis) from its mesh alone:
 /// - the axis is the eigenvector of the area-weighted normal matrix sum(a n n^T) along or across
@@ -57,6 +64,9 @@ const std::vector<double>& StandardModules();
 /// only: an L-bracket's holes in both legs, a hole drilled at any angle, a part that is no
 /// prism. Deterministic.
 /// A part that is not prismatic gets a note saying so.
-MeshFeatures RecognizeFeatures(const TriangleMesh& mesh);
+/// With `what` kTeeth, only the toothed and lobed features are looked for: the other
+/// directions' cylinders are skipped (what a STEP solid's exact faces already give).
+MeshFeatures RecognizeFeatures(const TriangleMesh& mesh,
+                               MeshRecognition what = MeshRecognition::kAll);
 
 }  // namespace mechanist

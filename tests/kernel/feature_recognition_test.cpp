@@ -463,6 +463,62 @@ TEST(FeatureRecognition, CycloidalDiscsGiveTheirLobesAndEccentricity) {
   }
 }
 
+TEST(FeatureRecognition, LookingForTeethOnlyFindsTheSameTeethAndSkipsOtherDirections) {
+  // The oracle is the full recognition: kTeeth must give the same toothed and lobed features
+  // (spur, helical, bevel, internal, rack, cycloidal) and no cylinder across another direction.
+  auto toothed = [](const MeshFeatures& found) {
+    std::vector<std::string> out;
+    for (const RecognizedFeature& r : found.features) {
+      const FeatureKind k = r.feature.kind;
+      if (k == FeatureKind::kGear || k == FeatureKind::kBevelGear || k == FeatureKind::kWorm ||
+          k == FeatureKind::kRack || k == FeatureKind::kCycloidDisc) {
+        out.push_back(r.detail);
+      }
+    }
+    return out;
+  };
+  SpurGearSpec helical;
+  helical.teeth = 20;
+  helical.module = 2;
+  helical.face_width = 16;
+  helical.bore_diameter = 12;
+  helical.helix_angle = -15 * M_PI / 180;
+  SpurGearSpec spur = helical;
+  spur.helix_angle = 0;
+  RingGearSpec ring;
+  ring.teeth = 40;
+  ring.module = 1;
+  ring.face_width = 10;
+  ring.outer_diameter = 52;
+  RackSpec rack;
+  rack.module = 2;
+  rack.length = 20 * M_PI * 2;
+  rack.face_width = 8;
+  Region2d disc{testing::CycloidOutline(7, 25, 3, 2, 720), {}};
+  disc.holes.push_back(CircleRing(Eigen::Vector2d::Zero(), 5, 64));
+  const std::vector<TriangleMesh> meshes = {
+      MakeLibraryPart(spur).mesh, MakeLibraryPart(helical).mesh,
+      MakeLibraryPart(ring).mesh, MakeLibraryPart(rack).mesh,
+      ExtrudeRegion(disc, 0, 6),  BevelGearMesh(30, 2, 60 * M_PI / 180)};
+  for (std::size_t i = 0; i < meshes.size(); ++i) {
+    const std::vector<std::string> all = toothed(RecognizeFeatures(meshes[i]));
+    ASSERT_EQ(all.size(), 1u) << i;
+    EXPECT_EQ(toothed(RecognizeFeatures(meshes[i], MeshRecognition::kTeeth)), all) << i;
+  }
+
+  // An L-bracket: its upright's hole runs across the extrusion axis, so only kAll finds it.
+  LBracketSpec bracket;
+  bracket.length = 80;
+  bracket.height = 60;
+  bracket.width = 40;
+  bracket.thickness = 5;
+  bracket.base_holes = {{"", Eigen::Vector2d(50, 0), 8}};
+  bracket.upright_holes = {{"", Eigen::Vector2d(0, 40), 10}};
+  const TriangleMesh l = MakeLibraryPart(bracket).mesh;
+  EXPECT_EQ(RecognizeFeatures(l).features.size(), 2u);
+  EXPECT_LT(RecognizeFeatures(l, MeshRecognition::kTeeth).features.size(), 2u);
+}
+
 TEST(FeatureRecognition, RoundedPolygonsAndLobedKnobsAreNoCycloidalDisc) {
   // A hexagon with rounded corners (a nut's outside, chamfered) and a star knob: lobed
   // outlines whose shape is not a ring of pins' envelope.
