@@ -468,11 +468,20 @@ std::optional<RecognizedFeature> SectionGear(const TriangleMesh& mesh, const Vec
   auto height = [&](double i, double step, double from) { return from + (i + 0.5013) * step; };
   std::optional<Vector2d> centre;
   std::vector<std::optional<SectionTeeth>> coarse(kCoarse);
-  for (int i = 0; i < kCoarse; ++i) {
+  auto cut = [&](int i) {
     const Outline o = Section(mesh, axis, u, v, height(i, coarse_step, t_min));
-    if (o.edges.empty()) continue;
+    if (o.edges.empty()) return false;
     if (!centre) centre = CentreOf(Section(mesh, axis, u, v, t_min + 0.5013 * width));
     coarse[i] = TeethOfSection(o, *centre);
+    return coarse[i].has_value();
+  };
+  // Most parts are no gear: every third section decides whether the rest are cut (a run of
+  // three, the fewest that counts, holds one of them).
+  bool any_teeth = false;
+  for (int i = 0; i < kCoarse; i += 3) any_teeth = cut(i) || any_teeth;
+  if (!any_teeth) return std::nullopt;
+  for (int i = 0; i < kCoarse; ++i) {
+    if (i % 3 != 0) cut(i);
   }
   // The longest run of sections with the same teeth.
   auto same = [](const SectionTeeth& a, const SectionTeeth& b) {
