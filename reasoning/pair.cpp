@@ -9,7 +9,7 @@ static_assert(sizeof(Pair) <= 88, "Pair has grown: the analysis reads every pair
 
 namespace {
 
-constexpr EnumNames<PairSource, 14> kSources = {{
+constexpr EnumNames<PairSource, 15> kSources = {{
     {PairSource::kRecognised, "recognised"},
     {PairSource::kOverride, "override"},
     {PairSource::kClamp, "clamp"},
@@ -24,6 +24,7 @@ constexpr EnumNames<PairSource, 14> kSources = {{
     {PairSource::kSeated, "seated"},
     {PairSource::kSetscrewHole, "setscrew_hole"},
     {PairSource::kEmbedded, "embedded"},
+    {PairSource::kBearingShaft, "bearing_shaft"},
 }};
 
 constexpr EnumNames<PairFastening, 6> kFastenings = {{

@@ -27,6 +27,7 @@ enum class PairSource : std::uint8_t {
   kSeated,        ///< faces that stop a part's only slide within a small play (SeatParts)
   kSetscrewHole,  ///< a hub with an empty radial hole into its bore (a setscrew not modelled)
   kEmbedded,      ///< a part in no other pair, sunk into another part's solid
+  kBearingShaft,  ///< a hub held by nothing but a shaft that turns in bearings
 };
 
 /// How a pair is held, where that matters to the user.

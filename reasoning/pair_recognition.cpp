@@ -53,6 +53,7 @@ Recognition Recognizer::Run() {
   AddSolidBearings();
   FixHubsOnFlats();
   FixHubsBySetscrewHoles();
+  FixHubsOnBearingShafts();
   AddImpliedPins();
   AddLooseFits();
   AddPinsInHoles();

@@ -16,6 +16,7 @@
 
 #include "kernel/geometry/circle_fit.h"
 #include "kernel/support/number_format.h"
+#include "kernel/support/union_find.h"
 
 namespace mechanist {
 namespace {
@@ -32,19 +33,6 @@ Vector3d Canonical(Vector3d a) {
   a.cwiseAbs().maxCoeff(&i);
   return a[i] < 0 ? Vector3d(-a) : a;
 }
-
-struct Union {
-  std::vector<int> parent;
-  explicit Union(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int Find(int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void Join(int a, int b) {
-    a = Find(a), b = Find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
 
 // One closed outline of the walls, projected across the axis.
 struct Outline {
@@ -286,7 +274,7 @@ std::vector<Vector3d> CylinderPatchAxes(const TriangleMesh& mesh,
   }
   std::sort(edges.begin(), edges.end());
   const double kSmooth = std::cos(30 * kPi / 180);
-  Union patches(nf);
+  UnionFind patches(nf);
   for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
     for (std::size_t j = i + 1;
          j < edges.size() && edges[j][0] == edges[i][0] && edges[j][1] == edges[i][1]; ++j) {
@@ -1052,7 +1040,7 @@ MeshFeatures RecognizeFeatures(const TriangleMesh& mesh, MeshRecognition what) {
     };
 
     // Walls grouped into outlines by shared vertices.
-    Union groups(mesh.vertices.size());
+    UnionFind groups(mesh.vertices.size());
     std::vector<std::size_t> walls;
     for (std::size_t f = 0; f < nf; ++f) {
       if (std::abs(normal[f].dot(axis)) >= 2e-3 || area[f] == 0.0) continue;

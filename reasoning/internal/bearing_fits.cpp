@@ -1,6 +1,6 @@
 // Rolling bearings modelled as they are sold: rings and balls or rollers (AddBearings), and
 // bearings of one solid (AddSolidBearings); hubs fixed on their shafts by what the file leaves
-// out (FixHubsOnFlats, FixHubsBySetscrewHoles).
+// out (FixHubsOnFlats, FixHubsBySetscrewHoles, FixHubsOnBearingShafts).
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>  // fmt::join
@@ -9,8 +9,10 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <set>
 
 #include "kernel/geometry/circle_fit.h"
+#include "kernel/support/union_find.h"
 #include "reasoning/internal/recognizer.h"
 
 namespace mechanist::internal {
@@ -533,6 +535,75 @@ void Recognizer::FixHubsBySetscrewHoles() {
                      assembly_.PartId(hub_part), Name(s), Name(t), Mm(t.f.diameter)),
          {std::string(assembly_.PartId(hub_part)), std::string(assembly_.PartId(shaft_part))},
          {Name(s), Name(h), Name(t)}});
+  }
+}
+
+void Recognizer::FixHubsOnBearingShafts() {
+  std::vector<Pair*> hubs;
+  bool any_bearing = false;
+  for (Pair& p : pairs_) {
+    if (AsHubOnShaft(p)) hubs.push_back(&p);
+    any_bearing =
+        any_bearing || (p.type == PairType::kRevolute && p.source == PairSource::kBearing);
+  }
+  if (hubs.empty() || !any_bearing) return;
+  // The rigid bodies so far: parts joined by fixed pairs (roots: their smallest part).
+  UnionFind bodies(assembly_.parts().size());
+  for (const Pair& p : pairs_) {
+    if (p.type == PairType::kFixed) {
+      bodies.Join(static_cast<int>(p.a.part), static_cast<int>(p.b.part));
+    }
+  }
+  auto body = [&](FeatureRef ref) { return bodies.Find(static_cast<int>(ref.part)); };
+  // Per hub's body: the bodies its pairs other than face contacts join it to. Per body: its
+  // bearings.
+  std::map<int, std::set<int>> joined;
+  for (const Pair* p : hubs) joined[body(p->b)];
+  std::map<int, std::vector<const Pair*>> bearings;
+  for (const Pair& p : pairs_) {
+    const int a = body(p.a), b = body(p.b);
+    if (a == b || p.type == PairType::kPlanar) continue;
+    if (const auto hub = joined.find(a); hub != joined.end()) hub->second.insert(b);
+    if (const auto hub = joined.find(b); hub != joined.end()) hub->second.insert(a);
+    if (p.type == PairType::kRevolute && p.source == PairSource::kBearing) {
+      bearings[a].push_back(&p);
+      bearings[b].push_back(&p);
+    }
+  }
+  for (Pair* p : hubs) {
+    const HubOnShaft hub = *AsHubOnShaft(*p);
+    const WorldFeature& s = hub.s;
+    const WorldFeature& h = hub.h;
+    const int hub_body = body(h.ref), shaft_body = body(s.ref);
+    if (joined[hub_body] != std::set<int>{shaft_body}) continue;  // more than the shaft holds it
+    // A bearing on the shaft's axis between the shaft's body and a third one.
+    const Pair* bearing = nullptr;
+    for (const Pair* q : bearings[shaft_body]) {
+      const int other = body(q->a) == shaft_body ? body(q->b) : body(q->a);
+      const WorldFeature& axis = At(q->a);
+      if (other != hub_body && AngleBetweenLines(axis.axis.direction, s.axis.direction) <= A_ &&
+          DistanceToLine(axis.axis.origin, s.axis.origin, s.axis.direction) <= L_) {
+        bearing = q;
+        break;
+      }
+    }
+    if (!bearing) continue;
+    p->type = PairType::kFixed;
+    p->dof = 0;
+    p->source = PairSource::kBearingShaft;
+    const std::size_t own = body(bearing->a) == shaft_body ? bearing->a.part : bearing->b.part;
+    const std::size_t across = own == bearing->a.part ? bearing->b.part : bearing->a.part;
+    diagnostics_.push_back(
+        {Severity::kInfo,
+         "bearing_shaft",
+         fmt::format("{} is held by nothing but {}, on the axis of a bearing between {} and {}: "
+                     "taken as fixed to it (a part on a bearing's shaft or housing turns with "
+                     "it: its key, setscrew, screws, glue or press fit is not in the file; an "
+                     "override of type none forbids it)",
+                     assembly_.PartId(h.ref.part), Name(s), assembly_.PartId(own),
+                     assembly_.PartId(across)),
+         {std::string(assembly_.PartId(h.ref.part)), std::string(assembly_.PartId(s.ref.part))},
+         {Name(s), Name(h)}});
   }
 }
 

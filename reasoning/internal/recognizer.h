@@ -208,6 +208,15 @@ class Recognizer {
   /// held in its housing, so it is left turning. After FixHubsOnFlats.
   void FixHubsBySetscrewHoles();
 
+  /// A hub on a shaft (a cylindrical pair) that nothing but the shaft's rigid body holds
+  /// (apart from face contacts; bodies are parts joined by fixed pairs so far), when that body
+  /// turns in a bearing on the shaft's axis (a revolute pair, source bearing, to a third
+  /// body): a pendulum, crank or pulley on a shaft carried by bearings turns with the shaft,
+  /// by a key, setscrew, glue or press fit the file leaves out (a part meant to turn on the
+  /// shaft would need no bearing under it). The pair becomes fixed (source bearing_shaft),
+  /// with one info `bearing_shaft` per pair. After FixHubsBySetscrewHoles.
+  void FixHubsOnBearingShafts();
+
   /// A hub on a shaft: a recognised cylindrical pair of a shaft `s` in a hole `h`, and where
   /// the hole spans along the shaft's axis (mm from the shaft's origin, lo <= hi).
   struct HubOnShaft {
@@ -331,7 +340,7 @@ class Recognizer {
   static_assert(static_cast<int>(PairSource::kImpliedFrame) < (1 << kSourceBits));
   static_assert(static_cast<int>(PairSource::kSeated) < (1 << kSourceBits));
   static_assert(static_cast<int>(PairSource::kSetscrewHole) < (1 << kSourceBits));
-  static_assert(static_cast<int>(PairSource::kEmbedded) < (1 << kSourceBits));
+  static_assert(static_cast<int>(PairSource::kBearingShaft) < (1 << kSourceBits));
 
   /// Pairs order by feature names, then source, then as found, not by indices, so that
   /// reordering the file changes nothing: the name ranks and the source packed in one key.

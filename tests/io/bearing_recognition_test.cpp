@@ -450,6 +450,54 @@ TEST(Bearing, AShaftCollarWithAnEmptySetscrewHoleIsFixedToItsShaft) {
   EXPECT_EQ(CountSource(pinned, PairSource::kSetscrewHole), 0);
 }
 
+// A lever on a 5 mm shaft (axis z, z -5..25; the lever's hub z 10..15, line to line), the
+// shaft in a bearing of one solid (5 x 10 x 4, z 0..4) fitted in a ground housing, or, with
+// `bearing` false, straight in the housing's 5 mm hole; `extra`: more parts.
+Assembly LeverOnShaft(bool bearing, const std::string& extra = "") {
+  const std::string housing = bearing ? R"({"id": "housing", "ground": true, "features": [
+      {"id": "seat", "kind": "hole", "origin": [0, 0, 0], "axis": [0, 0, 1], "diameter": 10, "length": 4, "through": true}]},
+    {"id": "bearing", "features": [
+      {"id": "outside", "kind": "shaft", "origin": [0, 0, 0], "axis": [0, 0, 1], "diameter": 10, "length": 4},
+      {"id": "bore", "kind": "hole", "origin": [0, 0, 0], "axis": [0, 0, 1], "diameter": 5, "length": 4, "through": true},
+      {"id": "inner_bottom", "kind": "face", "origin": [2.8, 0, 0], "axis": [0, 0, -1], "width": 0.5, "height": 0.5},
+      {"id": "outer_bottom", "kind": "face", "origin": [4.5, 0, 0], "axis": [0, 0, -1], "width": 1, "height": 1},
+      {"id": "inner_top", "kind": "face", "origin": [2.8, 0, 4], "axis": [0, 0, 1], "width": 0.5, "height": 0.5},
+      {"id": "outer_top", "kind": "face", "origin": [4.5, 0, 4], "axis": [0, 0, 1], "width": 1, "height": 1}]})"
+                                      : R"({"id": "housing", "ground": true, "features": [
+      {"id": "bore", "kind": "hole", "origin": [0, 0, 0], "axis": [0, 0, 1], "diameter": 5, "length": 4, "through": true}]})";
+  return LoadAssemblyText(fmt::format(R"({{"mechanist": 1, "parts": [
+    {},
+    {{"id": "shaft", "features": [
+      {{"id": "shaft", "kind": "shaft", "origin": [0, 0, -5], "axis": [0, 0, 1], "diameter": 5, "length": 30}}]}},
+    {{"id": "lever", "features": [
+      {{"id": "hub", "kind": "hole", "origin": [0, 0, 10], "axis": [0, 0, 1], "diameter": 5, "length": 5, "through": true}},
+      {{"id": "eye", "kind": "hole", "origin": [30, 0, 10], "axis": [0, 0, 1], "diameter": 5, "length": 5, "through": true}}]}}{}]}})",
+                                      housing, extra),
+                          "lever.json");
+}
+
+TEST(Bearing, ALeverHeldByNothingButAShaftThatTurnsInABearingTurnsWithIt) {
+  const Analysis on_bearing = Analyze(LeverOnShaft(true));
+  EXPECT_EQ(CountSource(on_bearing, PairSource::kBearingShaft), 1);
+  const Diagnostic* info = Find(on_bearing, "bearing_shaft");
+  ASSERT_NE(info, nullptr);
+  EXPECT_NE(info->message.find("lever is held by nothing but shaft/shaft, on the axis of a "
+                               "bearing between shaft and bearing: taken as fixed to it"),
+            std::string::npos)
+      << info->message;
+  // The shaft turns in the bearing, the lever with it.
+  EXPECT_EQ(on_bearing.motion.mobility.dof, 1);
+  // In a plain hole the shaft itself turns and slides: the lever may be meant to turn on it.
+  const Analysis plain = Analyze(LeverOnShaft(false));
+  EXPECT_EQ(CountSource(plain, PairSource::kBearingShaft), 0);
+  EXPECT_EQ(plain.motion.mobility.dof, 4);
+  // A link pinned to the lever's eye holds it too: a rocker of a linkage, left turning.
+  const Analysis linked = Analyze(LeverOnShaft(true, R"(,
+    {"id": "pin", "features": [
+      {"id": "pin", "kind": "shaft", "origin": [30, 0, 8], "axis": [0, 0, 1], "diameter": 5, "length": 9}]})"));
+  EXPECT_EQ(CountSource(linked, PairSource::kBearingShaft), 0);
+}
+
 TEST(Bearing, TheFusionPendulumsSkf6002IsFoundWithItsNineBalls) {
   // Truth: a deep-groove ball bearing, 9 balls of r about 2.36 on a pitch circle of r about
   // 11.7, races of bore r 7.5 and outside r 16 (an SKF 6002: 15 x 32 x 9).

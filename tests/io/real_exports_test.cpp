@@ -39,6 +39,8 @@ struct Expected {
   int setscrew_holes = 0;
   // Parts in no pair fixed to the part they are sunk into.
   int embedded = 0;
+  // Hubs held by nothing but a shaft that turns in a bearing, fixed to it.
+  int bearing_shafts = 0;
 };
 
 std::vector<Expected> Cases() {
@@ -108,9 +110,10 @@ std::vector<Expected> Cases() {
        22},
       // The motor's connector is in no pair, sunk 2.1 mm into the motor's end cap: fixed to
       // it, so no warning. The motor's four long M3 screws (cross-recessed pan heads) run
-      // through the tap-drilled stator into the flange. 4 where the truth has 2: the rod's hub
-      // on the joint rod is a cylindrical pair (2), stopped 0.5 mm one way and open the other
-      // (10 before the connector was fixed).
+      // through the tap-drilled stator into the flange. The pendulum rod's hub, held by
+      // nothing but the joint rod, which turns in the SKF 6002, turns with it; so does the
+      // motor mount on the motor's pilot boss, coaxial with the motor's bearings: the truth's
+      // 2 (4 before, 10 before the connector was fixed).
       {"rotary_pendulum_ball_bearing_fusion/Assembly.step",
        "Assembly_v14.base_link_v4_1.NEMA_v6_1.Middle_part_1",
        {},
@@ -120,10 +123,11 @@ std::vector<Expected> Cases() {
        2,
        0,
        0,
-       4,
+       2,
        0,
        0,
-       1},
+       1,
+       2},
       // The file has the two gears and no frame or shafts: each turns on an axle of the
       // implied frame through its bore, so no warning.
       {"spur_pair_20T_40T_solidworks/ISO standard Spur Gear Drive (2-1 ratio).STEP",
@@ -193,6 +197,9 @@ TEST_P(RealExports, GroundAndWarningsAreTheOnesADesignerActsOn) {
   EXPECT_EQ(std::count_if(an.pairs.begin(), an.pairs.end(),
                           [](const Pair& p) { return p.source == PairSource::kEmbedded; }),
             e.embedded);
+  EXPECT_EQ(std::count_if(an.pairs.begin(), an.pairs.end(),
+                          [](const Pair& p) { return p.source == PairSource::kBearingShaft; }),
+            e.bearing_shafts);
 }
 
 TEST(RealExports, TheRobotHandsThumbTurnsOnItsPivotScrew) {
