@@ -330,6 +330,20 @@ Outline Section(const TriangleMesh& mesh, const Vector3d& axis, const Vector3d& 
   return o;
 }
 
+// Sections 0 .. n-1 cut by `cut` (true when the section shows teeth), every `stride`-th
+// first and the rest only when one of those shows teeth: most parts are no gear, and a run of
+// `stride` or more sections that show teeth holds one of the first. Whether any showed teeth.
+template <typename Cut>
+bool CutEveryNthFirst(int n, int stride, Cut cut) {
+  bool teeth = false;
+  for (int i = 0; i < n; i += stride) teeth = cut(i) || teeth;
+  if (!teeth) return false;
+  for (int i = 0; i < n; ++i) {
+    if (i % stride != 0) cut(i);
+  }
+  return true;
+}
+
 // Teeth in one section across the axis: the outline's radius about `centre` (its largest for
 // external teeth, its smallest for internal ones) repeating z times around with the depth of a
 // standard module, as for a spur gear's outline.
@@ -463,14 +477,8 @@ std::optional<RecognizedFeature> SectionGear(const TriangleMesh& mesh, const Vec
     coarse[i] = TeethOfSection(o, *centre);
     return coarse[i].has_value();
   };
-  // Most parts are no gear: every third section decides whether the rest are cut (a run of
-  // three, the fewest that counts, holds one of them).
-  bool any_teeth = false;
-  for (int i = 0; i < kCoarse; i += 3) any_teeth = cut(i) || any_teeth;
-  if (!any_teeth) return std::nullopt;
-  for (int i = 0; i < kCoarse; ++i) {
-    if (i % 3 != 0) cut(i);
-  }
+  // A run of three, the fewest that counts, holds every third section.
+  if (!CutEveryNthFirst(kCoarse, 3, cut)) return std::nullopt;
   // The longest run of sections with the same teeth.
   auto same = [](const SectionTeeth& a, const SectionTeeth& b) {
     return a.teeth == b.teeth && a.module == b.module && a.internal == b.internal;
@@ -653,14 +661,8 @@ std::optional<RecognizedFeature> SectionBevelGear(const TriangleMesh& mesh, cons
         BevelTeethOfSection(Section(mesh, axis, u, v, t_min + (i + 0.5013) * step), centre);
     return sections[i].has_value();
   };
-  // Most parts are no gear: every fourth section decides whether the rest are cut (a run of
-  // five, the fewest that counts, holds one of them).
-  bool teeth = false;
-  for (int i = 0; i < kSections; i += 4) teeth = cut(i) || teeth;
-  if (!teeth) return std::nullopt;
-  for (int i = 0; i < kSections; ++i) {
-    if (i % 4 != 0) cut(i);
-  }
+  // A run of five, the fewest that counts, holds every fourth section.
+  if (!CutEveryNthFirst(kSections, 4, cut)) return std::nullopt;
   // The longest run of sections with the same tooth count.
   int first = -1, count = 0;
   for (int i = 0; i < kSections;) {

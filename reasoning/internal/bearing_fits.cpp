@@ -575,10 +575,12 @@ void Recognizer::FixHubsOnBearingShafts() {
     const WorldFeature& s = hub.s;
     const WorldFeature& h = hub.h;
     const int hub_body = body(h.ref), shaft_body = body(s.ref);
-    if (joined[hub_body] != std::set<int>{shaft_body}) continue;  // more than the shaft holds it
+    // More than the shaft holds it, or the shaft's body has no bearing.
+    const auto on_shaft = bearings.find(shaft_body);
+    if (joined.at(hub_body) != std::set<int>{shaft_body} || on_shaft == bearings.end()) continue;
     // A bearing on the shaft's axis between the shaft's body and a third one.
     const Pair* bearing = nullptr;
-    for (const Pair* q : bearings[shaft_body]) {
+    for (const Pair* q : on_shaft->second) {
       const int other = body(q->a) == shaft_body ? body(q->b) : body(q->a);
       const WorldFeature& axis = At(q->a);
       if (other != hub_body && AngleBetweenLines(axis.axis.direction, s.axis.direction) <= A_ &&

@@ -452,8 +452,10 @@ TEST(Bearing, AShaftCollarWithAnEmptySetscrewHoleIsFixedToItsShaft) {
 
 // A lever on a 5 mm shaft (axis z, z -5..25; the lever's hub z 10..15, line to line), the
 // shaft in a bearing of one solid (5 x 10 x 4, z 0..4) fitted in a ground housing, or, with
-// `bearing` false, straight in the housing's 5 mm hole; `extra`: more parts.
-Assembly LeverOnShaft(bool bearing, const std::string& extra = "") {
+// `bearing` false, straight in the housing's 5 mm hole; `extra`: more parts; `overrides`: the
+// file's overrides.
+Assembly LeverOnShaft(bool bearing, const std::string& extra = "",
+                      const std::string& overrides = "[]") {
   const std::string housing = bearing ? R"({"id": "housing", "ground": true, "features": [
       {"id": "seat", "kind": "hole", "origin": [0, 0, 0], "axis": [0, 0, 1], "diameter": 10, "length": 4, "through": true}]},
     {"id": "bearing", "features": [
@@ -471,8 +473,9 @@ Assembly LeverOnShaft(bool bearing, const std::string& extra = "") {
       {{"id": "shaft", "kind": "shaft", "origin": [0, 0, -5], "axis": [0, 0, 1], "diameter": 5, "length": 30}}]}},
     {{"id": "lever", "features": [
       {{"id": "hub", "kind": "hole", "origin": [0, 0, 10], "axis": [0, 0, 1], "diameter": 5, "length": 5, "through": true}},
-      {{"id": "eye", "kind": "hole", "origin": [30, 0, 10], "axis": [0, 0, 1], "diameter": 5, "length": 5, "through": true}}]}}{}]}})",
-                                      housing, extra),
+      {{"id": "eye", "kind": "hole", "origin": [30, 0, 10], "axis": [0, 0, 1], "diameter": 5, "length": 5, "through": true}}]}}{}],
+    "overrides": {}}})",
+                                      housing, extra, overrides),
                           "lever.json");
 }
 
@@ -496,6 +499,10 @@ TEST(Bearing, ALeverHeldByNothingButAShaftThatTurnsInABearingTurnsWithIt) {
     {"id": "pin", "features": [
       {"id": "pin", "kind": "shaft", "origin": [30, 0, 8], "axis": [0, 0, 1], "diameter": 5, "length": 9}]})"));
   EXPECT_EQ(CountSource(linked, PairSource::kBearingShaft), 0);
+  // An override of type none forbids it (and the hub's pair with it).
+  const Analysis forbidden = Analyze(
+      LeverOnShaft(true, "", R"([{"pair": ["shaft/shaft", "lever/hub"], "type": "none"}])"));
+  EXPECT_EQ(CountSource(forbidden, PairSource::kBearingShaft), 0);
 }
 
 TEST(Bearing, TheFusionPendulumsSkf6002IsFoundWithItsNineBalls) {
