@@ -7,8 +7,11 @@
 
 #include <Eigen/Dense>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "kernel/geometry/circle_fit.h"
@@ -58,21 +61,65 @@ std::optional<SpaceCircle> FitSpaceCircle(const std::vector<Eigen::Vector3d>& po
   return c;
 }
 
-/// A part that is one rolling element: a ball, or a roller (one cylinder and flat ends).
+/// A part that is one rolling element: a ball, a roller (one cylinder and flat ends), or a
+/// tapered roller (two round flat ends of different sizes facing away from each other along
+/// the line through their centres, and nothing else: its cone gives no feature).
 struct RollingElement {
-  const WorldFeature* w;   ///< the ball, or the roller's cylinder
+  const WorldFeature* w;   ///< the ball, the roller's cylinder, a tapered roller's large end
   Eigen::Vector3d center;  ///< world
+  Eigen::Vector3d axis;    ///< world, unit; a ball's is its feature's (unused)
+  double diameter = 0.0;   ///< mm; a tapered roller's mean (of its ends' outlines)
   double length = 0.0;     ///< mm along its axis; 0 for a ball
+  bool tapered = false;
 };
+
+/// The tapered roller of a part whose only features are `x` and `y`, or nothing: they must be
+/// faces, round (as wide as high) within `L` mm, of diameters more than `L` apart, facing away
+/// from each other along the line through their centres within `L` and `A` rad.
+std::optional<RollingElement> TaperedRoller(const WorldFeature& x, const WorldFeature& y, double L,
+                                            double A) {
+  if (x.f.kind != FeatureKind::kFace || y.f.kind != FeatureKind::kFace) return std::nullopt;
+  const WorldFeature& small = x.f.width < y.f.width ? x : y;
+  const WorldFeature& large = &small == &x ? y : x;
+  const Eigen::Vector3d along = large.axis.origin - small.axis.origin;
+  const double length = along.norm();
+  auto round = [&](const WorldFeature& w) { return std::abs(w.f.width - w.f.height) <= L; };
+  if (!round(small) || !round(large) || large.f.width - small.f.width <= L || length <= L ||
+      AngleBetweenLines(small.axis.direction, large.axis.direction) > A ||
+      small.axis.direction.dot(large.axis.direction) >= 0 ||
+      DistanceToLine(large.axis.origin, small.axis.origin, small.axis.direction) > L ||
+      along.dot(large.axis.direction) <= 0) {
+    return std::nullopt;
+  }
+  // The axis is the large end's normal: an exact plane's, where the ends' centres are their
+  // tessellated outlines'.
+  return RollingElement{&large,
+                        (small.axis.origin + large.axis.origin) / 2,
+                        large.axis.direction,
+                        (small.f.width + large.f.width) / 2,
+                        length,
+                        true};
+}
 
 }  // namespace
 
 void Recognizer::AddBearings() {
-  // The rolling elements: parts that are one ball and nothing else, or one shaft and faces
-  // across its axis (its ends), sorted by size.
+  // The rolling elements: parts that are one ball and nothing else, one shaft and faces
+  // across its axis (its ends), or a tapered roller's two ends, sorted by kind and size.
   std::vector<RollingElement> elements;
   for (std::size_t part = 0; part < assembly_.parts().size(); ++part) {
     const std::size_t n = assembly_.FeatureCount(part);
+    if (n == 1 && At({part, 0}).f.kind == FeatureKind::kBall) {
+      const WorldFeature& ball = At({part, 0});
+      elements.push_back({&ball, ball.axis.origin, ball.axis.direction, ball.f.diameter});
+      continue;
+    }
+    if (n == 2) {
+      if (const auto roller = TaperedRoller(At({part, 0}), At({part, 1}), L_, A_)) {
+        elements.push_back(*roller);
+        continue;
+      }
+    }
     const WorldFeature* cylinder = nullptr;
     bool only_ends = true;
     for (std::size_t f = 0; f < n; ++f) {
@@ -81,10 +128,6 @@ void Recognizer::AddBearings() {
         cylinder = &w;
       else if (w.f.kind != FeatureKind::kFace)
         only_ends = false;
-    }
-    if (n == 1 && At({part, 0}).f.kind == FeatureKind::kBall) {
-      elements.push_back({&At({part, 0}), At({part, 0}).axis.origin, 0.0});
-      continue;
     }
     if (!cylinder || !only_ends) continue;
     for (std::size_t f = 0; f < n; ++f) {
@@ -96,14 +139,14 @@ void Recognizer::AddBearings() {
     if (!only_ends) continue;
     elements.push_back(
         {cylinder, cylinder->axis.origin + cylinder->axis.length / 2 * cylinder->axis.direction,
-         cylinder->axis.length});
+         cylinder->axis.direction, cylinder->f.diameter, cylinder->axis.length});
   }
   if (elements.size() < 3) return;
   std::sort(elements.begin(), elements.end(),
             [&](const RollingElement& x, const RollingElement& y) {
+              if (x.tapered != y.tapered) return y.tapered;
               if (x.length != y.length) return x.length < y.length;
-              return x.w->f.diameter != y.w->f.diameter ? x.w->f.diameter < y.w->f.diameter
-                                                        : NameLess(*x.w, *y.w);
+              return x.diameter != y.diameter ? x.diameter < y.diameter : NameLess(*x.w, *y.w);
             });
   // Sets of elements of one size whose neighbours lie at most four diameters apart (single
   // linkage): the rolling elements of one bearing each. Elements of one size are consecutive
@@ -112,11 +155,11 @@ void Recognizer::AddBearings() {
   for (std::size_t begin = 0, end = 0; begin < elements.size(); begin = end) {
     const RollingElement& size = elements[begin];
     double cell = 0.0;
-    for (end = begin; end < elements.size() &&
-                      std::abs(elements[end].w->f.diameter - size.w->f.diameter) <= L_ &&
+    for (end = begin; end < elements.size() && elements[end].tapered == size.tapered &&
+                      std::abs(elements[end].diameter - size.diameter) <= L_ &&
                       std::abs(elements[end].length - size.length) <= L_;
          ++end) {
-      cell = std::max(cell, 4 * elements[end].w->f.diameter);
+      cell = std::max(cell, 4 * elements[end].diameter);
     }
     if (end - begin < 3 || !(cell > 0)) continue;
     using Cell = std::array<std::int64_t, 3>;
@@ -141,7 +184,7 @@ void Recognizer::AddBearings() {
               if (near == grid.end()) continue;
               for (const std::size_t j : near->second) {
                 const RollingElement& e = elements[j];
-                if (taken[j - begin] || (e.center - set[k]->center).norm() > 4 * e.w->f.diameter) {
+                if (taken[j - begin] || (e.center - set[k]->center).norm() > 4 * e.diameter) {
                   continue;
                 }
                 taken[j - begin] = true;
@@ -159,25 +202,43 @@ void Recognizer::AddBearings() {
     for (const RollingElement* e : set) centers.push_back(e->center);
     const std::optional<SpaceCircle> pitch = FitSpaceCircle(centers);
     if (!pitch || pitch->worst > L_) continue;
-    // Rollers lie along the bearing's axis (tapered and spherical ones are not recognised).
-    const double length = set.front()->length;
-    if (length > 0 && std::any_of(set.begin(), set.end(), [&](const RollingElement* e) {
-          return AngleBetweenLines(e->w->axis.direction, pitch->normal) > A_;
+    // Rollers lie along the bearing's axis; tapered rollers' axes meet it, all at one
+    // inclination of at most 45 deg (the apex their cones and the raceways' share). A ball's
+    // axis means nothing.
+    const RollingElement& first = *set.front();
+    const bool tapered = first.tapered;
+    const double tilt = AngleBetweenLines(first.axis, pitch->normal);
+    if (first.length > 0 && (tapered ? tilt <= A_ || tilt > kPi / 4 : tilt > A_)) continue;
+    if (first.length > 0 && std::any_of(set.begin(), set.end(), [&](const RollingElement* e) {
+          return std::abs(AngleBetweenLines(e->axis, pitch->normal) - tilt) > A_ ||
+                 (tapered &&
+                  ClosestPointsOfLines(e->center, e->axis, pitch->center, pitch->normal).distance >
+                      L_);
         })) {
       continue;
     }
-    const double element_r = set.front()->w->f.diameter / 2;
+    const double length = first.length;
+    const double element_r = first.diameter / 2;
     const double reach = length > 0 ? length / 2 : element_r;  // from the elements' plane
     std::set<std::size_t> in_set;
     for (const RollingElement* e : set) in_set.insert(e->w->ref.part);
     // The rings' raceways or lands: coaxial with the pitch circle, between the elements'
     // inner (outer) side and the pitch circle, reaching the elements' plane within `reach`. A
-    // needle bearing without an inner ring runs on the shaft itself.
+    // needle bearing without an inner ring runs on the shaft itself. A tapered roller
+    // bearing's raceways are cones, which give no feature: its rings are the nearest bore
+    // inside the rollers and the nearest outside cylinder outside them.
     const WorldFeature* inner = nullptr;
     const WorldFeature* outer = nullptr;
+    const FeatureKind inner_kind = tapered ? FeatureKind::kHole : FeatureKind::kShaft;
+    const FeatureKind outer_kind = tapered ? FeatureKind::kShaft : FeatureKind::kHole;
+    const double inner_from = tapered ? 0.0 : pitch->radius - element_r - L_;
+    const double inner_to = tapered ? pitch->radius - element_r : pitch->radius;
+    const double outer_from = tapered ? pitch->radius + element_r : pitch->radius;
+    const double outer_to =
+        tapered ? std::numeric_limits<double>::infinity() : pitch->radius + element_r + L_;
     for (const WorldFeature& w : features_) {
-      const bool shaft = w.f.kind == FeatureKind::kShaft, hole = w.f.kind == FeatureKind::kHole;
-      if ((!shaft && !hole) || in_set.count(w.ref.part)) continue;
+      const bool in = w.f.kind == inner_kind, out = w.f.kind == outer_kind;
+      if ((!in && !out) || in_set.count(w.ref.part)) continue;
       if (AngleBetweenLines(w.axis.direction, pitch->normal) > A_ ||
           DistanceToLine(pitch->center, w.axis.origin, w.axis.direction) > L_) {
         continue;
@@ -186,12 +247,12 @@ void Recognizer::AddBearings() {
       const double along = (pitch->center - w.axis.origin).dot(w.axis.direction);
       const double outside = std::max({0.0, -along, along - w.axis.length});
       if (outside > reach + L_) continue;
-      if (shaft && r > pitch->radius - element_r - L_ && r < pitch->radius &&
+      if (in && r > inner_from && r < inner_to &&
           (!inner || r > inner->f.diameter / 2 ||
            (r == inner->f.diameter / 2 && NameLess(w, *inner)))) {
         inner = &w;
       }
-      if (hole && r < pitch->radius + element_r + L_ && r > pitch->radius &&
+      if (out && r < outer_to && r > outer_from &&
           (!outer || r < outer->f.diameter / 2 ||
            (r == outer->f.diameter / 2 && NameLess(w, *outer)))) {
         outer = &w;
@@ -212,7 +273,7 @@ void Recognizer::AddBearings() {
     };
     // The inner ring's bore: its smallest hole on the axis, inside the raceway. A needle
     // bearing's shaft, which has none, is no ring: it runs on the shaft's own diameter.
-    double bore = 0.0;
+    double bore = tapered ? inner->f.diameter : 0.0;
     for (std::size_t f = 0; f < assembly_.FeatureCount(inner->ref.part); ++f) {
       const WorldFeature& w = At({inner->ref.part, f});
       if (w.f.kind == FeatureKind::kHole && on_axis(w) && w.f.diameter < inner->f.diameter &&
@@ -251,7 +312,7 @@ void Recognizer::AddBearings() {
     }
     // Its size as a catalogue gives it: the bore (above), the outer ring's outside diameter
     // and width (between its end faces, which chamfers do not shorten as they do its outside
-    // cylinder).
+    // cylinder); a tapered roller bearing's width is both rings' (its catalogue's T).
     double outside = 0.0, width = 0.0;
     for (std::size_t f = 0; f < assembly_.FeatureCount(outer->ref.part); ++f) {
       const WorldFeature& w = At({outer->ref.part, f});
@@ -260,14 +321,18 @@ void Recognizer::AddBearings() {
       }
     }
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (std::size_t f = 0; f < assembly_.FeatureCount(outer->ref.part); ++f) {
-      const WorldFeature& w = At({outer->ref.part, f});
-      if (w.f.kind != FeatureKind::kFace ||
-          AngleBetweenLines(w.axis.direction, pitch->normal) > A_) {
-        continue;
+    std::vector<std::size_t> rings{outer->ref.part};
+    if (tapered) rings.push_back(inner->ref.part);
+    for (const std::size_t ring : rings) {
+      for (std::size_t f = 0; f < assembly_.FeatureCount(ring); ++f) {
+        const WorldFeature& w = At({ring, f});
+        if (w.f.kind != FeatureKind::kFace ||
+            AngleBetweenLines(w.axis.direction, pitch->normal) > A_) {
+          continue;
+        }
+        const double at = (w.axis.origin - pitch->center).dot(pitch->normal);
+        lo = std::min(lo, at), hi = std::max(hi, at);
       }
-      const double at = (w.axis.origin - pitch->center).dot(pitch->normal);
-      lo = std::min(lo, at), hi = std::max(hi, at);
     }
     if (hi > lo) width = hi - lo;
     const std::string size = bore > 0 && outside > 0
@@ -280,24 +345,30 @@ void Recognizer::AddBearings() {
     // Needles: rollers at least 2.5 diameters long (ISO 3096's are 2.5 to 10).
     const bool needles = length >= 2.5 * 2 * element_r;
     const std::string kind = length == 0 ? "ball"
+                             : tapered   ? "tapered roller"
                              : needles   ? "needle roller"
                                          : "cylindrical roller";
-    const std::string named = length == 0 ? "balls" : needles ? "needles" : "rollers";
-    const std::string each = length == 0
-                                 ? Mm(2 * element_r)
-                                 : fmt::format("{} x {}", FormatNumber(2 * element_r), Mm(length));
+    const std::string named = length == 0 ? "balls" : needles && !tapered ? "needles" : "rollers";
+    // A tapered roller's diameter is its ends' mean and its centre theirs, measured on their
+    // tessellated outlines: the diameter is given to 0.1 mm, the pitch circle to 0.01 mm.
+    const std::string each =
+        length == 0 ? Mm(2 * element_r)
+        : tapered
+            ? fmt::format("{} x {} at {} to its axis",
+                          FormatNumber(std::round(20 * element_r) / 10), Mm(length), Deg(tilt))
+            : fmt::format("{} x {}", FormatNumber(2 * element_r), Mm(length));
     diagnostics_.push_back(
         {Severity::kInfo,
          "bearing",
-         fmt::format(
-             "a {} bearing{}: {} turns in {} on {} {} of {} on a {} pitch circle "
-             "(a revolute pair; the {} are held with the outer ring, their spin and "
-             "orbit not modelled){}",
-             kind, size, assembly_.PartId(inner->ref.part), assembly_.PartId(outer->ref.part),
-             set.size(), named, each, Mm(2 * pitch->radius), named,
-             seats.empty()
-                 ? ""
-                 : fmt::format("; its rings are fitted (fixed) to {}", fmt::join(seats, " and "))),
+         fmt::format("a {} bearing{}: {} turns in {} on {} {} of {} on a {} pitch circle "
+                     "(a revolute pair; the {} are held with the outer ring, their spin and "
+                     "orbit not modelled){}",
+                     kind, size, assembly_.PartId(inner->ref.part),
+                     assembly_.PartId(outer->ref.part), set.size(), named, each,
+                     Mm(tapered ? std::round(200 * pitch->radius) / 100 : 2 * pitch->radius), named,
+                     seats.empty() ? ""
+                                   : fmt::format("; its rings are fitted (fixed) to {}",
+                                                 fmt::join(seats, " and "))),
          parts,
          {Name(*inner), Name(*outer)}});
   }

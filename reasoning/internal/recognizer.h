@@ -175,9 +175,13 @@ class Recognizer {
   /// or half a roller. The rings make a revolute pair (source bearing) and no other pair
   /// between them (a land is never a press fit); each element is held with the outer ring (a
   /// fixed pair, source bearing: its spin and orbit are not modelled, and it adds no freedom),
-  /// and makes no other pair. One info diagnostic `bearing` per bearing gives its kind (ball,
-  /// cylindrical roller, needle roller: rollers 2.5 diameters long or more), its elements and
-  /// size (bore x outside diameter x width, mm). Before the implied pins and the overrides.
+  /// and makes no other pair. Tapered rollers (two round flat ends of different sizes and
+  /// nothing else: their cones give no feature) whose axes all meet the circle's axis at one
+  /// inclination of at most 45 deg are a tapered roller bearing's, between the nearest bore
+  /// inside them and the nearest outside cylinder outside them. One info diagnostic `bearing`
+  /// per bearing gives its kind (ball, tapered roller, cylindrical roller, needle roller:
+  /// rollers 2.5 diameters long or more), its elements and size (bore x outside diameter x
+  /// width, mm). Before the implied pins and the overrides.
   void AddBearings();
 
   /// Bearings modelled as one solid (vendor parts): a part whose outside cylinder and bore

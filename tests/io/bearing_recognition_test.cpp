@@ -24,9 +24,18 @@ constexpr double kPi = 3.14159265358979323846;
 // A 6002 (15 x 32 x 9) drawn by its features, axis z: the inner ring's bore and its two lands
 // beside the raceway, the outer ring's outside and its two lands, and `balls` balls of 4.762
 // mm on a 23.5 mm pitch circle in z = 0, the first moved by `off` mm across the circle.
-// How the sketch's rolling elements are drawn: balls, or rollers 5 mm long (a shaft and its
-// two end faces) along the bearing's axis or along radii.
-enum class Elements { kBalls, kRollersAlongTheAxis, kRollersAlongRadii };
+// How the sketch's rolling elements are drawn: balls, rollers 5 mm long (a shaft and its
+// two end faces) along the bearing's axis or along radii, or two round end faces 5 mm apart
+// and nothing else: tapered rollers (4.4 and 5.1 mm ends) tilted 15 deg towards the axis or
+// sideways (their axes then miss it), or equal ends.
+enum class Elements {
+  kBalls,
+  kRollersAlongTheAxis,
+  kRollersAlongRadii,
+  kTaperedRollers,
+  kSkewedTaperedRollers,
+  kEqualEnds
+};
 
 std::string Sketch(int balls, double off = 0.0, Elements kind = Elements::kBalls) {
   std::string elements;
@@ -34,16 +43,34 @@ std::string Sketch(int balls, double off = 0.0, Elements kind = Elements::kBalls
     const double a = 2 * kPi * k / balls, r = 11.75 + (k == 0 ? off : 0.0);
     const Eigen::Vector3d c(r * std::cos(a), r * std::sin(a), 0);
     if (kind == Elements::kBalls) {
+      // Each ball's axis along its radius: a ball's axis means nothing to a bearing.
       elements += fmt::format(
           R"(, {{"id": "ball{}", "features": [{{"id": "ball", "kind": "ball",
-            "origin": [{}, {}, 0], "diameter": 4.762}}]}})",
-          k + 1, c.x(), c.y());
+            "origin": [{}, {}, 0], "axis": [{}, {}, 0], "diameter": 4.762}}]}})",
+          k + 1, c.x(), c.y(), std::cos(a), std::sin(a));
       continue;
     }
-    const Eigen::Vector3d u = kind == Elements::kRollersAlongTheAxis
-                                  ? Eigen::Vector3d::UnitZ()
-                                  : Eigen::Vector3d(std::cos(a), std::sin(a), 0);
+    const Eigen::Vector3d radial(std::cos(a), std::sin(a), 0), across(-std::sin(a), std::cos(a), 0);
+    const double tilt = 15 * kPi / 180;
+    const Eigen::Vector3d u =
+        kind == Elements::kRollersAlongTheAxis ? Eigen::Vector3d::UnitZ()
+        : kind == Elements::kRollersAlongRadii ? radial
+        : kind == Elements::kSkewedTaperedRollers
+            ? Eigen::Vector3d(std::cos(tilt) * Eigen::Vector3d::UnitZ() + std::sin(tilt) * across)
+            : Eigen::Vector3d(std::cos(tilt) * Eigen::Vector3d::UnitZ() + std::sin(tilt) * radial);
     const Eigen::Vector3d o = c - 2.5 * u, e = c + 2.5 * u;
+    if (kind != Elements::kRollersAlongTheAxis && kind != Elements::kRollersAlongRadii) {
+      const double small = kind == Elements::kEqualEnds ? 5.1 : 4.4;
+      elements += fmt::format(
+          R"(, {{"id": "roller{}", "features": [
+            {{"id": "small_end", "kind": "face", "origin": [{}, {}, {}], "axis": [{}, {}, {}],
+             "width": {}, "height": {}}},
+            {{"id": "large_end", "kind": "face", "origin": [{}, {}, {}], "axis": [{}, {}, {}],
+             "width": 5.1, "height": 5.1}}]}})",
+          k + 1, o.x(), o.y(), o.z(), -u.x(), -u.y(), -u.z(), small, small, e.x(), e.y(), e.z(),
+          u.x(), u.y(), u.z());
+      continue;
+    }
     elements += fmt::format(
         R"(, {{"id": "roller{}", "features": [
           {{"id": "roll", "kind": "shaft", "origin": [{}, {}, {}], "axis": [{}, {}, {}],
@@ -187,6 +214,37 @@ TEST(Bearing, CylindricalRollersBetweenTwoRingsAreARollerBearing) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(Bearing, TaperedRollersBetweenACupAndAConeAreATaperedRollerBearing) {
+  // Raceways and rollers are cones, which give no feature: the rollers are found by their
+  // flat ends, the rings by the bore inside them and the outside cylinder outside them. As
+  // B-splines throughout, the same.
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "mechanist_occt_tapered";
+  std::filesystem::create_directories(dir);
+  testing::WriteTaperedRollerBearingStep(dir / "30205.step");
+  testing::WriteNurbsCopy(dir / "30205.step", dir / "30205_nurbs.step");
+  const Assembly exact = LoadAssembly(dir / "30205.step");
+  const Assembly nurbs = LoadAssembly(dir / "30205_nurbs.step");
+  const Analysis an_exact = Analyze(exact), an_nurbs = Analyze(nurbs);
+  for (const auto* an : {&an_exact, &an_nurbs}) {
+    const Diagnostic* bearing = Find(*an, "bearing");
+    ASSERT_NE(bearing, nullptr);
+    EXPECT_EQ(bearing->message.rfind("a tapered roller bearing, 25 x 52 x 16 mm: ", 0), 0u)
+        << bearing->message;
+    EXPECT_NE(bearing->message.find(
+                  "on 15 rollers of 6.6 x 12 mm at 15 deg to its axis on a 39 mm pitch circle"),
+              std::string::npos)
+        << bearing->message;
+    EXPECT_EQ(bearing->parts.size(), 17u);
+    EXPECT_EQ(CountSource(*an, PairSource::kBearing), 16);  // the rings' revolute, 15 rollers
+    for (const Pair& p : an->pairs) EXPECT_EQ(p.source, PairSource::kBearing);
+    EXPECT_EQ(an->motion.mobility.dof, 1);  // the cone's turn in the cup
+    EXPECT_EQ(Find(*an, "part_unconnected"), nullptr);
+  }
+  EXPECT_EQ(PairNames(nurbs, an_nurbs), PairNames(exact, an_exact));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Bearing, NeedlesInADrawnCupOnAShaftAreANeedleBearingAndTheShaftTurnsInIt) {
   // No inner ring: the needles run on the shaft itself, which turns in the cup.
   const std::filesystem::path dir =
@@ -237,6 +295,22 @@ TEST(Bearing, ElementsOffTheirCircleTooFewOrAcrossTheAxisAreNoBearing) {
       Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kRollersAlongRadii), "radial.json"));
   EXPECT_EQ(CountSource(radial, PairSource::kBearing), 0);
   EXPECT_EQ(Find(radial, "bearing"), nullptr);
+  // Tapered rollers tilted towards the axis are a tapered roller bearing; tilted sideways,
+  // their axes miss the bearing's and they are none, nor are parts with two equal ends.
+  const Analysis tapered =
+      Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kTaperedRollers), "tapered.json"));
+  EXPECT_EQ(CountSource(tapered, PairSource::kBearing), 10);
+  ASSERT_NE(Find(tapered, "bearing"), nullptr);
+  EXPECT_NE(Find(tapered, "bearing")
+                ->message.find("a tapered roller bearing, 15 x 32 x 9 mm: inner turns in outer on "
+                               "9 rollers of 4.8 x 5 mm at 15 deg to its axis"),
+            std::string::npos)
+      << Find(tapered, "bearing")->message;
+  for (const Elements sideways : {Elements::kSkewedTaperedRollers, Elements::kEqualEnds}) {
+    const Analysis none = Analyze(LoadAssemblyText(Sketch(9, 0, sideways), "none.json"));
+    EXPECT_EQ(CountSource(none, PairSource::kBearing), 0);
+    EXPECT_EQ(Find(none, "bearing"), nullptr);
+  }
 }
 
 // A housing (ground) with a 10 mm bore, a ring 10 x 5 x 4 mm in it (its ends one flat face

@@ -15,6 +15,7 @@
 #include <BRepPrimAPI_MakeCone.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRep_Builder.hxx>
@@ -38,6 +39,7 @@
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -749,6 +751,52 @@ void WriteRollerBearingStep(const std::filesystem::path& file) {
   outer = BRepAlgoAPI_Fuse(outer, Tube(19.5, 22.5, 4.5, 7.5));
   builder.Add(all, outer);
   AddRollers(builder, all, 13, 6.5, 19.25, -4, 4);
+  WriteStep(all, file);
+}
+
+namespace {
+
+// The solid swept by the closed polygon `rz` (radius, z) turning once about z.
+TopoDS_Shape Revolved(const std::vector<std::array<double, 2>>& rz) {
+  BRepBuilderAPI_MakePolygon outline;
+  for (const auto& [r, z] : rz) outline.Add(gp_Pnt(r, 0, z));
+  outline.Close();
+  return BRepPrimAPI_MakeRevol(BRepBuilderAPI_MakeFace(outline.Wire()).Face(), gp::OZ()).Shape();
+}
+
+}  // namespace
+
+void WriteTaperedRollerBearingStep(const std::filesystem::path& file) {
+  const double tilt = 15 * M_PI / 180, taper = 2.5 * M_PI / 180, pitch = 19.5;
+  const double apex = -pitch / std::tan(tilt);  // z where every cone's apex lies
+  // The raceways touch each roller along its lines nearest to and farthest from the axis.
+  auto inner_raceway = [&](double z) { return (z - apex) * std::tan(tilt - taper); };
+  auto outer_raceway = [&](double z) { return (z - apex) * std::tan(tilt + taper); };
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  builder.Add(all, Revolved({{12.5, -8},
+                             {inner_raceway(-8), -8},
+                             {inner_raceway(7), 7},
+                             {19, 7},
+                             {19, 8},
+                             {12.5, 8}}));
+  builder.Add(all,
+              Revolved({{outer_raceway(-7), -7}, {26, -7}, {26, 5.5}, {outer_raceway(5.5), 5.5}}));
+  const int rollers = 15;
+  const double mid = pitch / std::sin(tilt), length = 12;  // along the roller's axis from the apex
+  const double small = mid - length / 2;
+  const gp_Dir along(std::sin(tilt), 0, std::cos(tilt));
+  const gp_Pnt small_end(small * std::sin(tilt), 0, apex + small * std::cos(tilt));
+  const TopoDS_Shape roller =
+      BRepPrimAPI_MakeCone(gp_Ax2(small_end, along), small * std::tan(taper),
+                           (small + length) * std::tan(taper), length)
+          .Shape();
+  for (int k = 0; k < rollers; ++k) {
+    gp_Trsf turn;
+    turn.SetRotation(gp::OZ(), 2 * M_PI * k / rollers);
+    builder.Add(all, BRepBuilderAPI_Transform(roller, turn, true).Shape());
+  }
   WriteStep(all, file);
 }
 

@@ -93,6 +93,16 @@ void WriteBallBearingStep(const std::filesystem::path& file, int balls);
 /// std::runtime_error when it cannot write.
 void WriteRollerBearingStep(const std::filesystem::path& file);
 
+/// Writes a STEP file (AP214, no product names) of a tapered roller bearing (a 30205's bore
+/// and outside, 25 x 52 x 16 mm), axis z, each part a solid of revolution: an inner ring
+/// (cone) from z = -8 to 8 with a 25 mm bore, a conical raceway of half-angle 12.5 deg and a
+/// 38 mm rib at its large end; an outer ring (cup) from z = -7 to 5.5 with a conical raceway
+/// of half-angle 17.5 deg and a 52 mm outside; and 15 tapered rollers 12 mm long with flat
+/// ends, half-angle 2.5 deg, their axes at 15 deg to z, their mid-points on a 39 mm pitch
+/// circle in z = 0. The rollers' and raceways' cones share their apex on the axis (z =
+/// -72.775), as in every tapered roller bearing. Throws std::runtime_error when it cannot write.
+void WriteTaperedRollerBearingStep(const std::filesystem::path& file);
+
 /// Writes a STEP file (AP214, no product names) of a needle bearing without an inner ring on
 /// its shaft, axis z: a 12 mm shaft from z = -20 to 20, a drawn cup (bore 16 mm, outside 19 mm,
 /// from z = -6 to 6) and 18 needles of 2 x 10 mm on a 14 mm pitch circle, each a solid of its
