@@ -61,30 +61,33 @@ std::optional<SpaceCircle> FitSpaceCircle(const std::vector<Eigen::Vector3d>& po
   return c;
 }
 
-/// A part that is one rolling element: a ball, a roller (one cylinder and flat ends), or a
-/// tapered roller (two round flat ends of different sizes facing away from each other along
-/// the line through their centres, and nothing else: its cone gives no feature).
+/// A part that is one rolling element: a ball, a roller (one cylinder and flat ends across
+/// it), or a roller whose side gives no feature (a cone or a barrel's torus): two round flat
+/// ends facing away from each other along the line through their centres, and nothing else;
+/// a tapered roller's ends differ in size, a barrel roller's are equal.
 struct RollingElement {
-  const WorldFeature* w;   ///< the ball, the roller's cylinder, a tapered roller's large end
+  enum class Shape { kBall, kRoller, kTaperedRoller, kBarrelRoller };
+  Shape shape = Shape::kBall;
+  const WorldFeature* w;   ///< the ball, the roller's cylinder, or the (larger) end
   Eigen::Vector3d center;  ///< world
-  Eigen::Vector3d axis;    ///< world, unit; a ball's is its feature's (unused)
-  double diameter = 0.0;   ///< mm; a tapered roller's mean (of its ends' outlines)
+  Eigen::Vector3d axis;    ///< world, unit; a ball's means nothing
+  double diameter = 0.0;   ///< mm; a tapered roller's mean of its ends, a barrel's ends'
   double length = 0.0;     ///< mm along its axis; 0 for a ball
-  bool tapered = false;
 };
 
-/// The tapered roller of a part whose only features are `x` and `y`, or nothing: they must be
-/// faces, round (as wide as high) within `L` mm, of diameters more than `L` apart, facing away
-/// from each other along the line through their centres within `L` and `A` rad.
-std::optional<RollingElement> TaperedRoller(const WorldFeature& x, const WorldFeature& y, double L,
-                                            double A) {
+/// The roller of a part whose only features are `x` and `y` (RollingElement), or nothing:
+/// they must be faces, round (as wide as high) within `L` mm, facing away from each other
+/// along the line through their centres within `L` and `A` rad. Ends whose diameters differ by
+/// more than `L` are a tapered roller's, others a barrel roller's.
+std::optional<RollingElement> RollerByItsEnds(const WorldFeature& x, const WorldFeature& y,
+                                              double L, double A) {
   if (x.f.kind != FeatureKind::kFace || y.f.kind != FeatureKind::kFace) return std::nullopt;
   const WorldFeature& small = x.f.width < y.f.width ? x : y;
   const WorldFeature& large = &small == &x ? y : x;
   const Eigen::Vector3d along = large.axis.origin - small.axis.origin;
   const double length = along.norm();
   auto round = [&](const WorldFeature& w) { return std::abs(w.f.width - w.f.height) <= L; };
-  if (!round(small) || !round(large) || large.f.width - small.f.width <= L || length <= L ||
+  if (!round(small) || !round(large) || !(small.f.width > L) || length <= L ||
       AngleBetweenLines(small.axis.direction, large.axis.direction) > A ||
       small.axis.direction.dot(large.axis.direction) >= 0 ||
       DistanceToLine(large.axis.origin, small.axis.origin, small.axis.direction) > L ||
@@ -93,29 +96,114 @@ std::optional<RollingElement> TaperedRoller(const WorldFeature& x, const WorldFe
   }
   // The axis is the large end's normal: an exact plane's, where the ends' centres are their
   // tessellated outlines'.
-  return RollingElement{&large,
-                        (small.axis.origin + large.axis.origin) / 2,
-                        large.axis.direction,
-                        (small.f.width + large.f.width) / 2,
-                        length,
-                        true};
+  RollingElement roller;
+  roller.shape = large.f.width - small.f.width > L ? RollingElement::Shape::kTaperedRoller
+                                                   : RollingElement::Shape::kBarrelRoller;
+  roller.w = &large;
+  roller.center = (small.axis.origin + large.axis.origin) / 2;
+  roller.axis = large.axis.direction;
+  roller.diameter = (small.f.width + large.f.width) / 2;
+  roller.length = length;
+  return roller;
+}
+
+/// Rollers measured on their ends' tessellated outlines (tapered and barrel rollers): their
+/// diameters are given to 0.1 mm and their pitch circles to 0.01 mm.
+bool ByTheirEnds(RollingElement::Shape shape) {
+  return shape == RollingElement::Shape::kTaperedRoller ||
+         shape == RollingElement::Shape::kBarrelRoller;
 }
 
 }  // namespace
 
+/// One row of a bearing's rolling elements, on its pitch circle, and the rings' features.
+struct Recognizer::BearingRow {
+  std::vector<const RollingElement*> elements;
+  SpaceCircle pitch;
+  double tilt = 0.0;  ///< rad: the elements' axes from the pitch circle's
+  const WorldFeature* inner = nullptr;
+  const WorldFeature* outer = nullptr;
+};
+
+bool Recognizer::FindBearingRings(BearingRow& row) const {
+  // Rollers lie along the bearing's axis. Tapered and barrel rollers' axes lie in the plane
+  // through it and their centres (a tapered roller's meets it at the apex its cone and the
+  // raceways' share), all at one inclination of at most 45 deg; a tapered roller's leans.
+  const RollingElement& first = *row.elements.front();
+  const SpaceCircle& pitch = row.pitch;
+  const bool by_ends = ByTheirEnds(first.shape);
+  row.tilt = AngleBetweenLines(first.axis, pitch.normal);
+  if (first.shape == RollingElement::Shape::kRoller && row.tilt > A_) return false;
+  if (by_ends && row.tilt > kPi / 4) return false;
+  if (first.shape == RollingElement::Shape::kTaperedRoller && row.tilt <= A_) return false;
+  if (first.shape != RollingElement::Shape::kBall &&
+      std::any_of(row.elements.begin(), row.elements.end(), [&](const RollingElement* e) {
+        const Eigen::Vector3d radial = (e->center - pitch.center).normalized();
+        const Eigen::Vector3d across = pitch.normal.cross(radial).normalized();
+        return std::abs(AngleBetweenLines(e->axis, pitch.normal) - row.tilt) > A_ ||
+               (by_ends && std::abs(e->axis.dot(across)) > std::sin(A_));
+      })) {
+    return false;
+  }
+  // The elements' reach from the pitch circle: across it (a tilted roller's ends and sides)
+  // and along its axis.
+  const double element_r = first.diameter / 2;
+  const double radial_reach =
+      first.length / 2 * std::sin(row.tilt) + element_r * std::cos(row.tilt);
+  const double reach = first.length > 0 ? first.length / 2 : element_r;
+  std::set<std::size_t> in_row;
+  for (const RollingElement* e : row.elements) in_row.insert(e->w->ref.part);
+  // The rings' raceways or lands: coaxial with the pitch circle, between the elements'
+  // inner (outer) side and the pitch circle, reaching the elements' plane within `reach`. A
+  // needle bearing without an inner ring runs on the shaft itself. Tapered and barrel
+  // rollers' raceways are cones and tori, which give no feature: their rings are the nearest
+  // bore inside the rollers and the nearest outside cylinder outside them.
+  const FeatureKind inner_kind = by_ends ? FeatureKind::kHole : FeatureKind::kShaft;
+  const FeatureKind outer_kind = by_ends ? FeatureKind::kShaft : FeatureKind::kHole;
+  const double inner_from = by_ends ? 0.0 : pitch.radius - element_r - L_;
+  const double inner_to = by_ends ? pitch.radius - radial_reach : pitch.radius;
+  const double outer_from = by_ends ? pitch.radius + radial_reach : pitch.radius;
+  const double outer_to =
+      by_ends ? std::numeric_limits<double>::infinity() : pitch.radius + element_r + L_;
+  for (const WorldFeature& w : features_) {
+    const bool in = w.f.kind == inner_kind, out = w.f.kind == outer_kind;
+    if ((!in && !out) || in_row.count(w.ref.part)) continue;
+    if (AngleBetweenLines(w.axis.direction, pitch.normal) > A_ ||
+        DistanceToLine(pitch.center, w.axis.origin, w.axis.direction) > L_) {
+      continue;
+    }
+    const double r = w.f.diameter / 2;
+    const double along = (pitch.center - w.axis.origin).dot(w.axis.direction);
+    const double outside = std::max({0.0, -along, along - w.axis.length});
+    if (outside > reach + L_) continue;
+    if (in && r > inner_from && r < inner_to &&
+        (!row.inner || r > row.inner->f.diameter / 2 ||
+         (r == row.inner->f.diameter / 2 && NameLess(w, *row.inner)))) {
+      row.inner = &w;
+    }
+    if (out && r < outer_to && r > outer_from &&
+        (!row.outer || r < row.outer->f.diameter / 2 ||
+         (r == row.outer->f.diameter / 2 && NameLess(w, *row.outer)))) {
+      row.outer = &w;
+    }
+  }
+  return row.inner && row.outer && row.inner->ref.part != row.outer->ref.part;
+}
+
 void Recognizer::AddBearings() {
   // The rolling elements: parts that are one ball and nothing else, one shaft and faces
-  // across its axis (its ends), or a tapered roller's two ends, sorted by kind and size.
+  // across its axis (its ends), or two round ends, sorted by shape and size.
   std::vector<RollingElement> elements;
   for (std::size_t part = 0; part < assembly_.parts().size(); ++part) {
     const std::size_t n = assembly_.FeatureCount(part);
     if (n == 1 && At({part, 0}).f.kind == FeatureKind::kBall) {
       const WorldFeature& ball = At({part, 0});
-      elements.push_back({&ball, ball.axis.origin, ball.axis.direction, ball.f.diameter});
+      elements.push_back({RollingElement::Shape::kBall, &ball, ball.axis.origin,
+                          ball.axis.direction, ball.f.diameter});
       continue;
     }
     if (n == 2) {
-      if (const auto roller = TaperedRoller(At({part, 0}), At({part, 1}), L_, A_)) {
+      if (const auto roller = RollerByItsEnds(At({part, 0}), At({part, 1}), L_, A_)) {
         elements.push_back(*roller);
         continue;
       }
@@ -138,13 +226,14 @@ void Recognizer::AddBearings() {
     }
     if (!only_ends) continue;
     elements.push_back(
-        {cylinder, cylinder->axis.origin + cylinder->axis.length / 2 * cylinder->axis.direction,
+        {RollingElement::Shape::kRoller, cylinder,
+         cylinder->axis.origin + cylinder->axis.length / 2 * cylinder->axis.direction,
          cylinder->axis.direction, cylinder->f.diameter, cylinder->axis.length});
   }
   if (elements.size() < 3) return;
   std::sort(elements.begin(), elements.end(),
             [&](const RollingElement& x, const RollingElement& y) {
-              if (x.tapered != y.tapered) return y.tapered;
+              if (x.shape != y.shape) return x.shape < y.shape;
               if (x.length != y.length) return x.length < y.length;
               return x.diameter != y.diameter ? x.diameter < y.diameter : NameLess(*x.w, *y.w);
             });
@@ -155,7 +244,7 @@ void Recognizer::AddBearings() {
   for (std::size_t begin = 0, end = 0; begin < elements.size(); begin = end) {
     const RollingElement& size = elements[begin];
     double cell = 0.0;
-    for (end = begin; end < elements.size() && elements[end].tapered == size.tapered &&
+    for (end = begin; end < elements.size() && elements[end].shape == size.shape &&
                       std::abs(elements[end].diameter - size.diameter) <= L_ &&
                       std::abs(elements[end].length - size.length) <= L_;
          ++end) {
@@ -197,181 +286,217 @@ void Recognizer::AddBearings() {
       if (set.size() >= 3) sets.push_back(std::move(set));
     }
   }
+  // Rows: a set's elements on one pitch circle. A set on circles side by side (a double-row
+  // bearing's, whose rows are neighbours) is split where its centres' positions along the
+  // direction of least spread (the circles' common axis) jump by more than the length
+  // tolerance, and each part of three or more is fitted again.
+  std::vector<BearingRow> rows;
+  auto add_row = [&](std::vector<const RollingElement*> row_elements) {
+    std::vector<Eigen::Vector3d> centers;
+    for (const RollingElement* e : row_elements) centers.push_back(e->center);
+    const std::optional<SpaceCircle> pitch = FitSpaceCircle(centers);
+    if (!pitch || pitch->worst > L_) return false;
+    BearingRow row{std::move(row_elements), *pitch};
+    if (FindBearingRings(row)) rows.push_back(std::move(row));
+    return true;
+  };
   for (std::vector<const RollingElement*>& set : sets) {
     std::vector<Eigen::Vector3d> centers;
     for (const RollingElement* e : set) centers.push_back(e->center);
-    const std::optional<SpaceCircle> pitch = FitSpaceCircle(centers);
-    if (!pitch || pitch->worst > L_) continue;
-    // Rollers lie along the bearing's axis; tapered rollers' axes meet it, all at one
-    // inclination of at most 45 deg (the apex their cones and the raceways' share). A ball's
-    // axis means nothing.
-    const RollingElement& first = *set.front();
-    const bool tapered = first.tapered;
-    const double tilt = AngleBetweenLines(first.axis, pitch->normal);
-    if (first.length > 0 && (tapered ? tilt <= A_ || tilt > kPi / 4 : tilt > A_)) continue;
-    if (first.length > 0 && std::any_of(set.begin(), set.end(), [&](const RollingElement* e) {
-          return std::abs(AngleBetweenLines(e->axis, pitch->normal) - tilt) > A_ ||
-                 (tapered &&
-                  ClosestPointsOfLines(e->center, e->axis, pitch->center, pitch->normal).distance >
-                      L_);
-        })) {
+    const std::optional<SpaceCircle> spread = FitSpaceCircle(centers);
+    if (!spread || add_row(set)) continue;
+    auto height = [&](const RollingElement* e) {
+      return (e->center - spread->center).dot(spread->normal);
+    };
+    std::stable_sort(set.begin(), set.end(), [&](const RollingElement* x, const RollingElement* y) {
+      return height(x) < height(y);
+    });
+    for (std::size_t begin = 0, end = 0; begin < set.size(); begin = end) {
+      for (end = begin + 1; end < set.size() && height(set[end]) - height(set[end - 1]) <= L_;
+           ++end) {
+      }
+      if (end - begin < 3 || end - begin == set.size()) continue;
+      std::vector<const RollingElement*> part(set.begin() + begin, set.begin() + end);
+      std::sort(part.begin(), part.end(), [&](const RollingElement* x, const RollingElement* y) {
+        return NameLess(*x->w, *y->w);
+      });
+      add_row(std::move(part));
+    }
+  }
+  // Rows between the same two rings are one bearing (in the order of their first row).
+  std::vector<bool> done(rows.size(), false);
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    if (done[r]) continue;
+    std::vector<BearingRow> bearing;
+    for (std::size_t s = r; s < rows.size(); ++s) {
+      if (!done[s] && rows[s].inner->ref.part == rows[r].inner->ref.part &&
+          rows[s].outer->ref.part == rows[r].outer->ref.part) {
+        done[s] = true;
+        bearing.push_back(rows[s]);
+      }
+    }
+    AddBearing(bearing);
+  }
+}
+
+void Recognizer::AddBearing(std::span<const BearingRow> rows) {
+  const BearingRow& row = rows.front();
+  const WorldFeature* inner = row.inner;
+  const WorldFeature* outer = row.outer;
+  const SpaceCircle& pitch = row.pitch;
+  const RollingElement::Shape shape = row.elements.front()->shape;
+  std::set<std::size_t> in_bearing;
+  for (const BearingRow& each : rows) {
+    for (const RollingElement* e : each.elements) in_bearing.insert(e->w->ref.part);
+  }
+  // The rings' pairs go; the elements' too: a bearing's parts touch in many places.
+  std::erase_if(pairs_, [&](const Pair& p) {
+    const std::size_t a = p.a.part, b = p.b.part;
+    return in_bearing.count(a) || in_bearing.count(b) ||
+           (std::min(a, b) == std::min(inner->ref.part, outer->ref.part) &&
+            std::max(a, b) == std::max(inner->ref.part, outer->ref.part));
+  });
+  // On the bearing's axis: the inner ring's bore, the outer ring's outside.
+  auto on_axis = [&](const WorldFeature& w) {
+    return AngleBetweenLines(w.axis.direction, pitch.normal) <= A_ &&
+           DistanceToLine(pitch.center, w.axis.origin, w.axis.direction) <= L_;
+  };
+  // The inner ring's bore: its smallest hole on the axis, inside the raceway. A needle
+  // bearing's shaft, which has none, is no ring: it runs on the shaft's own diameter. The
+  // inner ring of rollers found by their ends was found by its bore.
+  double bore = inner->f.kind == FeatureKind::kHole ? inner->f.diameter : 0.0;
+  for (std::size_t f = 0; f < assembly_.FeatureCount(inner->ref.part); ++f) {
+    const WorldFeature& w = At({inner->ref.part, f});
+    if (w.f.kind == FeatureKind::kHole && on_axis(w) && w.f.diameter < inner->f.diameter &&
+        (bore == 0.0 || w.f.diameter < bore)) {
+      bore = w.f.diameter;
+    }
+  }
+  const bool inner_ring = bore > 0.0;
+  if (!inner_ring) bore = inner->f.diameter;
+  // The rings' seats: the outer ring's outside in a bore, the inner ring's bore on a shaft,
+  // coaxial and of one size (within the length tolerance: no clearance to turn in) are
+  // fitted, as bearings are; a ring that turns in its seat would make the bearing idle.
+  std::set<std::string> seats;
+  for (Pair& p : pairs_) {
+    if (p.type != PairType::kCylindrical && p.type != PairType::kRevolute) continue;
+    const WorldFeature& s = At(p.a);
+    const WorldFeature& h = At(p.b);
+    const bool ring =
+        s.ref.part == outer->ref.part || (inner_ring && h.ref.part == inner->ref.part);
+    if (!ring || s.f.kind != FeatureKind::kShaft || h.f.kind != FeatureKind::kHole ||
+        AngleBetweenLines(s.axis.direction, pitch.normal) > A_ ||
+        std::abs(s.f.diameter - h.f.diameter) > L_) {
       continue;
     }
-    const double length = first.length;
-    const double element_r = first.diameter / 2;
-    const double reach = length > 0 ? length / 2 : element_r;  // from the elements' plane
-    std::set<std::size_t> in_set;
-    for (const RollingElement* e : set) in_set.insert(e->w->ref.part);
-    // The rings' raceways or lands: coaxial with the pitch circle, between the elements'
-    // inner (outer) side and the pitch circle, reaching the elements' plane within `reach`. A
-    // needle bearing without an inner ring runs on the shaft itself. A tapered roller
-    // bearing's raceways are cones, which give no feature: its rings are the nearest bore
-    // inside the rollers and the nearest outside cylinder outside them.
-    const WorldFeature* inner = nullptr;
-    const WorldFeature* outer = nullptr;
-    const FeatureKind inner_kind = tapered ? FeatureKind::kHole : FeatureKind::kShaft;
-    const FeatureKind outer_kind = tapered ? FeatureKind::kShaft : FeatureKind::kHole;
-    const double inner_from = tapered ? 0.0 : pitch->radius - element_r - L_;
-    const double inner_to = tapered ? pitch->radius - element_r : pitch->radius;
-    const double outer_from = tapered ? pitch->radius + element_r : pitch->radius;
-    const double outer_to =
-        tapered ? std::numeric_limits<double>::infinity() : pitch->radius + element_r + L_;
-    for (const WorldFeature& w : features_) {
-      const bool in = w.f.kind == inner_kind, out = w.f.kind == outer_kind;
-      if ((!in && !out) || in_set.count(w.ref.part)) continue;
-      if (AngleBetweenLines(w.axis.direction, pitch->normal) > A_ ||
-          DistanceToLine(pitch->center, w.axis.origin, w.axis.direction) > L_) {
-        continue;
-      }
-      const double r = w.f.diameter / 2;
-      const double along = (pitch->center - w.axis.origin).dot(w.axis.direction);
-      const double outside = std::max({0.0, -along, along - w.axis.length});
-      if (outside > reach + L_) continue;
-      if (in && r > inner_from && r < inner_to &&
-          (!inner || r > inner->f.diameter / 2 ||
-           (r == inner->f.diameter / 2 && NameLess(w, *inner)))) {
-        inner = &w;
-      }
-      if (out && r < outer_to && r > outer_from &&
-          (!outer || r < outer->f.diameter / 2 ||
-           (r == outer->f.diameter / 2 && NameLess(w, *outer)))) {
-        outer = &w;
-      }
-    }
-    if (!inner || !outer || inner->ref.part == outer->ref.part) continue;
-    // The rings' pairs go; the balls' too: a bearing's parts touch in many places.
-    std::erase_if(pairs_, [&](const Pair& p) {
-      const std::size_t a = p.a.part, b = p.b.part;
-      return in_set.count(a) || in_set.count(b) ||
-             (std::min(a, b) == std::min(inner->ref.part, outer->ref.part) &&
-              std::max(a, b) == std::max(inner->ref.part, outer->ref.part));
-    });
-    // On the bearing's axis: the inner ring's bore, the outer ring's outside.
-    auto on_axis = [&](const WorldFeature& w) {
-      return AngleBetweenLines(w.axis.direction, pitch->normal) <= A_ &&
-             DistanceToLine(pitch->center, w.axis.origin, w.axis.direction) <= L_;
-    };
-    // The inner ring's bore: its smallest hole on the axis, inside the raceway. A needle
-    // bearing's shaft, which has none, is no ring: it runs on the shaft's own diameter.
-    double bore = tapered ? inner->f.diameter : 0.0;
-    for (std::size_t f = 0; f < assembly_.FeatureCount(inner->ref.part); ++f) {
-      const WorldFeature& w = At({inner->ref.part, f});
-      if (w.f.kind == FeatureKind::kHole && on_axis(w) && w.f.diameter < inner->f.diameter &&
-          (bore == 0.0 || w.f.diameter < bore)) {
-        bore = w.f.diameter;
-      }
-    }
-    const bool inner_ring = bore > 0.0;
-    if (!inner_ring) bore = inner->f.diameter;
-    // The rings' seats: the outer ring's outside in a bore, the inner ring's bore on a shaft,
-    // coaxial and of one size (within the length tolerance: no clearance to turn in) are
-    // fitted, as bearings are; a ring that turns in its seat would make the bearing idle.
-    std::set<std::string> seats;
-    for (Pair& p : pairs_) {
-      if (p.type != PairType::kCylindrical && p.type != PairType::kRevolute) continue;
-      const WorldFeature& s = At(p.a);
-      const WorldFeature& h = At(p.b);
-      const bool ring =
-          s.ref.part == outer->ref.part || (inner_ring && h.ref.part == inner->ref.part);
-      if (!ring || s.f.kind != FeatureKind::kShaft || h.f.kind != FeatureKind::kHole ||
-          AngleBetweenLines(s.axis.direction, pitch->normal) > A_ ||
-          std::abs(s.f.diameter - h.f.diameter) > L_) {
-        continue;
-      }
-      p.type = PairType::kFixed;
-      p.dof = 0;
-      p.source = PairSource::kBearing;
-      seats.insert(
-          std::string(assembly_.PartId(s.ref.part == outer->ref.part ? h.ref.part : s.ref.part)));
-    }
-    AddPair(PairType::kRevolute, *inner, *outer);
-    pairs_.back().source = PairSource::kBearing;
-    for (const RollingElement* e : set) {
+    p.type = PairType::kFixed;
+    p.dof = 0;
+    p.source = PairSource::kBearing;
+    seats.insert(
+        std::string(assembly_.PartId(s.ref.part == outer->ref.part ? h.ref.part : s.ref.part)));
+  }
+  AddPair(PairType::kRevolute, *inner, *outer);
+  pairs_.back().source = PairSource::kBearing;
+  for (const BearingRow& each : rows) {
+    for (const RollingElement* e : each.elements) {
       AddPair(PairType::kFixed, *e->w, *outer);
       pairs_.back().source = PairSource::kBearing;
     }
-    // Its size as a catalogue gives it: the bore (above), the outer ring's outside diameter
-    // and width (between its end faces, which chamfers do not shorten as they do its outside
-    // cylinder); a tapered roller bearing's width is both rings' (its catalogue's T).
-    double outside = 0.0, width = 0.0;
-    for (std::size_t f = 0; f < assembly_.FeatureCount(outer->ref.part); ++f) {
-      const WorldFeature& w = At({outer->ref.part, f});
-      if (w.f.kind == FeatureKind::kShaft && on_axis(w) && w.f.diameter > outside) {
-        outside = w.f.diameter, width = w.axis.length;
-      }
-    }
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    std::vector<std::size_t> rings{outer->ref.part};
-    if (tapered) rings.push_back(inner->ref.part);
-    for (const std::size_t ring : rings) {
-      for (std::size_t f = 0; f < assembly_.FeatureCount(ring); ++f) {
-        const WorldFeature& w = At({ring, f});
-        if (w.f.kind != FeatureKind::kFace ||
-            AngleBetweenLines(w.axis.direction, pitch->normal) > A_) {
-          continue;
-        }
-        const double at = (w.axis.origin - pitch->center).dot(pitch->normal);
-        lo = std::min(lo, at), hi = std::max(hi, at);
-      }
-    }
-    if (hi > lo) width = hi - lo;
-    const std::string size = bore > 0 && outside > 0
-                                 ? fmt::format(", {} x {} x {} mm", FormatNumber(bore),
-                                               FormatNumber(outside), FormatNumber(width))
-                                 : "";
-    std::vector<std::string> parts{std::string(assembly_.PartId(inner->ref.part)),
-                                   std::string(assembly_.PartId(outer->ref.part))};
-    for (const RollingElement* e : set) parts.emplace_back(assembly_.PartId(e->w->ref.part));
-    // Needles: rollers at least 2.5 diameters long (ISO 3096's are 2.5 to 10).
-    const bool needles = length >= 2.5 * 2 * element_r;
-    const std::string kind = length == 0 ? "ball"
-                             : tapered   ? "tapered roller"
-                             : needles   ? "needle roller"
-                                         : "cylindrical roller";
-    const std::string named = length == 0 ? "balls" : needles && !tapered ? "needles" : "rollers";
-    // A tapered roller's diameter is its ends' mean and its centre theirs, measured on their
-    // tessellated outlines: the diameter is given to 0.1 mm, the pitch circle to 0.01 mm.
-    const std::string each =
-        length == 0 ? Mm(2 * element_r)
-        : tapered
-            ? fmt::format("{} x {} at {} to its axis",
-                          FormatNumber(std::round(20 * element_r) / 10), Mm(length), Deg(tilt))
-            : fmt::format("{} x {}", FormatNumber(2 * element_r), Mm(length));
-    diagnostics_.push_back(
-        {Severity::kInfo,
-         "bearing",
-         fmt::format("a {} bearing{}: {} turns in {} on {} {} of {} on a {} pitch circle "
-                     "(a revolute pair; the {} are held with the outer ring, their spin and "
-                     "orbit not modelled){}",
-                     kind, size, assembly_.PartId(inner->ref.part),
-                     assembly_.PartId(outer->ref.part), set.size(), named, each,
-                     Mm(tapered ? std::round(200 * pitch->radius) / 100 : 2 * pitch->radius), named,
-                     seats.empty() ? ""
-                                   : fmt::format("; its rings are fitted (fixed) to {}",
-                                                 fmt::join(seats, " and "))),
-         parts,
-         {Name(*inner), Name(*outer)}});
   }
+  // Its size as a catalogue gives it: the bore (above), the outer ring's outside diameter
+  // and width (between its end faces, which chamfers do not shorten as they do its outside
+  // cylinder); a tapered roller bearing's width is both rings' (its catalogue's T).
+  double outside = 0.0, width = 0.0;
+  for (std::size_t f = 0; f < assembly_.FeatureCount(outer->ref.part); ++f) {
+    const WorldFeature& w = At({outer->ref.part, f});
+    if (w.f.kind == FeatureKind::kShaft && on_axis(w) && w.f.diameter > outside) {
+      outside = w.f.diameter, width = w.axis.length;
+    }
+  }
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  std::vector<std::size_t> rings{outer->ref.part};
+  if (shape == RollingElement::Shape::kTaperedRoller) rings.push_back(inner->ref.part);
+  for (const std::size_t ring : rings) {
+    for (std::size_t f = 0; f < assembly_.FeatureCount(ring); ++f) {
+      const WorldFeature& w = At({ring, f});
+      if (w.f.kind != FeatureKind::kFace ||
+          AngleBetweenLines(w.axis.direction, pitch.normal) > A_) {
+        continue;
+      }
+      const double at = (w.axis.origin - pitch.center).dot(pitch.normal);
+      lo = std::min(lo, at), hi = std::max(hi, at);
+    }
+  }
+  if (hi > lo) width = hi - lo;
+  const std::string size = bore > 0 && outside > 0
+                               ? fmt::format(", {} x {} x {} mm", FormatNumber(bore),
+                                             FormatNumber(outside), FormatNumber(width))
+                               : "";
+  std::vector<std::string> parts{std::string(assembly_.PartId(inner->ref.part)),
+                                 std::string(assembly_.PartId(outer->ref.part))};
+  for (const BearingRow& each : rows) {
+    for (const RollingElement* e : each.elements)
+      parts.emplace_back(assembly_.PartId(e->w->ref.part));
+  }
+  // Needles: rollers at least 2.5 diameters long (ISO 3096's are 2.5 to 10). Barrel rollers
+  // leaning towards the axis are a spherical roller bearing's.
+  const double length = row.elements.front()->length;
+  const double d = row.elements.front()->diameter;
+  const bool needles = shape == RollingElement::Shape::kRoller && length >= 2.5 * d;
+  std::string kind;
+  switch (shape) {
+    case RollingElement::Shape::kBall:
+      kind = "ball";
+      break;
+    case RollingElement::Shape::kRoller:
+      kind = needles ? "needle roller" : "cylindrical roller";
+      break;
+    case RollingElement::Shape::kTaperedRoller:
+      kind = "tapered roller";
+      break;
+    case RollingElement::Shape::kBarrelRoller:
+      kind = row.tilt > A_ ? "spherical roller" : "barrel roller";
+      break;
+  }
+  if (rows.size() > 1)
+    kind = (rows.size() == 2 ? "double-row " : fmt::format("{}-row ", rows.size())) + kind;
+  const std::string named = shape == RollingElement::Shape::kBall ? "balls"
+                            : needles                             ? "needles"
+                                                                  : "rollers";
+  // Each row: its elements and pitch circle; rows alike are counted.
+  std::vector<std::string> described;
+  for (const BearingRow& each : rows) {
+    const double tilt = each.tilt;
+    const double across = ByTheirEnds(shape) ? std::round(10 * d) / 10 : d;
+    const std::string leaning = tilt > A_ ? fmt::format(" at {} to its axis", Deg(tilt)) : "";
+    const std::string ends =
+        shape == RollingElement::Shape::kBarrelRoller ? " (at their ends)" : "";
+    const std::string what =
+        shape == RollingElement::Shape::kBall
+            ? Mm(d)
+            : fmt::format("{} x {}{}{}", FormatNumber(across), Mm(length), ends, leaning);
+    const double circle =
+        ByTheirEnds(shape) ? std::round(200 * each.pitch.radius) / 100 : 2 * each.pitch.radius;
+    described.push_back(fmt::format("{} {} of {} on a {} pitch circle", each.elements.size(), named,
+                                    what, Mm(circle)));
+  }
+  const bool alike = std::all_of(described.begin(), described.end(),
+                                 [&](const std::string& x) { return x == described.front(); });
+  const std::string elements_text =
+      rows.size() > 1 && alike ? fmt::format("{} rows of {}", rows.size(), described.front())
+                               : fmt::format("{}", fmt::join(described, " and "));
+  diagnostics_.push_back(
+      {Severity::kInfo,
+       "bearing",
+       fmt::format("a {} bearing{}: {} turns in {} on {} (a revolute pair; the {} are held with "
+                   "the outer ring, their spin and orbit not modelled){}",
+                   kind, size, assembly_.PartId(inner->ref.part), assembly_.PartId(outer->ref.part),
+                   elements_text, named,
+                   seats.empty() ? ""
+                                 : fmt::format("; its rings are fitted (fixed) to {}",
+                                               fmt::join(seats, " and "))),
+       parts,
+       {Name(*inner), Name(*outer)}});
 }
 
 void Recognizer::AddSolidBearings() {

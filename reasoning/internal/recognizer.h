@@ -175,14 +175,26 @@ class Recognizer {
   /// or half a roller. The rings make a revolute pair (source bearing) and no other pair
   /// between them (a land is never a press fit); each element is held with the outer ring (a
   /// fixed pair, source bearing: its spin and orbit are not modelled, and it adds no freedom),
-  /// and makes no other pair. Tapered rollers (two round flat ends of different sizes and
-  /// nothing else: their cones give no feature) whose axes all meet the circle's axis at one
-  /// inclination of at most 45 deg are a tapered roller bearing's, between the nearest bore
-  /// inside them and the nearest outside cylinder outside them. One info diagnostic `bearing`
-  /// per bearing gives its kind (ball, tapered roller, cylindrical roller, needle roller:
-  /// rollers 2.5 diameters long or more), its elements and size (bore x outside diameter x
-  /// width, mm). Before the implied pins and the overrides.
+  /// and makes no other pair. Tapered and barrel rollers (two round flat ends, of different or
+  /// equal sizes, and nothing else: their cones and tori give no feature) whose axes lie in
+  /// planes through the circle's axis at one inclination of at most 45 deg (a tapered
+  /// roller's leans) are a tapered or spherical roller bearing's, between the nearest bore
+  /// inside them and the nearest outside cylinder outside them. Elements of one size on
+  /// circles side by side along their axis are split into rows; rows between the same rings
+  /// are one (double-row) bearing. One info diagnostic `bearing` per bearing gives its kind
+  /// (ball, tapered roller, spherical or barrel roller, cylindrical roller, needle roller:
+  /// rollers 2.5 diameters long or more), its rows of elements and size (bore x outside
+  /// diameter x width, mm). Before the implied pins and the overrides.
   void AddBearings();
+  /// A row of a bearing's rolling elements on their pitch circle, and its rings (AddBearings).
+  struct BearingRow;
+  /// Checks the row's elements lie as a bearing's do (rollers along its axis; tapered and
+  /// barrel rollers leaning towards it at one angle) and finds its rings' features (AddBearings):
+  /// whether it found both, on two parts.
+  bool FindBearingRings(BearingRow& row) const;
+  /// The pairs and the `bearing` info of one bearing: `rows` (one or more) between the same
+  /// rings.
+  void AddBearing(std::span<const BearingRow> rows);
 
   /// Bearings modelled as one solid (vendor parts): a part whose outside cylinder and bore
   /// are coaxial and span the same length, with two flat faces or more at each end (the inner

@@ -27,7 +27,7 @@ constexpr double kPi = 3.14159265358979323846;
 // How the sketch's rolling elements are drawn: balls, rollers 5 mm long (a shaft and its
 // two end faces) along the bearing's axis or along radii, or two round end faces 5 mm apart
 // and nothing else: tapered rollers (4.4 and 5.1 mm ends) tilted 15 deg towards the axis or
-// sideways (their axes then miss it), or equal ends.
+// sideways (their axes then miss it), or barrel rollers (equal ends) tilted towards it.
 enum class Elements {
   kBalls,
   kRollersAlongTheAxis,
@@ -245,6 +245,44 @@ TEST(Bearing, TaperedRollersBetweenACupAndAConeAreATaperedRollerBearing) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(Bearing, TwoRowsOfBallsOrBarrelRollersBetweenTheSameRingsAreOneDoubleRowBearing) {
+  // The rows' elements are neighbours, so they make one set, which lies on no one circle: it
+  // is split into its rows, and the rows between the same rings are one bearing.
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "mechanist_occt_double_row";
+  std::filesystem::create_directories(dir);
+  testing::WriteDoubleRowBallBearingStep(dir / "4205.step");
+  testing::WriteSphericalRollerBearingStep(dir / "22205.step");
+  const struct {
+    const char* file;
+    const char* kind;
+    const char* rows;
+  } cases[] = {{"4205.step", "a double-row ball bearing, 25 x 52 x 20 mm: ",
+                "on 2 rows of 12 balls of 7.144 mm on a 38.5 mm pitch circle"},
+               {"22205.step", "a double-row spherical roller bearing, 25 x 52 x 18 mm: ",
+                "on 2 rows of 14 rollers of 6 x 7 mm (at their ends) at 13 deg to its axis on a "
+                "39 mm pitch circle"}};
+  for (const auto& c : cases) {
+    const Assembly a = LoadAssembly(dir / c.file);
+    const Analysis an = Analyze(a);
+    const Diagnostic* bearing = Find(an, "bearing");
+    ASSERT_NE(bearing, nullptr) << c.file;
+    EXPECT_EQ(bearing->message.rfind(c.kind, 0), 0u) << bearing->message;
+    EXPECT_NE(bearing->message.find(c.rows), std::string::npos) << bearing->message;
+    EXPECT_EQ(bearing->parts.size(), a.parts().size()) << c.file;
+    int revolute = 0;
+    for (const Pair& p : an.pairs) {
+      EXPECT_EQ(p.source, PairSource::kBearing) << c.file;
+      revolute += p.type == PairType::kRevolute;
+    }
+    EXPECT_EQ(revolute, 1) << c.file;
+    EXPECT_EQ(CountSource(an, PairSource::kBearing), static_cast<int>(a.parts().size()) - 1);
+    EXPECT_EQ(an.motion.mobility.dof, 1) << c.file;
+    EXPECT_EQ(Find(an, "part_unconnected"), nullptr) << c.file;
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Bearing, NeedlesInADrawnCupOnAShaftAreANeedleBearingAndTheShaftTurnsInIt) {
   // No inner ring: the needles run on the shaft itself, which turns in the cup.
   const std::filesystem::path dir =
@@ -295,8 +333,9 @@ TEST(Bearing, ElementsOffTheirCircleTooFewOrAcrossTheAxisAreNoBearing) {
       Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kRollersAlongRadii), "radial.json"));
   EXPECT_EQ(CountSource(radial, PairSource::kBearing), 0);
   EXPECT_EQ(Find(radial, "bearing"), nullptr);
-  // Tapered rollers tilted towards the axis are a tapered roller bearing; tilted sideways,
-  // their axes miss the bearing's and they are none, nor are parts with two equal ends.
+  // Tapered rollers tilted towards the axis are a tapered roller bearing, barrel rollers (two
+  // equal ends) a spherical roller bearing; tilted sideways, their axes miss the bearing's and
+  // they are none.
   const Analysis tapered =
       Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kTaperedRollers), "tapered.json"));
   EXPECT_EQ(CountSource(tapered, PairSource::kBearing), 10);
@@ -306,11 +345,19 @@ TEST(Bearing, ElementsOffTheirCircleTooFewOrAcrossTheAxisAreNoBearing) {
                                "9 rollers of 4.8 x 5 mm at 15 deg to its axis"),
             std::string::npos)
       << Find(tapered, "bearing")->message;
-  for (const Elements sideways : {Elements::kSkewedTaperedRollers, Elements::kEqualEnds}) {
-    const Analysis none = Analyze(LoadAssemblyText(Sketch(9, 0, sideways), "none.json"));
-    EXPECT_EQ(CountSource(none, PairSource::kBearing), 0);
-    EXPECT_EQ(Find(none, "bearing"), nullptr);
-  }
+  const Analysis barrels =
+      Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kEqualEnds), "barrels.json"));
+  EXPECT_EQ(CountSource(barrels, PairSource::kBearing), 10);
+  ASSERT_NE(Find(barrels, "bearing"), nullptr);
+  EXPECT_NE(Find(barrels, "bearing")
+                ->message.find("a spherical roller bearing, 15 x 32 x 9 mm: inner turns in outer "
+                               "on 9 rollers of 5.1 x 5 mm (at their ends) at 15 deg to its axis"),
+            std::string::npos)
+      << Find(barrels, "bearing")->message;
+  const Analysis skewed =
+      Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kSkewedTaperedRollers), "skewed.json"));
+  EXPECT_EQ(CountSource(skewed, PairSource::kBearing), 0);
+  EXPECT_EQ(Find(skewed, "bearing"), nullptr);
 }
 
 // A housing (ground) with a 10 mm bore, a ring 10 x 5 x 4 mm in it (its ends one flat face

@@ -19,6 +19,7 @@
 #include <BRepPrimAPI_MakeSphere.hxx>
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRep_Builder.hxx>
+#include <GC_MakeArcOfCircle.hxx>
 #include <GeomAPI_Interpolate.hxx>
 #include <Geom_BSplineCurve.hxx>
 #include <Interface_Static.hxx>
@@ -796,6 +797,65 @@ void WriteTaperedRollerBearingStep(const std::filesystem::path& file) {
     gp_Trsf turn;
     turn.SetRotation(gp::OZ(), 2 * M_PI * k / rollers);
     builder.Add(all, BRepBuilderAPI_Transform(roller, turn, true).Shape());
+  }
+  WriteStep(all, file);
+}
+
+void WriteDoubleRowBallBearingStep(const std::filesystem::path& file) {
+  const double pitch = 38.5 / 2, ball = 7.144 / 2, groove = 0.52 * 7.144, row = 4.5;
+  TopoDS_Shape inner = Tube(12.5, 17.5, -10, 10), outer = Tube(21, 26, -10, 10);
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  for (const double z : {-row, row}) {
+    const TopoDS_Shape raceway =
+        BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(0, 0, z), gp_Dir(0, 0, 1)), pitch, groove).Shape();
+    inner = BRepAlgoAPI_Cut(inner, raceway).Shape();
+    outer = BRepAlgoAPI_Cut(outer, raceway).Shape();
+    for (int k = 0; k < 12; ++k) {
+      const double a = 2 * M_PI * k / 12;
+      builder.Add(all,
+                  BRepPrimAPI_MakeSphere(gp_Pnt(pitch * std::cos(a), pitch * std::sin(a), z), ball)
+                      .Shape());
+    }
+  }
+  builder.Add(all, inner);
+  builder.Add(all, outer);
+  WriteStep(all, file);
+}
+
+void WriteSphericalRollerBearingStep(const std::filesystem::path& file) {
+  const double pitch = 19.5, tilt = 13 * M_PI / 180, half = 3.5;
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  builder.Add(all, Tube(12.5, 15.3, -9, 9));
+  builder.Add(
+      all, BRepAlgoAPI_Cut(
+               BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -9), gp_Dir(0, 0, 1)), 26, 18).Shape(),
+               BRepPrimAPI_MakeSphere(gp_Pnt(0, 0, 0), 23.5).Shape())
+               .Shape());
+  // A barrel about z from z = -3.5 to 3.5: flat ends of radius 3, an arc through radius 3.25.
+  BRepBuilderAPI_MakeWire outline;
+  outline.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, -half), gp_Pnt(3, 0, -half)).Edge());
+  outline.Add(
+      BRepBuilderAPI_MakeEdge(
+          GC_MakeArcOfCircle(gp_Pnt(3, 0, -half), gp_Pnt(3.25, 0, 0), gp_Pnt(3, 0, half)).Value())
+          .Edge());
+  outline.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(3, 0, half), gp_Pnt(0, 0, half)).Edge());
+  outline.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(0, 0, half), gp_Pnt(0, 0, -half)).Edge());
+  const TopoDS_Shape barrel =
+      BRepPrimAPI_MakeRevol(BRepBuilderAPI_MakeFace(outline.Wire()).Face(), gp::OZ()).Shape();
+  for (const double side : {-1.0, 1.0}) {
+    // Leaning towards the axis on the side away from the bearing's mid-plane.
+    gp_Trsf lean, place;
+    lean.SetRotation(gp::OY(), -side * tilt);
+    place.SetTranslation(gp_Vec(pitch, 0, side * pitch * std::tan(tilt)));
+    for (int k = 0; k < 14; ++k) {
+      gp_Trsf turn;
+      turn.SetRotation(gp::OZ(), 2 * M_PI * k / 14);
+      builder.Add(all, BRepBuilderAPI_Transform(barrel, turn * place * lean, true).Shape());
+    }
   }
   WriteStep(all, file);
 }

@@ -103,6 +103,23 @@ void WriteRollerBearingStep(const std::filesystem::path& file);
 /// -72.775), as in every tapered roller bearing. Throws std::runtime_error when it cannot write.
 void WriteTaperedRollerBearingStep(const std::filesystem::path& file);
 
+/// Writes a STEP file (AP214, no product names) of a double-row deep-groove ball bearing
+/// (25 x 52 x 20 mm), axis z: an inner ring (bore 25 mm, lands 35 mm) and an outer ring
+/// (lands 42 mm, outside 52 mm) from z = -10 to 10, each with two toroidal raceways of radius
+/// 0.52 times the ball's about the 38.5 mm pitch circle in z = -4.5 and 4.5, and 12 balls of
+/// 7.144 mm in each row, each a solid of its own. Throws std::runtime_error when it cannot
+/// write.
+void WriteDoubleRowBallBearingStep(const std::filesystem::path& file);
+
+/// Writes a STEP file (AP214, no product names) of a spherical roller bearing (a 22205's
+/// bore, outside and width, 25 x 52 x 18 mm), axis z: an inner ring (bore 25 mm, outside
+/// 30.6 mm) and an outer ring (outside 52 mm, a spherical raceway of radius 23.5 mm about the
+/// origin) from z = -9 to 9, and two rows of 14 barrel rollers 7 mm long (6 mm flat ends,
+/// 6.5 mm at the middle) whose centres lie on a 39 mm pitch circle at z = +-19.5 tan 13 deg,
+/// their axes at 13 deg to z in the plane through z, square to the line from the origin to
+/// their centres. Throws std::runtime_error when it cannot write.
+void WriteSphericalRollerBearingStep(const std::filesystem::path& file);
+
 /// Writes a STEP file (AP214, no product names) of a needle bearing without an inner ring on
 /// its shaft, axis z: a 12 mm shaft from z = -20 to 20, a drawn cup (bore 16 mm, outside 19 mm,
 /// from z = -6 to 6) and 18 needles of 2 x 10 mm on a 14 mm pitch circle, each a solid of its
