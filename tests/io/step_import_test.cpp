@@ -304,11 +304,19 @@ std::vector<std::string> PairsUpToNames(const Assembly& a, const Analysis& an) {
   return names;
 }
 
+// The parts' ids, in order.
+std::vector<std::string> PartIds(const Assembly& a) {
+  std::vector<std::string> ids;
+  for (const Part& part : a.parts()) ids.push_back(part.id);
+  return ids;
+}
+
 TEST(StepImport, As1InInchesFlatNestedInPartFilesOrMixedUnitsGivesTheSamePairsUpToNames) {
   // The same product as other exporters write it: lengths in inches, a flat compound of
   // unnamed solids, the assembly inside three more levels of unnamed assemblies, one file per
-  // part beside the assembly's, some parts in inches and the rest in millimetres, or one file
-  // in which some solids' representations declare inches and the rest millimetres.
+  // part beside the assembly's, some parts in inches and the rest in millimetres, one file
+  // in which some solids' representations declare inches and the rest millimetres, or the
+  // schemas of older and newer exporters (AP203, AP242).
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_variants";
   std::filesystem::create_directories(dir);
   const Assembly original = LoadAssembly(kAs1);
@@ -319,7 +327,9 @@ TEST(StepImport, As1InInchesFlatNestedInPartFilesOrMixedUnitsGivesTheSamePairsUp
                                       std::pair{testing::StepVariant::kFlat, "flat"},
                                       std::pair{testing::StepVariant::kNested, "nested"},
                                       std::pair{testing::StepVariant::kPartFiles, "parts"},
-                                      std::pair{testing::StepVariant::kMixedUnits, "mixed"}}) {
+                                      std::pair{testing::StepVariant::kMixedUnits, "mixed"},
+                                      std::pair{testing::StepVariant::kAp203, "ap203"},
+                                      std::pair{testing::StepVariant::kAp242, "ap242"}}) {
     SCOPED_TRACE(name);
     const std::filesystem::path file = dir / (std::string(name) + ".stp");
     const std::vector<std::string> part_files = testing::WriteStepVariant(kAs1, file, variant);
@@ -327,6 +337,15 @@ TEST(StepImport, As1InInchesFlatNestedInPartFilesOrMixedUnitsGivesTheSamePairsUp
       std::ifstream in(file);
       const std::string text((std::istreambuf_iterator<char>(in)), {});
       EXPECT_NE(text.find("CONVERSION_BASED_UNIT('INCH'"), std::string::npos);
+    }
+    if (variant == testing::StepVariant::kAp203 || variant == testing::StepVariant::kAp242) {
+      std::ifstream in(file);
+      const std::string text((std::istreambuf_iterator<char>(in)), {});
+      EXPECT_NE(text.find(variant == testing::StepVariant::kAp203
+                              ? "FILE_SCHEMA(('CONFIG_CONTROL_DESIGN'"
+                              : "'AP242_MANAGED_MODEL_BASED_3D_ENGINEERING_MIM_LF"),
+                std::string::npos)
+          << text.substr(text.find("FILE_SCHEMA"), 120);
     }
     if (variant == testing::StepVariant::kPartFiles) {
       // Units of their own: the part files alternate, so both units are there.
@@ -345,6 +364,9 @@ TEST(StepImport, As1InInchesFlatNestedInPartFilesOrMixedUnitsGivesTheSamePairsUp
     EXPECT_EQ(PairsUpToNames(a, an), expected);
     EXPECT_EQ(an.subassemblies.size(), 1u);
     EXPECT_EQ(an.motion.mobility.dof, an_original.motion.mobility.dof);
+    if (variant == testing::StepVariant::kAp203 || variant == testing::StepVariant::kAp242) {
+      EXPECT_EQ(PartIds(a), PartIds(original));  // names are kept
+    }
     if (variant == testing::StepVariant::kInches) {
       // Names are kept; the plate's bolt holes are still 6 holes of the same size in mm.
       const auto plate = a.FindPart("AS1_PE_ASM.PLATE");

@@ -635,6 +635,15 @@ std::vector<std::string> WriteStepVariant(const std::filesystem::path& in,
     written = writer.Transfer(document, STEPControl_AsIs) &&
               writer.Write(out.string().c_str()) == IFSelect_RetDone;
     Interface_Static::SetCVal("write.step.unit", "MM");
+  } else if (variant == StepVariant::kAp203 || variant == StepVariant::kAp242) {
+    // Open CASCADE's schema numbers: 1 AP214 (its default), 3 AP203, 5 AP242; a writer takes
+    // it when it is made.
+    Interface_Static::SetIVal("write.step.schema", variant == StepVariant::kAp203 ? 3 : 5);
+    STEPCAFControl_Writer writer;
+    writer.SetNameMode(true);
+    written = writer.Transfer(document, STEPControl_AsIs) &&
+              writer.Write(out.string().c_str()) == IFSelect_RetDone;
+    Interface_Static::SetIVal("write.step.schema", 1);
   } else if (variant == StepVariant::kFlat) {
     TopoDS_Compound solids;
     builder.MakeCompound(solids);

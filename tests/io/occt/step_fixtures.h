@@ -145,6 +145,8 @@ enum class StepVariant {
   /// number) declares inches, its lengths rewritten in inches: parts that carry their own
   /// units in one file (Open CASCADE's writer gives one unit per file; this rewrites its text)
   kMixedUnits,
+  kAp203,  ///< the product structure and names kept, in AP203 (config control design)
+  kAp242,  ///< the product structure and names kept, in AP242 (model based 3D engineering)
 };
 
 /// Copies the STEP assembly `in` to `out` written as `variant` says (Open CASCADE's XCAF
