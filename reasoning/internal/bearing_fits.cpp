@@ -751,14 +751,16 @@ void Recognizer::FixHubsOnBearingShafts() {
     }
   }
   auto body = [&](FeatureRef ref) { return bodies.Find(static_cast<int>(ref.part)); };
-  // Per hub's body: the bodies its pairs other than face contacts join it to. Per body: its
-  // bearings.
+  // Per hub's body: the bodies its pairs other than face contacts and teeth in mesh (which
+  // couple turns and hold nothing) join it to. Per body: its bearings.
   std::map<int, std::set<int>> joined;
   for (const Pair* p : hubs) joined[body(p->b)];
   std::map<int, std::vector<const Pair*>> bearings;
   for (const Pair& p : pairs_) {
     const int a = body(p.a), b = body(p.b);
-    if (a == b || p.type == PairType::kPlanar) continue;
+    const bool teeth = p.type == PairType::kGear || p.type == PairType::kBevelGear ||
+                       p.type == PairType::kWormGear || p.type == PairType::kRackPinion;
+    if (a == b || p.type == PairType::kPlanar || teeth) continue;
     if (const auto hub = joined.find(a); hub != joined.end()) hub->second.insert(b);
     if (const auto hub = joined.find(b); hub != joined.end()) hub->second.insert(a);
     if (p.type == PairType::kRevolute && p.source == PairSource::kBearing) {

@@ -225,9 +225,10 @@ class Recognizer {
   void FixHubsBySetscrewHoles();
 
   /// A hub on a shaft (a cylindrical pair) that nothing but the shaft's rigid body holds
-  /// (apart from face contacts; bodies are parts joined by fixed pairs so far), when that body
+  /// (apart from face contacts and the meshes of its teeth, which couple turns and hold
+  /// nothing; bodies are parts joined by fixed pairs so far), when that body
   /// turns in a bearing on the shaft's axis (a revolute pair, source bearing, to a third
-  /// body): a pendulum, crank or pulley on a shaft carried by bearings turns with the shaft,
+  /// body): a pendulum, crank, pulley or gear on a shaft carried by bearings turns with it,
   /// by a key, setscrew, glue or press fit the file leaves out (a part meant to turn on the
   /// shaft would need no bearing under it). The pair becomes fixed (source bearing_shaft),
   /// with one info `bearing_shaft` per pair. After FixHubsBySetscrewHoles.

@@ -624,6 +624,23 @@ TEST(Bearing, ALeverHeldByNothingButAShaftThatTurnsInABearingTurnsWithIt) {
   const Analysis forbidden = Analyze(
       LeverOnShaft(true, "", R"([{"pair": ["shaft/shaft", "lever/hub"], "type": "none"}])"));
   EXPECT_EQ(CountSource(forbidden, PairSource::kBearingShaft), 0);
+  // A gear on the shaft too, meshing with a pinion that turns on a stub of a ground frame:
+  // its teeth couple turns and hold nothing, so it turns with the shaft, and the mechanism
+  // is the shaft's turn alone.
+  const Analysis geared = Analyze(LeverOnShaft(true, R"(,
+    {"id": "gear", "features": [
+      {"id": "hub", "kind": "hole", "origin": [0, 0, 16], "axis": [0, 0, 1], "diameter": 5, "length": 5, "through": true},
+      {"id": "teeth", "kind": "gear", "origin": [0, 0, 16], "axis": [0, 0, 1], "teeth": 40, "module": 1, "length": 5}]},
+    {"id": "pinion", "features": [
+      {"id": "hub", "kind": "hole", "origin": [-30, 0, 16], "axis": [0, 0, 1], "diameter": 5, "length": 5, "through": true, "retained": true},
+      {"id": "teeth", "kind": "gear", "origin": [-30, 0, 16], "axis": [0, 0, 1], "teeth": 20, "module": 1, "length": 5}]},
+    {"id": "frame", "ground": true, "features": [
+      {"id": "stub", "kind": "shaft", "origin": [-30, 0, 14], "axis": [0, 0, 1], "diameter": 5, "length": 9}]})"));
+  EXPECT_EQ(CountSource(geared, PairSource::kBearingShaft), 2);  // the lever and the gear
+  int meshes = 0;
+  for (const Pair& p : geared.pairs) meshes += p.type == PairType::kGear;
+  EXPECT_EQ(meshes, 1);
+  EXPECT_EQ(geared.motion.mobility.dof, 1);
 }
 
 TEST(Bearing, TheFusionPendulumsSkf6002IsFoundWithItsNineBalls) {
