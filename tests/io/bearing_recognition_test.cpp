@@ -190,6 +190,33 @@ TEST(Bearing, ABallBearingModelledInOpenCascadeIsFoundAsWrittenAndAsBSplines) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(Bearing, TwoBallBearingsSideBySideAreTwoBearings) {
+  // Their balls are neighbours (9 mm apart across the bearings), so they make one set, which
+  // lies on no one circle: split into rows, each row finds its own rings.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_occt_pair";
+  std::filesystem::create_directories(dir);
+  testing::WriteBallBearingStep(dir / "6002_pair.step", 9, 2);
+  const Assembly a = LoadAssembly(dir / "6002_pair.step");
+  const Analysis an = Analyze(a);
+  std::vector<const Diagnostic*> bearings;
+  for (const Diagnostic& d : an.diagnostics) {
+    if (d.code == "bearing") bearings.push_back(&d);
+  }
+  ASSERT_EQ(bearings.size(), 2u);
+  for (const Diagnostic* bearing : bearings) {
+    EXPECT_EQ(bearing->message.rfind("a ball bearing, 15 x 32 x 9 mm: ", 0), 0u)
+        << bearing->message;
+    EXPECT_NE(bearing->message.find("on 9 balls of 4.762 mm on a 23.5 mm pitch circle"),
+              std::string::npos)
+        << bearing->message;
+    EXPECT_EQ(bearing->parts.size(), 11u);
+  }
+  EXPECT_NE(bearings[0]->parts[0], bearings[1]->parts[0]);  // each its own inner ring
+  EXPECT_EQ(CountSource(an, PairSource::kBearing), 20);     // two rings' revolutes, 18 balls
+  EXPECT_EQ(Find(an, "part_unconnected"), nullptr);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Bearing, CylindricalRollersBetweenTwoRingsAreARollerBearing) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "mechanist_occt_rollers";

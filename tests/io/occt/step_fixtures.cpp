@@ -735,19 +735,25 @@ void AddRollers(BRep_Builder& builder, TopoDS_Compound& all, int count, double d
 
 }  // namespace
 
-void WriteBallBearingStep(const std::filesystem::path& file, int balls) {
+void WriteBallBearingStep(const std::filesystem::path& file, int balls, int copies) {
   const double pitch = 23.5 / 2, ball = 4.762 / 2, groove = 0.52 * 4.762, width = 9;
   const TopoDS_Shape raceway = BRepPrimAPI_MakeTorus(gp_Ax2(), pitch, groove).Shape();
   TopoDS_Compound all;
   BRep_Builder builder;
   builder.MakeCompound(all);
-  builder.Add(all, BRepAlgoAPI_Cut(Tube(7.5, 20.5 / 2, -width / 2, width / 2), raceway).Shape());
-  builder.Add(all, BRepAlgoAPI_Cut(Tube(26.7 / 2, 16, -width / 2, width / 2), raceway).Shape());
-  for (int k = 0; k < balls; ++k) {
-    const double a = 2 * M_PI * k / balls;
-    builder.Add(
-        all,
-        BRepPrimAPI_MakeSphere(gp_Pnt(pitch * std::cos(a), pitch * std::sin(a), 0), ball).Shape());
+  for (int copy = 0; copy < copies; ++copy) {
+    gp_Trsf shift;
+    shift.SetTranslation(gp_Vec(0, 0, width * copy));
+    auto add = [&](const TopoDS_Shape& shape) {
+      builder.Add(all, BRepBuilderAPI_Transform(shape, shift, true).Shape());
+    };
+    add(BRepAlgoAPI_Cut(Tube(7.5, 20.5 / 2, -width / 2, width / 2), raceway).Shape());
+    add(BRepAlgoAPI_Cut(Tube(26.7 / 2, 16, -width / 2, width / 2), raceway).Shape());
+    for (int k = 0; k < balls; ++k) {
+      const double a = 2 * M_PI * k / balls;
+      add(BRepPrimAPI_MakeSphere(gp_Pnt(pitch * std::cos(a), pitch * std::sin(a), 0), ball)
+              .Shape());
+    }
   }
   WriteStep(all, file);
 }

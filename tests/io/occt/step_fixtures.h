@@ -82,9 +82,9 @@ void WriteRackAndPinionStep(const std::filesystem::path& file, int pinion_teeth,
 /// dimensions as a vendor's model has it, axis z, mid-plane z = 0: an inner ring (bore 15 mm,
 /// land 20.5 mm), an outer ring (land 26.7 mm, outside 32 mm), both 9 mm wide with a toroidal
 /// raceway of radius 0.52 times the ball's about the 23.5 mm pitch circle, and `balls` balls of
-/// 4.762 mm on that circle, each a solid of its own. Throws std::runtime_error when it cannot
-/// write.
-void WriteBallBearingStep(const std::filesystem::path& file, int balls);
+/// 4.762 mm on that circle, each a solid of its own; `copies` such bearings side by side, the
+/// k-th (from 0) moved 9 k mm along z. Throws std::runtime_error when it cannot write.
+void WriteBallBearingStep(const std::filesystem::path& file, int balls, int copies = 1);
 
 /// Writes a STEP file (AP214, no product names) of a cylindrical roller bearing (an NU type,
 /// 25 x 52 x 15 mm), axis z, mid-plane z = 0: an inner ring (bore 25 mm, raceway 32 mm), an
