@@ -121,19 +121,27 @@ struct Recognizer::BearingRow {
   std::vector<const RollingElement*> elements;
   SpaceCircle pitch;
   double tilt = 0.0;  ///< rad: the elements' axes from the pitch circle's
+  /// The inner ring's feature that makes the revolute pair (a thrust bearing's shaft washer's
+  /// bore), and the outer ring's (its housing washer's bore).
   const WorldFeature* inner = nullptr;
   const WorldFeature* outer = nullptr;
+  bool thrust = false;  ///< the rings are washers on either side of the elements' plane
 };
 
 bool Recognizer::FindBearingRings(BearingRow& row) const {
   // Rollers lie along the bearing's axis. Tapered and barrel rollers' axes lie in the plane
   // through it and their centres (a tapered roller's meets it at the apex its cone and the
   // raceways' share), all at one inclination of at most 45 deg; a tapered roller's leans.
+  // Cylindrical rollers along radii are a thrust bearing's.
   const RollingElement& first = *row.elements.front();
   const SpaceCircle& pitch = row.pitch;
   const bool by_ends = ByTheirEnds(first.shape);
   row.tilt = AngleBetweenLines(first.axis, pitch.normal);
-  if (first.shape == RollingElement::Shape::kRoller && row.tilt > A_) return false;
+  const bool along_radii =
+      first.shape == RollingElement::Shape::kRoller && std::abs(row.tilt - kPi / 2) <= A_;
+  if (first.shape == RollingElement::Shape::kRoller && row.tilt > A_ && !along_radii) {
+    return false;
+  }
   if (by_ends && row.tilt > kPi / 4) return false;
   if (first.shape == RollingElement::Shape::kTaperedRoller && row.tilt <= A_) return false;
   if (first.shape != RollingElement::Shape::kBall &&
@@ -141,18 +149,19 @@ bool Recognizer::FindBearingRings(BearingRow& row) const {
         const Eigen::Vector3d radial = (e->center - pitch.center).normalized();
         const Eigen::Vector3d across = pitch.normal.cross(radial).normalized();
         return std::abs(AngleBetweenLines(e->axis, pitch.normal) - row.tilt) > A_ ||
-               (by_ends && std::abs(e->axis.dot(across)) > std::sin(A_));
+               ((by_ends || along_radii) && std::abs(e->axis.dot(across)) > std::sin(A_));
       })) {
     return false;
   }
+  std::set<std::size_t> in_row;
+  for (const RollingElement* e : row.elements) in_row.insert(e->w->ref.part);
+  if (along_radii) return FindThrustWashers(row, in_row);
   // The elements' reach from the pitch circle: across it (a tilted roller's ends and sides)
   // and along its axis.
   const double element_r = first.diameter / 2;
   const double radial_reach =
       first.length / 2 * std::sin(row.tilt) + element_r * std::cos(row.tilt);
   const double reach = first.length > 0 ? first.length / 2 : element_r;
-  std::set<std::size_t> in_row;
-  for (const RollingElement* e : row.elements) in_row.insert(e->w->ref.part);
   // The rings' raceways or lands: coaxial with the pitch circle, between the elements'
   // inner (outer) side and the pitch circle, reaching the elements' plane within `reach`. A
   // needle bearing without an inner ring runs on the shaft itself. Tapered and barrel
@@ -187,7 +196,59 @@ bool Recognizer::FindBearingRings(BearingRow& row) const {
       row.outer = &w;
     }
   }
-  return row.inner && row.outer && row.inner->ref.part != row.outer->ref.part;
+  if (row.inner && row.outer && row.inner->ref.part != row.outer->ref.part) return true;
+  // Balls with no rings around them may run between washers.
+  row.inner = row.outer = nullptr;
+  return first.shape == RollingElement::Shape::kBall && FindThrustWashers(row, in_row);
+}
+
+bool Recognizer::FindThrustWashers(BearingRow& row, const std::set<std::size_t>& in_row) const {
+  // On each side of the elements' plane, the nearest flat face of another part square to the
+  // axis, centred on it, reaching across the pitch circle and facing the elements within their
+  // radius of the plane: the washers' raceway sides (beside a ball's groove, or a roller's
+  // flat raceway).
+  const SpaceCircle& pitch = row.pitch;
+  const double element_r = row.elements.front()->diameter / 2;
+  std::array<const WorldFeature*, 2> facing{nullptr, nullptr};  // below the plane, above it
+  std::array<double, 2> distance{0.0, 0.0};
+  for (const WorldFeature& w : features_) {
+    if (w.f.kind != FeatureKind::kFace || in_row.count(w.ref.part)) continue;
+    const double at = (w.axis.origin - pitch.center).dot(pitch.normal);
+    if (AngleBetweenLines(w.axis.direction, pitch.normal) > A_ ||
+        DistanceToLine(w.axis.origin, pitch.center, pitch.normal) > L_ ||
+        !(w.f.width / 2 > pitch.radius) || std::abs(at) <= L_ || std::abs(at) > element_r + L_ ||
+        w.axis.direction.dot(pitch.normal) * at >= 0) {
+      continue;
+    }
+    const std::size_t side = at > 0;
+    if (!facing[side] || std::abs(at) < distance[side] ||
+        (std::abs(at) == distance[side] && NameLess(w, *facing[side]))) {
+      facing[side] = &w, distance[side] = std::abs(at);
+    }
+  }
+  if (!facing[0] || !facing[1] || facing[0]->ref.part == facing[1]->ref.part) return false;
+  // Each washer's bore: its smallest hole on the axis. The shaft washer's is the smaller.
+  std::array<const WorldFeature*, 2> bores{nullptr, nullptr};
+  for (std::size_t side = 0; side < 2; ++side) {
+    const std::size_t washer = facing[side]->ref.part;
+    for (std::size_t f = 0; f < assembly_.FeatureCount(washer); ++f) {
+      const WorldFeature& w = At({washer, f});
+      if (w.f.kind == FeatureKind::kHole &&
+          AngleBetweenLines(w.axis.direction, pitch.normal) <= A_ &&
+          DistanceToLine(pitch.center, w.axis.origin, w.axis.direction) <= L_ &&
+          (!bores[side] || w.f.diameter < bores[side]->f.diameter)) {
+        bores[side] = &w;
+      }
+    }
+    if (!bores[side]) return false;
+  }
+  const bool first_is_shaft_washer =
+      bores[0]->f.diameter < bores[1]->f.diameter ||
+      (bores[0]->f.diameter == bores[1]->f.diameter && NameLess(*bores[0], *bores[1]));
+  row.inner = bores[first_is_shaft_washer ? 0 : 1];
+  row.outer = bores[first_is_shaft_washer ? 1 : 0];
+  row.thrust = true;
+  return true;
 }
 
 void Recognizer::AddBearings() {
@@ -405,7 +466,8 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
   }
   // Its size as a catalogue gives it: the bore (above), the outer ring's outside diameter
   // and width (between its end faces, which chamfers do not shorten as they do its outside
-  // cylinder); a tapered roller bearing's width is both rings' (its catalogue's T).
+  // cylinder); a tapered roller bearing's width is both rings' (its catalogue's T), a thrust
+  // bearing's height both washers'.
   double outside = 0.0, width = 0.0;
   for (std::size_t f = 0; f < assembly_.FeatureCount(outer->ref.part); ++f) {
     const WorldFeature& w = At({outer->ref.part, f});
@@ -415,7 +477,9 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
   }
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   std::vector<std::size_t> rings{outer->ref.part};
-  if (shape == RollingElement::Shape::kTaperedRoller) rings.push_back(inner->ref.part);
+  if (shape == RollingElement::Shape::kTaperedRoller || row.thrust) {
+    rings.push_back(inner->ref.part);
+  }
   for (const std::size_t ring : rings) {
     for (std::size_t f = 0; f < assembly_.FeatureCount(ring); ++f) {
       const WorldFeature& w = At({ring, f});
@@ -458,6 +522,7 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
       kind = row.tilt > A_ ? "spherical roller" : "barrel roller";
       break;
   }
+  if (row.thrust) kind = "thrust " + kind;
   if (rows.size() > 1)
     kind = (rows.size() == 2 ? "double-row " : fmt::format("{}-row ", rows.size())) + kind;
   const std::string named = shape == RollingElement::Shape::kBall ? "balls"
@@ -468,7 +533,8 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
   for (const BearingRow& each : rows) {
     const double tilt = each.tilt;
     const double across = ByTheirEnds(shape) ? std::round(10 * d) / 10 : d;
-    const std::string leaning = tilt > A_ ? fmt::format(" at {} to its axis", Deg(tilt)) : "";
+    const std::string leaning =
+        tilt > A_ && !each.thrust ? fmt::format(" at {} to its axis", Deg(tilt)) : "";
     const std::string ends =
         shape == RollingElement::Shape::kBarrelRoller ? " (at their ends)" : "";
     const std::string what =
@@ -488,10 +554,11 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
   diagnostics_.push_back(
       {Severity::kInfo,
        "bearing",
-       fmt::format("a {} bearing{}: {} turns in {} on {} (a revolute pair; the {} are held with "
-                   "the outer ring, their spin and orbit not modelled){}",
-                   kind, size, assembly_.PartId(inner->ref.part), assembly_.PartId(outer->ref.part),
-                   elements_text, named,
+       fmt::format("a {} bearing{}: {} turns {} {} on {} (a revolute pair; the {} are held with "
+                   "the {}, their spin and orbit not modelled){}",
+                   kind, size, assembly_.PartId(inner->ref.part), row.thrust ? "against" : "in",
+                   assembly_.PartId(outer->ref.part), elements_text, named,
+                   row.thrust ? "housing washer" : "outer ring",
                    seats.empty() ? ""
                                  : fmt::format("; its rings are fitted (fixed) to {}",
                                                fmt::join(seats, " and "))),

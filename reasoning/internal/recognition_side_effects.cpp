@@ -36,9 +36,15 @@ void Recognizer::ApplyOverrides() {
 void Recognizer::AddImpliedPins() {
   if (hole_candidates_.empty() || !assembly_.inference().implied_pins) return;
   std::vector<bool> filled(features_.size(), false);
+  // Parts a rolling bearing joins already turn on each other (a thrust bearing's washers,
+  // whose bores are coaxial and empty): no missing pin between them.
+  std::set<std::pair<std::size_t, std::size_t>> in_bearing;
   for (const Pair& p : pairs_) {
     const FeatureKind k = assembly_.kind(p.a);
     if (k == FeatureKind::kShaft || k == FeatureKind::kThread) filled[Index(p.b)] = true;
+    if (p.type == PairType::kRevolute && p.source == PairSource::kBearing) {
+      in_bearing.insert(std::minmax(p.a.part, p.b.part));
+    }
   }
   // A hole on the axis of a shaft or thread that runs through it (a bolt in a bearing's bore,
   // whose seal recesses are holes too) holds no missing pin either.
@@ -55,7 +61,10 @@ void Recognizer::AddImpliedPins() {
     });
   };
   for (const auto& [x, y] : hole_candidates_) {
-    if (filled[Index(x->ref)] || filled[Index(y->ref)]) continue;
+    if (filled[Index(x->ref)] || filled[Index(y->ref)] ||
+        in_bearing.count(std::minmax(x->ref.part, y->ref.part))) {
+      continue;
+    }
     const double d_max = std::max(x->f.diameter, y->f.diameter);
     if (std::abs(x->f.diameter - y->f.diameter) > kMaxImpliedPinDifference * d_max + L_) {
       continue;

@@ -192,6 +192,12 @@ class Recognizer {
   /// barrel rollers leaning towards it at one angle) and finds its rings' features (AddBearings):
   /// whether it found both, on two parts.
   bool FindBearingRings(BearingRow& row) const;
+  /// A thrust bearing's washers for `row` (balls, or rollers along radii; `in_row`: their
+  /// parts): on each side of the elements' plane, the nearest flat face of another part
+  /// square to the axis, centred on it, reaching across the pitch circle and facing the
+  /// elements within their radius of the plane, on a part with a bore on the axis; the
+  /// washer with the smaller bore is the inner ring (the shaft washer). Whether it found two.
+  bool FindThrustWashers(BearingRow& row, const std::set<std::size_t>& in_row) const;
   /// The pairs and the `bearing` info of one bearing: `rows` (one or more) between the same
   /// rings.
   void AddBearing(std::span<const BearingRow> rows);
@@ -259,9 +265,9 @@ class Recognizer {
   /// Implied pins (README, "Real CAD exports"): a revolute pair between two holes of two
   /// parts that are collinear, of diameters within kMaxImpliedPinDifference, overlapping or at
   /// most kMaxImpliedPinGap apart along the axis (a diameter when no other part's shaft or
-  /// thread runs along them), when no shaft or thread sits in either: the
-  /// hinge of two parts whose pin or screw the CAD file leaves out. Before the overrides, so
-  /// that an override forbids or replaces one as any pair.
+  /// thread runs along them), when no shaft or thread sits in either and no rolling bearing
+  /// joins the two parts: the hinge of two parts whose pin or screw the CAD file leaves out.
+  /// Before the overrides, so that an override forbids or replaces one as any pair.
   void AddImpliedPins();
 
   /// Loose fits: a shaft more than kMaxShaftClearance but at most kMaxLooseClearance of the

@@ -37,7 +37,11 @@ enum class Elements {
   kEqualEnds
 };
 
-std::string Sketch(int balls, double off = 0.0, Elements kind = Elements::kBalls) {
+// With `washers` > 0 the rings are a thrust bearing's washers instead: the shaft washer
+// (bore 15 mm) below the elements and the housing washer (bore 16 mm) above, each 3 mm thick,
+// their 32 mm faces towards the elements `washers` mm from their plane.
+std::string Sketch(int balls, double off = 0.0, Elements kind = Elements::kBalls,
+                   double washers = 0.0) {
   std::string elements;
   for (int k = 0; k < balls; ++k) {
     const double a = 2 * kPi * k / balls, r = 11.75 + (k == 0 ? off : 0.0);
@@ -79,6 +83,27 @@ std::string Sketch(int balls, double off = 0.0, Elements kind = Elements::kBalls
           {{"id": "end_b", "kind": "face", "origin": [{}, {}, {}], "axis": [{}, {}, {}]}}]}})",
         k + 1, o.x(), o.y(), o.z(), u.x(), u.y(), u.z(), o.x(), o.y(), o.z(), -u.x(), -u.y(),
         -u.z(), e.x(), e.y(), e.z(), u.x(), u.y(), u.z());
+  }
+  if (washers > 0) {
+    // A washer from z = `low` to `low` + 3: its bore, its outside (32 mm), its raceway face
+    // towards the elements (at z = `raceway`, normal `facing` z) and its back face.
+    auto washer = [](const char* id, bool ground, double bore, double low, double raceway,
+                     double facing) {
+      return fmt::format(R"({{"id": "{}", "ground": {}, "features": [
+      {{"id": "bore", "kind": "hole", "origin": [0, 0, {}], "axis": [0, 0, 1], "diameter": {},
+       "length": 3, "through": true}},
+      {{"id": "outside", "kind": "shaft", "origin": [0, 0, {}], "axis": [0, 0, 1],
+       "diameter": 32, "length": 3}},
+      {{"id": "raceway", "kind": "face", "origin": [0, 0, {}], "axis": [0, 0, {}], "width": 32,
+       "height": 32}},
+      {{"id": "back", "kind": "face", "origin": [0, 0, {}], "axis": [0, 0, {}], "width": 32,
+       "height": 32}}]}})",
+                         id, ground, low, bore, low, raceway, facing, 2 * low + 3 - raceway,
+                         -facing);
+    };
+    return fmt::format(R"({{"mechanist": 1, "parts": [{}, {}{}]}})",
+                       washer("housing_washer", true, 16, washers, washers, -1),
+                       washer("shaft_washer", false, 15, -washers - 3, -washers, 1), elements);
   }
   return fmt::format(R"({{"mechanist": 1, "parts": [
     {{"id": "outer", "ground": true, "features": [
@@ -310,6 +335,32 @@ TEST(Bearing, TwoRowsOfBallsOrBarrelRollersBetweenTheSameRingsAreOneDoubleRowBea
   std::filesystem::remove_all(dir);
 }
 
+TEST(Bearing, BallsBetweenTwoGroovedWashersAreAThrustBearing) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "mechanist_occt_thrust";
+  std::filesystem::create_directories(dir);
+  testing::WriteThrustBallBearingStep(dir / "51105.step");
+  const Assembly a = LoadAssembly(dir / "51105.step");
+  const Analysis an = Analyze(a);
+  const Diagnostic* bearing = Find(an, "bearing");
+  ASSERT_NE(bearing, nullptr);
+  EXPECT_EQ(bearing->message.rfind("a thrust ball bearing, 25 x 42 x 11 mm: ", 0), 0u)
+      << bearing->message;
+  EXPECT_NE(bearing->message.find(" on 12 balls of 6.35 mm on a 33.5 mm pitch circle (a "
+                                  "revolute pair; the balls are held with the housing washer"),
+            std::string::npos)
+      << bearing->message;
+  ASSERT_EQ(bearing->parts.size(), 14u);
+  EXPECT_EQ(bearing->features[0].find("/hole_1"), bearing->features[0].size() - 7);  // bores
+  EXPECT_EQ(CountSource(an, PairSource::kBearing), 13);  // the washers' revolute, 12 balls
+  for (const Pair& p : an.pairs) {
+    EXPECT_EQ(p.source, PairSource::kBearing) << a.FeatureName(p.a) << " " << a.FeatureName(p.b);
+  }
+  EXPECT_EQ(an.motion.mobility.dof, 1);
+  EXPECT_EQ(Find(an, "part_unconnected"), nullptr);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Bearing, NeedlesInADrawnCupOnAShaftAreANeedleBearingAndTheShaftTurnsInIt) {
   // No inner ring: the needles run on the shaft itself, which turns in the cup.
   const std::filesystem::path dir =
@@ -360,6 +411,22 @@ TEST(Bearing, ElementsOffTheirCircleTooFewOrAcrossTheAxisAreNoBearing) {
       Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kRollersAlongRadii), "radial.json"));
   EXPECT_EQ(CountSource(radial, PairSource::kBearing), 0);
   EXPECT_EQ(Find(radial, "bearing"), nullptr);
+  // The rollers along radii between two washers whose faces touch them are a thrust bearing;
+  // with the faces 0.6 mm off the rollers, none.
+  const Analysis thrust =
+      Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kRollersAlongRadii, 2.381), "thrust.json"));
+  EXPECT_EQ(CountSource(thrust, PairSource::kBearing), 10);
+  ASSERT_NE(Find(thrust, "bearing"), nullptr);
+  EXPECT_NE(Find(thrust, "bearing")
+                ->message.find("a thrust cylindrical roller bearing, 15 x 32 x 10.762 mm: "
+                               "shaft_washer turns against housing_washer on 9 rollers of 4.762 "
+                               "x 5 mm on a 23.5 mm pitch circle"),
+            std::string::npos)
+      << Find(thrust, "bearing")->message;
+  EXPECT_EQ(thrust.motion.mobility.dof, 1);
+  const Analysis apart =
+      Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kRollersAlongRadii, 2.981), "apart.json"));
+  EXPECT_EQ(CountSource(apart, PairSource::kBearing), 0);
   // Tapered rollers tilted towards the axis are a tapered roller bearing, barrel rollers (two
   // equal ends) a spherical roller bearing; tilted sideways, their axes miss the bearing's and
   // they are none.

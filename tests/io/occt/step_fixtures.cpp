@@ -875,6 +875,23 @@ void WriteSphericalRollerBearingStep(const std::filesystem::path& file) {
   WriteStep(all, file);
 }
 
+void WriteThrustBallBearingStep(const std::filesystem::path& file) {
+  const double pitch = 33.5 / 2, ball = 6.35 / 2, groove = 0.53 * 6.35;
+  const TopoDS_Shape raceway = BRepPrimAPI_MakeTorus(gp_Ax2(), pitch, groove).Shape();
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  builder.Add(all, BRepAlgoAPI_Cut(Tube(12.5, 21, -5.5, -1.5), raceway).Shape());
+  builder.Add(all, BRepAlgoAPI_Cut(Tube(13.5, 21, 1.5, 5.5), raceway).Shape());
+  for (int k = 0; k < 12; ++k) {
+    const double a = 2 * M_PI * k / 12;
+    builder.Add(
+        all,
+        BRepPrimAPI_MakeSphere(gp_Pnt(pitch * std::cos(a), pitch * std::sin(a), 0), ball).Shape());
+  }
+  WriteStep(all, file);
+}
+
 void WriteNeedleBearingStep(const std::filesystem::path& file) {
   TopoDS_Compound all;
   BRep_Builder builder;
