@@ -27,14 +27,16 @@ constexpr double kPi = 3.14159265358979323846;
 // How the sketch's rolling elements are drawn: balls, rollers 5 mm long (a shaft and its
 // two end faces) along the bearing's axis or along radii, or two round end faces 5 mm apart
 // and nothing else: tapered rollers (4.4 and 5.1 mm ends) tilted 15 deg towards the axis or
-// sideways (their axes then miss it), or barrel rollers (equal ends) tilted towards it.
+// sideways (their axes then miss it), or barrel rollers (equal ends) tilted towards it or
+// along it.
 enum class Elements {
   kBalls,
   kRollersAlongTheAxis,
   kRollersAlongRadii,
   kTaperedRollers,
   kSkewedTaperedRollers,
-  kEqualEnds
+  kEqualEnds,
+  kEqualEndsAlongTheAxis
 };
 
 // With `washers` > 0 the rings are a thrust bearing's washers instead: the shaft washer
@@ -57,14 +59,16 @@ std::string Sketch(int balls, double off = 0.0, Elements kind = Elements::kBalls
     const Eigen::Vector3d radial(std::cos(a), std::sin(a), 0), across(-std::sin(a), std::cos(a), 0);
     const double tilt = 15 * kPi / 180;
     const Eigen::Vector3d u =
-        kind == Elements::kRollersAlongTheAxis ? Eigen::Vector3d::UnitZ()
+        kind == Elements::kRollersAlongTheAxis || kind == Elements::kEqualEndsAlongTheAxis
+            ? Eigen::Vector3d::UnitZ()
         : kind == Elements::kRollersAlongRadii ? radial
         : kind == Elements::kSkewedTaperedRollers
             ? Eigen::Vector3d(std::cos(tilt) * Eigen::Vector3d::UnitZ() + std::sin(tilt) * across)
             : Eigen::Vector3d(std::cos(tilt) * Eigen::Vector3d::UnitZ() + std::sin(tilt) * radial);
     const Eigen::Vector3d o = c - 2.5 * u, e = c + 2.5 * u;
     if (kind != Elements::kRollersAlongTheAxis && kind != Elements::kRollersAlongRadii) {
-      const double small = kind == Elements::kEqualEnds ? 5.1 : 4.4;
+      const bool equal = kind == Elements::kEqualEnds || kind == Elements::kEqualEndsAlongTheAxis;
+      const double small = equal ? 5.1 : 4.4;
       elements += fmt::format(
           R"(, {{"id": "roller{}", "features": [
             {{"id": "small_end", "kind": "face", "origin": [{}, {}, {}], "axis": [{}, {}, {}],
@@ -448,6 +452,14 @@ TEST(Bearing, ElementsOffTheirCircleTooFewOrAcrossTheAxisAreNoBearing) {
                                "on 9 rollers of 5.1 x 5 mm (at their ends) at 15 deg to its axis"),
             std::string::npos)
       << Find(barrels, "bearing")->message;
+  const Analysis along_barrels = Analyze(
+      LoadAssemblyText(Sketch(9, 0, Elements::kEqualEndsAlongTheAxis), "along_barrels.json"));
+  ASSERT_NE(Find(along_barrels, "bearing"), nullptr);
+  EXPECT_NE(Find(along_barrels, "bearing")
+                ->message.find("a barrel roller bearing, 15 x 32 x 9 mm: inner turns in outer on "
+                               "9 rollers of 5.1 x 5 mm (at their ends) on a 23.5 mm pitch circle"),
+            std::string::npos)
+      << Find(along_barrels, "bearing")->message;
   const Analysis skewed =
       Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kSkewedTaperedRollers), "skewed.json"));
   EXPECT_EQ(CountSource(skewed, PairSource::kBearing), 0);
