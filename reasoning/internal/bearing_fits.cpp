@@ -352,20 +352,22 @@ void Recognizer::AddBearings() {
   // direction of least spread (the circles' common axis) jump by more than the length
   // tolerance, and each part of three or more is fitted again.
   std::vector<BearingRow> rows;
-  auto add_row = [&](std::vector<const RollingElement*> row_elements) {
+  auto circle_of = [](const std::vector<const RollingElement*>& elements) {
     std::vector<Eigen::Vector3d> centers;
-    for (const RollingElement* e : row_elements) centers.push_back(e->center);
-    const std::optional<SpaceCircle> pitch = FitSpaceCircle(centers);
-    if (!pitch || pitch->worst > L_) return false;
-    BearingRow row{std::move(row_elements), *pitch};
+    for (const RollingElement* e : elements) centers.push_back(e->center);
+    return FitSpaceCircle(centers);
+  };
+  auto add_row = [&](std::vector<const RollingElement*> elements, const SpaceCircle& pitch) {
+    BearingRow row{std::move(elements), pitch};
     if (FindBearingRings(row)) rows.push_back(std::move(row));
-    return true;
   };
   for (std::vector<const RollingElement*>& set : sets) {
-    std::vector<Eigen::Vector3d> centers;
-    for (const RollingElement* e : set) centers.push_back(e->center);
-    const std::optional<SpaceCircle> spread = FitSpaceCircle(centers);
-    if (!spread || add_row(set)) continue;
+    const std::optional<SpaceCircle> spread = circle_of(set);
+    if (!spread) continue;
+    if (spread->worst <= L_) {
+      add_row(set, *spread);
+      continue;
+    }
     auto height = [&](const RollingElement* e) {
       return (e->center - spread->center).dot(spread->normal);
     };
@@ -381,7 +383,8 @@ void Recognizer::AddBearings() {
       std::sort(part.begin(), part.end(), [&](const RollingElement* x, const RollingElement* y) {
         return NameLess(*x->w, *y->w);
       });
-      add_row(std::move(part));
+      const std::optional<SpaceCircle> pitch = circle_of(part);
+      if (pitch && pitch->worst <= L_) add_row(std::move(part), *pitch);
     }
   }
   // Rows between the same two rings are one bearing (in the order of their first row).

@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/load_assembly.h"
@@ -179,16 +181,35 @@ std::vector<std::string> PairNames(const Assembly& a, const Analysis& an) {
   return names;
 }
 
+// The assemblies that `write` (a fixture writer) puts in a STEP file: as written, and with
+// `nurbs` also that file copied with every surface a B-spline (else the first again). Written
+// in a temporary folder named after the running test, removed once read.
+std::pair<Assembly, Assembly> LoadFixtures(
+    const std::function<void(const std::filesystem::path&)>& write, bool nurbs) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() /
+      (std::string("mechanist_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  std::filesystem::create_directories(dir);
+  write(dir / "bearing.step");
+  if (nurbs) testing::WriteNurbsCopy(dir / "bearing.step", dir / "nurbs.step");
+  std::pair<Assembly, Assembly> read{LoadAssembly(dir / "bearing.step"),
+                                     LoadAssembly(dir / (nurbs ? "nurbs.step" : "bearing.step"))};
+  std::filesystem::remove_all(dir);
+  return read;
+}
+
+// The assembly that `write` (a fixture writer) puts in a STEP file.
+Assembly LoadFixture(const std::function<void(const std::filesystem::path&)>& write) {
+  return LoadFixtures(write, false).first;
+}
+
 TEST(Bearing, ABallBearingModelledInOpenCascadeIsFoundAsWrittenAndAsBSplines) {
   // A vendor-style model: rings with toroidal raceways and nine separate balls. Written again
   // with every surface a B-spline (balls, raceways, lands), it must give the same bearing.
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "mechanist_occt_bearing";
-  std::filesystem::create_directories(dir);
-  testing::WriteBallBearingStep(dir / "6002.step", 9);
-  testing::WriteNurbsCopy(dir / "6002.step", dir / "6002_nurbs.step");
-  const Assembly exact = LoadAssembly(dir / "6002.step");
-  const Assembly nurbs = LoadAssembly(dir / "6002_nurbs.step");
+  const std::pair<Assembly, Assembly> read = LoadFixtures(
+      [](const std::filesystem::path& file) { testing::WriteBallBearingStep(file, 9); }, true);
+  const Assembly& exact = read.first;
+  const Assembly& nurbs = read.second;
   const Analysis an_exact = Analyze(exact), an_nurbs = Analyze(nurbs);
   for (const auto* an : {&an_exact, &an_nurbs}) {
     const Diagnostic* bearing = Find(*an, "bearing");
@@ -216,16 +237,13 @@ TEST(Bearing, ABallBearingModelledInOpenCascadeIsFoundAsWrittenAndAsBSplines) {
   for (std::size_t p = 0; p < nurbs.parts().size(); ++p) {
     EXPECT_EQ(nurbs.part(p).features.size(), exact.part(p).features.size()) << nurbs.part(p).id;
   }
-  std::filesystem::remove_all(dir);
 }
 
 TEST(Bearing, TwoBallBearingsSideBySideAreTwoBearings) {
   // Their balls are neighbours (9 mm apart across the bearings), so they make one set, which
   // lies on no one circle: split into rows, each row finds its own rings.
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_occt_pair";
-  std::filesystem::create_directories(dir);
-  testing::WriteBallBearingStep(dir / "6002_pair.step", 9, 2);
-  const Assembly a = LoadAssembly(dir / "6002_pair.step");
+  const Assembly a = LoadFixture(
+      [](const std::filesystem::path& file) { testing::WriteBallBearingStep(file, 9, 2); });
   const Analysis an = Analyze(a);
   std::vector<const Diagnostic*> bearings;
   for (const Diagnostic& d : an.diagnostics) {
@@ -243,15 +261,10 @@ TEST(Bearing, TwoBallBearingsSideBySideAreTwoBearings) {
   EXPECT_NE(bearings[0]->parts[0], bearings[1]->parts[0]);  // each its own inner ring
   EXPECT_EQ(CountSource(an, PairSource::kBearing), 20);     // two rings' revolutes, 18 balls
   EXPECT_EQ(Find(an, "part_unconnected"), nullptr);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(Bearing, CylindricalRollersBetweenTwoRingsAreARollerBearing) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "mechanist_occt_rollers";
-  std::filesystem::create_directories(dir);
-  testing::WriteRollerBearingStep(dir / "nu205.step");
-  const Assembly a = LoadAssembly(dir / "nu205.step");
+  const Assembly a = LoadFixture(testing::WriteRollerBearingStep);
   const Analysis an = Analyze(a);
   const Diagnostic* bearing = Find(an, "bearing");
   ASSERT_NE(bearing, nullptr);
@@ -267,20 +280,16 @@ TEST(Bearing, CylindricalRollersBetweenTwoRingsAreARollerBearing) {
   }
   EXPECT_EQ(an.motion.mobility.dof, 1);  // the inner ring's turn
   EXPECT_EQ(Find(an, "part_unconnected"), nullptr);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(Bearing, TaperedRollersBetweenACupAndAConeAreATaperedRollerBearing) {
   // Raceways and rollers are cones, which give no feature: the rollers are found by their
   // flat ends, the rings by the bore inside them and the outside cylinder outside them. As
   // B-splines throughout, the same.
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "mechanist_occt_tapered";
-  std::filesystem::create_directories(dir);
-  testing::WriteTaperedRollerBearingStep(dir / "30205.step");
-  testing::WriteNurbsCopy(dir / "30205.step", dir / "30205_nurbs.step");
-  const Assembly exact = LoadAssembly(dir / "30205.step");
-  const Assembly nurbs = LoadAssembly(dir / "30205_nurbs.step");
+  const std::pair<Assembly, Assembly> read =
+      LoadFixtures(testing::WriteTaperedRollerBearingStep, true);
+  const Assembly& exact = read.first;
+  const Assembly& nurbs = read.second;
   const Analysis an_exact = Analyze(exact), an_nurbs = Analyze(nurbs);
   for (const auto* an : {&an_exact, &an_nurbs}) {
     const Diagnostic* bearing = Find(*an, "bearing");
@@ -298,53 +307,45 @@ TEST(Bearing, TaperedRollersBetweenACupAndAConeAreATaperedRollerBearing) {
     EXPECT_EQ(Find(*an, "part_unconnected"), nullptr);
   }
   EXPECT_EQ(PairNames(nurbs, an_nurbs), PairNames(exact, an_exact));
-  std::filesystem::remove_all(dir);
 }
 
 TEST(Bearing, TwoRowsOfBallsOrBarrelRollersBetweenTheSameRingsAreOneDoubleRowBearing) {
   // The rows' elements are neighbours, so they make one set, which lies on no one circle: it
   // is split into its rows, and the rows between the same rings are one bearing.
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "mechanist_occt_double_row";
-  std::filesystem::create_directories(dir);
-  testing::WriteDoubleRowBallBearingStep(dir / "4205.step");
-  testing::WriteSphericalRollerBearingStep(dir / "22205.step");
   const struct {
-    const char* file;
+    void (*write)(const std::filesystem::path&);
     const char* kind;
     const char* rows;
-  } cases[] = {{"4205.step", "a double-row ball bearing, 25 x 52 x 20 mm: ",
-                "on 2 rows of 12 balls of 7.144 mm on a 38.5 mm pitch circle"},
-               {"22205.step", "a double-row spherical roller bearing, 25 x 52 x 18 mm: ",
-                "on 2 rows of 14 rollers of 6 x 7 mm (at their ends) at 13 deg to its axis on a "
-                "39 mm pitch circle"}};
+  } cases[] = {
+      {testing::WriteDoubleRowBallBearingStep, "a double-row ball bearing, 25 x 52 x 20 mm: ",
+       "on 2 rows of 12 balls of 7.144 mm on a 38.5 mm pitch circle"},
+      {testing::WriteSphericalRollerBearingStep,
+       "a double-row spherical roller bearing, 25 x 52 x 18 mm: ",
+       "on 2 rows of 14 rollers of 6 x 7 mm (at their ends) at 13 deg to its axis on a "
+       "39 mm pitch circle"}};
   for (const auto& c : cases) {
-    const Assembly a = LoadAssembly(dir / c.file);
+    SCOPED_TRACE(c.kind);
+    const Assembly a = LoadFixture(c.write);
     const Analysis an = Analyze(a);
     const Diagnostic* bearing = Find(an, "bearing");
-    ASSERT_NE(bearing, nullptr) << c.file;
+    ASSERT_NE(bearing, nullptr);
     EXPECT_EQ(bearing->message.rfind(c.kind, 0), 0u) << bearing->message;
     EXPECT_NE(bearing->message.find(c.rows), std::string::npos) << bearing->message;
-    EXPECT_EQ(bearing->parts.size(), a.parts().size()) << c.file;
+    EXPECT_EQ(bearing->parts.size(), a.parts().size());
     int revolute = 0;
     for (const Pair& p : an.pairs) {
-      EXPECT_EQ(p.source, PairSource::kBearing) << c.file;
+      EXPECT_EQ(p.source, PairSource::kBearing);
       revolute += p.type == PairType::kRevolute;
     }
-    EXPECT_EQ(revolute, 1) << c.file;
+    EXPECT_EQ(revolute, 1);
     EXPECT_EQ(CountSource(an, PairSource::kBearing), static_cast<int>(a.parts().size()) - 1);
-    EXPECT_EQ(an.motion.mobility.dof, 1) << c.file;
-    EXPECT_EQ(Find(an, "part_unconnected"), nullptr) << c.file;
+    EXPECT_EQ(an.motion.mobility.dof, 1);
+    EXPECT_EQ(Find(an, "part_unconnected"), nullptr);
   }
-  std::filesystem::remove_all(dir);
 }
 
 TEST(Bearing, BallsBetweenTwoGroovedWashersAreAThrustBearing) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "mechanist_occt_thrust";
-  std::filesystem::create_directories(dir);
-  testing::WriteThrustBallBearingStep(dir / "51105.step");
-  const Assembly a = LoadAssembly(dir / "51105.step");
+  const Assembly a = LoadFixture(testing::WriteThrustBallBearingStep);
   const Analysis an = Analyze(a);
   const Diagnostic* bearing = Find(an, "bearing");
   ASSERT_NE(bearing, nullptr);
@@ -362,16 +363,11 @@ TEST(Bearing, BallsBetweenTwoGroovedWashersAreAThrustBearing) {
   }
   EXPECT_EQ(an.motion.mobility.dof, 1);
   EXPECT_EQ(Find(an, "part_unconnected"), nullptr);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(Bearing, NeedlesInADrawnCupOnAShaftAreANeedleBearingAndTheShaftTurnsInIt) {
   // No inner ring: the needles run on the shaft itself, which turns in the cup.
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "mechanist_occt_needles";
-  std::filesystem::create_directories(dir);
-  testing::WriteNeedleBearingStep(dir / "hk1210.step");
-  const Assembly a = LoadAssembly(dir / "hk1210.step");
+  const Assembly a = LoadFixture(testing::WriteNeedleBearingStep);
   const Analysis an = Analyze(a);
   const Diagnostic* bearing = Find(an, "bearing");
   ASSERT_NE(bearing, nullptr);
@@ -389,7 +385,6 @@ TEST(Bearing, NeedlesInADrawnCupOnAShaftAreANeedleBearingAndTheShaftTurnsInIt) {
   EXPECT_EQ(a.PartId(turning->a.part), bearing->parts[0]);  // the shaft
   EXPECT_EQ(a.FeatureName(turning->a), bearing->features[0]);
   EXPECT_EQ(an.motion.mobility.dof, 1);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(Bearing, ElementsOffTheirCircleTooFewOrAcrossTheAxisAreNoBearing) {
