@@ -203,6 +203,36 @@ Assembly LoadFixture(const std::function<void(const std::filesystem::path&)>& wr
   return LoadFixtures(write, false).first;
 }
 
+// The analysis's `bearing` info, checked to begin with `begins` and to hold `holds`; nothing
+// (and a failure) when there is none.
+const Diagnostic* ExpectBearing(const Analysis& an, const std::string& begins,
+                                const std::string& holds) {
+  const Diagnostic* bearing = Find(an, "bearing");
+  EXPECT_NE(bearing, nullptr);
+  if (!bearing) return nullptr;
+  EXPECT_EQ(bearing->message.rfind(begins, 0), 0u) << bearing->message;
+  EXPECT_NE(bearing->message.find(holds), std::string::npos) << bearing->message;
+  return bearing;
+}
+
+// Checks an assembly that is one bearing and nothing else: one revolute pair, every pair of
+// source bearing, every part in it, mobility 1 (the rings' turn).
+void ExpectOneBearingAlone(const Assembly& a, const Analysis& an) {
+  int revolute = 0;
+  for (const Pair& p : an.pairs) {
+    EXPECT_EQ(p.source, PairSource::kBearing) << a.FeatureName(p.a) << " " << a.FeatureName(p.b);
+    revolute += p.type == PairType::kRevolute;
+  }
+  EXPECT_EQ(revolute, 1);
+  // The revolute pair, and each element held with the outer ring.
+  EXPECT_EQ(an.pairs.size(), a.parts().size() - 1);
+  const Diagnostic* bearing = Find(an, "bearing");
+  ASSERT_NE(bearing, nullptr);
+  EXPECT_EQ(bearing->parts.size(), a.parts().size());
+  EXPECT_EQ(an.motion.mobility.dof, 1);
+  EXPECT_EQ(Find(an, "part_unconnected"), nullptr);
+}
+
 TEST(Bearing, ABallBearingModelledInOpenCascadeIsFoundAsWrittenAndAsBSplines) {
   // A vendor-style model: rings with toroidal raceways and nine separate balls. Written again
   // with every surface a B-spline (balls, raceways, lands), it must give the same bearing.
@@ -266,20 +296,9 @@ TEST(Bearing, TwoBallBearingsSideBySideAreTwoBearings) {
 TEST(Bearing, CylindricalRollersBetweenTwoRingsAreARollerBearing) {
   const Assembly a = LoadFixture(testing::WriteRollerBearingStep);
   const Analysis an = Analyze(a);
-  const Diagnostic* bearing = Find(an, "bearing");
-  ASSERT_NE(bearing, nullptr);
-  EXPECT_EQ(bearing->message.rfind("a cylindrical roller bearing, 25 x 52 x 15 mm: ", 0), 0u)
-      << bearing->message;
-  EXPECT_NE(bearing->message.find("on 13 rollers of 6.5 x 8 mm on a 38.5 mm pitch circle"),
-            std::string::npos)
-      << bearing->message;
-  EXPECT_EQ(bearing->parts.size(), 15u);
-  EXPECT_EQ(CountSource(an, PairSource::kBearing), 14);  // the rings' revolute, 13 rollers
-  for (const Pair& p : an.pairs) {
-    EXPECT_EQ(p.source, PairSource::kBearing) << a.FeatureName(p.a) << " " << a.FeatureName(p.b);
-  }
-  EXPECT_EQ(an.motion.mobility.dof, 1);  // the inner ring's turn
-  EXPECT_EQ(Find(an, "part_unconnected"), nullptr);
+  ExpectBearing(an, "a cylindrical roller bearing, 25 x 52 x 15 mm: ",
+                "on 13 rollers of 6.5 x 8 mm on a 38.5 mm pitch circle");
+  ExpectOneBearingAlone(a, an);  // 13 rollers: 15 parts, 14 pairs
 }
 
 TEST(Bearing, TaperedRollersBetweenACupAndAConeAreATaperedRollerBearing) {
@@ -292,20 +311,11 @@ TEST(Bearing, TaperedRollersBetweenACupAndAConeAreATaperedRollerBearing) {
   const Assembly& nurbs = read.second;
   const Analysis an_exact = Analyze(exact), an_nurbs = Analyze(nurbs);
   for (const auto* an : {&an_exact, &an_nurbs}) {
-    const Diagnostic* bearing = Find(*an, "bearing");
-    ASSERT_NE(bearing, nullptr);
-    EXPECT_EQ(bearing->message.rfind("a tapered roller bearing, 25 x 52 x 16 mm: ", 0), 0u)
-        << bearing->message;
-    EXPECT_NE(bearing->message.find(
-                  "on 15 rollers of 6.6 x 12 mm at 15 deg to its axis on a 39 mm pitch circle"),
-              std::string::npos)
-        << bearing->message;
-    EXPECT_EQ(bearing->parts.size(), 17u);
-    EXPECT_EQ(CountSource(*an, PairSource::kBearing), 16);  // the rings' revolute, 15 rollers
-    for (const Pair& p : an->pairs) EXPECT_EQ(p.source, PairSource::kBearing);
-    EXPECT_EQ(an->motion.mobility.dof, 1);  // the cone's turn in the cup
-    EXPECT_EQ(Find(*an, "part_unconnected"), nullptr);
+    ExpectBearing(*an, "a tapered roller bearing, 25 x 52 x 16 mm: ",
+                  "on 15 rollers of 6.6 x 12 mm at 15 deg to its axis on a 39 mm pitch circle");
   }
+  ASSERT_EQ(exact.parts().size(), 17u);
+  ExpectOneBearingAlone(exact, an_exact);
   EXPECT_EQ(PairNames(nurbs, an_nurbs), PairNames(exact, an_exact));
 }
 
@@ -327,55 +337,30 @@ TEST(Bearing, TwoRowsOfBallsOrBarrelRollersBetweenTheSameRingsAreOneDoubleRowBea
     SCOPED_TRACE(c.kind);
     const Assembly a = LoadFixture(c.write);
     const Analysis an = Analyze(a);
-    const Diagnostic* bearing = Find(an, "bearing");
-    ASSERT_NE(bearing, nullptr);
-    EXPECT_EQ(bearing->message.rfind(c.kind, 0), 0u) << bearing->message;
-    EXPECT_NE(bearing->message.find(c.rows), std::string::npos) << bearing->message;
-    EXPECT_EQ(bearing->parts.size(), a.parts().size());
-    int revolute = 0;
-    for (const Pair& p : an.pairs) {
-      EXPECT_EQ(p.source, PairSource::kBearing);
-      revolute += p.type == PairType::kRevolute;
-    }
-    EXPECT_EQ(revolute, 1);
-    EXPECT_EQ(CountSource(an, PairSource::kBearing), static_cast<int>(a.parts().size()) - 1);
-    EXPECT_EQ(an.motion.mobility.dof, 1);
-    EXPECT_EQ(Find(an, "part_unconnected"), nullptr);
+    ExpectBearing(an, c.kind, c.rows);
+    ExpectOneBearingAlone(a, an);
   }
 }
 
 TEST(Bearing, BallsBetweenTwoGroovedWashersAreAThrustBearing) {
   const Assembly a = LoadFixture(testing::WriteThrustBallBearingStep);
   const Analysis an = Analyze(a);
-  const Diagnostic* bearing = Find(an, "bearing");
+  const Diagnostic* bearing =
+      ExpectBearing(an, "a thrust ball bearing, 25 x 42 x 11 mm: ",
+                    " on 12 balls of 6.35 mm on a 33.5 mm pitch circle (a revolute pair; the "
+                    "balls are held with the housing washer");
   ASSERT_NE(bearing, nullptr);
-  EXPECT_EQ(bearing->message.rfind("a thrust ball bearing, 25 x 42 x 11 mm: ", 0), 0u)
-      << bearing->message;
-  EXPECT_NE(bearing->message.find(" on 12 balls of 6.35 mm on a 33.5 mm pitch circle (a "
-                                  "revolute pair; the balls are held with the housing washer"),
-            std::string::npos)
-      << bearing->message;
-  ASSERT_EQ(bearing->parts.size(), 14u);
   EXPECT_EQ(bearing->features[0].find("/hole_1"), bearing->features[0].size() - 7);  // bores
-  EXPECT_EQ(CountSource(an, PairSource::kBearing), 13);  // the washers' revolute, 12 balls
-  for (const Pair& p : an.pairs) {
-    EXPECT_EQ(p.source, PairSource::kBearing) << a.FeatureName(p.a) << " " << a.FeatureName(p.b);
-  }
-  EXPECT_EQ(an.motion.mobility.dof, 1);
-  EXPECT_EQ(Find(an, "part_unconnected"), nullptr);
+  ExpectOneBearingAlone(a, an);  // 12 balls: 14 parts, 13 pairs
 }
 
 TEST(Bearing, NeedlesInADrawnCupOnAShaftAreANeedleBearingAndTheShaftTurnsInIt) {
   // No inner ring: the needles run on the shaft itself, which turns in the cup.
   const Assembly a = LoadFixture(testing::WriteNeedleBearingStep);
   const Analysis an = Analyze(a);
-  const Diagnostic* bearing = Find(an, "bearing");
+  const Diagnostic* bearing = ExpectBearing(an, "a needle roller bearing, 12 x 19 x 12 mm: ",
+                                            "on 18 needles of 2 x 10 mm on a 14 mm pitch circle");
   ASSERT_NE(bearing, nullptr);
-  EXPECT_EQ(bearing->message.rfind("a needle roller bearing, 12 x 19 x 12 mm: ", 0), 0u)
-      << bearing->message;
-  EXPECT_NE(bearing->message.find("on 18 needles of 2 x 10 mm on a 14 mm pitch circle"),
-            std::string::npos)
-      << bearing->message;
   ASSERT_EQ(bearing->parts.size(), 20u);
   const Pair* turning = nullptr;
   for (const Pair& p : an.pairs) {
@@ -399,13 +384,12 @@ TEST(Bearing, ElementsOffTheirCircleTooFewOrAcrossTheAxisAreNoBearing) {
   const Analysis four = Analyze(LoadAssemblyText(Sketch(4), "four.json"));
   EXPECT_EQ(CountSource(four, PairSource::kBearing), 5);
   // Rollers along the axis between the same rings are a roller bearing; the same rollers
-  // turned to lie along radii are none (tapered and spherical rollers are not recognised).
+  // turned to lie along radii are none (the rings hold no thrust bearing's washers).
   const Analysis along =
       Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kRollersAlongTheAxis), "along.json"));
   EXPECT_EQ(CountSource(along, PairSource::kBearing), 10);
-  ASSERT_NE(Find(along, "bearing"), nullptr);
-  EXPECT_NE(Find(along, "bearing")->message.find("9 rollers of 4.762 x 5 mm"), std::string::npos)
-      << Find(along, "bearing")->message;
+  ExpectBearing(along,
+                "a cylindrical roller bearing, 15 x 32 x 9 mm: ", "9 rollers of 4.762 x 5 mm");
   const Analysis radial =
       Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kRollersAlongRadii), "radial.json"));
   EXPECT_EQ(CountSource(radial, PairSource::kBearing), 0);
@@ -415,13 +399,9 @@ TEST(Bearing, ElementsOffTheirCircleTooFewOrAcrossTheAxisAreNoBearing) {
   const Analysis thrust =
       Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kRollersAlongRadii, 2.381), "thrust.json"));
   EXPECT_EQ(CountSource(thrust, PairSource::kBearing), 10);
-  ASSERT_NE(Find(thrust, "bearing"), nullptr);
-  EXPECT_NE(Find(thrust, "bearing")
-                ->message.find("a thrust cylindrical roller bearing, 15 x 32 x 10.762 mm: "
-                               "shaft_washer turns against housing_washer on 9 rollers of 4.762 "
-                               "x 5 mm on a 23.5 mm pitch circle"),
-            std::string::npos)
-      << Find(thrust, "bearing")->message;
+  ExpectBearing(thrust, "a thrust cylindrical roller bearing, 15 x 32 x 10.762 mm: ",
+                "shaft_washer turns against housing_washer on 9 rollers of 4.762 x 5 mm on a "
+                "23.5 mm pitch circle");
   EXPECT_EQ(thrust.motion.mobility.dof, 1);
   const Analysis apart =
       Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kRollersAlongRadii, 2.981), "apart.json"));
@@ -432,29 +412,19 @@ TEST(Bearing, ElementsOffTheirCircleTooFewOrAcrossTheAxisAreNoBearing) {
   const Analysis tapered =
       Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kTaperedRollers), "tapered.json"));
   EXPECT_EQ(CountSource(tapered, PairSource::kBearing), 10);
-  ASSERT_NE(Find(tapered, "bearing"), nullptr);
-  EXPECT_NE(Find(tapered, "bearing")
-                ->message.find("a tapered roller bearing, 15 x 32 x 9 mm: inner turns in outer on "
-                               "9 rollers of 4.8 x 5 mm at 15 deg to its axis"),
-            std::string::npos)
-      << Find(tapered, "bearing")->message;
+  ExpectBearing(tapered, "a tapered roller bearing, 15 x 32 x 9 mm: ",
+                "inner turns in outer on 9 rollers of 4.8 x 5 mm at 15 deg to its axis");
   const Analysis barrels =
       Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kEqualEnds), "barrels.json"));
   EXPECT_EQ(CountSource(barrels, PairSource::kBearing), 10);
-  ASSERT_NE(Find(barrels, "bearing"), nullptr);
-  EXPECT_NE(Find(barrels, "bearing")
-                ->message.find("a spherical roller bearing, 15 x 32 x 9 mm: inner turns in outer "
-                               "on 9 rollers of 5.1 x 5 mm (at their ends) at 15 deg to its axis"),
-            std::string::npos)
-      << Find(barrels, "bearing")->message;
+  ExpectBearing(barrels, "a spherical roller bearing, 15 x 32 x 9 mm: ",
+                "inner turns in outer on 9 rollers of 5.1 x 5 mm (at their ends) at 15 deg to "
+                "its axis");
   const Analysis along_barrels = Analyze(
       LoadAssemblyText(Sketch(9, 0, Elements::kEqualEndsAlongTheAxis), "along_barrels.json"));
-  ASSERT_NE(Find(along_barrels, "bearing"), nullptr);
-  EXPECT_NE(Find(along_barrels, "bearing")
-                ->message.find("a barrel roller bearing, 15 x 32 x 9 mm: inner turns in outer on "
-                               "9 rollers of 5.1 x 5 mm (at their ends) on a 23.5 mm pitch circle"),
-            std::string::npos)
-      << Find(along_barrels, "bearing")->message;
+  ExpectBearing(along_barrels, "a barrel roller bearing, 15 x 32 x 9 mm: ",
+                "inner turns in outer on 9 rollers of 5.1 x 5 mm (at their ends) on a 23.5 mm "
+                "pitch circle");
   const Analysis skewed =
       Analyze(LoadAssemblyText(Sketch(9, 0, Elements::kSkewedTaperedRollers), "skewed.json"));
   EXPECT_EQ(CountSource(skewed, PairSource::kBearing), 0);
