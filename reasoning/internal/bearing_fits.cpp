@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 
@@ -495,6 +496,40 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
     }
   }
   if (hi > lo) width = hi - lo;
+  // Cages, seals and shields: parts in no other role, with a feature, whose every vertex lies
+  // between the rings, radially strictly between the lands (or raceways) beside the elements
+  // and axially within the rings' end faces. They orbit with the elements or turn with a
+  // ring: held with the outer ring, as the elements are. (Rings found by their bore and
+  // outside, or a thrust bearing's washers, bound no such space.)
+  std::vector<std::size_t> cages;
+  if (!row.thrust && !ByTheirEnds(shape) && hi > lo) {
+    const double r_in = inner->f.diameter / 2, r_out = outer->f.diameter / 2;
+    for (std::size_t part = 0; part < assembly_.parts().size(); ++part) {
+      const std::shared_ptr<const TriangleMesh>& mesh = assembly_.part(part).mesh;
+      if (part == inner->ref.part || part == outer->ref.part || in_bearing.count(part) ||
+          assembly_.FeatureCount(part) == 0 || !mesh || mesh->vertices.empty()) {
+        continue;
+      }
+      const bool between =
+          std::all_of(mesh->vertices.begin(), mesh->vertices.end(), [&](const Eigen::Vector3d& v) {
+            const Eigen::Vector3d d = X_WP_[part] * v - pitch.center;
+            const double h = d.dot(pitch.normal);
+            const double r = (d - h * pitch.normal).norm();
+            return r > r_in && r < r_out && h > lo - L_ && h < hi + L_;
+          });
+      if (between) cages.push_back(part);
+    }
+  }
+  std::erase_if(pairs_, [&](const Pair& p) {
+    return std::count(cages.begin(), cages.end(), p.a.part) ||
+           std::count(cages.begin(), cages.end(), p.b.part);
+  });
+  std::vector<std::string> cage_ids;
+  for (const std::size_t cage : cages) {
+    AddPair(PairType::kFixed, At({cage, 0}), *outer);
+    pairs_.back().source = PairSource::kBearing;
+    cage_ids.emplace_back(assembly_.PartId(cage));
+  }
   const std::string size = bore > 0 && outside > 0
                                ? fmt::format(", {} x {} x {} mm", FormatNumber(bore),
                                              FormatNumber(outside), FormatNumber(width))
@@ -505,6 +540,7 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
     for (const RollingElement* e : each.elements)
       parts.emplace_back(assembly_.PartId(e->w->ref.part));
   }
+  parts.insert(parts.end(), cage_ids.begin(), cage_ids.end());
   // Needles: rollers at least 2.5 diameters long (ISO 3096's are 2.5 to 10). Barrel rollers
   // leaning towards the axis are a spherical roller bearing's.
   const double length = row.elements.front()->length;
@@ -557,14 +593,20 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
   diagnostics_.push_back(
       {Severity::kInfo,
        "bearing",
-       fmt::format("a {} bearing{}: {} turns {} {} on {} (a revolute pair; the {} are held with "
-                   "the {}, their spin and orbit not modelled){}",
-                   kind, size, assembly_.PartId(inner->ref.part), row.thrust ? "against" : "in",
-                   assembly_.PartId(outer->ref.part), elements_text, named,
-                   row.thrust ? "housing washer" : "outer ring",
-                   seats.empty() ? ""
-                                 : fmt::format("; its rings are fitted (fixed) to {}",
-                                               fmt::join(seats, " and "))),
+       fmt::format(
+           "a {} bearing{}: {} turns {} {} on {} (a revolute pair; the {} are held with "
+           "the {}, their spin and orbit not modelled){}{}",
+           kind, size, assembly_.PartId(inner->ref.part), row.thrust ? "against" : "in",
+           assembly_.PartId(outer->ref.part), elements_text, named,
+           row.thrust ? "housing washer" : "outer ring",
+           cage_ids.empty()
+               ? ""
+               : fmt::format("; {} (between the rings: a cage, seal or shield) {} held "
+                             "with the outer ring too",
+                             fmt::join(cage_ids, " and "), cage_ids.size() == 1 ? "is" : "are"),
+           seats.empty()
+               ? ""
+               : fmt::format("; its rings are fitted (fixed) to {}", fmt::join(seats, " and "))),
        parts,
        {Name(*inner), Name(*outer)}});
 }

@@ -181,10 +181,11 @@ class Recognizer {
   /// roller's leans) are a tapered or spherical roller bearing's, between the nearest bore
   /// inside them and the nearest outside cylinder outside them. Elements of one size on
   /// circles side by side along their axis are split into rows; rows between the same rings
-  /// are one (double-row) bearing. One info diagnostic `bearing` per bearing gives its kind
-  /// (ball, tapered roller, spherical or barrel roller, cylindrical roller, needle roller:
-  /// rollers 2.5 diameters long or more), its rows of elements and size (bore x outside
-  /// diameter x width, mm). Before the implied pins and the overrides.
+  /// are one (double-row) bearing. Balls, or rollers along radii, between two washers are a
+  /// thrust bearing (FindThrustWashers). One info diagnostic `bearing` per bearing gives its
+  /// kind (ball, tapered roller, spherical or barrel roller, cylindrical roller, needle
+  /// roller: rollers 2.5 diameters long or more; thrust), its rows of elements and size (bore
+  /// x outside diameter x width, mm). Before the implied pins and the overrides.
   void AddBearings();
   /// A row of a bearing's rolling elements on their pitch circle, and its rings (AddBearings).
   struct BearingRow;
@@ -199,7 +200,8 @@ class Recognizer {
   /// washer with the smaller bore is the inner ring (the shaft washer). Whether it found two.
   bool FindThrustWashers(BearingRow& row, const std::set<std::size_t>& in_row) const;
   /// The pairs and the `bearing` info of one bearing: `rows` (one or more) between the same
-  /// rings.
+  /// rings. Parts wholly between a ball or cylindrical roller bearing's rings (cages, seals,
+  /// shields; their meshes at the recognition's poses) are held with the outer ring too.
   void AddBearing(std::span<const BearingRow> rows);
 
   /// Bearings modelled as one solid (vendor parts): a part whose outside cylinder and bore

@@ -269,6 +269,19 @@ TEST(Bearing, ABallBearingModelledInOpenCascadeIsFoundAsWrittenAndAsBSplines) {
   }
 }
 
+TEST(Bearing, ACageBetweenTheRingsIsHeldWithTheOuterRing) {
+  const Assembly a = LoadFixture(
+      [](const std::filesystem::path& file) { testing::WriteBallBearingStep(file, 9, 1, true); });
+  ASSERT_EQ(a.parts().size(), 12u);
+  const Analysis an = Analyze(a);
+  const Diagnostic* bearing =
+      ExpectBearing(an, "a ball bearing, 15 x 32 x 9 mm: ",
+                    "(between the rings: a cage, seal or shield) is held with the outer ring too");
+  ASSERT_NE(bearing, nullptr);
+  EXPECT_EQ(bearing->parts.back(), a.part(11).id);  // the cage, written last
+  ExpectOneBearingAlone(a, an);                     // rings, 9 balls and the cage: 11 pairs
+}
+
 TEST(Bearing, TwoBallBearingsSideBySideAreTwoBearings) {
   // Their balls are neighbours (9 mm apart across the bearings), so they make one set, which
   // lies on no one circle: split into rows, each row finds its own rings.

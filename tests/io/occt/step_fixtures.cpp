@@ -735,7 +735,7 @@ void AddRollers(BRep_Builder& builder, TopoDS_Compound& all, int count, double d
 
 }  // namespace
 
-void WriteBallBearingStep(const std::filesystem::path& file, int balls, int copies) {
+void WriteBallBearingStep(const std::filesystem::path& file, int balls, int copies, bool cage) {
   const double pitch = 23.5 / 2, ball = 4.762 / 2, groove = 0.52 * 4.762, width = 9;
   const TopoDS_Shape raceway = BRepPrimAPI_MakeTorus(gp_Ax2(), pitch, groove).Shape();
   TopoDS_Compound all;
@@ -749,11 +749,14 @@ void WriteBallBearingStep(const std::filesystem::path& file, int balls, int copi
     };
     add(BRepAlgoAPI_Cut(Tube(7.5, 20.5 / 2, -width / 2, width / 2), raceway).Shape());
     add(BRepAlgoAPI_Cut(Tube(26.7 / 2, 16, -width / 2, width / 2), raceway).Shape());
+    TopoDS_Shape retainer = Tube(10.6, 12.9, -3, 3);
     for (int k = 0; k < balls; ++k) {
       const double a = 2 * M_PI * k / balls;
-      add(BRepPrimAPI_MakeSphere(gp_Pnt(pitch * std::cos(a), pitch * std::sin(a), 0), ball)
-              .Shape());
+      const gp_Pnt centre(pitch * std::cos(a), pitch * std::sin(a), 0);
+      add(BRepPrimAPI_MakeSphere(centre, ball).Shape());
+      if (cage) retainer = BRepAlgoAPI_Cut(retainer, BRepPrimAPI_MakeSphere(centre, 2.5)).Shape();
     }
+    if (cage) add(retainer);
   }
   WriteStep(all, file);
 }

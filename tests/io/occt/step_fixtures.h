@@ -83,8 +83,11 @@ void WriteRackAndPinionStep(const std::filesystem::path& file, int pinion_teeth,
 /// land 20.5 mm), an outer ring (land 26.7 mm, outside 32 mm), both 9 mm wide with a toroidal
 /// raceway of radius 0.52 times the ball's about the 23.5 mm pitch circle, and `balls` balls of
 /// 4.762 mm on that circle, each a solid of its own; `copies` such bearings side by side, the
-/// k-th (from 0) moved 9 k mm along z. Throws std::runtime_error when it cannot write.
-void WriteBallBearingStep(const std::filesystem::path& file, int balls, int copies = 1);
+/// k-th (from 0) moved 9 k mm along z; with `cage`, each with a cage between the lands (a
+/// ring 21.2 to 25.8 mm across from z = -3 to 3, with a 5 mm pocket at each ball). Throws
+/// std::runtime_error when it cannot write.
+void WriteBallBearingStep(const std::filesystem::path& file, int balls, int copies = 1,
+                          bool cage = false);
 
 /// Writes a STEP file (AP214, no product names) of a cylindrical roller bearing (an NU type,
 /// 25 x 52 x 15 mm), axis z, mid-plane z = 0: an inner ring (bore 25 mm, raceway 32 mm), an
