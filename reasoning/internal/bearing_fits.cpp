@@ -127,6 +127,8 @@ struct Recognizer::BearingRow {
   const WorldFeature* inner = nullptr;
   const WorldFeature* outer = nullptr;
   bool thrust = false;  ///< the rings are washers on either side of the elements' plane
+  /// mm: a thrust bearing's washers' raceway faces from the elements' plane, below and above.
+  std::array<double, 2> washers{0.0, 0.0};
 };
 
 bool Recognizer::FindBearingRings(BearingRow& row) const {
@@ -249,6 +251,7 @@ bool Recognizer::FindThrustWashers(BearingRow& row, const std::set<std::size_t>&
   row.inner = bores[first_is_shaft_washer ? 0 : 1];
   row.outer = bores[first_is_shaft_washer ? 1 : 0];
   row.thrust = true;
+  row.washers = distance;
   return true;
 }
 
@@ -498,12 +501,16 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
   if (hi > lo) width = hi - lo;
   // Cages, seals and shields: parts in no other role, with a feature, whose every vertex lies
   // between the rings, radially strictly between the lands (or raceways) beside the elements
-  // and axially within the rings' end faces. They orbit with the elements or turn with a
-  // ring: held with the outer ring, as the elements are. (Rings found by their bore and
-  // outside, or a thrust bearing's washers, bound no such space.)
+  // and axially within the rings' end faces; a thrust bearing's, axially strictly between its
+  // washers' raceway faces and radially between the shaft washer's bore and the housing
+  // washer's outside. They orbit with the elements or turn with a ring: held with the outer
+  // ring, as the elements are. (Rings found by their bore and outside bound no such space.)
   std::vector<std::size_t> cages;
-  if (!row.thrust && !ByTheirEnds(shape) && hi > lo) {
-    const double r_in = inner->f.diameter / 2, r_out = outer->f.diameter / 2;
+  if (!ByTheirEnds(shape) && hi > lo) {
+    const double r_in = inner->f.diameter / 2;
+    const double r_out = row.thrust ? outside / 2 : outer->f.diameter / 2;
+    const double h_lo = row.thrust ? -row.washers[0] : lo - L_;
+    const double h_hi = row.thrust ? row.washers[1] : hi + L_;
     for (std::size_t part = 0; part < assembly_.parts().size(); ++part) {
       const std::shared_ptr<const TriangleMesh>& mesh = assembly_.part(part).mesh;
       if (part == inner->ref.part || part == outer->ref.part || in_bearing.count(part) ||
@@ -515,7 +522,7 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
             const Eigen::Vector3d d = X_WP_[part] * v - pitch.center;
             const double h = d.dot(pitch.normal);
             const double r = (d - h * pitch.normal).norm();
-            return r > r_in && r < r_out && h > lo - L_ && h < hi + L_;
+            return r > r_in && r < r_out && h > h_lo && h < h_hi;
           });
       if (between) cages.push_back(part);
     }
@@ -602,8 +609,9 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
            cage_ids.empty()
                ? ""
                : fmt::format("; {} (between the rings: a cage, seal or shield) {} held "
-                             "with the outer ring too",
-                             fmt::join(cage_ids, " and "), cage_ids.size() == 1 ? "is" : "are"),
+                             "with the {} too",
+                             fmt::join(cage_ids, " and "), cage_ids.size() == 1 ? "is" : "are",
+                             row.thrust ? "housing washer" : "outer ring"),
            seats.empty()
                ? ""
                : fmt::format("; its rings are fitted (fixed) to {}", fmt::join(seats, " and "))),

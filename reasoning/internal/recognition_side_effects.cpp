@@ -7,6 +7,7 @@
 #include <array>
 #include <map>
 
+#include "kernel/support/union_find.h"
 #include "reasoning/internal/recognizer.h"
 
 namespace mechanist::internal {
@@ -36,14 +37,15 @@ void Recognizer::ApplyOverrides() {
 void Recognizer::AddImpliedPins() {
   if (hole_candidates_.empty() || !assembly_.inference().implied_pins) return;
   std::vector<bool> filled(features_.size(), false);
-  // Parts a rolling bearing joins already turn on each other (a thrust bearing's washers,
-  // whose bores are coaxial and empty): no missing pin between them.
-  std::set<std::pair<std::size_t, std::size_t>> in_bearing;
+  // Parts that rolling bearings join (rings, elements, cages and seats, by pairs of source
+  // bearing) already move on each other as the bearings say (a thrust bearing's washers and
+  // its cage have coaxial empty bores): no missing pin between them.
+  UnionFind bearings(assembly_.parts().size());
   for (const Pair& p : pairs_) {
     const FeatureKind k = assembly_.kind(p.a);
     if (k == FeatureKind::kShaft || k == FeatureKind::kThread) filled[Index(p.b)] = true;
-    if (p.type == PairType::kRevolute && p.source == PairSource::kBearing) {
-      in_bearing.insert(std::minmax(p.a.part, p.b.part));
+    if (p.source == PairSource::kBearing) {
+      bearings.Join(static_cast<int>(p.a.part), static_cast<int>(p.b.part));
     }
   }
   // A hole on the axis of a shaft or thread that runs through it (a bolt in a bearing's bore,
@@ -62,7 +64,8 @@ void Recognizer::AddImpliedPins() {
   };
   for (const auto& [x, y] : hole_candidates_) {
     if (filled[Index(x->ref)] || filled[Index(y->ref)] ||
-        in_bearing.count(std::minmax(x->ref.part, y->ref.part))) {
+        bearings.Find(static_cast<int>(x->ref.part)) ==
+            bearings.Find(static_cast<int>(y->ref.part))) {
       continue;
     }
     const double d_max = std::max(x->f.diameter, y->f.diameter);

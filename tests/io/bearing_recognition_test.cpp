@@ -356,7 +356,8 @@ TEST(Bearing, TwoRowsOfBallsOrBarrelRollersBetweenTheSameRingsAreOneDoubleRowBea
 }
 
 TEST(Bearing, BallsBetweenTwoGroovedWashersAreAThrustBearing) {
-  const Assembly a = LoadFixture(testing::WriteThrustBallBearingStep);
+  const Assembly a = LoadFixture(
+      [](const std::filesystem::path& file) { testing::WriteThrustBallBearingStep(file); });
   const Analysis an = Analyze(a);
   const Diagnostic* bearing =
       ExpectBearing(an, "a thrust ball bearing, 25 x 42 x 11 mm: ",
@@ -365,6 +366,14 @@ TEST(Bearing, BallsBetweenTwoGroovedWashersAreAThrustBearing) {
   ASSERT_NE(bearing, nullptr);
   EXPECT_EQ(bearing->features[0].find("/hole_1"), bearing->features[0].size() - 7);  // bores
   ExpectOneBearingAlone(a, an);  // 12 balls: 14 parts, 13 pairs
+  // With a cage between the washers, the cage is held with the housing washer too.
+  const Assembly caged = LoadFixture(
+      [](const std::filesystem::path& file) { testing::WriteThrustBallBearingStep(file, true); });
+  ASSERT_EQ(caged.parts().size(), 15u);
+  const Analysis an_caged = Analyze(caged);
+  ExpectBearing(an_caged, "a thrust ball bearing, 25 x 42 x 11 mm: ",
+                "(between the rings: a cage, seal or shield) is held with the housing washer too");
+  ExpectOneBearingAlone(caged, an_caged);
 }
 
 TEST(Bearing, NeedlesInADrawnCupOnAShaftAreANeedleBearingAndTheShaftTurnsInIt) {

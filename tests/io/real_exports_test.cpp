@@ -41,6 +41,8 @@ struct Expected {
   int embedded = 0;
   // Hubs held by nothing but a shaft that turns in a bearing, fixed to it.
   int bearing_shafts = 0;
+  // Revolute pairs on pins the file leaves out (implied_pin).
+  int implied_pins = 0;
 };
 
 std::vector<Expected> Cases() {
@@ -80,7 +82,8 @@ std::vector<Expected> Cases() {
       // floats in its load cell's 12 mm hole (6) with the probe on its end (3), and the lead
       // screw turns apart from the carriage (its thread is not modelled). Eight of them are
       // idle spins: the four wheels, the two washers, and the two bearings of the lead screw
-      // in their seats.
+      // in their seats. No implied pin: each wheel's bore beside its one-solid bearing's is
+      // the bearing's business (eight such pins before).
       {"lead_screw_linear_actuator_onshape/Assembly.step",
        "Assembly_1._C_V",
        {"axes_not_collinear: Assembly_1.p____V", "free_motion: Assembly_1.__V_4"},
@@ -97,7 +100,8 @@ std::vector<Expected> Cases() {
       // pivot screw ends in its nut's hole (drawn at the minor diameter). 22 where the truth
       // has 16: the five servos rest in the forearm's pockets with 1.4 to 27 mm of room along
       // x, and the thumb's knuckle has 2.5 mm between the palm's cheeks, more than a seat's
-      // play (kMaxSeatPlay), so their slides stay.
+      // play (kMaxSeatPlay), so their slides stay. 31 implied pins: the finger hinges (two
+      // knuckles each, mostly) and the forearm's two screw holes into the palm.
       {"robot_hand_finger_hinges_onshape/Assembly 1.step",
        "Assembly_1.FOREARM",
        {},
@@ -107,7 +111,12 @@ std::vector<Expected> Cases() {
        0,
        0,
        0,
-       22},
+       22,
+       0,
+       0,
+       0,
+       0,
+       31},
       // The motor's connector is in no pair, sunk 2.1 mm into the motor's end cap: fixed to
       // it, so no warning. The motor's four long M3 screws (cross-recessed pan heads) run
       // through the tap-drilled stator into the flange. The pendulum rod's hub, held by
@@ -200,6 +209,9 @@ TEST_P(RealExports, GroundAndWarningsAreTheOnesADesignerActsOn) {
   EXPECT_EQ(std::count_if(an.pairs.begin(), an.pairs.end(),
                           [](const Pair& p) { return p.source == PairSource::kBearingShaft; }),
             e.bearing_shafts);
+  EXPECT_EQ(std::count_if(an.pairs.begin(), an.pairs.end(),
+                          [](const Pair& p) { return p.source == PairSource::kImpliedPin; }),
+            e.implied_pins);
 }
 
 TEST(RealExports, TheRobotHandsThumbTurnsOnItsPivotScrew) {

@@ -878,7 +878,7 @@ void WriteSphericalRollerBearingStep(const std::filesystem::path& file) {
   WriteStep(all, file);
 }
 
-void WriteThrustBallBearingStep(const std::filesystem::path& file) {
+void WriteThrustBallBearingStep(const std::filesystem::path& file, bool cage) {
   const double pitch = 33.5 / 2, ball = 6.35 / 2, groove = 0.53 * 6.35;
   const TopoDS_Shape raceway = BRepPrimAPI_MakeTorus(gp_Ax2(), pitch, groove).Shape();
   TopoDS_Compound all;
@@ -886,12 +886,14 @@ void WriteThrustBallBearingStep(const std::filesystem::path& file) {
   builder.MakeCompound(all);
   builder.Add(all, BRepAlgoAPI_Cut(Tube(12.5, 21, -5.5, -1.5), raceway).Shape());
   builder.Add(all, BRepAlgoAPI_Cut(Tube(13.5, 21, 1.5, 5.5), raceway).Shape());
+  TopoDS_Shape retainer = Tube(12.9, 20.5, -1, 1);
   for (int k = 0; k < 12; ++k) {
     const double a = 2 * M_PI * k / 12;
-    builder.Add(
-        all,
-        BRepPrimAPI_MakeSphere(gp_Pnt(pitch * std::cos(a), pitch * std::sin(a), 0), ball).Shape());
+    const gp_Pnt centre(pitch * std::cos(a), pitch * std::sin(a), 0);
+    builder.Add(all, BRepPrimAPI_MakeSphere(centre, ball).Shape());
+    if (cage) retainer = BRepAlgoAPI_Cut(retainer, BRepPrimAPI_MakeSphere(centre, 3.3)).Shape();
   }
+  if (cage) builder.Add(all, retainer);
   WriteStep(all, file);
 }
 

@@ -127,9 +127,10 @@ void WriteSphericalRollerBearingStep(const std::filesystem::path& file);
 /// 11 mm), axis z: a shaft washer (bore 25 mm, outside 42 mm) from z = -5.5 to -1.5 and a
 /// housing washer (bore 27 mm, outside 42 mm) from z = 1.5 to 5.5, each with a toroidal
 /// groove of radius 0.53 times the ball's about the 33.5 mm pitch circle in z = 0, and 12
-/// balls of 6.35 mm on that circle, each a solid of its own. Throws std::runtime_error when
-/// it cannot write.
-void WriteThrustBallBearingStep(const std::filesystem::path& file);
+/// balls of 6.35 mm on that circle, each a solid of its own; with `cage`, a flat ring cage
+/// between the washers (25.8 to 41 mm across, z = -1 to 1, a 6.6 mm pocket at each ball).
+/// Throws std::runtime_error when it cannot write.
+void WriteThrustBallBearingStep(const std::filesystem::path& file, bool cage = false);
 
 /// Writes a STEP file (AP214, no product names) of a needle bearing without an inner ring on
 /// its shaft, axis z: a 12 mm shaft from z = -20 to 20, a drawn cup (bore 16 mm, outside 19 mm,
