@@ -189,9 +189,9 @@ class Recognizer {
   void AddBearings();
   /// A row of a bearing's rolling elements on their pitch circle, and its rings (AddBearings).
   struct BearingRow;
-  /// Checks the row's elements lie as a bearing's do (rollers along its axis; tapered and
-  /// barrel rollers leaning towards it at one angle) and finds its rings' features (AddBearings):
-  /// whether it found both, on two parts.
+  /// Checks the row's elements lie as a bearing's do (rollers along its axis, or along radii
+  /// between a thrust bearing's washers; tapered and barrel rollers leaning towards it at one
+  /// angle) and finds its rings' features (AddBearings): whether it found both, on two parts.
   bool FindBearingRings(BearingRow& row) const;
   /// A thrust bearing's washers for `row` (balls, or rollers along radii; `in_row`: their
   /// parts): on each side of the elements' plane, the nearest flat face of another part
