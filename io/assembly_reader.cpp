@@ -1278,11 +1278,32 @@ class Reader {
   }
 
   void ReadOverride(const Json& v, const std::string& p) {
-    CheckKeys(v, p, {"pair", "type"});
+    CheckKeys(v, p, {"pair", "type", "lead"});
     PairOverride o;
     o.features = RefPair(Require(v, p, "pair", "two features"), p + "/pair");
     const Json& type = Require(v, p, "type", "a pair type or \"none\"");
     o.type = PairTypeOrNone(type, p + "/type");
+    const auto kind = [&](int i) {
+      return spec_.parts[o.features[i].part].features[o.features[i].feature].kind;
+    };
+    if (const Json* lead = Find(v, "lead")) {
+      if (o.type != PairType::kScrew) {
+        Fail(p + "/lead",
+             fmt::format("expected \"lead\" only with type \"screw\", found type \"{}\"",
+                         o.type ? ToString(*o.type) : std::string_view("none")));
+      }
+      o.lead = Length(*lead, p + "/lead");
+      if (*o.lead == 0.0) {
+        Fail(p + "/lead", "expected a nonzero length (negative for a left-hand thread), found 0");
+      }
+    } else if (o.type == PairType::kScrew && kind(0) != FeatureKind::kThread &&
+               kind(1) != FeatureKind::kThread) {
+      // A screw pair between plain features (a lead screw whose thread the file leaves out)
+      // has no lead to take from a thread.
+      Fail(p, fmt::format("expected \"lead\" (the length one turn advances) for a screw pair "
+                          "without a thread, found {} and {}",
+                          ToString(kind(0)), ToString(kind(1))));
+    }
     spec_.overrides.push_back(o);
   }
 

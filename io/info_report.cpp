@@ -177,7 +177,9 @@ void WriteInfo(const Assembly& assembly, std::ostream& out) {
   for (const PairOverride& o : assembly.overrides()) {
     out << "  " << assembly.FeatureName(o.features[0]) << " + "
         << assembly.FeatureName(o.features[1]) << ": "
-        << (o.type ? std::string(ToString(*o.type)) : std::string("none")) << "\n";
+        << (o.type ? std::string(ToString(*o.type)) : std::string("none"));
+    if (o.lead) out << ", lead " << FormatNumber(*o.lead) << " mm";
+    out << "\n";
   }
   if (!assembly.expectations().empty()) {
     out << "expectations: " << assembly.expectations().size() << "\n";

@@ -103,10 +103,10 @@ std::vector<Diagnostic> ImplyGearFrame(AssemblySpec* spec) {
     axle.axis = owner.X_WP.RotateDirection(hole.axis);
     axle.diameter = hole.diameter;
     axle.length = hole.length;
-    spec->overrides.push_back(
-        {{FeatureRef(frame_index, frame.features.size()), FeatureRef(bore.part, bore.hole)},
-         PairType::kRevolute,
-         /*implied_frame=*/true});
+    spec->overrides.push_back({.features = {FeatureRef(frame_index, frame.features.size()),
+                                            FeatureRef(bore.part, bore.hole)},
+                               .type = PairType::kRevolute,
+                               .implied_frame = true});
     frame.features.push_back(axle);
     gears.push_back(fmt::format("'{}' ({} mm bore)", owner.id, FormatNumber(hole.diameter, 4)));
   }

@@ -8,19 +8,29 @@
 namespace mechanist {
 namespace {
 
-/// Scales so that the largest |coefficient| is 1 (the first of equals, in variable order); the
-/// rhs with it.
-void Normalise(LinearSystem::Row& terms, ExactReal& rhs) {
+/// Scales so that the largest exact |coefficient| is 1 (the first of equals, in variable
+/// order), or, in a row with no exact coefficient, the largest; the rhs with it. Dividing by an
+/// approximate coefficient would make the exact ones approximate: a screw's lead row beside a
+/// lever arm would lose its exact lead. Returns the largest |coefficient| after scaling.
+double Normalise(LinearSystem::Row& terms, ExactReal& rhs) {
   const ExactReal* largest = nullptr;
   for (const LinearSystem::Term& t : terms) {
-    if (!largest || std::abs(t.coefficient.value()) > std::abs(largest->value())) {
+    const bool better_kind = largest && t.coefficient.is_exact() && !largest->is_exact();
+    const bool same_kind = largest && t.coefficient.is_exact() == largest->is_exact();
+    if (!largest || better_kind ||
+        (same_kind && std::abs(t.coefficient.value()) > std::abs(largest->value()))) {
       largest = &t.coefficient;
     }
   }
-  if (!largest) return;
+  if (!largest) return 0.0;
   const ExactReal scale = largest->value() < 0 ? -*largest : *largest;
-  for (LinearSystem::Term& t : terms) t.coefficient = t.coefficient / scale;
+  double size = 0.0;
+  for (LinearSystem::Term& t : terms) {
+    t.coefficient = t.coefficient / scale;
+    size = std::max(size, std::abs(t.coefficient.value()));
+  }
   rhs = rhs / scale;
+  return size;
 }
 
 }  // namespace
@@ -82,8 +92,8 @@ LinearSystem::Outcome LinearSystem::AddRow(const Row& row, const ExactReal& rhs)
   terms.reserve(entries.size());
   for (Entry& e : entries) terms.push_back({e.root, std::move(e.sum)});
   ExactReal b = rhs;
-  Normalise(terms, b);
-  if (terms.size() == 2 && b.IsZero(tolerance_)) {
+  const double size = Normalise(terms, b);
+  if (terms.size() == 2 && b.IsZero(tolerance_ * size)) {
     const Term* x = &terms[0];
     const Term* y = &terms[1];
     if (!in_pivot_[x->variable] && !in_pivot_[y->variable]) {

@@ -27,7 +27,9 @@ class LinearSystem {
   enum class Outcome { kIndependent, kRedundant, kInconsistent };
 
   /// A system of `variable_count` unknowns and no rows. Approximate values with magnitude at
-  /// most `tolerance` (after each row is scaled so that its largest coefficient is 1) are zero.
+  /// most `tolerance` relative to the terms summed into them are zero. Each row is scaled so
+  /// that its largest exact coefficient is 1 (its largest, when none is exact), which keeps
+  /// exact coefficients exact beside approximate ones.
   LinearSystem(std::size_t variable_count, double tolerance);
 
   std::size_t variable_count() const { return parent_.size(); }

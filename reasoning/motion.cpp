@@ -16,6 +16,7 @@
 #include "kernel/geometry/line_geometry.h"
 #include "kernel/support/compressed_rows.h"
 #include "kernel/support/enum_names.h"
+#include "kernel/support/number_format.h"
 #include "reasoning/kinematic_model.h"
 #include "reasoning/linear_system.h"
 
@@ -465,6 +466,74 @@ std::string FreedomWords(const Assembly& assembly, const std::vector<Pair>& pair
   return "";
 }
 
+// Cylindrical fits placed as a lead screw in its nut with the thread left out of the file: in
+// every undriven motion the shaft's body turns about the fit's axis without sliding along it,
+// and the bore's body slides along it without turning. A screw pair there would tie the slide
+// to the turn by its lead, which the file does not give, so the mobility counts the two apart.
+// The shaft must be longer than the bore, for the nut to travel on it, and the slide must stay
+// free while the turn is held (no thread or rack ties them already). `structural`: the
+// undriven system; `twists`: per body, the (normalised) twists relative to the ground of its
+// basis motions. One warning per pair of bodies, on its first fit in name order.
+std::vector<Diagnostic> FindUnthreadedNuts(
+    const Assembly& assembly, const std::vector<Pair>& pairs, const KinematicModel& model,
+    const LinearSystem& structural,
+    const std::vector<std::vector<Eigen::Matrix<double, 6, 1>>>& twists) {
+  // Whether some motion of `body` turns it about the line (or moves the line along itself):
+  // the twist's angular rate about it (or the velocity of a point on it along it).
+  const auto moves = [&](std::size_t body, const AxisSegment& line, bool turn) {
+    return std::any_of(twists[body].begin(), twists[body].end(), [&](const auto& twist) {
+      const Eigen::Vector3d omega = twist.template head<3>();
+      const Eigen::Vector3d v = twist.template tail<3>() + kTwoPi * omega.cross(line.origin);
+      return std::abs((turn ? omega : v).dot(line.direction)) > kTolerance;
+    });
+  };
+  std::map<std::pair<std::size_t, std::size_t>, std::pair<FeatureRef, FeatureRef>> nuts;
+  for (const Pair& pair : pairs) {
+    if (pair.type != PairType::kCylindrical || pair.source != PairSource::kRecognised) continue;
+    const bool a_is_shaft = assembly.feature(pair.a).kind == FeatureKind::kShaft;
+    const FeatureRef shaft = a_is_shaft ? pair.a : pair.b, bore = a_is_shaft ? pair.b : pair.a;
+    if (assembly.feature(shaft).kind != FeatureKind::kShaft ||
+        assembly.feature(bore).kind != FeatureKind::kHole ||
+        assembly.feature(shaft).length <= assembly.feature(bore).length) {
+      continue;
+    }
+    const std::size_t screw = model.body_of_part(shaft.part), nut = model.body_of_part(bore.part);
+    const AxisSegment& line = model.WorldAxis(shaft);
+    if (screw == nut || !moves(screw, line, true) || moves(screw, line, false) ||
+        !moves(nut, line, false) || moves(nut, line, true)) {
+      continue;
+    }
+    LinearSystem turn_held = structural;
+    turn_held.AddRow(model.Angular(screw, model.ground(), line.direction));
+    if (turn_held.AddRow(model.Linear(nut, model.ground(), line.origin, line.direction)) !=
+        LinearSystem::Outcome::kIndependent) {
+      continue;
+    }
+    const auto [it, added] = nuts.try_emplace({screw, nut}, shaft, bore);
+    if (!added && assembly.FeatureNameRank(bore) < assembly.FeatureNameRank(it->second.second)) {
+      it->second = {shaft, bore};
+    }
+  }
+  std::vector<Diagnostic> found;
+  for (const auto& entry : nuts) {
+    const auto& [shaft, bore] = entry.second;
+    found.push_back(
+        {Severity::kWarning,
+         "unthreaded_nut",
+         fmt::format(
+             "{} ({} mm) rides on {}, which turns in place while {} slides along it without "
+             "turning: a lead screw in its nut, with the thread not modelled? The turn and the "
+             "slide are counted as two motions; the override {{\"pair\": [\"{}\", \"{}\"], "
+             "\"type\": \"screw\", \"lead\": L}}, L the length one turn advances, couples them",
+             assembly.FeatureName(bore), FormatNumber(assembly.feature(bore).diameter),
+             assembly.FeatureName(shaft), assembly.PartId(bore.part), assembly.FeatureName(shaft),
+             assembly.FeatureName(bore)),
+         {std::string(assembly.PartId(shaft.part)), std::string(assembly.PartId(bore.part))},
+         {assembly.FeatureName(shaft), assembly.FeatureName(bore)}});
+  }
+  return found;
+}
+
 }  // namespace
 
 std::string_view ToString(MotionKind kind) { return NameOf(kMotionKindNames, kind); }
@@ -604,6 +673,10 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     constexpr int kFew = 12;
     body_freedoms[b] = n <= kFew ? rank(Eigen::Matrix<double, Eigen::Dynamic, 6, 0, kFew, 6>(n, 6))
                                  : rank(Eigen::MatrixXd(n, 6));
+  }
+  for (Diagnostic& d :
+       FindUnthreadedNuts(assembly, pairs, model, motion_model.structural(), body_twists)) {
+    result.diagnostics.push_back(std::move(d));
   }
   for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
     mobility.part_freedoms.push_back(body_freedoms[model.body_of_part(p)]);

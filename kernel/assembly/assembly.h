@@ -72,6 +72,9 @@ struct PairOverride {
   std::optional<PairType> type;
   /// Not written in the file: an axle of the frame ImplyGearFrame adds.
   bool implied_frame = false;
+  /// A screw pair's lead: mm one feature advances along the axis per revolution relative to
+  /// the other, positive for a right-hand thread. Empty: the thread feature's own.
+  std::optional<double> lead = std::nullopt;
 };
 
 /// A ratio as written in an expectation: exact `numerator/denominator` (reduced, positive

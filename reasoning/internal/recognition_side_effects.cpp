@@ -31,6 +31,7 @@ void Recognizer::ApplyOverrides() {
     }
     AddPair(*o.type, *a, *b);
     pairs_.back().source = o.implied_frame ? PairSource::kImpliedFrame : PairSource::kOverride;
+    if (o.lead) pairs_.back().travel_per_revolution = *o.lead;
   }
 }
 

@@ -227,6 +227,31 @@ TEST_F(AssemblyReaderTest, ReadsDriversAdjustmentsGoalsStepsOverridesExpectation
   EXPECT_EQ(e[9].diagnostic, "near_miss");
 }
 
+// A lead screw whose thread the file leaves out is coupled to its nut by a screw override
+// with the lead, in the file's length units and signed by hand.
+TEST_F(AssemblyReaderTest, ReadsAScrewOverridesLeadAndRejectsOneWithoutIt) {
+  const std::string parts =
+      R"({"mechanist": 1, "units": {"length": "cm"}, "parts": [
+      {"id": "a", "mesh": "meshes/cube.obj", "features": [
+        {"id": "h", "kind": "hole", "origin": [0,0,0], "axis": [0,0,1], "diameter": 1, "length": 1}]},
+      {"id": "b", "mesh": "meshes/cube.obj", "features": [
+        {"id": "s", "kind": "shaft", "origin": [0,0,0], "axis": [0,0,1], "diameter": 1, "length": 3},
+        {"id": "t", "kind": "thread", "origin": [0,0,0], "axis": [0,0,1], "diameter": 1, "pitch": 0.1, "length": 3}]}], )";
+  const Assembly a = Parse(parts + R"("overrides": [
+      {"pair": ["b/s", "a/h"], "type": "screw", "lead": -0.8},
+      {"pair": ["b/t", "a/h"], "type": "screw"}]})");
+  ASSERT_EQ(a.overrides().size(), 2u);
+  EXPECT_EQ(*a.overrides()[0].type, PairType::kScrew);
+  EXPECT_DOUBLE_EQ(*a.overrides()[0].lead, -8.0);   // mm, a left-hand thread
+  EXPECT_FALSE(a.overrides()[1].lead.has_value());  // the thread's own
+  ExpectError(parts + R"("overrides": [{"pair": ["b/s", "a/h"], "type": "screw"}]})",
+              "/overrides/0", "expected \"lead\"");
+  ExpectError(parts + R"("overrides": [{"pair": ["b/s", "a/h"], "type": "fixed", "lead": 1}]})",
+              "/overrides/0/lead", "only with type \"screw\", found type \"fixed\"");
+  ExpectError(parts + R"("overrides": [{"pair": ["b/s", "a/h"], "type": "screw", "lead": 0}]})",
+              "/overrides/0/lead", "nonzero");
+}
+
 TEST_F(AssemblyReaderTest, SharesOneMeshBetweenInstances) {
   const Assembly a = Parse(R"({"mechanist": 1, "parts": [
     {"id": "a", "mesh": "meshes/cube.obj"}, {"id": "b", "mesh": "meshes/../meshes/cube.obj"}]})");

@@ -7,12 +7,14 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "io/load_assembly.h"
 #include "reasoning/analysis.h"
+#include "reasoning/expectation_check.h"
 
 namespace mechanist {
 namespace {
@@ -80,13 +82,15 @@ std::vector<Expected> Cases() {
       // spacers were idle spins). 19, where the truth has 1 (5 with the wheels' spins): the push
       // rod
       // floats in its load cell's 12 mm hole (6) with the probe on its end (3), and the lead
-      // screw turns apart from the carriage (its thread is not modelled). Eight of them are
+      // screw turns apart from the carriage (its thread is not modelled: the unthreaded_nut
+      // warning names the nut's bore and the override that couples them). Eight of them are
       // idle spins: the four wheels, the two washers, and the two bearings of the lead screw
       // in their seats. No implied pin: each wheel's bore beside its one-solid bearing's is
       // the bearing's business (eight such pins before).
       {"lead_screw_linear_actuator_onshape/Assembly.step",
        "Assembly_1._C_V",
-       {"axes_not_collinear: Assembly_1.p____V", "free_motion: Assembly_1.__V_4"},
+       {"axes_not_collinear: Assembly_1.p____V", "free_motion: Assembly_1.__V_4",
+        "unthreaded_nut: Assembly_1.p____V"},
        0,
        16,
        2,
@@ -212,6 +216,34 @@ TEST_P(RealExports, GroundAndWarningsAreTheOnesADesignerActsOn) {
   EXPECT_EQ(std::count_if(an.pairs.begin(), an.pairs.end(),
                           [](const Pair& p) { return p.source == PairSource::kImpliedPin; }),
             e.implied_pins);
+}
+
+// Truth: the carriage advances 8 mm per turn of the lead screw (the firmware's lead), the
+// thread is not in the file. The override the warning proposes, written next to an `import`
+// of the unchanged file, couples them with that ratio exactly, and the two motions become one.
+TEST(RealExports, TheLeadScrewsOverrideCouplesItsCarriageByTheLeadExactly) {
+  const std::filesystem::path step = std::filesystem::path(MECHANIST_SHARED_DATA) /
+                                     "real/lead_screw_linear_actuator_onshape/Assembly.step";
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "mechanist_real_exports_lead_screw";
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path file = dir / "coupled.json";
+  std::ofstream(file) << R"({"mechanist": 1, "import": ")"
+                      << std::filesystem::absolute(step).string() << R"(",
+    "overrides": [{"pair": ["Assembly_1.p____V/shaft_1", "Assembly_1.P___V/hole_3"],
+                   "type": "screw", "lead": 8}],
+    "drivers": [{"id": "motor", "part": "Assembly_1.p____V", "feature": "shaft_1"}],
+    "expect": [{"part": "Assembly_1.P___V", "feature": "hole_3", "ratio": "-8"},
+               {"part": "Assembly_1.0E_V", "feature": "face_11", "ratio": "-8"},
+               {"mobility": 18}]})";
+  const Assembly a = LoadAssembly(file);
+  const Analysis an = Analyze(a);
+  std::filesystem::remove_all(dir);
+  for (const ExpectationResult& r : CheckExpectations(a, an)) {
+    EXPECT_TRUE(r.passed) << r.what << ": " << r.detail;
+  }
+  EXPECT_FALSE(std::any_of(an.diagnostics.begin(), an.diagnostics.end(),
+                           [](const Diagnostic& d) { return d.code == "unthreaded_nut"; }));
 }
 
 TEST(RealExports, TheRobotHandsThumbTurnsOnItsPivotScrew) {

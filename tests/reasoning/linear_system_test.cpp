@@ -114,5 +114,18 @@ TEST(LinearSystem, ApproximateCoefficientsStayApproximate) {
   EXPECT_TRUE(x[0].is_exact());
 }
 
+// A row scaled by its approximate coefficient would make its exact ones approximate: a lead
+// screw's row (carriage slide = 8 x screw turn) beside a lever arm the other rows hold still.
+TEST(LinearSystem, AnApproximateCoefficientLeavesTheExactOnesOfItsRowExact) {
+  LinearSystem s(3, 1e-9);
+  s.AddRow({{0, Rational(1)}});  // the lever's turn is held
+  s.AddRow({{0, ExactReal::Approximate(-135.0413602)}, {1, Rational(1)}, {2, Rational(-8)}});
+  s.AddRow({{2, Rational(1)}}, Rational(1));  // the screw turns once
+  const auto x = s.Solve();
+  ASSERT_TRUE(x[1].is_exact());
+  EXPECT_EQ(*x[1].exact(), Rational(8));
+  EXPECT_EQ(*x[0].exact(), Rational(0));
+}
+
 }  // namespace
 }  // namespace mechanist

@@ -504,6 +504,88 @@ TEST(Motion, TwoStartLeadScrewAdvancesItsNutByTheLead) {
   EXPECT_EQ(an.motion.mobility.dof, 1);
 }
 
+// A lead screw turning in the frame's bearing through a nut that a key holds from turning,
+// the thread left out: the screw's turn and the nut's slide are two motions, and the warning
+// names the fit. `nut_keyed`: the nut's key slides in the frame's way; `threads`: a loose thread
+// and its nut's tapped hole on the same axis; `lead`: a screw override on the plain fit.
+Assembly LeadScrew(bool nut_keyed, bool threads, std::optional<double> lead) {
+  Builder b;
+  b.Part(MakePart("screw", {MakeFeature("shaft", K::kShaft, {0, 0, 0}, kZ,
+                                        [&](Feature& s) { s.diameter = 8, s.length = 100; })}));
+  std::vector<Feature> nut = {MakeFeature("bore", K::kHole, {0, 0, 50}, kZ, [](Feature& h) {
+    h.diameter = 8, h.length = 10, h.through = true;
+  })};
+  if (nut_keyed) {
+    nut.push_back(MakeFeature("key", K::kKey, {10, 0, 50}, kZ, [](Feature& k) {
+      k.width = 3, k.length = 10, k.normal = {1, 0, 0};
+    }));
+  }
+  if (threads) {
+    nut.push_back(MakeFeature("thread", K::kTappedHole, {0, 0, 50}, kZ, [](Feature& t) {
+      t.diameter = 8, t.pitch = 2, t.length = 10, t.through = true;
+    }));
+  }
+  b.Part(MakePart("nut", nut));
+  b.FrameFeature(MakeFeature("bearing", K::kHole, {0, 0, 0}, kZ, [](Feature& h) {
+    h.diameter = 8, h.length = 10, h.through = true, h.retained = true;
+  }));
+  b.FrameFeature(MakeFeature("way", K::kSlot, {10, 0, 0}, kZ, [](Feature& s) {
+    s.width = 3, s.length = 100, s.depth = 2, s.normal = {-1, 0, 0};
+  }));
+  Assembly base = b.Build();
+  AssemblySpec spec;
+  spec.parts = base.parts();
+  if (threads) {
+    spec.parts[1].features.push_back(
+        MakeFeature("thread", K::kThread, {0, 0, 0}, kZ, [](Feature& t) {
+          t.diameter = 8, t.pitch = 2, t.length = 100, t.fastening = Fastening::kLoose;
+        }));
+  }
+  const FeatureRef shaft{1, 0}, bore{2, 0};
+  if (nut_keyed)
+    spec.overrides.push_back({{FeatureRef{2, 1}, FeatureRef{0, 1}}, PairType::kPrismatic});
+  if (lead) {
+    PairOverride o{{shaft, bore}, PairType::kScrew};
+    o.lead = *lead;
+    spec.overrides.push_back(o);
+  }
+  Driver d;
+  d.id = "motor";
+  d.feature = shaft;
+  d.rate = 1;
+  spec.drivers = {d};
+  return Assembly(std::move(spec));
+}
+
+TEST(Motion, AScrewTurningInPlaceThroughANutThatSlidesIsAnUnthreadedNut) {
+  const Assembly plain = LeadScrew(true, false, std::nullopt);
+  const Analysis an = Analyze(plain);
+  const auto found = std::find_if(an.diagnostics.begin(), an.diagnostics.end(),
+                                  [](const Diagnostic& d) { return d.code == "unthreaded_nut"; });
+  ASSERT_NE(found, an.diagnostics.end());
+  EXPECT_EQ(found->severity, Severity::kWarning);
+  EXPECT_EQ(found->features, (std::vector<std::string>{"screw/shaft", "nut/bore"}));
+  EXPECT_NE(found->message.find(R"({"pair": ["screw/shaft", "nut/bore"], "type": "screw")"),
+            std::string::npos)
+      << found->message;
+  EXPECT_EQ(an.motion.mobility.dof, 2);
+  EXPECT_EQ(Exact(Rate(plain, an, "nut/bore", false)), "0");  // the motor leaves it still
+
+  // The override's lead couples them, exactly: a right-hand 8 mm lead moves the screw 8 mm
+  // into the nut per turn, so the nut comes 8 mm back along the common axis.
+  const Assembly coupled = LeadScrew(true, false, 8.0);
+  const Analysis with_lead = Analyze(coupled);
+  EXPECT_FALSE(HasCode(with_lead, "unthreaded_nut"));
+  EXPECT_EQ(with_lead.motion.mobility.dof, 1);
+  EXPECT_EQ(Exact(Rate(coupled, with_lead, "nut/bore", false)), "-8");
+
+  // A modelled thread already ties them; a nut that may turn is no nut held on its way.
+  const Analysis threaded = Analyze(LeadScrew(true, true, std::nullopt));
+  EXPECT_FALSE(HasCode(threaded, "unthreaded_nut"));
+  EXPECT_EQ(threaded.motion.mobility.dof, 1);
+  EXPECT_FALSE(HasCode(Analyze(LeadScrew(false, false, std::nullopt)), "unthreaded_nut"));
+}
+
 TEST(Motion, ScaleAndNamesChangeNoRatio) {
   auto train = [](double s, const std::string& prefix) {
     return Builder()
