@@ -353,7 +353,8 @@ class Reader {
 
   void ReadInference(const Json& v, const std::string& pointer) {
     ExpectObject(v, pointer);
-    CheckKeys(v, pointer, {"implied_pins", "implied_frame", "seated_parts", "embedded_parts"});
+    CheckKeys(v, pointer,
+              {"implied_pins", "implied_frame", "seated_parts", "embedded_parts", "centred_parts"});
     if (const Json* pins = Find(v, "implied_pins")) {
       spec_.inference.implied_pins = Bool(*pins, pointer + "/implied_pins");
     }
@@ -365,6 +366,9 @@ class Reader {
     }
     if (const Json* embedded = Find(v, "embedded_parts")) {
       spec_.inference.embedded_parts = Bool(*embedded, pointer + "/embedded_parts");
+    }
+    if (const Json* centred = Find(v, "centred_parts")) {
+      spec_.inference.centred_parts = Bool(*centred, pointer + "/centred_parts");
     }
   }
 

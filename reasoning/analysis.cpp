@@ -2,9 +2,12 @@
 
 #include <iterator>
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "kernel/assembly/assembly_check.h"
 #include "reasoning/adjustment.h"
+#include "reasoning/centred_parts.h"
 #include "reasoning/fastener_check.h"
 #include "reasoning/pair_recognition.h"
 #include "reasoning/seated_parts.h"
@@ -24,17 +27,32 @@ Analysis Analyze(const Assembly& assembly, const std::vector<Pair>& extra) {
   analysis.motion = AnalyzeMotion(assembly, analysis.pairs, analysis.graph, recognition.axes_W);
   // Slides that the parts around stop within a play are no motion: the pairs change, and the
   // subassemblies and motion with them.
-  Seating seating = SeatParts(assembly, analysis.motion, analysis.subassemblies,
-                              analysis.subassembly_of, &analysis.pairs);
-  if (seating.changed) {
+  // Then parts that float, centred on another's axis, are held there.
+  auto regroup = [&](std::vector<Diagnostic>* found) {
     analysis.graph = std::make_shared<const PairGraph>(assembly, analysis.pairs);
     analysis.subassemblies = analysis.graph->Subassemblies();
     analysis.subassembly_of = analysis.graph->SubassemblyOf();
+    recognition.diagnostics.insert(recognition.diagnostics.end(),
+                                   std::make_move_iterator(found->begin()),
+                                   std::make_move_iterator(found->end()));
+  };
+  Seating seating = SeatParts(assembly, analysis.motion, analysis.subassemblies,
+                              analysis.subassembly_of, &analysis.pairs);
+  if (seating.changed) regroup(&seating.diagnostics);
+  Centring centring = CentreFloatingParts(assembly, analysis.subassemblies, analysis.subassembly_of,
+                                          &analysis.pairs);
+  if (centring.changed) {
+    // The parts it fixed are in a pair now.
+    std::erase_if(recognition.diagnostics,
+                  [](const Diagnostic& d) { return d.code == "part_unconnected"; });
+    if (std::optional<Diagnostic> unconnected = UnconnectedParts(assembly, analysis.pairs)) {
+      recognition.diagnostics.push_back(std::move(*unconnected));
+    }
+    regroup(&centring.diagnostics);
+  }
+  if (seating.changed || centring.changed) {
     analysis.motion =
         AnalyzeMotion(assembly, analysis.pairs, analysis.graph, std::move(recognition.axes_W));
-    recognition.diagnostics.insert(recognition.diagnostics.end(),
-                                   std::make_move_iterator(seating.diagnostics.begin()),
-                                   std::make_move_iterator(seating.diagnostics.end()));
   }
   analysis.diagnostics = CheckAssembly(assembly);
   std::vector<Diagnostic> fasteners = CheckFasteners(assembly, analysis.pairs);

@@ -9,7 +9,7 @@ static_assert(sizeof(Pair) <= 88, "Pair has grown: the analysis reads every pair
 
 namespace {
 
-constexpr EnumNames<PairSource, 15> kSources = {{
+constexpr EnumNames<PairSource, 16> kSources = {{
     {PairSource::kRecognised, "recognised"},
     {PairSource::kOverride, "override"},
     {PairSource::kClamp, "clamp"},
@@ -25,6 +25,7 @@ constexpr EnumNames<PairSource, 15> kSources = {{
     {PairSource::kSetscrewHole, "setscrew_hole"},
     {PairSource::kEmbedded, "embedded"},
     {PairSource::kBearingShaft, "bearing_shaft"},
+    {PairSource::kCentred, "centred"},
 }};
 
 constexpr EnumNames<PairFastening, 6> kFastenings = {{

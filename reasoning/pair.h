@@ -28,6 +28,7 @@ enum class PairSource : std::uint8_t {
   kSetscrewHole,  ///< a hub with an empty radial hole into its bore (a setscrew not modelled)
   kEmbedded,      ///< a part in no other pair, sunk into another part's solid
   kBearingShaft,  ///< a hub held by nothing but a shaft that turns in bearings
+  kCentred,       ///< a floating part centred on a wider hole's axis (CentreFloatingParts)
 };
 
 /// How a pair is held, where that matters to the user.

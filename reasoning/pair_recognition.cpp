@@ -1,6 +1,10 @@
 #include "reasoning/pair_recognition.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>  // fmt::join
+
+#include <algorithm>
+#include <string>
 
 #include "kernel/collision/grid_broad_phase.h"
 #include "reasoning/internal/recognizer.h"
@@ -290,6 +294,25 @@ Recognition RecognizePairs(const Assembly& assembly, const AssemblyState& state)
 
 Recognition RecognizePairs(const Assembly& assembly) {
   return Recognize(assembly, assembly.FilePoses());
+}
+
+std::optional<Diagnostic> UnconnectedParts(const Assembly& assembly,
+                                           const std::vector<Pair>& pairs) {
+  std::vector<bool> connected(assembly.parts().size(), false);
+  for (const Pair& p : pairs) connected[p.a.part] = connected[p.b.part] = true;
+  std::vector<std::string> parts;
+  for (std::size_t i = 0; i < connected.size(); ++i) {
+    if (connected[i] || assembly.IsGround(i) || assembly.IsCompliant(i)) continue;
+    parts.emplace_back(assembly.PartId(i));
+  }
+  if (parts.empty()) return std::nullopt;
+  std::sort(parts.begin(), parts.end());
+  const bool one = parts.size() == 1;
+  std::string message =
+      fmt::format("{} '{}' {} in no pair: nothing holds or guides {}", one ? "part" : "parts",
+                  fmt::join(parts, "', '"), one ? "is" : "are", one ? "it" : "them");
+  return Diagnostic{
+      Severity::kWarning, "part_unconnected", std::move(message), std::move(parts), {}};
 }
 
 }  // namespace mechanist

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "kernel/assembly/assembly.h"
@@ -45,5 +46,10 @@ Recognition RecognizePairs(const Assembly& assembly, const AssemblyState& state)
 
 /// RecognizePairs at the file's poses, read from the assembly without making a state.
 Recognition RecognizePairs(const Assembly& assembly);
+
+/// The warning `part_unconnected` naming every non-ground, rigid part in none of `pairs` (one
+/// finding for all, names sorted), or nothing when every part is in one.
+std::optional<Diagnostic> UnconnectedParts(const Assembly& assembly,
+                                           const std::vector<Pair>& pairs);
 
 }  // namespace mechanist

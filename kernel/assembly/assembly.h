@@ -115,6 +115,9 @@ struct Inference {
   bool seated_parts = true;
   /// A part in no pair that is sunk into another part is fixed to it (embedded parts).
   bool embedded_parts = true;
+  /// A floating part whose shaft or hole stands on a wider hole's or thinner shaft's axis is
+  /// fixed there (CentreFloatingParts).
+  bool centred_parts = true;
 };
 
 /// Everything an assembly file describes, as plain data; Assembly checks and indexes it.

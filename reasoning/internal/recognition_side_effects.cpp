@@ -433,21 +433,9 @@ void Recognizer::ApplySetscrews(const std::vector<Screwed>& screwed) {
 }
 
 void Recognizer::ReportUnconnected() {
-  std::vector<bool> connected(assembly_.parts().size(), false);
-  for (const Pair& p : pairs_) connected[p.a.part] = connected[p.b.part] = true;
-  std::vector<std::string> parts;
-  for (std::size_t i = 0; i < connected.size(); ++i) {
-    if (connected[i] || assembly_.IsGround(i) || assembly_.IsCompliant(i)) continue;
-    parts.emplace_back(assembly_.PartId(i));
+  if (std::optional<Diagnostic> unconnected = UnconnectedParts(assembly_, pairs_)) {
+    diagnostics_.push_back(std::move(*unconnected));
   }
-  if (parts.empty()) return;
-  std::sort(parts.begin(), parts.end());
-  const bool one = parts.size() == 1;
-  std::string message =
-      fmt::format("{} '{}' {} in no pair: nothing holds or guides {}", one ? "part" : "parts",
-                  fmt::join(parts, "', '"), one ? "is" : "are", one ? "it" : "them");
-  diagnostics_.push_back(
-      {Severity::kWarning, "part_unconnected", std::move(message), std::move(parts), {}});
 }
 
 }  // namespace mechanist::internal

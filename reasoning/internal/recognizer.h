@@ -366,6 +366,7 @@ class Recognizer {
   static_assert(static_cast<int>(PairSource::kSeated) < (1 << kSourceBits));
   static_assert(static_cast<int>(PairSource::kSetscrewHole) < (1 << kSourceBits));
   static_assert(static_cast<int>(PairSource::kBearingShaft) < (1 << kSourceBits));
+  static_assert(static_cast<int>(PairSource::kCentred) < (1 << kSourceBits));
 
   /// Pairs order by feature names, then source, then as found, not by indices, so that
   /// reordering the file changes nothing: the name ranks and the source packed in one key.

@@ -76,15 +76,16 @@ TEST_F(AssemblyReaderTest, ReadsMinimalFileWithDefaults) {
 TEST_F(AssemblyReaderTest, ReadsTheInferSwitchesEachOnWhenNotGiven) {
   const Inference given =
       Parse(OnePart("", R"("infer": {"implied_pins": false, "seated_parts": false, )"
-                        R"("embedded_parts": false}, )"))
+                        R"("embedded_parts": false, "centred_parts": false}, )"))
           .inference();
   EXPECT_FALSE(given.implied_pins);
   EXPECT_TRUE(given.implied_frame);
   EXPECT_FALSE(given.seated_parts);
   EXPECT_FALSE(given.embedded_parts);
+  EXPECT_FALSE(given.centred_parts);
   const Inference defaults = Parse(OnePart("")).inference();
   EXPECT_TRUE(defaults.implied_pins && defaults.implied_frame && defaults.seated_parts &&
-              defaults.embedded_parts);
+              defaults.embedded_parts && defaults.centred_parts);
   ExpectError(OnePart("", R"("infer": {"seated_parts": 0}, )"), "/infer/seated_parts",
               "expected true or false");
 }

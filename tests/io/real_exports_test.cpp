@@ -45,6 +45,8 @@ struct Expected {
   int bearing_shafts = 0;
   // Revolute pairs on pins the file leaves out (implied_pin).
   int implied_pins = 0;
+  // Floating parts fixed where they stand centred on another part's axis (centred).
+  int centred = 0;
 };
 
 std::vector<Expected> Cases() {
@@ -67,8 +69,8 @@ std::vector<Expected> Cases() {
       // The print-in-place hinge: its pin stubs, 0.3 mm clear of the bores, are the lid's
       // only guide (loose fits), so no warning.
       {"hinge_clamshell_build123d/clamshell_full.step", "COMPOUND_solid2", {}, 0, 0, 6},
-      // A near miss a designer checks (a shaft 0.07 mm off its hole's axis), and a part that
-      // nothing holds to the frame. Fourteen M5 screws end in nuts or tap-drilled holes, eight
+      // A near miss a designer checks (a shaft 0.07 mm off its hole's axis), and the lead
+      // screw's missing thread. Fourteen M5 screws end in nuts or tap-drilled holes, eight
       // of them two at each of the channel's four core holes, one from each end plate. The
       // carriage plate stands wedged against the load cell (seated). The lead screw's two collars
       // have empty setscrew holes (M5 tap drill, 4.2
@@ -79,26 +81,31 @@ std::vector<Expected> Cases() {
       // on it (loose fits). The nut block's two M5 screws come out through their captive
       // nuts' tap-drilled holes: screwed there, they clamp the block and its spacers to the
       // carriage plate (before, seating held them along their holes within 0.14 mm, and the
-      // spacers were idle spins). 19, where the truth has 1 (5 with the wheels' spins): the push
-      // rod
-      // floats in its load cell's 12 mm hole (6) with the probe on its end (3), and the lead
-      // screw turns apart from the carriage (its thread is not modelled: the unthreaded_nut
-      // warning names the nut's bore and the override that couples them). Eight of them are
-      // idle spins: the four wheels, the two washers, and the two bearings of the lead screw
-      // in their seats. No implied pin: each wheel's bore beside its one-solid bearing's is
-      // the bearing's business (eight such pins before).
+      // spacers were idle spins). The push rod, touching nothing, stands centred in its load
+      // cell's 12 mm hole (8 mm in 12): fixed there, and the probe, resting on the rod's end
+      // with the rod centred in its own 12 mm hole, to the rod (centred; before, the rod
+      // floated, 6, and the probe turned and slid on its end, 3). 10, where the truth has 1
+      // (5 with the wheels' spins): the lead screw turns apart from the carriage (its thread
+      // is not modelled: the unthreaded_nut warning names the nut's bore and the override
+      // that couples them). Eight of them are idle spins: the four wheels, the two washers,
+      // and the two bearings of the lead screw in their seats. No implied pin: each wheel's
+      // bore beside its one-solid bearing's is the bearing's business (eight such pins
+      // before).
       {"lead_screw_linear_actuator_onshape/Assembly.step",
        "Assembly_1._C_V",
-       {"axes_not_collinear: Assembly_1.p____V", "free_motion: Assembly_1.__V_4",
-        "unthreaded_nut: Assembly_1.p____V"},
+       {"axes_not_collinear: Assembly_1.p____V", "unthreaded_nut: Assembly_1.p____V"},
        0,
        16,
        2,
        10,
        0,
        1,
-       19,
+       10,
        8,
+       2,
+       0,
+       0,
+       0,
        2},
       // Every finger hinge is found (the palm's fold included), so no warning. The thumb's M4
       // pivot screw ends in its nut's hole (drawn at the minor diameter). 22 where the truth
@@ -216,6 +223,9 @@ TEST_P(RealExports, GroundAndWarningsAreTheOnesADesignerActsOn) {
   EXPECT_EQ(std::count_if(an.pairs.begin(), an.pairs.end(),
                           [](const Pair& p) { return p.source == PairSource::kImpliedPin; }),
             e.implied_pins);
+  EXPECT_EQ(std::count_if(an.pairs.begin(), an.pairs.end(),
+                          [](const Pair& p) { return p.source == PairSource::kCentred; }),
+            e.centred);
 }
 
 // Truth: the carriage advances 8 mm per turn of the lead screw (the firmware's lead), the
@@ -235,7 +245,7 @@ TEST(RealExports, TheLeadScrewsOverrideCouplesItsCarriageByTheLeadExactly) {
     "drivers": [{"id": "motor", "part": "Assembly_1.p____V", "feature": "shaft_1"}],
     "expect": [{"part": "Assembly_1.P___V", "feature": "hole_3", "ratio": "-8"},
                {"part": "Assembly_1.0E_V", "feature": "face_11", "ratio": "-8"},
-               {"mobility": 18}]})";
+               {"mobility": 9}]})";
   const Assembly a = LoadAssembly(file);
   const Analysis an = Analyze(a);
   std::filesystem::remove_all(dir);
