@@ -18,6 +18,20 @@ std::string Vec(const Eigen::Vector3d& v) {
   return fmt::format("({}, {}, {})", FormatNumber(v.x()), FormatNumber(v.y()), FormatNumber(v.z()));
 }
 
+// ", pose: position (x, y, z) mm, rotation A deg about (x, y, z)": a part's pose in the world,
+// what its features are written against (nothing for the identity). A rotation that rounds to
+// 0 degrees (a placement solved to rounding error) is left out: its axis would be noise.
+std::string Pose(const RigidTransform& X_WP) {
+  const Eigen::AngleAxisd rotation(X_WP.rotation());
+  const bool turned = FormatNumber(rotation.angle() * kDegPerRad) != "0";
+  if (!turned && X_WP.translation().isZero(0.0)) return "";
+  return fmt::format(
+      ", pose: position {} mm{}", Vec(X_WP.translation()),
+      turned ? fmt::format(", rotation {} deg about {}",
+                           FormatNumber(rotation.angle() * kDegPerRad), Vec(rotation.axis()))
+             : "");
+}
+
 std::string Parameters(const Feature& f) {
   std::string s;
   // One parameter, after a space.
@@ -138,7 +152,7 @@ void WriteInfo(const Assembly& assembly, std::ostream& out) {
       out << "no mesh (features only)";
     }
     if (!part.group.empty()) out << ", group " << part.group;
-    out << "\n";
+    out << Pose(state.X_WP[i]) << "\n";
     for (const Feature& f : part.features)
       out << "    " << DescribeFeature(f, state.X_WP[i]) << "\n";
   }

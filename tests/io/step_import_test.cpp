@@ -20,6 +20,7 @@
 
 #include "cycloid_outline.h"
 #include "io/feature_report.h"
+#include "io/info_report.h"
 #include "io/input_error.h"
 #include "io/load_assembly.h"
 #include "io/occt/step_fixtures.h"
@@ -27,6 +28,7 @@
 #include "kernel/features/part_library.h"
 #include "kernel/mesh/mesh_builder.h"
 #include "kernel/mesh/mesh_check.h"
+#include "kernel/support/number_format.h"
 #include "reasoning/analysis.h"
 
 namespace mechanist {
@@ -166,6 +168,42 @@ TEST(StepImport, AnImportingFileAddsGroundAndNamesBadImports) {
   } catch (const InputError& e) {
     EXPECT_EQ(e.pointer(), "/parts/0/place/into");
   }
+}
+
+TEST(StepImport, AFeatureAddedToAnImportedPartIsInItsOwnFrameWhichInfoPrints) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_step";
+  std::filesystem::create_directories(dir);
+  const std::string bolt = "AS1_PE_ASM.L_BRACKET_ASSEMBLY.NUT_BOLT_ASSEMBLY.BOLT";
+  const Assembly as1 =
+      LoadAssemblyText(R"({"mechanist": 1, "import": ")" + kAs1.string() + R"("})", dir / "h.json");
+  const RigidTransform X_WB = as1.part(*as1.FindPart(bolt)).X_WP;
+  ASSERT_FALSE(X_WB.rotation().isIdentity(1e-6));  // a placement that turns the bolt
+  // A hole wanted at p_W along d_W in the world, written in the bolt's frame as the README
+  // says: R^T (p_W - position).
+  const Eigen::Vector3d p_W(10, 20, 30), d_W = Eigen::Vector3d(1, 2, 2) / 3;
+  const Eigen::Vector3d p_B = X_WB.rotation().transpose() * (p_W - X_WB.translation());
+  const Eigen::Vector3d d_B = X_WB.rotation().transpose() * d_W;
+  const Assembly marked = LoadAssemblyText(
+      fmt::format(R"({{"mechanist": 1, "import": "{}", "parts": [{{"id": "{}", "features": [
+          {{"id": "marker", "kind": "hole", "origin": [{:.17g}, {:.17g}, {:.17g}],
+            "axis": [{:.17g}, {:.17g}, {:.17g}], "diameter": 3, "length": 2}}]}}]}})",
+                  kAs1.string(), bolt, p_B.x(), p_B.y(), p_B.z(), d_B.x(), d_B.y(), d_B.z()),
+      dir / "i.json");
+  const FeatureRef marker = *marked.FindFeature(bolt + "/marker");
+  const AxisSegment marker_W = marked.feature(marker).WorldAxis(marked.part(marker.part).X_WP);
+  EXPECT_LT((marker_W.origin - p_W).norm(), 1e-9);
+  EXPECT_LT((marker_W.direction - d_W).norm(), 1e-9);
+  std::ostringstream info;
+  WriteInfo(marked, info);
+  const Eigen::AngleAxisd turn(X_WB.rotation());
+  const std::string pose = fmt::format(
+      ", pose: position ({}, {}, {}) mm, rotation {} deg about",
+      FormatNumber(X_WB.translation().x()), FormatNumber(X_WB.translation().y()),
+      FormatNumber(X_WB.translation().z()), FormatNumber(turn.angle() * 180 / std::numbers::pi));
+  EXPECT_NE(info.str().find(pose), std::string::npos) << info.str();
+  EXPECT_NE(info.str().find("marker: hole at (10, 20, 30) axis (0.333333, 0.666667, 0.666667)"),
+            std::string::npos)
+      << info.str();
 }
 
 TEST(StepImport, OpenCascadesMessagesBecomeFindingsNeverOutput) {
