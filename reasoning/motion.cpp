@@ -8,8 +8,12 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <span>
 #include <stdexcept>
+#include <string>
+#include <tuple>
+#include <vector>
 
 #include "kernel/collision/collision_mesh_cache.h"
 #include "kernel/collision/rotational_symmetry.h"
@@ -593,6 +597,7 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   // their redundant constraints are said once per two parts, not once per face.
   struct Faces {
     int count = 0;
+    std::size_t a = 0, b = 0;  // the two parts
     std::vector<std::string> parts, features;
   };
   std::map<std::pair<std::size_t, std::size_t>, Faces> faces_of_parts;  // by part ranks
@@ -606,7 +611,11 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
       const std::size_t b = assembly.PartRank(pairs[pair].b.part);
       Faces& faces = faces_of_parts[std::minmax(a, b)];
       faces.count += count;
-      if (faces.parts.empty()) faces.parts = pair_parts(pair);
+      if (faces.parts.empty()) {
+        faces.parts = pair_parts(pair);
+        faces.a = pairs[pair].a.part;
+        faces.b = pairs[pair].b.part;
+      }
       for (std::string& f : pair_features(pair)) faces.features.push_back(std::move(f));
       continue;
     }
@@ -620,15 +629,53 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     result.diagnostics.push_back({Severity::kInfo, "redundant_constraints", std::move(message),
                                   pair_parts(pair), std::move(features)});
   }
+  // Alike findings of one part with several others (five servos each in a pocket of one
+  // forearm) are one: by part, number of contacts and of constraints, the largest groups first.
+  using FacesKey = std::tuple<std::size_t, std::size_t, int>;  // part rank, contacts, constraints
+  std::map<FacesKey, std::vector<Faces*>> faces_alike;
   for (auto& [ranks, faces] : faces_of_parts) {
     const std::size_t contacts = faces.features.size() / 2;
+    faces_alike[{ranks.first, contacts, faces.count}].push_back(&faces);
+    faces_alike[{ranks.second, contacts, faces.count}].push_back(&faces);
+  }
+  std::vector<std::pair<FacesKey, std::vector<Faces*>>> groups(faces_alike.begin(),
+                                                               faces_alike.end());
+  std::stable_sort(groups.begin(), groups.end(),
+                   [](const auto& x, const auto& y) { return x.second.size() > y.second.size(); });
+  std::set<const Faces*> said;
+  for (auto& [key, members] : groups) {
+    std::erase_if(members, [&](const Faces* f) { return said.count(f) > 0; });
+    if (members.empty()) continue;
+    const auto [rank, contacts, count] = key;
+    said.insert(members.begin(), members.end());
+    if (members.size() == 1) {
+      Faces& faces = *members.front();
+      std::string message = fmt::format(
+          "face contact{} of {} and {} ({}): {} of their constraints {} implied by the other "
+          "pairs (over-constrained: they must be made accurately)",
+          contacts > 1 ? "s" : "", faces.parts[0], faces.parts[1], contacts, faces.count,
+          faces.count == 1 ? "is" : "are");
+      result.diagnostics.push_back({Severity::kInfo, "redundant_constraints", std::move(message),
+                                    std::move(faces.parts), std::move(faces.features)});
+      continue;
+    }
+    std::vector<std::string> parts = {{}}, features;
+    for (Faces* faces : members) {
+      const bool a_shared = assembly.PartRank(faces->a) == rank;
+      parts.front() = assembly.PartId(a_shared ? faces->a : faces->b);
+      parts.emplace_back(assembly.PartId(a_shared ? faces->b : faces->a));
+      for (std::string& f : faces->features) features.push_back(std::move(f));
+    }
+    const std::string& shared = parts.front();
+    std::sort(parts.begin() + 1, parts.end());
     std::string message = fmt::format(
-        "face contact{} of {} and {} ({}): {} of their constraints {} implied by the other pairs "
-        "(over-constrained: they must be made accurately)",
-        contacts > 1 ? "s" : "", faces.parts[0], faces.parts[1], contacts, faces.count,
-        faces.count == 1 ? "is" : "are");
+        "face contact{} of {} with {} parts, {} ({} each): {} of each one's constraints {} "
+        "implied by the other pairs (over-constrained: they must be made accurately)",
+        contacts > 1 ? "s" : "", shared, members.size(),
+        Enumeration(std::vector<std::string>(parts.begin() + 1, parts.end())), contacts, count,
+        count == 1 ? "is" : "are");
     result.diagnostics.push_back({Severity::kInfo, "redundant_constraints", std::move(message),
-                                  std::move(faces.parts), std::move(faces.features)});
+                                  std::move(parts), std::move(features)});
   }
 
   // Allowable motion per part and jams, from the undriven motions.

@@ -263,6 +263,43 @@ TEST(Motion, RedundantFaceContactsAreSaidOncePerTwoParts) {
   EXPECT_EQ(findings, 1);
 }
 
+TEST(Motion, AlikeRedundantFaceContactsOfOnePartWithSeveralAreOneFinding) {
+  // Three blocks standing on the frame with three feet each say the same: one finding naming
+  // the three. A fourth block on two feet says something else, on its own.
+  const auto face = [](const std::string& id, double x, double y, Eigen::Vector3d normal) {
+    return MakeFeature(id, K::kFace, {x, y, 0}, normal, [](Feature& f) {
+      f.width = 4;
+      f.height = 4;
+    });
+  };
+  Builder b;
+  for (int block = 0; block < 4; ++block) {
+    const double y = 50.0 * block;
+    const int feet = block < 3 ? 3 : 2;
+    std::vector<Feature> features;
+    for (int k = 0; k < feet; ++k) {
+      const std::string n = std::to_string(block) + "_" + std::to_string(k);
+      b.FrameFeature(face("pad" + n, 10.0 * k, y, kZ));
+      features.push_back(face("foot" + n, 10.0 * k, y, -kZ));
+    }
+    b.Part(MakePart("block" + std::to_string(block), std::move(features)));
+  }
+  const Analysis an = Analyze(b.Build());
+  EXPECT_EQ(an.motion.mobility.redundant, 3 * 6 + 3);
+  std::vector<std::string> messages;
+  for (const Diagnostic& d : an.diagnostics) {
+    if (d.code == "redundant_constraints") messages.push_back(d.message);
+  }
+  ASSERT_EQ(messages.size(), 2u);
+  EXPECT_NE(messages[0].find("face contacts of frame with 3 parts, block0, block1 and block2 (2 "
+                             "each): 6 of each one's constraints are implied"),
+            std::string::npos)
+      << messages[0];
+  EXPECT_NE(messages[1].find("face contact of block3 and frame (1): 3 of their constraints"),
+            std::string::npos)
+      << messages[1];
+}
+
 TEST(Motion, GearTriangleJams) {
   const Assembly a = Builder()
                          .Gear("g1", 0, 0, {{20, 0}})
