@@ -3,8 +3,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
+#include <tuple>
+#include <utility>
 
+#include "kernel/collision/grid_broad_phase.h"
+#include "kernel/geometry/aabb.h"
 #include "kernel/geometry/line_geometry.h"
 #include "kernel/support/number_format.h"
 
@@ -45,32 +50,53 @@ Centring CentreFloatingParts(const Assembly& assembly,
   auto world_axis = [&](FeatureRef ref) {
     return assembly.feature(ref).WorldAxis(assembly.part(ref.part).X_WP);
   };
-  std::vector<FeatureRef> shafts, holes;
+  // Shafts and holes, with their axes' boxes grown by the length tolerance: collinear and
+  // engaged axes have overlapping boxes (a broad phase, for assemblies of many parts).
+  std::vector<FeatureRef> round;
+  std::vector<Aabb> boxes_W;
+  std::vector<std::uint32_t> bodies;
   for (std::size_t i = 0; i < assembly.parts().size(); ++i) {
     if (assembly.IsCompliant(i)) continue;
     const std::vector<Feature>& features = assembly.part(i).features;
     for (std::size_t k = 0; k < features.size(); ++k) {
-      if (features[k].kind == FeatureKind::kShaft) shafts.push_back({i, k});
-      if (features[k].kind == FeatureKind::kHole) holes.push_back({i, k});
+      if (features[k].kind != FeatureKind::kShaft && features[k].kind != FeatureKind::kHole) {
+        continue;
+      }
+      const AxisSegment axis = world_axis({i, k});
+      Aabb box;
+      box.Extend(axis.origin);
+      box.Extend(axis.end());
+      box.min.array() -= L;
+      box.max.array() += L;
+      round.push_back({i, k});
+      boxes_W.push_back(box);
+      bodies.push_back(static_cast<std::uint32_t>(subassembly_of[i]));
     }
   }
   std::vector<Candidate> candidates;
-  for (const FeatureRef s : shafts) {
-    for (const FeatureRef h : holes) {
-      const std::size_t bs = subassembly_of[s.part], bh = subassembly_of[h.part];
-      if (bs == bh || (held[bs] && held[bh])) continue;
-      const Feature &shaft = assembly.feature(s), &hole = assembly.feature(h);
-      if (shaft.diameter + L >= hole.diameter) continue;  // a fit: recognition's business
-      const AxisSegment u = world_axis(s), v = world_axis(h);
-      if (AngleBetweenLines(u.direction, v.direction) > A ||
-          DistanceToLine(u.origin, v.origin, v.direction) > L ||
-          DistanceToLine(v.origin, u.origin, u.direction) > L || AxialOverlap(u, v) <= L ||
-          (u.direction.dot(v.direction) < 0 && !hole.through)) {
-        continue;
-      }
-      candidates.push_back({s, h, bs, bh});
+  for (const auto& [i, j] : OverlappingBoxPairs(boxes_W, bodies)) {
+    FeatureRef s = round[i], h = round[j];
+    if (assembly.feature(s).kind == assembly.feature(h).kind) continue;
+    if (assembly.feature(s).kind == FeatureKind::kHole) std::swap(s, h);
+    const std::size_t bs = subassembly_of[s.part], bh = subassembly_of[h.part];
+    if (held[bs] && held[bh]) continue;
+    const Feature &shaft = assembly.feature(s), &hole = assembly.feature(h);
+    if (shaft.diameter + L >= hole.diameter) continue;  // a fit: recognition's business
+    const AxisSegment u = world_axis(s), v = world_axis(h);
+    if (AngleBetweenLines(u.direction, v.direction) > A ||
+        DistanceToLine(u.origin, v.origin, v.direction) > L ||
+        DistanceToLine(v.origin, u.origin, u.direction) > L || AxialOverlap(u, v) <= L ||
+        (u.direction.dot(v.direction) < 0 && !hole.through)) {
+      continue;
     }
+    candidates.push_back({s, h, bs, bh});
   }
+  // By part and feature order, whatever order the broad phase found them in.
+  auto order = [](const Candidate& c) {
+    return std::tuple(c.shaft.part, c.shaft.feature, c.hole.part, c.hole.feature);
+  };
+  std::sort(candidates.begin(), candidates.end(),
+            [&](const Candidate& x, const Candidate& y) { return order(x) < order(y); });
 
   for (bool added = true; added;) {
     added = false;
