@@ -22,6 +22,9 @@ struct MeshProblem {
   std::string message;
 };
 
+// `tessellated`: the mesh is Open CASCADE's tessellation of a STEP solid, not the designer's.
+// Its zero-area faces and edges of more than two faces (a sphere's poles, faces meeting at a
+// point) change no result and are not in the file: not said at all.
 std::vector<MeshProblem> MeshProblems(const MeshCheck& check, bool tessellated) {
   std::vector<MeshProblem> problems;
   if (check.non_finite_vertices > 0 || check.out_of_range_faces > 0 || check.face_count == 0) {
@@ -32,10 +35,13 @@ std::vector<MeshProblem> MeshProblems(const MeshCheck& check, bool tessellated) 
     // Watertight all the same: nothing for the designer to do. Tessellators leave such edges
     // at a sphere's poles, and shells exported as one mesh share them; interference decides
     // inside and outside by winding number.
-    problems.push_back({Severity::kInfo, "mesh_non_manifold",
-                        fmt::format("mesh is watertight, but {} edges are shared by more than "
-                                    "two faces (inside and outside are decided by winding number)",
-                                    check.non_manifold_edges)});
+    if (!tessellated) {
+      problems.push_back(
+          {Severity::kInfo, "mesh_non_manifold",
+           fmt::format("mesh is watertight, but {} edges are shared by more than two faces "
+                       "(inside and outside are decided by winding number)",
+                       check.non_manifold_edges)});
+    }
   } else if (!check.closed() && tessellated) {
     // Open CASCADE meshed a STEP solid's faces so that they do not meet along every edge:
     // nothing for the designer to do.
@@ -61,7 +67,7 @@ std::vector<MeshProblem> MeshProblems(const MeshCheck& check, bool tessellated) 
     problems.push_back(
         {Severity::kWarning, "mesh_inward", "mesh faces point inward (negative volume)"});
   }
-  if (check.degenerate_faces > 0) {
+  if (check.degenerate_faces > 0 && !tessellated) {
     // Zero-area faces (a tessellator's at a sphere's poles) bound nothing and touch nothing:
     // said, not warned.
     problems.push_back({Severity::kInfo, "mesh_degenerate_faces",

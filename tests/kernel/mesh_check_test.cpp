@@ -63,10 +63,9 @@ TEST(CheckAssembly, LikeProblemsOfSeveralPartsAreOneFinding) {
       << found[0].message;
 }
 
-TEST(CheckAssembly, AWatertightMeshWithEdgesOfFourFacesIsOnlyNoted) {
-  // Two unit cubes in one mesh sharing the vertical edge at (1, 1): watertight, but that edge
-  // belongs to four faces, as a sphere's poles do in a tessellator's output. Nothing for the
-  // designer to act on: an info, not the warning of an open mesh.
+// Two unit cubes in one mesh sharing the vertical edge at (1, 1): watertight, but that edge
+// belongs to four faces, as a sphere's poles do in a tessellator's output.
+TriangleMesh TwoCubesSharingAnEdge() {
   TriangleMesh two = UnitCube();
   const TriangleMesh second = UnitCube();
   std::vector<std::int32_t> index(8);
@@ -82,6 +81,12 @@ TEST(CheckAssembly, AWatertightMeshWithEdgesOfFourFacesIsOnlyNoted) {
   }
   for (const TriangleMesh::Face& f : second.faces)
     two.faces.push_back({index[f[0]], index[f[1]], index[f[2]]});
+  return two;
+}
+
+TEST(CheckAssembly, AWatertightMeshWithEdgesOfFourFacesIsOnlyNoted) {
+  // Nothing for the designer to act on: an info, not the warning of an open mesh.
+  const TriangleMesh two = TwoCubesSharingAnEdge();
   const MeshCheck check = CheckMesh(two);
   ASSERT_EQ(check.boundary_edges, 0u);
   ASSERT_GT(check.non_manifold_edges, 0u);
@@ -95,6 +100,31 @@ TEST(CheckAssembly, AWatertightMeshWithEdgesOfFourFacesIsOnlyNoted) {
   EXPECT_EQ(found[0].code, "mesh_non_manifold");
   EXPECT_EQ(found[0].severity, Severity::kInfo);
   EXPECT_NE(found[0].message.find("watertight"), std::string::npos) << found[0].message;
+}
+
+TEST(CheckAssembly, AStepSolidsTessellationIsNotFaultedForItsMeshersEdgesAndSlivers) {
+  // Two cubes sharing an edge (edges of four faces) and a zero-area face: said for a mesh the
+  // designer gave, not for Open CASCADE's tessellation of a STEP solid.
+  TriangleMesh two = TwoCubesSharingAnEdge();
+  two.faces.push_back({0, 0, 1});  // a sliver
+  const MeshCheck check = CheckMesh(two);
+  ASSERT_GT(check.degenerate_faces, 0u);
+  for (const bool tessellated : {false, true}) {
+    AssemblySpec spec;
+    Part part;
+    part.id = "cubes";
+    part.mesh = std::make_shared<TriangleMesh>(two);
+    part.tessellated = tessellated;
+    spec.parts.push_back(part);
+    std::vector<std::string> codes;
+    for (const Diagnostic& d : CheckAssembly(Assembly(std::move(spec)))) codes.push_back(d.code);
+    std::sort(codes.begin(), codes.end());
+    if (tessellated) {
+      EXPECT_TRUE(codes.empty()) << codes.front();
+    } else {
+      EXPECT_EQ(codes, (std::vector<std::string>{"mesh_degenerate_faces", "mesh_non_manifold"}));
+    }
+  }
 }
 
 TEST(MeshCheck, CubeIsOk) {
