@@ -121,9 +121,10 @@ Centring CentreFloatingParts(const Assembly& assembly,
       centring.diagnostics.push_back(
           {Severity::kInfo,
            "centred",
-           fmt::format("part '{}' is held by {}, but {} ({}) stands centred {} {} ({}), {} of "
-                       "radial clearance: taken as fixed there (a thread, an adapter or glue the "
-                       "file leaves out; \"infer\": {{\"centred_parts\": false}} turns this off)",
+           fmt::format("part '{}' is held to the rest by {}, but {} ({}) stands centred {} {} "
+                       "({}), {} of radial clearance: taken as fixed there (a thread, an adapter "
+                       "or glue the file leaves out; \"infer\": {{\"centred_parts\": false}} "
+                       "turns this off)",
                        part, in_face_contact[floating] ? "nothing but face contacts" : "no pair",
                        assembly.FeatureName(mine), Mm(shaft_floats ? d_shaft : d_hole),
                        shaft_floats ? "in" : "on", assembly.FeatureName(host),

@@ -21,9 +21,10 @@ struct Centring {
 /// `subassembly_of` per part, as PairGraph gives them) floats when it is not ground and no
 /// pair but face contacts joins it to another body. A shaft of one body collinear with a
 /// wider hole of another (within the length and angle tolerances, engaged along the axis
-/// more than the length tolerance, too thin to make a fit) places the one in the other as a
-/// CAD concentric mate does; nothing else holds it, so what does (a thread drawn at the wrong
-/// size, an adapter, glue) is not in the file. Where one body floats and the other is held,
+/// more than the length tolerance, thinner by more than it: a closer fit is a pair already,
+/// which holds the body) places the one in the other as a CAD concentric mate does; nothing
+/// else holds it, so what does (a thread drawn at the wrong size, an adapter, glue) is not in
+/// the file. Where one body floats and the other is held,
 /// the floating one is fixed to the held one (a `fixed` pair, source `centred`, shaft
 /// first), and counts as held from then on, so that a part on the end of a fixed rod is fixed
 /// to the rod in turn; candidates are taken by part and feature order, until no body is added.

@@ -92,13 +92,15 @@ TEST(CentredParts, AFloatingRodCentredInAHoleIsFixedThereAndAProbeOnItToTheRod) 
   // In report order: by features, the rod's (cell/hole) before the probe's (probe/hole).
   const std::vector<std::string> infos = Messages(analysis, "centred");
   ASSERT_EQ(infos.size(), 2u);
-  EXPECT_NE(infos[0].find("part 'rod' is held by nothing but face contacts, but rod/shaft (8 mm) "
-                          "stands centred in cell/hole (12 mm), 2 mm of radial clearance"),
+  EXPECT_NE(infos[0].find(
+                "part 'rod' is held to the rest by nothing but face contacts, but rod/shaft (8 mm) "
+                "stands centred in cell/hole (12 mm), 2 mm of radial clearance"),
             std::string::npos)
       << infos[0];
-  EXPECT_NE(infos[1].find("part 'probe' is held by nothing but face contacts, but probe/hole "
-                          "(12 mm) stands centred on rod/shaft (8 mm), 2 mm of radial clearance"),
-            std::string::npos)
+  EXPECT_NE(
+      infos[1].find("part 'probe' is held to the rest by nothing but face contacts, but probe/hole "
+                    "(12 mm) stands centred on rod/shaft (8 mm), 2 mm of radial clearance"),
+      std::string::npos)
       << infos[1];
 }
 
@@ -111,7 +113,8 @@ TEST(CentredParts, ARodInNoPairIsNoLongerReportedUnconnected) {
   EXPECT_TRUE(Messages(analysis, "part_unconnected").empty());
   const std::vector<std::string> infos = Messages(analysis, "centred");
   ASSERT_EQ(infos.size(), 1u);
-  EXPECT_NE(infos[0].find("part 'rod' is held by no pair, but"), std::string::npos) << infos[0];
+  EXPECT_NE(infos[0].find("part 'rod' is held to the rest by no pair, but"), std::string::npos)
+      << infos[0];
   EXPECT_EQ(analysis.motion.mobility.dof, 0);
 }
 
