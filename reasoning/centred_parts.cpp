@@ -82,13 +82,7 @@ Centring CentreFloatingParts(const Assembly& assembly,
     if (held[bs] && held[bh]) continue;
     const Feature &shaft = assembly.feature(s), &hole = assembly.feature(h);
     if (shaft.diameter + L >= hole.diameter) continue;  // a fit: recognition's business
-    const AxisSegment u = world_axis(s), v = world_axis(h);
-    if (AngleBetweenLines(u.direction, v.direction) > A ||
-        DistanceToLine(u.origin, v.origin, v.direction) > L ||
-        DistanceToLine(v.origin, u.origin, u.direction) > L || AxialOverlap(u, v) <= L ||
-        (u.direction.dot(v.direction) < 0 && !hole.through)) {
-      continue;
-    }
+    if (!Engaged(world_axis(s), world_axis(h), hole.through, L, A)) continue;
     candidates.push_back({s, h, bs, bh});
   }
   // By part and feature order, whatever order the broad phase found them in.

@@ -40,4 +40,13 @@ double AxialOverlap(const AxisSegment& a, const AxisSegment& b) {
   return std::min(a.length, std::max(b0, b1)) - std::max(0.0, std::min(b0, b1));
 }
 
+bool Engaged(const AxisSegment& convex, const AxisSegment& concave, bool concave_through,
+             double length_tolerance, double angle_tolerance) {
+  return AxialOverlap(convex, concave) > length_tolerance &&
+         AngleBetweenLines(convex.direction, concave.direction) <= angle_tolerance &&
+         DistanceToLine(convex.origin, concave.origin, concave.direction) <= length_tolerance &&
+         DistanceToLine(concave.origin, convex.origin, convex.direction) <= length_tolerance &&
+         (convex.direction.dot(concave.direction) >= 0 || concave_through);
+}
+
 }  // namespace mechanist

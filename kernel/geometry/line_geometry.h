@@ -28,4 +28,11 @@ LineLineClosest ClosestPointsOfLines(const Eigen::Vector3d& a, const Eigen::Vect
 /// extent projected on a's line); negative when they are apart (minus the gap).
 double AxialOverlap(const AxisSegment& a, const AxisSegment& b);
 
+/// Whether a convex feature's axis (a shaft's, a thread's) `convex` lies in a concave one's
+/// (a hole's) `concave`: overlapping along the axis by more than `length_tolerance` (mm), at most
+/// `angle_tolerance` (radians) apart, each origin within `length_tolerance` of the other's line,
+/// and pointing the same way unless the concave feature goes through (a blind hole has a sense).
+bool Engaged(const AxisSegment& convex, const AxisSegment& concave, bool concave_through,
+             double length_tolerance, double angle_tolerance);
+
 }  // namespace mechanist

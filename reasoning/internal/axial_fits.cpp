@@ -33,11 +33,7 @@ bool Recognizer::Seated(const WorldFeature& c, const WorldFeature& h) {
 }
 
 bool Recognizer::Collinear(const WorldFeature& c, const WorldFeature& h) const {
-  return AxialOverlap(c.axis, h.axis) > L_ &&
-         AngleBetweenLines(c.axis.direction, h.axis.direction) <= A_ &&
-         DistanceToLine(c.axis.origin, h.axis.origin, h.axis.direction) <= L_ &&
-         DistanceToLine(h.axis.origin, c.axis.origin, c.axis.direction) <= L_ &&
-         (c.axis.direction.dot(h.axis.direction) >= 0 || h.f.through);
+  return Engaged(c.axis, h.axis, h.f.through, L_, A_);
 }
 
 void Recognizer::ShaftHole(const WorldFeature& s, const WorldFeature& h) {
