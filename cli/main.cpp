@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
+#include "kernel/support/heap_tuning.h"
 
 namespace {
 
@@ -37,6 +38,7 @@ int Run(const Command& command, const std::string& file) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  mechanist::KeepFreedHeapForReuse();
   CLI::App app{
       "mechanist: reads a mechanical assembly and tells whether it can be assembled "
       "and how it moves"};
