@@ -127,6 +127,9 @@ struct Recognizer::BearingRow {
   const WorldFeature* inner = nullptr;
   const WorldFeature* outer = nullptr;
   bool thrust = false;  ///< the rings are washers on either side of the elements' plane
+  /// The outer ring was found by its outside: a self-aligning ball bearing's, whose raceway
+  /// is a sphere (no feature).
+  bool self_aligning = false;
   /// mm: a thrust bearing's washers' raceway faces from the elements' plane, below and above.
   std::array<double, 2> washers{0.0, 0.0};
 };
@@ -177,6 +180,7 @@ bool Recognizer::FindBearingRings(BearingRow& row) const {
   const double outer_from = by_ends ? pitch.radius + radial_reach : pitch.radius;
   const double outer_to =
       by_ends ? std::numeric_limits<double>::infinity() : pitch.radius + element_r + L_;
+  const WorldFeature* beyond = nullptr;  // balls: the nearest outside cylinder beyond them
   for (const WorldFeature& w : features_) {
     const bool in = w.f.kind == inner_kind, out = w.f.kind == outer_kind;
     if ((!in && !out) || in_row.count(w.ref.part)) continue;
@@ -198,8 +202,22 @@ bool Recognizer::FindBearingRings(BearingRow& row) const {
          (r == row.outer->f.diameter / 2 && NameLess(w, *row.outer)))) {
       row.outer = &w;
     }
+    if (in && !by_ends && r > pitch.radius + element_r &&
+        (!beyond || r < beyond->f.diameter / 2 ||
+         (r == beyond->f.diameter / 2 && NameLess(w, *beyond)))) {
+      beyond = &w;
+    }
   }
   if (row.inner && row.outer && row.inner->ref.part != row.outer->ref.part) return true;
+  // Balls with an inner ring and no bore at their outer side: a self-aligning ball bearing,
+  // whose outer raceway is a sphere about the bearing's centre, which gives no feature. Its
+  // outer ring is the nearest outside cylinder beyond the balls.
+  if (first.shape == RollingElement::Shape::kBall && row.inner && !row.outer && beyond &&
+      beyond->ref.part != row.inner->ref.part) {
+    row.outer = beyond;
+    row.self_aligning = true;
+    return true;
+  }
   // Balls with no rings around them may run between washers.
   row.inner = row.outer = nullptr;
   return first.shape == RollingElement::Shape::kBall && FindThrustWashers(row, in_row);
@@ -556,7 +574,7 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
   std::string kind;
   switch (shape) {
     case RollingElement::Shape::kBall:
-      kind = "ball";
+      kind = row.self_aligning ? "self-aligning ball" : "ball";
       break;
     case RollingElement::Shape::kRoller:
       kind = needles ? "needle roller" : "cylindrical roller";

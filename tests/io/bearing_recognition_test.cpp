@@ -345,7 +345,11 @@ TEST(Bearing, TwoRowsOfBallsOrBarrelRollersBetweenTheSameRingsAreOneDoubleRowBea
       {testing::WriteSphericalRollerBearingStep,
        "a double-row spherical roller bearing, 25 x 52 x 18 mm: ",
        "on 2 rows of 14 rollers of 6 x 7 mm (at their ends) at 13 deg to its axis on a "
-       "39 mm pitch circle"}};
+       "39 mm pitch circle"},
+      // Its outer raceway, a sphere, gives no feature: the outer ring is found by its outside.
+      {testing::WriteSelfAligningBallBearingStep,
+       "a double-row self-aligning ball bearing, 25 x 52 x 15 mm: ",
+       "on 2 rows of 13 balls of 7.144 mm on a 38.5 mm pitch circle"}};
   for (const auto& c : cases) {
     SCOPED_TRACE(c.kind);
     const Assembly a = LoadFixture(c.write);

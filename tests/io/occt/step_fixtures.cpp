@@ -878,6 +878,36 @@ void WriteSphericalRollerBearingStep(const std::filesystem::path& file) {
   WriteStep(all, file);
 }
 
+void WriteSelfAligningBallBearingStep(const std::filesystem::path& file) {
+  const double pitch = 38.5 / 2, ball = 7.144 / 2, groove = 0.52 * 7.144, row = 3.6;
+  const int balls = 13;
+  TopoDS_Shape inner = Tube(12.5, 17, -7.5, 7.5);
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  for (const double z : {-row, row}) {
+    inner = BRepAlgoAPI_Cut(inner, BRepPrimAPI_MakeTorus(gp_Ax2(gp_Pnt(0, 0, z), gp_Dir(0, 0, 1)),
+                                                         pitch, groove))
+                .Shape();
+    const double stagger = z > 0 ? 0.5 : 0.0;
+    for (int k = 0; k < balls; ++k) {
+      const double a = 2 * M_PI * (k + stagger) / balls;
+      builder.Add(all,
+                  BRepPrimAPI_MakeSphere(gp_Pnt(pitch * std::cos(a), pitch * std::sin(a), z), ball)
+                      .Shape());
+    }
+  }
+  builder.Add(all, inner);
+  const double raceway = std::hypot(pitch, row) + ball;
+  builder.Add(
+      all,
+      BRepAlgoAPI_Cut(
+          BRepPrimAPI_MakeCylinder(gp_Ax2(gp_Pnt(0, 0, -7.5), gp_Dir(0, 0, 1)), 26, 15).Shape(),
+          BRepPrimAPI_MakeSphere(gp_Pnt(0, 0, 0), raceway).Shape())
+          .Shape());
+  WriteStep(all, file);
+}
+
 void WriteThrustBallBearingStep(const std::filesystem::path& file, bool cage) {
   const double pitch = 33.5 / 2, ball = 6.35 / 2, groove = 0.53 * 6.35;
   const TopoDS_Shape raceway = BRepPrimAPI_MakeTorus(gp_Ax2(), pitch, groove).Shape();

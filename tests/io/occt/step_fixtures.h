@@ -123,6 +123,15 @@ void WriteDoubleRowBallBearingStep(const std::filesystem::path& file);
 /// their centres. Throws std::runtime_error when it cannot write.
 void WriteSphericalRollerBearingStep(const std::filesystem::path& file);
 
+/// Writes a STEP file (AP214, no product names) of a self-aligning ball bearing (a 1205's bore,
+/// outside and width, 25 x 52 x 15 mm), axis z: an inner ring (bore 25 mm, lands 34 mm) with
+/// two toroidal raceways of radius 0.52 times the ball's about the 38.5 mm pitch circle in
+/// z = -3.6 and 3.6, an outer ring (outside 52 mm) whose raceway is one sphere about the
+/// origin touching every ball, both from z = -7.5 to 7.5, and 13 balls of 7.144 mm in each
+/// row, the rows staggered by half a ball's spacing, each ball a solid of its own. Throws
+/// std::runtime_error when it cannot write.
+void WriteSelfAligningBallBearingStep(const std::filesystem::path& file);
+
 /// Writes a STEP file (AP214, no product names) of a thrust ball bearing (a 51105, 25 x 42 x
 /// 11 mm), axis z: a shaft washer (bore 25 mm, outside 42 mm) from z = -5.5 to -1.5 and a
 /// housing washer (bore 27 mm, outside 42 mm) from z = 1.5 to 5.5, each with a toroidal
