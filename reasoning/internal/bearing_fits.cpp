@@ -518,13 +518,15 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
   }
   if (hi > lo) width = hi - lo;
   // Cages, seals and shields: parts in no other role, with a feature, whose every vertex lies
-  // between the rings, radially strictly between the lands (or raceways) beside the elements
-  // and axially within the rings' end faces; a thrust bearing's, axially strictly between its
-  // washers' raceway faces and radially between the shaft washer's bore and the housing
-  // washer's outside. They orbit with the elements or turn with a ring: held with the outer
-  // ring, as the elements are. (Rings found by their bore and outside bound no such space.)
+  // between the rings, radially strictly between the features that make the revolute pair
+  // (the lands or raceways beside the elements; the inner ring's bore and the outer ring's
+  // outside where those were found by them: rollers found by their ends, a self-aligning
+  // bearing) and axially within the rings' end faces; a thrust bearing's, axially strictly
+  // between its washers' raceway faces and radially between the shaft washer's bore and the
+  // housing washer's outside. They orbit with the elements or turn with a ring: held with
+  // the outer ring, as the elements are.
   std::vector<std::size_t> cages;
-  if (!ByTheirEnds(shape) && hi > lo) {
+  if (hi > lo) {
     const double r_in = inner->f.diameter / 2;
     const double r_out = row.thrust ? outside / 2 : outer->f.diameter / 2;
     const double h_lo = row.thrust ? -row.washers[0] : lo - L_;

@@ -282,6 +282,33 @@ TEST(Bearing, ACageBetweenTheRingsIsHeldWithTheOuterRing) {
   ExpectOneBearingAlone(a, an);                     // rings, 9 balls and the cage: 11 pairs
 }
 
+TEST(Bearing, ACageOfATaperedOrASphericalRollerBearingIsHeldWithTheOuterRing) {
+  // Rings found by their bore and outside: the cage lies between those.
+  const struct {
+    std::function<void(const std::filesystem::path&)> write;
+    const char* kind;
+    std::size_t parts;
+  } cases[] = {{[](const std::filesystem::path& file) {
+                  testing::WriteTaperedRollerBearingStep(file, true);
+                },
+                "a tapered roller bearing, 25 x 52 x 16 mm: ", 18},
+               {[](const std::filesystem::path& file) {
+                  testing::WriteSphericalRollerBearingStep(file, true);
+                },
+                "a double-row spherical roller bearing, 25 x 52 x 18 mm: ", 31}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.kind);
+    const Assembly a = LoadFixture(c.write);
+    ASSERT_EQ(a.parts().size(), c.parts);
+    const Analysis an = Analyze(a);
+    const Diagnostic* bearing = ExpectBearing(
+        an, c.kind, "(between the rings: a cage, seal or shield) is held with the outer ring too");
+    ASSERT_NE(bearing, nullptr);
+    EXPECT_EQ(bearing->parts.back(), a.part(c.parts - 1).id);  // the cage, written last
+    ExpectOneBearingAlone(a, an);
+  }
+}
+
 TEST(Bearing, TwoBallBearingsSideBySideAreTwoBearings) {
   // Their balls are neighbours (9 mm apart across the bearings), so they make one set, which
   // lies on no one circle: split into rows, each row finds its own rings.
@@ -318,8 +345,9 @@ TEST(Bearing, TaperedRollersBetweenACupAndAConeAreATaperedRollerBearing) {
   // Raceways and rollers are cones, which give no feature: the rollers are found by their
   // flat ends, the rings by the bore inside them and the outside cylinder outside them. As
   // B-splines throughout, the same.
-  const std::pair<Assembly, Assembly> read =
-      LoadFixtures(testing::WriteTaperedRollerBearingStep, true);
+  const std::pair<Assembly, Assembly> read = LoadFixtures(
+      [](const std::filesystem::path& file) { testing::WriteTaperedRollerBearingStep(file); },
+      true);
   const Assembly& exact = read.first;
   const Assembly& nurbs = read.second;
   const Analysis an_exact = Analyze(exact), an_nurbs = Analyze(nurbs);
@@ -342,7 +370,7 @@ TEST(Bearing, TwoRowsOfBallsOrBarrelRollersBetweenTheSameRingsAreOneDoubleRowBea
   } cases[] = {
       {testing::WriteDoubleRowBallBearingStep, "a double-row ball bearing, 25 x 52 x 20 mm: ",
        "on 2 rows of 12 balls of 7.144 mm on a 38.5 mm pitch circle"},
-      {testing::WriteSphericalRollerBearingStep,
+      {[](const std::filesystem::path& file) { testing::WriteSphericalRollerBearingStep(file); },
        "a double-row spherical roller bearing, 25 x 52 x 18 mm: ",
        "on 2 rows of 14 rollers of 6 x 7 mm (at their ends) at 13 deg to its axis on a "
        "39 mm pitch circle"},

@@ -785,7 +785,7 @@ TopoDS_Shape Revolved(const std::vector<std::array<double, 2>>& rz) {
 
 }  // namespace
 
-void WriteTaperedRollerBearingStep(const std::filesystem::path& file) {
+void WriteTaperedRollerBearingStep(const std::filesystem::path& file, bool cage) {
   const double tilt = 15 * M_PI / 180, taper = 2.5 * M_PI / 180, pitch = 19.5;
   const double apex = -pitch / std::tan(tilt);  // z where every cone's apex lies
   // The raceways touch each roller along its lines nearest to and farthest from the axis.
@@ -811,11 +811,25 @@ void WriteTaperedRollerBearingStep(const std::filesystem::path& file) {
       BRepPrimAPI_MakeCone(gp_Ax2(small_end, along), small * std::tan(taper),
                            (small + length) * std::tan(taper), length)
           .Shape();
+  // The cage: a band about the rollers' pitch cone, r = (z - apex) tan(tilt), less a window
+  // around each roller (its cone 0.3 mm wider, reaching 0.3 mm past its ends).
+  auto on_pitch_cone = [&](double z) { return (z - apex) * std::tan(tilt); };
+  TopoDS_Shape band = Revolved({{on_pitch_cone(-6.5) - 0.8, -6.5},
+                                {on_pitch_cone(-6.5) + 0.8, -6.5},
+                                {on_pitch_cone(6.5) + 0.8, 6.5},
+                                {on_pitch_cone(6.5) - 0.8, 6.5}});
+  const gp_Pnt window_start(small_end.XYZ() - 0.3 * along.XYZ());
+  const TopoDS_Shape window =
+      BRepPrimAPI_MakeCone(gp_Ax2(window_start, along), (small - 0.3) * std::tan(taper) + 0.3,
+                           (small + length + 0.3) * std::tan(taper) + 0.3, length + 0.6)
+          .Shape();
   for (int k = 0; k < rollers; ++k) {
     gp_Trsf turn;
     turn.SetRotation(gp::OZ(), 2 * M_PI * k / rollers);
     builder.Add(all, BRepBuilderAPI_Transform(roller, turn, true).Shape());
+    if (cage) band = BRepAlgoAPI_Cut(band, BRepBuilderAPI_Transform(window, turn, true)).Shape();
   }
+  if (cage) builder.Add(all, band);
   WriteStep(all, file);
 }
 
@@ -842,7 +856,7 @@ void WriteDoubleRowBallBearingStep(const std::filesystem::path& file) {
   WriteStep(all, file);
 }
 
-void WriteSphericalRollerBearingStep(const std::filesystem::path& file) {
+void WriteSphericalRollerBearingStep(const std::filesystem::path& file, bool guide_ring) {
   const double pitch = 19.5, tilt = 13 * M_PI / 180, half = 3.5;
   TopoDS_Compound all;
   BRep_Builder builder;
@@ -875,6 +889,7 @@ void WriteSphericalRollerBearingStep(const std::filesystem::path& file) {
       builder.Add(all, BRepBuilderAPI_Transform(barrel, turn * place * lean, true).Shape());
     }
   }
+  if (guide_ring) builder.Add(all, Tube(20.5, 22.5, -0.8, 0.8));
   WriteStep(all, file);
 }
 

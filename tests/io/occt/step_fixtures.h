@@ -103,8 +103,10 @@ void WriteRollerBearingStep(const std::filesystem::path& file);
 /// of half-angle 17.5 deg and a 52 mm outside; and 15 tapered rollers 12 mm long with flat
 /// ends, half-angle 2.5 deg, their axes at 15 deg to z, their mid-points on a 39 mm pitch
 /// circle in z = 0. The rollers' and raceways' cones share their apex on the axis (z =
-/// -72.775), as in every tapered roller bearing. Throws std::runtime_error when it cannot write.
-void WriteTaperedRollerBearingStep(const std::filesystem::path& file);
+/// -72.775), as in every tapered roller bearing. With `cage`, a cage too: a conical band 1.6 mm
+/// thick across the rollers' pitch cone from z = -6.5 to 6.5 (flat ends), with a window
+/// 0.3 mm wider than each roller all round. Throws std::runtime_error when it cannot write.
+void WriteTaperedRollerBearingStep(const std::filesystem::path& file, bool cage = false);
 
 /// Writes a STEP file (AP214, no product names) of a double-row deep-groove ball bearing
 /// (25 x 52 x 20 mm), axis z: an inner ring (bore 25 mm, lands 35 mm) and an outer ring
@@ -120,8 +122,10 @@ void WriteDoubleRowBallBearingStep(const std::filesystem::path& file);
 /// origin) from z = -9 to 9, and two rows of 14 barrel rollers 7 mm long (6 mm flat ends,
 /// 6.5 mm at the middle) whose centres lie on a 39 mm pitch circle at z = +-19.5 tan 13 deg,
 /// their axes at 13 deg to z in the plane through z, square to the line from the origin to
-/// their centres. Throws std::runtime_error when it cannot write.
-void WriteSphericalRollerBearingStep(const std::filesystem::path& file);
+/// their centres. With `guide_ring`, a ring between the rows too (20.5 to 22.5 mm in radius,
+/// from z = -0.8 to 0.8), as E-type bearings have. Throws std::runtime_error when it cannot
+/// write.
+void WriteSphericalRollerBearingStep(const std::filesystem::path& file, bool guide_ring = false);
 
 /// Writes a STEP file (AP214, no product names) of a self-aligning ball bearing (a 1205's bore,
 /// outside and width, 25 x 52 x 15 mm), axis z: an inner ring (bore 25 mm, lands 34 mm) with
