@@ -108,8 +108,46 @@ std::optional<RollingElement> RollerByItsEnds(const WorldFeature& x, const World
   return roller;
 }
 
-/// Rollers measured on their ends' tessellated outlines (tapered and barrel rollers): their
-/// diameters are given to 0.1 mm and their pitch circles to 0.01 mm.
+/// The roller of a part whose only feature is `end`, one round flat end (as wide as high within
+/// `L` mm), whose other end is domed (a tapered roller's large end bearing on its rib is a
+/// sphere about the apex), or nothing. Its `mesh` (part frame, at pose `X_WP`) gives the rest:
+/// every vertex lies behind the end's face within `L`; the roller's length is the mesh's
+/// extent along the end's normal. A roller whose widest section lies in the far half and is
+/// wider than the flat end by more than `L` is tapered (its large end that section), any other
+/// a barrel roller of the flat end's diameter.
+std::optional<RollingElement> RollerByOneEnd(const WorldFeature& end, const TriangleMesh& mesh,
+                                             const RigidTransform& X_WP, double L) {
+  if (end.f.kind != FeatureKind::kFace || std::abs(end.f.width - end.f.height) > L ||
+      !(end.f.width > L) || mesh.vertices.empty()) {
+    return std::nullopt;
+  }
+  const Eigen::Vector3d& p_WO = end.axis.origin;
+  const Eigen::Vector3d into = -end.axis.direction;  // the face's normal points out of the part
+  double length = 0.0, widest = 0.0, widest_at = 0.0;
+  for (const Eigen::Vector3d& p_P : mesh.vertices) {
+    const Eigen::Vector3d d = X_WP * p_P - p_WO;
+    const double h = d.dot(into);
+    if (h < -L) return std::nullopt;
+    const double r = (d - h * into).norm();
+    length = std::max(length, h);
+    if (r > widest) widest = r, widest_at = h;
+  }
+  if (length <= L) return std::nullopt;
+  const double small = end.f.width / 2;
+  const bool tapered = widest - small > L && widest_at > length / 2;
+  RollingElement roller;
+  roller.shape =
+      tapered ? RollingElement::Shape::kTaperedRoller : RollingElement::Shape::kBarrelRoller;
+  roller.w = &end;
+  roller.center = p_WO + length / 2 * into;
+  roller.axis = into;  // from the small end to the large, as RollerByItsEnds gives it
+  roller.diameter = tapered ? small + widest : end.f.width;
+  roller.length = length;
+  return roller;
+}
+
+/// Rollers measured on their ends' tessellated outlines or their meshes (tapered and barrel
+/// rollers): their diameters and lengths are given to 0.1 mm and their pitch circles to 0.01 mm.
 bool ByTheirEnds(RollingElement::Shape shape) {
   return shape == RollingElement::Shape::kTaperedRoller ||
          shape == RollingElement::Shape::kBarrelRoller;
@@ -143,9 +181,9 @@ bool Recognizer::FindBearingRings(BearingRow& row) const {
   const SpaceCircle& pitch = row.pitch;
   const bool by_ends = ByTheirEnds(first.shape);
   row.tilt = AngleBetweenLines(first.axis, pitch.normal);
-  const bool along_radii =
+  const bool ashown_lengthradii =
       first.shape == RollingElement::Shape::kRoller && std::abs(row.tilt - kPi / 2) <= A_;
-  if (first.shape == RollingElement::Shape::kRoller && row.tilt > A_ && !along_radii) {
+  if (first.shape == RollingElement::Shape::kRoller && row.tilt > A_ && !ashown_lengthradii) {
     return false;
   }
   if (by_ends && row.tilt > kPi / 4) return false;
@@ -155,13 +193,13 @@ bool Recognizer::FindBearingRings(BearingRow& row) const {
         const Eigen::Vector3d radial = (e->center - pitch.center).normalized();
         const Eigen::Vector3d across = pitch.normal.cross(radial).normalized();
         return std::abs(AngleBetweenLines(e->axis, pitch.normal) - row.tilt) > A_ ||
-               ((by_ends || along_radii) && std::abs(e->axis.dot(across)) > std::sin(A_));
+               ((by_ends || ashown_lengthradii) && std::abs(e->axis.dot(across)) > std::sin(A_));
       })) {
     return false;
   }
   std::set<std::size_t> in_row;
   for (const RollingElement* e : row.elements) in_row.insert(e->w->ref.part);
-  if (along_radii) return FindThrustWashers(row, in_row);
+  if (ashown_lengthradii) return FindThrustWashers(row, in_row);
   // The elements' reach from the pitch circle: across it (a tilted roller's ends and sides)
   // and along its axis.
   const double element_r = first.diameter / 2;
@@ -287,6 +325,13 @@ void Recognizer::AddBearings() {
     }
     if (n == 2) {
       if (const auto roller = RollerByItsEnds(At({part, 0}), At({part, 1}), L_, A_)) {
+        elements.push_back(*roller);
+        continue;
+      }
+    }
+    if (n == 1 && assembly_.part(part).mesh) {
+      if (const auto roller =
+              RollerByOneEnd(At({part, 0}), *assembly_.part(part).mesh, X_WP_[part], L_)) {
         elements.push_back(*roller);
         continue;
       }
@@ -599,6 +644,7 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
   for (const BearingRow& each : rows) {
     const double tilt = each.tilt;
     const double across = ByTheirEnds(shape) ? std::round(10 * d) / 10 : d;
+    const double shown_length = ByTheirEnds(shape) ? std::round(10 * length) / 10 : length;
     const std::string leaning =
         tilt > A_ && !each.thrust ? fmt::format(" at {} to its axis", Deg(tilt)) : "";
     const std::string ends =
@@ -606,7 +652,7 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
     const std::string what =
         shape == RollingElement::Shape::kBall
             ? Mm(d)
-            : fmt::format("{} x {}{}{}", FormatNumber(across), Mm(length), ends, leaning);
+            : fmt::format("{} x {}{}{}", FormatNumber(across), Mm(shown_length), ends, leaning);
     const double circle =
         ByTheirEnds(shape) ? std::round(200 * each.pitch.radius) / 100 : 2 * each.pitch.radius;
     described.push_back(fmt::format("{} {} of {} on a {} pitch circle", each.elements.size(), named,

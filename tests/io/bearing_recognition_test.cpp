@@ -360,6 +360,21 @@ TEST(Bearing, TaperedRollersBetweenACupAndAConeAreATaperedRollerBearing) {
   EXPECT_EQ(PairNames(nurbs, an_nurbs), PairNames(exact, an_exact));
 }
 
+TEST(Bearing, TaperedRollersWithADomedLargeEndAreMeasuredOnTheirMeshes) {
+  // One flat end each: its normal is the roller's axis, the mesh gives its length and large
+  // end. With their ends flat, the same bearing reads "6.6 x 12 mm ... on a 39 mm pitch
+  // circle"; the dome (0.0775 mm) lengthens each roller, and moves its middle 0.039 mm along
+  // its axis, 0.01 mm outward at 15 deg: 12.1 mm, and 39.02 mm across.
+  const Assembly a = LoadFixture([](const std::filesystem::path& file) {
+    testing::WriteTaperedRollerBearingStep(file, false, true);
+  });
+  ASSERT_EQ(a.parts().size(), 17u);
+  const Analysis an = Analyze(a);
+  ExpectBearing(an, "a tapered roller bearing, 25 x 52 x 16 mm: ",
+                "on 15 rollers of 6.6 x 12.1 mm at 15 deg to its axis on a 39.02 mm pitch circle");
+  ExpectOneBearingAlone(a, an);
+}
+
 TEST(Bearing, TwoRowsOfBallsOrBarrelRollersBetweenTheSameRingsAreOneDoubleRowBearing) {
   // The rows' elements are neighbours, so they make one set, which lies on no one circle: it
   // is split into its rows, and the rows between the same rings are one bearing.

@@ -2,6 +2,7 @@
 #include "io/occt/step_fixtures.h"
 
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepAlgoAPI_Common.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -785,7 +786,7 @@ TopoDS_Shape Revolved(const std::vector<std::array<double, 2>>& rz) {
 
 }  // namespace
 
-void WriteTaperedRollerBearingStep(const std::filesystem::path& file, bool cage) {
+void WriteTaperedRollerBearingStep(const std::filesystem::path& file, bool cage, bool domed) {
   const double tilt = 15 * M_PI / 180, taper = 2.5 * M_PI / 180, pitch = 19.5;
   const double apex = -pitch / std::tan(tilt);  // z where every cone's apex lies
   // The raceways touch each roller along its lines nearest to and farthest from the axis.
@@ -807,10 +808,21 @@ void WriteTaperedRollerBearingStep(const std::filesystem::path& file, bool cage)
   const double small = mid - length / 2;
   const gp_Dir along(std::sin(tilt), 0, std::cos(tilt));
   const gp_Pnt small_end(small * std::sin(tilt), 0, apex + small * std::cos(tilt));
-  const TopoDS_Shape roller =
-      BRepPrimAPI_MakeCone(gp_Ax2(small_end, along), small * std::tan(taper),
-                           (small + length) * std::tan(taper), length)
-          .Shape();
+  TopoDS_Shape roller = BRepPrimAPI_MakeCone(gp_Ax2(small_end, along), small * std::tan(taper),
+                                             (small + length) * std::tan(taper), length)
+                            .Shape();
+  if (domed) {
+    // The sphere about the apex through the large end's rim, beyond the large end's plane.
+    const double large = small + length, large_r = large * std::tan(taper);
+    const gp_Pnt large_end(small_end.XYZ() + length * along.XYZ());
+    const TopoDS_Shape beyond =
+        BRepPrimAPI_MakeCylinder(gp_Ax2(large_end, along), 2 * large_r, 1).Shape();
+    const TopoDS_Shape cap =
+        BRepAlgoAPI_Common(
+            BRepPrimAPI_MakeSphere(gp_Pnt(0, 0, apex), std::hypot(large, large_r)).Shape(), beyond)
+            .Shape();
+    roller = BRepAlgoAPI_Fuse(roller, cap).Shape();
+  }
   // The cage: a band about the rollers' pitch cone, r = (z - apex) tan(tilt), less a window
   // around each roller (its cone 0.3 mm wider, reaching 0.3 mm past its ends).
   auto on_pitch_cone = [&](double z) { return (z - apex) * std::tan(tilt); };

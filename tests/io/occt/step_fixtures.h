@@ -105,8 +105,11 @@ void WriteRollerBearingStep(const std::filesystem::path& file);
 /// circle in z = 0. The rollers' and raceways' cones share their apex on the axis (z =
 /// -72.775), as in every tapered roller bearing. With `cage`, a cage too: a conical band 1.6 mm
 /// thick across the rollers' pitch cone from z = -6.5 to 6.5 (flat ends), with a window
-/// 0.3 mm wider than each roller all round. Throws std::runtime_error when it cannot write.
-void WriteTaperedRollerBearingStep(const std::filesystem::path& file, bool cage = false);
+/// 0.3 mm wider than each roller all round. With `domed`, each roller's large end is a
+/// spherical cap about the apex through the end's rim (0.08 mm high), as it bears on the rib
+/// of a real bearing's cone: one flat end only. Throws std::runtime_error when it cannot write.
+void WriteTaperedRollerBearingStep(const std::filesystem::path& file, bool cage = false,
+                                   bool domed = false);
 
 /// Writes a STEP file (AP214, no product names) of a double-row deep-groove ball bearing
 /// (25 x 52 x 20 mm), axis z: an inner ring (bore 25 mm, lands 35 mm) and an outer ring
