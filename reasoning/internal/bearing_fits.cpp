@@ -246,6 +246,7 @@ bool Recognizer::FindBearingRings(BearingRow& row) const {
       beyond = &w;
     }
   }
+  if (by_ends && !row.inner && row.outer) row.inner = ShaftUnderRollers(row, in_row, inner_to);
   if (row.inner && row.outer && row.inner->ref.part != row.outer->ref.part) return true;
   // Balls with an inner ring and no bore at their outer side: a self-aligning ball bearing,
   // whose outer raceway is a sphere about the bearing's centre, which gives no feature. Its
@@ -259,6 +260,47 @@ bool Recognizer::FindBearingRings(BearingRow& row) const {
   // Balls with no rings around them may run between washers.
   row.inner = row.outer = nullptr;
   return first.shape == RollingElement::Shape::kBall && FindThrustWashers(row, in_row);
+}
+const WorldFeature* Recognizer::ShaftUnderRollers(const BearingRow& row,
+                                                  const std::set<std::size_t>& in_row,
+                                                  double inside) const {
+  // Rollers found by their ends and no bore inside them: they run on a raceway cut into a
+  // shaft. Of the parts with a shaft coaxial with the pitch circle and thinner than `inside`
+  // (anywhere along the axis: its cylinders lie beyond the raceway), the one whose mesh comes
+  // nearest the rollers within their reach of their plane, inside the pitch circle, and at
+  // least as near as their inner side; its widest such shaft.
+  const RollingElement& first = *row.elements.front();
+  const SpaceCircle& pitch = row.pitch;
+  const double reach = first.length / 2 * std::cos(row.tilt) + first.diameter / 2;
+  std::map<std::size_t, double> raceway;  // per part: its mesh's radius nearest the rollers
+  const WorldFeature* shaft = nullptr;
+  double nearest = inside - L_;
+  for (const WorldFeature& w : features_) {
+    const std::size_t part = w.ref.part;
+    if (w.f.kind != FeatureKind::kShaft || in_row.count(part) || part == row.outer->ref.part ||
+        !(w.f.diameter / 2 < inside) || AngleBetweenLines(w.axis.direction, pitch.normal) > A_ ||
+        DistanceToLine(pitch.center, w.axis.origin, w.axis.direction) > L_ ||
+        !assembly_.part(part).mesh) {
+      continue;
+    }
+    auto [at, added] = raceway.emplace(part, 0.0);
+    if (added) {
+      for (const Eigen::Vector3d& p_P : assembly_.part(part).mesh->vertices) {
+        const Eigen::Vector3d d = X_WP_[part] * p_P - pitch.center;
+        const double h = d.dot(pitch.normal);
+        const double r = (d - h * pitch.normal).norm();
+        if (std::abs(h) <= reach && r < pitch.radius) at->second = std::max(at->second, r);
+      }
+    }
+    const bool wider_on_same_part = shaft && shaft->ref.part == part &&
+                                    (w.f.diameter > shaft->f.diameter ||
+                                     (w.f.diameter == shaft->f.diameter && NameLess(w, *shaft)));
+    if (at->second > nearest || (at->second == nearest && wider_on_same_part)) {
+      nearest = at->second;
+      shaft = &w;
+    }
+  }
+  return shaft;
 }
 
 bool Recognizer::FindThrustWashers(BearingRow& row, const std::set<std::size_t>& in_row) const {
@@ -536,8 +578,8 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
   }
   // Its size as a catalogue gives it: the bore (above), the outer ring's outside diameter
   // and width (between its end faces, which chamfers do not shorten as they do its outside
-  // cylinder); a tapered roller bearing's width is both rings' (its catalogue's T), a thrust
-  // bearing's height both washers'.
+  // cylinder); a tapered roller bearing's width is both rings' (its catalogue's T; the cup's
+  // alone on a shaft that carries the raceway), a thrust bearing's height both washers'.
   double outside = 0.0, width = 0.0;
   for (std::size_t f = 0; f < assembly_.FeatureCount(outer->ref.part); ++f) {
     const WorldFeature& w = At({outer->ref.part, f});
@@ -547,7 +589,7 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
   }
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   std::vector<std::size_t> rings{outer->ref.part};
-  if (shape == RollingElement::Shape::kTaperedRoller || row.thrust) {
+  if ((shape == RollingElement::Shape::kTaperedRoller && inner_ring) || row.thrust) {
     rings.push_back(inner->ref.part);
   }
   for (const std::size_t ring : rings) {

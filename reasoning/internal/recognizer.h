@@ -199,6 +199,11 @@ class Recognizer {
   /// elements within their radius of the plane, on a part with a bore on the axis; the
   /// washer with the smaller bore is the inner ring (the shaft washer). Whether it found two.
   bool FindThrustWashers(BearingRow& row, const std::set<std::size_t>& in_row) const;
+  /// The shaft that rollers found by their ends run on when no bore lies inside them (the
+  /// inner raceway cut into the shaft), thinner than `inside` mm in radius; `in_row`: their
+  /// parts. Nothing when no part's mesh reaches them.
+  const WorldFeature* ShaftUnderRollers(const BearingRow& row, const std::set<std::size_t>& in_row,
+                                        double inside) const;
   /// The pairs and the `bearing` info of one bearing: `rows` (one or more) between the same
   /// rings. Parts wholly between a ball or cylindrical roller bearing's rings (cages, seals,
   /// shields; their meshes at the recognition's poses) are held with the outer ring too.

@@ -289,7 +289,7 @@ TEST(Bearing, ACageOfATaperedOrASphericalRollerBearingIsHeldWithTheOuterRing) {
     const char* kind;
     std::size_t parts;
   } cases[] = {{[](const std::filesystem::path& file) {
-                  testing::WriteTaperedRollerBearingStep(file, true);
+                  testing::WriteTaperedRollerBearingStep(file, {.cage = true});
                 },
                 "a tapered roller bearing, 25 x 52 x 16 mm: ", 18},
                {[](const std::filesystem::path& file) {
@@ -366,13 +366,33 @@ TEST(Bearing, TaperedRollersWithADomedLargeEndAreMeasuredOnTheirMeshes) {
   // circle"; the dome (0.0775 mm) lengthens each roller, and moves its middle 0.039 mm along
   // its axis, 0.01 mm outward at 15 deg: 12.1 mm, and 39.02 mm across.
   const Assembly a = LoadFixture([](const std::filesystem::path& file) {
-    testing::WriteTaperedRollerBearingStep(file, false, true);
+    testing::WriteTaperedRollerBearingStep(file, {.domed_rollers = true});
   });
   ASSERT_EQ(a.parts().size(), 17u);
   const Analysis an = Analyze(a);
   ExpectBearing(an, "a tapered roller bearing, 25 x 52 x 16 mm: ",
                 "on 15 rollers of 6.6 x 12.1 mm at 15 deg to its axis on a 39.02 mm pitch circle");
   ExpectOneBearingAlone(a, an);
+}
+
+TEST(Bearing, TaperedRollersOnARacewayCutIntoAShaftTurnItInTheCup) {
+  // No inner ring: the shaft's cylinders lie 8 mm beyond the rollers' plane; its mesh, the
+  // raceway, reaches them. The size is the shaft's diameter, the cup's outside and width.
+  const Assembly a = LoadFixture([](const std::filesystem::path& file) {
+    testing::WriteTaperedRollerBearingStep(file, {.raceway_on_shaft = true});
+  });
+  ASSERT_EQ(a.parts().size(), 17u);
+  const Analysis an = Analyze(a);
+  const Diagnostic* bearing =
+      ExpectBearing(an, "a tapered roller bearing, 25 x 52 x 12.5 mm: ",
+                    "on 15 rollers of 6.6 x 12 mm at 15 deg to its axis on a 39 mm pitch circle");
+  ASSERT_NE(bearing, nullptr);
+  EXPECT_EQ(bearing->parts[0], a.part(0).id);  // the shaft, written first
+  ExpectOneBearingAlone(a, an);
+  // The same shaft 40 mm along its axis, its raceway away from the rollers: no bearing.
+  AssemblySpec moved = a.spec();
+  moved.parts[0].X_WP = RigidTransform::Translation({0, 0, 40}) * moved.parts[0].X_WP;
+  EXPECT_EQ(Find(Analyze(Assembly(moved)), "bearing"), nullptr);
 }
 
 TEST(Bearing, TwoRowsOfBallsOrBarrelRollersBetweenTheSameRingsAreOneDoubleRowBearing) {

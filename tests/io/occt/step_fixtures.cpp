@@ -786,7 +786,8 @@ TopoDS_Shape Revolved(const std::vector<std::array<double, 2>>& rz) {
 
 }  // namespace
 
-void WriteTaperedRollerBearingStep(const std::filesystem::path& file, bool cage, bool domed) {
+void WriteTaperedRollerBearingStep(const std::filesystem::path& file,
+                                   const TaperedRollerBearingOptions& options) {
   const double tilt = 15 * M_PI / 180, taper = 2.5 * M_PI / 180, pitch = 19.5;
   const double apex = -pitch / std::tan(tilt);  // z where every cone's apex lies
   // The raceways touch each roller along its lines nearest to and farthest from the axis.
@@ -795,12 +796,25 @@ void WriteTaperedRollerBearingStep(const std::filesystem::path& file, bool cage,
   TopoDS_Compound all;
   BRep_Builder builder;
   builder.MakeCompound(all);
-  builder.Add(all, Revolved({{12.5, -8},
-                             {inner_raceway(-8), -8},
-                             {inner_raceway(7), 7},
-                             {19, 7},
-                             {19, 8},
-                             {12.5, 8}}));
+  if (options.raceway_on_shaft) {
+    builder.Add(all, Revolved({{0, -30},
+                               {12.5, -30},
+                               {12.5, -8},
+                               {inner_raceway(-8), -8},
+                               {inner_raceway(7), 7},
+                               {19, 7},
+                               {19, 8},
+                               {12.5, 8},
+                               {12.5, 30},
+                               {0, 30}}));
+  } else {
+    builder.Add(all, Revolved({{12.5, -8},
+                               {inner_raceway(-8), -8},
+                               {inner_raceway(7), 7},
+                               {19, 7},
+                               {19, 8},
+                               {12.5, 8}}));
+  }
   builder.Add(all,
               Revolved({{outer_raceway(-7), -7}, {26, -7}, {26, 5.5}, {outer_raceway(5.5), 5.5}}));
   const int rollers = 15;
@@ -811,7 +825,7 @@ void WriteTaperedRollerBearingStep(const std::filesystem::path& file, bool cage,
   TopoDS_Shape roller = BRepPrimAPI_MakeCone(gp_Ax2(small_end, along), small * std::tan(taper),
                                              (small + length) * std::tan(taper), length)
                             .Shape();
-  if (domed) {
+  if (options.domed_rollers) {
     // The sphere about the apex through the large end's rim, beyond the large end's plane.
     const double large = small + length, large_r = large * std::tan(taper);
     const gp_Pnt large_end(small_end.XYZ() + length * along.XYZ());
@@ -839,9 +853,11 @@ void WriteTaperedRollerBearingStep(const std::filesystem::path& file, bool cage,
     gp_Trsf turn;
     turn.SetRotation(gp::OZ(), 2 * M_PI * k / rollers);
     builder.Add(all, BRepBuilderAPI_Transform(roller, turn, true).Shape());
-    if (cage) band = BRepAlgoAPI_Cut(band, BRepBuilderAPI_Transform(window, turn, true)).Shape();
+    if (options.cage) {
+      band = BRepAlgoAPI_Cut(band, BRepBuilderAPI_Transform(window, turn, true)).Shape();
+    }
   }
-  if (cage) builder.Add(all, band);
+  if (options.cage) builder.Add(all, band);
   WriteStep(all, file);
 }
 

@@ -96,6 +96,18 @@ void WriteBallBearingStep(const std::filesystem::path& file, int balls, int copi
 /// std::runtime_error when it cannot write.
 void WriteRollerBearingStep(const std::filesystem::path& file);
 
+/// What WriteTaperedRollerBearingStep adds to or changes in its bearing.
+struct TaperedRollerBearingOptions {
+  /// A cage: a conical band 1.6 mm thick across the rollers' pitch cone from z = -6.5 to 6.5
+  /// (flat ends), with a window 0.3 mm wider than each roller all round.
+  bool cage = false;
+  /// Each roller's large end a spherical cap about the apex through the end's rim (0.08 mm
+  /// high), as it bears on the rib of a real bearing's cone: one flat end only.
+  bool domed_rollers = false;
+  /// No inner ring: its raceway and rib cut into a solid 25 mm shaft from z = -30 to 30.
+  bool raceway_on_shaft = false;
+};
+
 /// Writes a STEP file (AP214, no product names) of a tapered roller bearing (a 30205's bore
 /// and outside, 25 x 52 x 16 mm), axis z, each part a solid of revolution: an inner ring
 /// (cone) from z = -8 to 8 with a 25 mm bore, a conical raceway of half-angle 12.5 deg and a
@@ -103,13 +115,10 @@ void WriteRollerBearingStep(const std::filesystem::path& file);
 /// of half-angle 17.5 deg and a 52 mm outside; and 15 tapered rollers 12 mm long with flat
 /// ends, half-angle 2.5 deg, their axes at 15 deg to z, their mid-points on a 39 mm pitch
 /// circle in z = 0. The rollers' and raceways' cones share their apex on the axis (z =
-/// -72.775), as in every tapered roller bearing. With `cage`, a cage too: a conical band 1.6 mm
-/// thick across the rollers' pitch cone from z = -6.5 to 6.5 (flat ends), with a window
-/// 0.3 mm wider than each roller all round. With `domed`, each roller's large end is a
-/// spherical cap about the apex through the end's rim (0.08 mm high), as it bears on the rib
-/// of a real bearing's cone: one flat end only. Throws std::runtime_error when it cannot write.
-void WriteTaperedRollerBearingStep(const std::filesystem::path& file, bool cage = false,
-                                   bool domed = false);
+/// -72.775), as in every tapered roller bearing. `options` add a cage, domed rollers, or put
+/// the raceway on a shaft. Throws std::runtime_error when it cannot write.
+void WriteTaperedRollerBearingStep(const std::filesystem::path& file,
+                                   const TaperedRollerBearingOptions& options = {});
 
 /// Writes a STEP file (AP214, no product names) of a double-row deep-groove ball bearing
 /// (25 x 52 x 20 mm), axis z: an inner ring (bore 25 mm, lands 35 mm) and an outer ring
