@@ -771,9 +771,10 @@ void WriteThreeSolidBallBearingStep(const std::filesystem::path& file) {
   builder.Add(all, BRepAlgoAPI_Cut(Tube(7.5, 20.5 / 2, -width / 2, width / 2), raceway).Shape());
   builder.Add(all, BRepAlgoAPI_Cut(Tube(26.7 / 2, 16, -width / 2, width / 2), raceway).Shape());
   // Each ball the first one turned about the axis, so that every sphere's seam lies outside
-  // the cage, as the first's does: fused across the cage, the seams of the balls at 80 and 280
-  // degrees gave faces that Open CASCADE measures as whole spheres and that the reader, after
-  // healing, took for partial ones (an artifact of this fuse, not looked into further).
+  // the cage, as the first's does. With the seams of the balls at 80 and 280 degrees across the
+  // cage, each of their faces has two wires, one running along the seam; written to STEP and
+  // read back, Open CASCADE measures such a face as the whole sphere, and the reader, after
+  // healing, took it for a partial one (not looked into further).
   const TopoDS_Shape first = BRepPrimAPI_MakeSphere(gp_Pnt(pitch, 0, 0), ball).Shape();
   TopoDS_Shape balls_and_cage = Tube(11, 12.5, -1.5, 1.5);
   for (int k = 0; k < 9; ++k) {
