@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <tuple>
 
 #include "kernel/geometry/circle_fit.h"
 #include "kernel/support/union_find.h"
@@ -62,14 +63,16 @@ std::optional<SpaceCircle> FitSpaceCircle(const std::vector<Eigen::Vector3d>& po
   return c;
 }
 
-/// A part that is one rolling element: a ball, a roller (one cylinder and flat ends across
+/// One rolling element: a part that is a ball, a roller (one cylinder and flat ends across
 /// it), or a roller whose side gives no feature (a cone or a barrel's torus): two round flat
-/// ends facing away from each other along the line through their centres, and nothing else;
-/// a tapered roller's ends differ in size, a barrel roller's are equal.
+/// ends facing away from each other along the line through their centres, or one such end and
+/// a domed other end (RollerByOneEnd), and nothing else; a tapered roller's ends differ in
+/// size, a barrel roller's are equal. Or one ball of a ball set (several in one part).
 struct RollingElement {
   enum class Shape { kBall, kRoller, kTaperedRoller, kBarrelRoller };
   Shape shape = Shape::kBall;
-  const WorldFeature* w;   ///< the ball, the roller's cylinder, or the (larger) end
+  /// The ball, the roller's cylinder, the larger of its two flat ends, or its one flat end.
+  const WorldFeature* w;
   Eigen::Vector3d center;  ///< world
   Eigen::Vector3d axis;    ///< world, unit; a ball's means nothing
   double diameter = 0.0;   ///< mm; a tapered roller's mean of its ends, a barrel's ends'
@@ -111,10 +114,12 @@ std::optional<RollingElement> RollerByItsEnds(const WorldFeature& x, const World
 /// The roller of a part whose only feature is `end`, one round flat end (as wide as high within
 /// `L` mm), whose other end is domed (a tapered roller's large end bearing on its rib is a
 /// sphere about the apex), or nothing. Its `mesh` (part frame, at pose `X_WP`) gives the rest:
-/// every vertex lies behind the end's face within `L`; the roller's length is the mesh's
-/// extent along the end's normal. A roller whose widest section lies in the far half and is
-/// wider than the flat end by more than `L` is tapered (its large end that section), any other
-/// a barrel roller of the flat end's diameter.
+/// every vertex lies behind the end's face within `L`; the roller's length, the mesh's extent
+/// along the end's normal, is at least half the end's diameter; and its last quarter is at
+/// least 0.8 times as wide as the flat end (a cone, a dome or a foot tapers off). A roller
+/// whose widest section lies in the far half and is wider than the flat end by more than `L`
+/// is tapered (its large end that section), any other a barrel roller of the flat end's
+/// diameter.
 std::optional<RollingElement> RollerByOneEnd(const WorldFeature& end, const TriangleMesh& mesh,
                                              const RigidTransform& X_WP, double L) {
   if (end.f.kind != FeatureKind::kFace || std::abs(end.f.width - end.f.height) > L ||
@@ -123,18 +128,28 @@ std::optional<RollingElement> RollerByOneEnd(const WorldFeature& end, const Tria
   }
   const Eigen::Vector3d& p_WO = end.axis.origin;
   const Eigen::Vector3d into = -end.axis.direction;  // the face's normal points out of the part
-  double length = 0.0, widest = 0.0, widest_at = 0.0;
+  struct Section {
+    double h, r;  // mm along `into` from the end's face, and from its axis
+  };
+  std::vector<Section> sections;
+  sections.reserve(mesh.vertices.size());
+  double length = 0.0;
   for (const Eigen::Vector3d& p_P : mesh.vertices) {
     const Eigen::Vector3d d = X_WP * p_P - p_WO;
     const double h = d.dot(into);
     if (h < -L) return std::nullopt;
-    const double r = (d - h * into).norm();
+    sections.push_back({h, (d - h * into).norm()});
     length = std::max(length, h);
-    if (r > widest) widest = r, widest_at = h;
   }
-  if (length <= L) return std::nullopt;
   const double small = end.f.width / 2;
-  const bool tapered = widest - small > L && widest_at > length / 2;
+  if (length <= L || length < small) return std::nullopt;
+  double widest = 0.0, widest_at = 0.0, far = 0.0;
+  for (const Section& s : sections) {
+    if (s.r > widest) widest = s.r, widest_at = s.h;
+    if (s.h >= 0.75 * length) far = std::max(far, s.r);
+  }
+  if (far < 0.8 * small) return std::nullopt;
+  const bool tapered = 2 * widest - end.f.width > L && widest_at > length / 2;
   RollingElement roller;
   roller.shape =
       tapered ? RollingElement::Shape::kTaperedRoller : RollingElement::Shape::kBarrelRoller;
@@ -168,6 +183,8 @@ struct Recognizer::BearingRow {
   /// The outer ring was found by its outside: a self-aligning ball bearing's, whose raceway
   /// is a sphere (no feature).
   bool self_aligning = false;
+  /// The inner raceway is cut into a shaft (ShaftUnderRollers): no ring, hollow or not.
+  bool raceway_on_shaft = false;
   /// mm: a thrust bearing's washers' raceway faces from the elements' plane, below and above.
   std::array<double, 2> washers{0.0, 0.0};
 };
@@ -181,9 +198,9 @@ bool Recognizer::FindBearingRings(BearingRow& row) const {
   const SpaceCircle& pitch = row.pitch;
   const bool by_ends = ByTheirEnds(first.shape);
   row.tilt = AngleBetweenLines(first.axis, pitch.normal);
-  const bool ashown_lengthradii =
+  const bool along_radii =
       first.shape == RollingElement::Shape::kRoller && std::abs(row.tilt - kPi / 2) <= A_;
-  if (first.shape == RollingElement::Shape::kRoller && row.tilt > A_ && !ashown_lengthradii) {
+  if (first.shape == RollingElement::Shape::kRoller && row.tilt > A_ && !along_radii) {
     return false;
   }
   if (by_ends && row.tilt > kPi / 4) return false;
@@ -193,13 +210,13 @@ bool Recognizer::FindBearingRings(BearingRow& row) const {
         const Eigen::Vector3d radial = (e->center - pitch.center).normalized();
         const Eigen::Vector3d across = pitch.normal.cross(radial).normalized();
         return std::abs(AngleBetweenLines(e->axis, pitch.normal) - row.tilt) > A_ ||
-               ((by_ends || ashown_lengthradii) && std::abs(e->axis.dot(across)) > std::sin(A_));
+               ((by_ends || along_radii) && std::abs(e->axis.dot(across)) > std::sin(A_));
       })) {
     return false;
   }
   std::set<std::size_t> in_row;
   for (const RollingElement* e : row.elements) in_row.insert(e->w->ref.part);
-  if (ashown_lengthradii) return FindThrustWashers(row, in_row);
+  if (along_radii) return FindThrustWashers(row, in_row);
   // The elements' reach from the pitch circle: across it (a tilted roller's ends and sides)
   // and along its axis.
   const double element_r = first.diameter / 2;
@@ -246,21 +263,38 @@ bool Recognizer::FindBearingRings(BearingRow& row) const {
       beyond = &w;
     }
   }
-  if (by_ends && !row.inner && row.outer) row.inner = ShaftUnderRollers(row, in_row, inner_to);
-  if (row.inner && row.outer && row.inner->ref.part != row.outer->ref.part) return true;
-  // Balls with an inner ring and no bore at their outer side: a self-aligning ball bearing,
-  // whose outer raceway is a sphere about the bearing's centre, which gives no feature. Its
-  // outer ring is the nearest outside cylinder beyond the balls.
-  if (first.shape == RollingElement::Shape::kBall && row.inner && !row.outer && beyond &&
-      beyond->ref.part != row.inner->ref.part) {
-    row.outer = beyond;
-    row.self_aligning = true;
-    return true;
+  if (by_ends && !row.inner && row.outer) {
+    row.inner = ShaftUnderRollers(row, in_row, inner_to);
+    row.raceway_on_shaft = row.inner != nullptr;
   }
-  // Balls with no rings around them may run between washers.
+  if (row.inner && row.outer && row.inner->ref.part != row.outer->ref.part) return true;
+  const WorldFeature* land = row.inner;
   row.inner = row.outer = nullptr;
-  return first.shape == RollingElement::Shape::kBall && FindThrustWashers(row, in_row);
+  if (first.shape != RollingElement::Shape::kBall) return false;
+  // Balls with no rings around them may run between washers.
+  if (FindThrustWashers(row, in_row)) return true;
+  // Balls on an inner ring's land or raceway, with no bore at their outer side: a
+  // self-aligning ball bearing, whose outer raceway is a sphere about the bearing's centre,
+  // which gives no feature. Its outer ring is the nearest outside cylinder beyond the balls,
+  // on a part with no bore between the two (a housing's bore around the balls is no raceway).
+  if (!land || !beyond || beyond->ref.part == land->ref.part) return false;
+  for (std::size_t f = 0; f < assembly_.FeatureCount(beyond->ref.part); ++f) {
+    const WorldFeature& w = At({beyond->ref.part, f});
+    const double along = (pitch.center - w.axis.origin).dot(w.axis.direction);
+    if (w.f.kind == FeatureKind::kHole && w.f.diameter / 2 > pitch.radius &&
+        w.f.diameter < beyond->f.diameter &&
+        AngleBetweenLines(w.axis.direction, pitch.normal) <= A_ &&
+        DistanceToLine(pitch.center, w.axis.origin, w.axis.direction) <= L_ &&
+        std::max({0.0, -along, along - w.axis.length}) <= reach + L_) {
+      return false;
+    }
+  }
+  row.inner = land;
+  row.outer = beyond;
+  row.self_aligning = true;
+  return true;
 }
+
 const WorldFeature* Recognizer::ShaftUnderRollers(const BearingRow& row,
                                                   const std::set<std::size_t>& in_row,
                                                   double inside) const {
@@ -268,7 +302,7 @@ const WorldFeature* Recognizer::ShaftUnderRollers(const BearingRow& row,
   // shaft. Of the parts with a shaft coaxial with the pitch circle and thinner than `inside`
   // (anywhere along the axis: its cylinders lie beyond the raceway), the one whose mesh comes
   // nearest the rollers within their reach of their plane, inside the pitch circle, and at
-  // least as near as their inner side; its widest such shaft.
+  // least as near as their inner side; its such shaft nearest their plane, then the widest.
   const RollingElement& first = *row.elements.front();
   const SpaceCircle& pitch = row.pitch;
   const double reach = first.length / 2 * std::cos(row.tilt) + first.diameter / 2;
@@ -292,10 +326,16 @@ const WorldFeature* Recognizer::ShaftUnderRollers(const BearingRow& row,
         if (std::abs(h) <= reach && r < pitch.radius) at->second = std::max(at->second, r);
       }
     }
-    const bool wider_on_same_part = shaft && shaft->ref.part == part &&
-                                    (w.f.diameter > shaft->f.diameter ||
-                                     (w.f.diameter == shaft->f.diameter && NameLess(w, *shaft)));
-    if (at->second > nearest || (at->second == nearest && wider_on_same_part)) {
+    // Of one part's shafts, the one nearest the rollers' plane (a journal beside the
+    // raceway, not a collar further on), then the widest.
+    auto from_plane = [&](const WorldFeature& x) {
+      const double along = (pitch.center - x.axis.origin).dot(x.axis.direction);
+      return std::max({0.0, -along, along - x.axis.length});
+    };
+    const bool better_on_same_part = shaft && shaft->ref.part == part &&
+                                     std::tuple(from_plane(w), -w.f.diameter) <
+                                         std::tuple(from_plane(*shaft), -shaft->f.diameter);
+    if (at->second > nearest || (at->second == nearest && better_on_same_part)) {
       nearest = at->second;
       shaft = &w;
     }
@@ -354,8 +394,9 @@ bool Recognizer::FindThrustWashers(BearingRow& row, const std::set<std::size_t>&
 }
 
 void Recognizer::AddBearings() {
-  // The rolling elements: parts that are one ball and nothing else, one shaft and faces
-  // across its axis (its ends), or two round ends, sorted by shape and size.
+  // The rolling elements: parts that are one ball and nothing else, or a ball set; one shaft
+  // and faces across its axis (its ends); two round ends; or one round end, measured on the
+  // mesh. Sorted by shape and size.
   std::vector<RollingElement> elements;
   for (std::size_t part = 0; part < assembly_.parts().size(); ++part) {
     const std::size_t n = assembly_.FeatureCount(part);
@@ -546,10 +587,12 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
            DistanceToLine(pitch.center, w.axis.origin, w.axis.direction) <= L_;
   };
   // The inner ring's bore: its smallest hole on the axis, inside the raceway. A needle
-  // bearing's shaft, which has none, is no ring: it runs on the shaft's own diameter. The
-  // inner ring of rollers found by their ends was found by its bore.
+  // bearing's shaft, which has none, is no ring: it runs on the shaft's own diameter; nor is
+  // a shaft with the raceway cut into it, hollow or not. The inner ring of rollers found by
+  // their ends was found by its bore.
   double bore = inner->f.kind == FeatureKind::kHole ? inner->f.diameter : 0.0;
-  for (std::size_t f = 0; f < assembly_.FeatureCount(inner->ref.part); ++f) {
+  for (std::size_t f = 0; !row.raceway_on_shaft && f < assembly_.FeatureCount(inner->ref.part);
+       ++f) {
     const WorldFeature& w = At({inner->ref.part, f});
     if (w.f.kind == FeatureKind::kHole && on_axis(w) && w.f.diameter < inner->f.diameter &&
         (bore == 0.0 || w.f.diameter < bore)) {

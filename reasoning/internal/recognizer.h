@@ -179,12 +179,18 @@ class Recognizer {
   /// equal sizes, and nothing else: their cones and tori give no feature) whose axes lie in
   /// planes through the circle's axis at one inclination of at most 45 deg (a tapered
   /// roller's leans) are a tapered or spherical roller bearing's, between the nearest bore
-  /// inside them and the nearest outside cylinder outside them. Elements of one size on
+  /// inside them (or the shaft their inner raceway is cut into, ShaftUnderRollers) and the
+  /// nearest outside cylinder outside them; such a roller may have one flat end and a domed
+  /// other, measured on its mesh. Three or more balls in one part (fused with their cage) are
+  /// a ball set, each ball an element. Balls on an inner ring's land with no bore at their
+  /// outer side run in a self-aligning bearing's spherical raceway: its outer ring is the
+  /// nearest outside cylinder beyond them. Elements of one size on
   /// circles side by side along their axis are split into rows; rows between the same rings
   /// are one (double-row) bearing. Balls, or rollers along radii, between two washers are a
   /// thrust bearing (FindThrustWashers). One info diagnostic `bearing` per bearing gives its
-  /// kind (ball, tapered roller, spherical or barrel roller, cylindrical roller, needle
-  /// roller: rollers 2.5 diameters long or more; thrust), its rows of elements and size (bore
+  /// kind (ball, self-aligning ball, tapered roller, spherical or barrel roller, cylindrical
+  /// roller, needle roller: rollers 2.5 diameters long or more; thrust), its rows of elements
+  /// and size (bore
   /// x outside diameter x width, mm). Before the implied pins and the overrides.
   void AddBearings();
   /// A row of a bearing's rolling elements on their pitch circle, and its rings (AddBearings).
@@ -205,8 +211,8 @@ class Recognizer {
   const WorldFeature* ShaftUnderRollers(const BearingRow& row, const std::set<std::size_t>& in_row,
                                         double inside) const;
   /// The pairs and the `bearing` info of one bearing: `rows` (one or more) between the same
-  /// rings. Parts wholly between a ball or cylindrical roller bearing's rings (cages, seals,
-  /// shields; their meshes at the recognition's poses) are held with the outer ring too.
+  /// rings. Parts wholly between the rings (cages, seals, shields; their meshes at the
+  /// recognition's poses) are held with the outer ring too.
   void AddBearing(std::span<const BearingRow> rows);
 
   /// Bearings modelled as one solid (vendor parts): a part whose outside cylinder and bore

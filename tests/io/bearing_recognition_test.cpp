@@ -10,12 +10,14 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "io/load_assembly.h"
 #include "io/occt/step_fixtures.h"
+#include "kernel/mesh/mesh_builder.h"
 #include "reasoning/analysis.h"
 
 namespace mechanist {
@@ -390,9 +392,35 @@ TEST(Bearing, TaperedRollersWithADomedLargeEndAreMeasuredOnTheirMeshes) {
   ExpectOneBearingAlone(a, an);
 }
 
+TEST(Bearing, DomesWithOneFlatFaceOnTheCircleAreNoRollers) {
+  // The capped rollers replaced by hemispheres on the same flat faces, domed into the part:
+  // they taper off, so they are no rollers, and there is no bearing.
+  const Assembly a = LoadFixture([](const std::filesystem::path& file) {
+    testing::WriteTaperedRollerBearingStep(file, {.domed_rollers = true});
+  });
+  ASSERT_EQ(a.parts().size(), 17u);
+  ASSERT_NE(Find(Analyze(a), "bearing"), nullptr);
+  AssemblySpec domes = a.spec();
+  for (std::size_t i = 2; i < domes.parts.size(); ++i) {  // the rollers, after the rings
+    Part& part = domes.parts[i];
+    ASSERT_EQ(part.features.size(), 1u);
+    const Feature& end = part.features[0];  // in the part's frame
+    const Eigen::Vector3d n = end.axis.normalized();
+    const Eigen::Vector3d e1 = n.unitOrthogonal(), e2 = n.cross(e1);
+    TriangleMesh dome = MakeUvSphere(end.width / 2, 12, 24);
+    for (Eigen::Vector3d& v : dome.vertices) {
+      const double z = std::min(v.z(), 0.0);  // the lower half, its top flattened
+      v = end.origin + v.x() * e1 + v.y() * e2 + z * n;
+    }
+    part.mesh = std::make_shared<const TriangleMesh>(std::move(dome));
+  }
+  EXPECT_EQ(Find(Analyze(Assembly(domes)), "bearing"), nullptr);
+}
+
 TEST(Bearing, TaperedRollersOnARacewayCutIntoAShaftTurnItInTheCup) {
   // No inner ring: the shaft's cylinders lie 8 mm beyond the rollers' plane; its mesh, the
-  // raceway, reaches them. The size is the shaft's diameter, the cup's outside and width.
+  // raceway, reaches them. The size is the shaft's diameter (not its 5 mm centre hole's: a
+  // shaft is no ring), the cup's outside and width.
   const Assembly a = LoadFixture([](const std::filesystem::path& file) {
     testing::WriteTaperedRollerBearingStep(file, {.raceway_on_shaft = true});
   });
@@ -435,6 +463,25 @@ TEST(Bearing, TwoRowsOfBallsOrBarrelRollersBetweenTheSameRingsAreOneDoubleRowBea
     ExpectBearing(an, c.kind, c.rows);
     ExpectOneBearingAlone(a, an);
   }
+}
+
+TEST(Bearing, BallsOnALandInAHousingsWideBoreAreNoSelfAligningBearing) {
+  // The self-aligning bearing's outer ring given a 46.5 mm bore around the balls, too wide to
+  // be their raceway: the part around them has a bore, so it is no spherical raceway's ring.
+  const Assembly a = LoadFixture(testing::WriteSelfAligningBallBearingStep);
+  ASSERT_NE(Find(Analyze(a), "bearing"), nullptr);
+  AssemblySpec wide = a.spec();
+  Part& outer = wide.parts.back();  // written last
+  Feature bore;
+  bore.id = "wide_bore";
+  bore.kind = FeatureKind::kHole;
+  bore.origin = outer.X_WP.inverse() * Eigen::Vector3d(0, 0, -7.5);
+  bore.axis = outer.X_WP.inverse().RotateDirection(Eigen::Vector3d::UnitZ());
+  bore.diameter = 46.5;
+  bore.length = 15;
+  bore.through = true;
+  outer.features.push_back(bore);
+  EXPECT_EQ(Find(Analyze(Assembly(wide)), "bearing"), nullptr);
 }
 
 TEST(Bearing, BallsBetweenTwoGroovedWashersAreAThrustBearing) {

@@ -110,7 +110,8 @@ struct TaperedRollerBearingOptions {
   /// Each roller's large end a spherical cap about the apex through the end's rim (0.08 mm
   /// high), as it bears on the rib of a real bearing's cone: one flat end only.
   bool domed_rollers = false;
-  /// No inner ring: its raceway and rib cut into a solid 25 mm shaft from z = -30 to 30.
+  /// No inner ring: its raceway and rib cut into a 25 mm shaft from z = -30 to 30, with a 5 mm
+  /// centre hole 10 mm deep in its end at z = 30.
   bool raceway_on_shaft = false;
 };
 
