@@ -235,6 +235,18 @@ void ExpectOneBearingAlone(const Assembly& a, const Analysis& an) {
   EXPECT_EQ(Find(an, "part_unconnected"), nullptr);
 }
 
+// Loads the assembly `write` puts in a STEP file, checks it has `parts` parts and is one
+// bearing alone (ExpectOneBearingAlone) whose info begins with `begins` and holds `holds`.
+void ExpectLoneBearingFixture(const std::function<void(const std::filesystem::path&)>& write,
+                              std::size_t parts, const std::string& begins,
+                              const std::string& holds) {
+  const Assembly a = LoadFixture(write);
+  ASSERT_EQ(a.parts().size(), parts);
+  const Analysis an = Analyze(a);
+  ExpectBearing(an, begins, holds);
+  ExpectOneBearingAlone(a, an);
+}
+
 TEST(Bearing, ABallBearingModelledInOpenCascadeIsFoundAsWrittenAndAsBSplines) {
   // A vendor-style model: rings with toroidal raceways and nine separate balls. Written again
   // with every surface a B-spline (balls, raceways, lands), it must give the same bearing.
@@ -272,32 +284,23 @@ TEST(Bearing, ABallBearingModelledInOpenCascadeIsFoundAsWrittenAndAsBSplines) {
 }
 
 TEST(Bearing, ACageBetweenTheRingsIsHeldWithTheOuterRing) {
-  const Assembly a = LoadFixture(
-      [](const std::filesystem::path& file) { testing::WriteBallBearingStep(file, 9, 1, true); });
-  ASSERT_EQ(a.parts().size(), 12u);
-  const Analysis an = Analyze(a);
-  const Diagnostic* bearing =
-      ExpectBearing(an, "a ball bearing, 15 x 32 x 9 mm: ",
-                    "(between the rings: a cage, seal or shield) is held with the outer ring too");
-  ASSERT_NE(bearing, nullptr);
-  EXPECT_EQ(bearing->parts.back(), a.part(11).id);  // the cage, written last
-  ExpectOneBearingAlone(a, an);                     // rings, 9 balls and the cage: 11 pairs
-}
-
-TEST(Bearing, ACageOfATaperedOrASphericalRollerBearingIsHeldWithTheOuterRing) {
-  // Rings found by their bore and outside: the cage lies between those.
+  // Between the lands beside the balls; where the rings were found by their bore and outside
+  // (tapered and spherical roller bearings), between those. Each cage is written last.
   const struct {
     std::function<void(const std::filesystem::path&)> write;
     const char* kind;
     std::size_t parts;
-  } cases[] = {{[](const std::filesystem::path& file) {
-                  testing::WriteTaperedRollerBearingStep(file, {.cage = true});
-                },
-                "a tapered roller bearing, 25 x 52 x 16 mm: ", 18},
-               {[](const std::filesystem::path& file) {
-                  testing::WriteSphericalRollerBearingStep(file, true);
-                },
-                "a double-row spherical roller bearing, 25 x 52 x 18 mm: ", 31}};
+  } cases[] = {
+      {[](const std::filesystem::path& file) { testing::WriteBallBearingStep(file, 9, 1, true); },
+       "a ball bearing, 15 x 32 x 9 mm: ", 12},
+      {[](const std::filesystem::path& file) {
+         testing::WriteTaperedRollerBearingStep(file, {.cage = true});
+       },
+       "a tapered roller bearing, 25 x 52 x 16 mm: ", 18},
+      {[](const std::filesystem::path& file) {
+         testing::WriteSphericalRollerBearingStep(file, true);
+       },
+       "a double-row spherical roller bearing, 25 x 52 x 18 mm: ", 31}};
   for (const auto& c : cases) {
     SCOPED_TRACE(c.kind);
     const Assembly a = LoadFixture(c.write);
@@ -306,8 +309,8 @@ TEST(Bearing, ACageOfATaperedOrASphericalRollerBearingIsHeldWithTheOuterRing) {
     const Diagnostic* bearing = ExpectBearing(
         an, c.kind, "(between the rings: a cage, seal or shield) is held with the outer ring too");
     ASSERT_NE(bearing, nullptr);
-    EXPECT_EQ(bearing->parts.back(), a.part(c.parts - 1).id);  // the cage, written last
-    ExpectOneBearingAlone(a, an);
+    EXPECT_EQ(bearing->parts.back(), a.part(c.parts - 1).id);
+    ExpectOneBearingAlone(a, an);  // e.g. the 6002: rings, 9 balls and the cage, 11 pairs
   }
 }
 
@@ -382,14 +385,12 @@ TEST(Bearing, TaperedRollersWithADomedLargeEndAreMeasuredOnTheirMeshes) {
   // end. With their ends flat, the same bearing reads "6.6 x 12 mm ... on a 39 mm pitch
   // circle"; the dome (0.0775 mm) lengthens each roller, and moves its middle 0.039 mm along
   // its axis, 0.01 mm outward at 15 deg: 12.1 mm, and 39.02 mm across.
-  const Assembly a = LoadFixture([](const std::filesystem::path& file) {
-    testing::WriteTaperedRollerBearingStep(file, {.domed_rollers = true});
-  });
-  ASSERT_EQ(a.parts().size(), 17u);
-  const Analysis an = Analyze(a);
-  ExpectBearing(an, "a tapered roller bearing, 25 x 52 x 16 mm: ",
-                "on 15 rollers of 6.6 x 12.1 mm at 15 deg to its axis on a 39.02 mm pitch circle");
-  ExpectOneBearingAlone(a, an);
+  ExpectLoneBearingFixture(
+      [](const std::filesystem::path& file) {
+        testing::WriteTaperedRollerBearingStep(file, {.domed_rollers = true});
+      },
+      17, "a tapered roller bearing, 25 x 52 x 16 mm: ",
+      "on 15 rollers of 6.6 x 12.1 mm at 15 deg to its axis on a 39.02 mm pitch circle");
 }
 
 TEST(Bearing, DomesWithOneFlatFaceOnTheCircleAreNoRollers) {
@@ -496,13 +497,10 @@ TEST(Bearing, BallsBetweenTwoGroovedWashersAreAThrustBearing) {
   EXPECT_EQ(bearing->features[0].find("/hole_1"), bearing->features[0].size() - 7);  // bores
   ExpectOneBearingAlone(a, an);  // 12 balls: 14 parts, 13 pairs
   // With a cage between the washers, the cage is held with the housing washer too.
-  const Assembly caged = LoadFixture(
-      [](const std::filesystem::path& file) { testing::WriteThrustBallBearingStep(file, true); });
-  ASSERT_EQ(caged.parts().size(), 15u);
-  const Analysis an_caged = Analyze(caged);
-  ExpectBearing(an_caged, "a thrust ball bearing, 25 x 42 x 11 mm: ",
-                "(between the rings: a cage, seal or shield) is held with the housing washer too");
-  ExpectOneBearingAlone(caged, an_caged);
+  ExpectLoneBearingFixture(
+      [](const std::filesystem::path& file) { testing::WriteThrustBallBearingStep(file, true); },
+      15, "a thrust ball bearing, 25 x 42 x 11 mm: ",
+      "(between the rings: a cage, seal or shield) is held with the housing washer too");
 }
 
 TEST(Bearing, NeedlesInADrawnCupOnAShaftAreANeedleBearingAndTheShaftTurnsInIt) {
