@@ -63,6 +63,19 @@ std::optional<SpaceCircle> FitSpaceCircle(const std::vector<Eigen::Vector3d>& po
   return c;
 }
 
+/// Whether `w`'s axis is `pitch`'s: within `A` rad of its normal, its line within `L` mm of
+/// its centre.
+bool OnAxisOf(const WorldFeature& w, const SpaceCircle& pitch, double L, double A) {
+  return AngleBetweenLines(w.axis.direction, pitch.normal) <= A &&
+         DistanceToLine(pitch.center, w.axis.origin, w.axis.direction) <= L;
+}
+
+/// mm along `w`'s axis from its segment to `pitch`'s plane: 0 when the segment reaches it.
+double FromPlaneOf(const WorldFeature& w, const SpaceCircle& pitch) {
+  const double along = (pitch.center - w.axis.origin).dot(w.axis.direction);
+  return std::max({0.0, -along, along - w.axis.length});
+}
+
 /// One rolling element: a part that is a ball, a roller (one cylinder and flat ends across
 /// it), or a roller whose side gives no feature (a cone or a barrel's torus): two round flat
 /// ends facing away from each other along the line through their centres, or one such end and
@@ -239,14 +252,8 @@ bool Recognizer::FindBearingRings(BearingRow& row) const {
   for (const WorldFeature& w : features_) {
     const bool in = w.f.kind == inner_kind, out = w.f.kind == outer_kind;
     if ((!in && !out) || in_row.count(w.ref.part)) continue;
-    if (AngleBetweenLines(w.axis.direction, pitch.normal) > A_ ||
-        DistanceToLine(pitch.center, w.axis.origin, w.axis.direction) > L_) {
-      continue;
-    }
+    if (!OnAxisOf(w, pitch, L_, A_) || FromPlaneOf(w, pitch) > reach + L_) continue;
     const double r = w.f.diameter / 2;
-    const double along = (pitch.center - w.axis.origin).dot(w.axis.direction);
-    const double outside = std::max({0.0, -along, along - w.axis.length});
-    if (outside > reach + L_) continue;
     if (in && r > inner_from && r < inner_to &&
         (!row.inner || r > row.inner->f.diameter / 2 ||
          (r == row.inner->f.diameter / 2 && NameLess(w, *row.inner)))) {
@@ -280,12 +287,9 @@ bool Recognizer::FindBearingRings(BearingRow& row) const {
   if (!land || !beyond || beyond->ref.part == land->ref.part) return false;
   for (std::size_t f = 0; f < assembly_.FeatureCount(beyond->ref.part); ++f) {
     const WorldFeature& w = At({beyond->ref.part, f});
-    const double along = (pitch.center - w.axis.origin).dot(w.axis.direction);
     if (w.f.kind == FeatureKind::kHole && w.f.diameter / 2 > pitch.radius &&
-        w.f.diameter < beyond->f.diameter &&
-        AngleBetweenLines(w.axis.direction, pitch.normal) <= A_ &&
-        DistanceToLine(pitch.center, w.axis.origin, w.axis.direction) <= L_ &&
-        std::max({0.0, -along, along - w.axis.length}) <= reach + L_) {
+        w.f.diameter < beyond->f.diameter && OnAxisOf(w, pitch, L_, A_) &&
+        FromPlaneOf(w, pitch) <= reach + L_) {
       return false;
     }
   }
@@ -312,9 +316,7 @@ const WorldFeature* Recognizer::ShaftUnderRollers(const BearingRow& row,
   for (const WorldFeature& w : features_) {
     const std::size_t part = w.ref.part;
     if (w.f.kind != FeatureKind::kShaft || in_row.count(part) || part == row.outer->ref.part ||
-        !(w.f.diameter / 2 < inside) || AngleBetweenLines(w.axis.direction, pitch.normal) > A_ ||
-        DistanceToLine(pitch.center, w.axis.origin, w.axis.direction) > L_ ||
-        !assembly_.part(part).mesh) {
+        !(w.f.diameter / 2 < inside) || !OnAxisOf(w, pitch, L_, A_) || !assembly_.part(part).mesh) {
       continue;
     }
     auto [at, added] = raceway.emplace(part, 0.0);
@@ -328,13 +330,9 @@ const WorldFeature* Recognizer::ShaftUnderRollers(const BearingRow& row,
     }
     // Of one part's shafts, the one nearest the rollers' plane (a journal beside the
     // raceway, not a collar further on), then the widest.
-    auto from_plane = [&](const WorldFeature& x) {
-      const double along = (pitch.center - x.axis.origin).dot(x.axis.direction);
-      return std::max({0.0, -along, along - x.axis.length});
-    };
     const bool better_on_same_part = shaft && shaft->ref.part == part &&
-                                     std::tuple(from_plane(w), -w.f.diameter) <
-                                         std::tuple(from_plane(*shaft), -shaft->f.diameter);
+                                     std::tuple(FromPlaneOf(w, pitch), -w.f.diameter) <
+                                         std::tuple(FromPlaneOf(*shaft, pitch), -shaft->f.diameter);
     if (at->second > nearest || (at->second == nearest && better_on_same_part)) {
       nearest = at->second;
       shaft = &w;
@@ -374,9 +372,7 @@ bool Recognizer::FindThrustWashers(BearingRow& row, const std::set<std::size_t>&
     const std::size_t washer = facing[side]->ref.part;
     for (std::size_t f = 0; f < assembly_.FeatureCount(washer); ++f) {
       const WorldFeature& w = At({washer, f});
-      if (w.f.kind == FeatureKind::kHole &&
-          AngleBetweenLines(w.axis.direction, pitch.normal) <= A_ &&
-          DistanceToLine(pitch.center, w.axis.origin, w.axis.direction) <= L_ &&
+      if (w.f.kind == FeatureKind::kHole && OnAxisOf(w, pitch, L_, A_) &&
           (!bores[side] || w.f.diameter < bores[side]->f.diameter)) {
         bores[side] = &w;
       }
@@ -581,11 +577,6 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
            (std::min(a, b) == std::min(inner->ref.part, outer->ref.part) &&
             std::max(a, b) == std::max(inner->ref.part, outer->ref.part));
   });
-  // On the bearing's axis: the inner ring's bore, the outer ring's outside.
-  auto on_axis = [&](const WorldFeature& w) {
-    return AngleBetweenLines(w.axis.direction, pitch.normal) <= A_ &&
-           DistanceToLine(pitch.center, w.axis.origin, w.axis.direction) <= L_;
-  };
   // The inner ring's bore: its smallest hole on the axis, inside the raceway. A needle
   // bearing's shaft, which has none, is no ring: it runs on the shaft's own diameter; nor is
   // a shaft with the raceway cut into it, hollow or not. The inner ring of rollers found by
@@ -594,8 +585,8 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
   for (std::size_t f = 0; !row.raceway_on_shaft && f < assembly_.FeatureCount(inner->ref.part);
        ++f) {
     const WorldFeature& w = At({inner->ref.part, f});
-    if (w.f.kind == FeatureKind::kHole && on_axis(w) && w.f.diameter < inner->f.diameter &&
-        (bore == 0.0 || w.f.diameter < bore)) {
+    if (w.f.kind == FeatureKind::kHole && OnAxisOf(w, pitch, L_, A_) &&
+        w.f.diameter < inner->f.diameter && (bore == 0.0 || w.f.diameter < bore)) {
       bore = w.f.diameter;
     }
   }
@@ -639,7 +630,7 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
   double outside = 0.0, width = 0.0;
   for (std::size_t f = 0; f < assembly_.FeatureCount(outer->ref.part); ++f) {
     const WorldFeature& w = At({outer->ref.part, f});
-    if (w.f.kind == FeatureKind::kShaft && on_axis(w) && w.f.diameter > outside) {
+    if (w.f.kind == FeatureKind::kShaft && OnAxisOf(w, pitch, L_, A_) && w.f.diameter > outside) {
       outside = w.f.diameter, width = w.axis.length;
     }
   }
