@@ -1,6 +1,7 @@
 // Test fixtures built with Open CASCADE: the only test translation unit that includes it.
 #include "io/occt/step_fixtures.h"
 
+#include <BRepAdaptor_Curve.hxx>
 #include <BRepAdaptor_Surface.hxx>
 #include <BRepAlgoAPI_Common.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
@@ -11,6 +12,7 @@
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepOffsetAPI_ThruSections.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
 #include <BRepPrimAPI_MakeCone.hxx>
@@ -691,6 +693,20 @@ void WriteNurbsCopy(const std::filesystem::path& in, const std::filesystem::path
     throw std::runtime_error("cannot write " + out.string());
   }
   app->Close(document);
+}
+
+void WritePuckStep(const std::filesystem::path& file, double radius, double height, double fillet,
+                   bool bspline) {
+  const TopoDS_Shape cylinder = BRepPrimAPI_MakeCylinder(radius, height).Shape();
+  BRepFilletAPI_MakeFillet rounded(cylinder);
+  for (TopExp_Explorer e(cylinder, TopAbs_EDGE); e.More(); e.Next()) {
+    if (BRepAdaptor_Curve(TopoDS::Edge(e.Current())).GetType() == GeomAbs_Circle) {
+      rounded.Add(fillet, TopoDS::Edge(e.Current()));
+    }
+  }
+  rounded.Build();
+  if (!rounded.IsDone()) throw std::runtime_error("cannot round the puck's edges");
+  WriteStep(bspline ? BRepBuilderAPI_NurbsConvert(rounded.Shape()).Shape() : rounded.Shape(), file);
 }
 
 void WriteConesAndBallStep(const std::filesystem::path& file) {

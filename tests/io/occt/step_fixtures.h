@@ -199,6 +199,13 @@ enum class StepVariant {
 std::vector<std::string> WriteStepVariant(const std::filesystem::path& in,
                                           const std::filesystem::path& out, StepVariant variant);
 
+/// Writes a STEP file (AP214, no product names) of a puck: a cylinder about z of `radius` and
+/// `height` (mm) standing on z = 0, both its circular edges rounded with fillets of `fillet`
+/// (tori), and, if `bspline`, every surface converted to a B-spline
+/// (BRepBuilderAPI_NurbsConvert). Throws std::runtime_error when it cannot build or write.
+void WritePuckStep(const std::filesystem::path& file, double radius, double height, double fillet,
+                   bool bspline);
+
 /// Copies the STEP assembly `in` to `out` with every surface of every solid converted to a
 /// B-spline (Open CASCADE's BRepBuilderAPI_NurbsConvert), keeping the product structure and
 /// names (XCAF reader and writer): a file as some exporters and healing steps write it.
