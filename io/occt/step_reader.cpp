@@ -533,9 +533,14 @@ bool MeshedCleanly(const TopoDS_Shape& solid, double size) {
 }
 
 // The mesh and features of one solid of `size` (SizeOf), meshed (MeshedCleanly), in its
-// product's frame, and notes on the faces that give no feature.
-void ConvertSolid(const TopoDS_Shape& solid, double size, TriangleMesh* mesh,
+// product's frame, and notes on the faces that give no feature. Returns false when a face's
+// bounds enclose a negative area: the face is its own complement, its outer bound turned over
+// (measured on spherical faces, whose areas tell balls from caps: a sphere's seam running
+// through a hole, as where a ball is fused with its cage, joins that hole to the outer bound,
+// and the quick healing leaves the wires' orientation as read).
+bool ConvertSolid(const TopoDS_Shape& solid, double size, TriangleMesh* mesh,
                   std::vector<Feature>* features, std::vector<std::string>* notes) {
+  bool bounds_sound = true;
   std::vector<Cylinder> cylinders;
   std::vector<Cone> cones;
   std::vector<Sphere> spheres;
@@ -683,6 +688,7 @@ void ConvertSolid(const TopoDS_Shape& solid, double size, TriangleMesh* mesh,
       GProp_GProps properties;
       BRepGProp::SurfaceProperties(face, properties);
       sphere.area = properties.Mass();
+      bounds_sound = bounds_sound && sphere.area > 0;
       auto same = std::find_if(spheres.begin(), spheres.end(), [&](const Sphere& o) {
         const Agreement both = agree.With(o.agree);
         return (o.center - sphere.center).norm() < both.Length(sphere.radius) &&
@@ -803,6 +809,7 @@ void ConvertSolid(const TopoDS_Shape& solid, double size, TriangleMesh* mesh,
   count(partial_spheres, "partial spherical");
   count(tori, "toroidal");
   count(free_form, "free-form");
+  return bounds_sound;
 }
 
 // Where CollectingPrinter puts the messages sent on this thread, if not in its own list.
@@ -1080,7 +1087,8 @@ class Walker {
       OCC_CATCH_SIGNALS
       // Healed quickly, then thoroughly when the mesh shows a defect that the checks left out
       // would have repaired: the mesher's, two faces running along an edge the same way (a
-      // face turned over), or the solid inside out.
+      // face turned over), or the solid inside out; or when a face's bounds are turned over
+      // (ConvertSolid).
       for (const bool thorough : {false, true}) {
         definition.messages.clear();
         const ThreadMessages redirect(&definition.messages);
@@ -1091,9 +1099,11 @@ class Walker {
             HealedSolid(definition.solid, healing.Of(definition.solid), thorough);
         const double size = SizeOf(healed);
         const bool clean = MeshedCleanly(healed, size);
-        ConvertSolid(healed, size, definition.mesh.get(), &definition.features, &definition.notes);
+        const bool bounds_sound = ConvertSolid(healed, size, definition.mesh.get(),
+                                               &definition.features, &definition.notes);
         const MeshCheck check = CheckMesh(*definition.mesh);
-        if (thorough || (clean && check.consistently_oriented() && check.signed_volume > 0)) {
+        if (thorough ||
+            (clean && bounds_sound && check.consistently_oriented() && check.signed_volume > 0)) {
           break;
         }
         BRepTools::Clean(definition.solid);  // the first try's face meshes

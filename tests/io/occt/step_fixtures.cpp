@@ -786,20 +786,15 @@ void WriteThreeSolidBallBearingStep(const std::filesystem::path& file) {
   builder.MakeCompound(all);
   builder.Add(all, BRepAlgoAPI_Cut(Tube(7.5, 20.5 / 2, -width / 2, width / 2), raceway).Shape());
   builder.Add(all, BRepAlgoAPI_Cut(Tube(26.7 / 2, 16, -width / 2, width / 2), raceway).Shape());
-  // Each ball the first one turned about the axis, so that every sphere's seam lies outside
-  // the cage, as the first's does. With the seams of the balls at 80 and 280 degrees across the
-  // cage, each of their faces has two wires, one running along the seam; written to STEP and
-  // read back, Open CASCADE measures such a face as the whole sphere, and the reader, after
-  // healing, takes it for a partial one: a limit of reading such faces, which this fixture
-  // leaves out.
-  const TopoDS_Shape first = BRepPrimAPI_MakeSphere(gp_Pnt(pitch, 0, 0), ball).Shape();
+  // Each ball a sphere of its own, as a CAD system places copies: the seams of the balls at 80
+  // and 280 degrees run through the cage, so that the faces of those balls have two wires, one
+  // running along the seam, and read from STEP their outer bound is turned over.
   TopoDS_Shape balls_and_cage = Tube(11, 12.5, -1.5, 1.5);
   for (int k = 0; k < 9; ++k) {
-    gp_Trsf turn;
-    turn.SetRotation(gp::OZ(), 2 * M_PI * k / 9);
+    const double angle = 2 * M_PI * k / 9;
+    const gp_Pnt centre(pitch * std::cos(angle), pitch * std::sin(angle), 0);
     balls_and_cage =
-        BRepAlgoAPI_Fuse(balls_and_cage, BRepBuilderAPI_Transform(first, turn, true).Shape())
-            .Shape();
+        BRepAlgoAPI_Fuse(balls_and_cage, BRepPrimAPI_MakeSphere(centre, ball).Shape()).Shape();
   }
   builder.Add(all, balls_and_cage);
   WriteStep(all, file);
