@@ -885,6 +885,25 @@ TEST(StepImport, AFaceTurnedOverOrASolidInsideOutIsHealedAsTheReaderWould) {
 // B-spline faces (ControlSurfaceDeflection) and leaves 1.42 times the deflection on their
 // fillets here (the tori's own grid 1.05 times); without that check, which would save a
 // seventh of the robot hand's time, it left 16 times (0.90 mm on a 40 mm puck).
+// A concave spherical face (its face reversed) holding more than half a ball is a socket;
+// its area is positive, as any face's whose bounds are sound, so the reader takes it as read.
+TEST(StepImport, ASphericalCupIsASocket) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_socket";
+  std::filesystem::create_directories(dir);
+  testing::WriteSocketBlockStep(dir / "cup.step", 10);
+  const std::vector<StepSolid> solids = ReadStep(dir / "cup.step");
+  ASSERT_EQ(solids.size(), 1u);
+  std::vector<const Feature*> sockets;
+  for (const Feature& f : solids[0].features) {
+    if (f.kind == FeatureKind::kSocket) sockets.push_back(&f);
+    EXPECT_NE(f.kind, FeatureKind::kBall) << f.id;
+  }
+  ASSERT_EQ(sockets.size(), 1u);
+  EXPECT_EQ(sockets[0]->id, "socket_1");
+  EXPECT_NEAR(sockets[0]->diameter, 10, 1e-9);
+  EXPECT_NEAR((sockets[0]->origin - Eigen::Vector3d(10, 10, 18)).norm(), 0, 1e-9);
+}
+
 class PuckMesh : public ::testing::TestWithParam<bool> {};
 
 TEST_P(PuckMesh, FacesAreMeshedCloseToTheirSurface) {

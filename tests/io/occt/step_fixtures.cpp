@@ -729,6 +729,13 @@ void WriteConesAndBallStep(const std::filesystem::path& file) {
   WriteStep(all, file);
 }
 
+void WriteSocketBlockStep(const std::filesystem::path& file, double diameter) {
+  const TopoDS_Shape cube = BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 20, 20, 20).Shape();
+  WriteStep(BRepAlgoAPI_Cut(cube, BRepPrimAPI_MakeSphere(gp_Pnt(10, 10, 18), diameter / 2).Shape())
+                .Shape(),
+            file);
+}
+
 namespace {
 
 // A tube about z from z0 to z1 between radii r_in and r_out.

@@ -16,6 +16,12 @@ namespace mechanist::testing {
 /// Throws std::runtime_error when it cannot write the file.
 void WriteConesAndBallStep(const std::filesystem::path& file);
 
+/// Writes a STEP file (AP214, no product names) of a ball joint's cup: a 20 mm cube (corner at
+/// the origin) with a spherical socket of `diameter` mm whose centre lies 2 mm below the middle
+/// of its top face, so that it holds more than half a ball. Throws std::runtime_error when it
+/// cannot write the file.
+void WriteSocketBlockStep(const std::filesystem::path& file, double diameter);
+
 /// Writes a STEP file (AP214, no product names) of two external spur gears as a CAD system
 /// exports them, meshed along x: `teeth_a` teeth about the z axis and `teeth_b` about
 /// (m (z_a + z_b) / 2, 0), module `module`, 20 degrees pressure angle, addendum m, dedendum
