@@ -885,8 +885,9 @@ TEST(StepImport, AFaceTurnedOverOrASolidInsideOutIsHealedAsTheReaderWould) {
 // B-spline faces (ControlSurfaceDeflection) and leaves 1.42 times the deflection on their
 // fillets here (the tori's own grid 1.05 times); without that check, which would save a
 // seventh of the robot hand's time, it left 16 times (0.90 mm on a 40 mm puck).
-// A concave spherical face (its face reversed) holding more than half a ball is a socket;
-// its area is positive, as any face's whose bounds are sound, so the reader takes it as read.
+// A concave spherical face (its face reversed) holding more than half a ball is a socket: its
+// area, which tells it from a cap, is positive however the face is turned (measured: no second
+// healing, which a negative area would ask for).
 TEST(StepImport, ASphericalCupIsASocket) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_socket";
   std::filesystem::create_directories(dir);
