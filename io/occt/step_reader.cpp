@@ -533,14 +533,15 @@ bool MeshedCleanly(const TopoDS_Shape& solid, double size) {
 }
 
 // The mesh and features of one solid of `size` (SizeOf), meshed (MeshedCleanly), in its
-// product's frame, and notes on the faces that give no feature. Returns false when a face's
-// bounds enclose a negative area: the face is its own complement, its outer bound turned over
-// (measured on spherical faces, whose areas tell balls from caps: a sphere's seam running
-// through a hole, as where a ball is fused with its cage, joins that hole to the outer bound,
-// and the quick healing leaves the wires' orientation as read).
+// product's frame, and notes on the faces that give no feature. Returns true when a spherical
+// face's bounds enclose a negative area: the face covers its complement, its outer bound turned
+// over. (Spherical faces are where it was seen, and their areas are measured anyway, to tell
+// balls from caps: a sphere's seam running through a hole, as where a ball is fused with its
+// cage, joins that hole to the outer bound, and the quick healing leaves the wires'
+// orientation as read.)
 bool ConvertSolid(const TopoDS_Shape& solid, double size, TriangleMesh* mesh,
                   std::vector<Feature>* features, std::vector<std::string>* notes) {
-  bool bounds_sound = true;
+  bool bounds_turned_over = false;
   std::vector<Cylinder> cylinders;
   std::vector<Cone> cones;
   std::vector<Sphere> spheres;
@@ -688,7 +689,7 @@ bool ConvertSolid(const TopoDS_Shape& solid, double size, TriangleMesh* mesh,
       GProp_GProps properties;
       BRepGProp::SurfaceProperties(face, properties);
       sphere.area = properties.Mass();
-      bounds_sound = bounds_sound && sphere.area > 0;
+      bounds_turned_over = bounds_turned_over || sphere.area < 0;
       auto same = std::find_if(spheres.begin(), spheres.end(), [&](const Sphere& o) {
         const Agreement both = agree.With(o.agree);
         return (o.center - sphere.center).norm() < both.Length(sphere.radius) &&
@@ -809,7 +810,7 @@ bool ConvertSolid(const TopoDS_Shape& solid, double size, TriangleMesh* mesh,
   count(partial_spheres, "partial spherical");
   count(tori, "toroidal");
   count(free_form, "free-form");
-  return bounds_sound;
+  return bounds_turned_over;
 }
 
 // Where CollectingPrinter puts the messages sent on this thread, if not in its own list.
@@ -1087,8 +1088,8 @@ class Walker {
       OCC_CATCH_SIGNALS
       // Healed quickly, then thoroughly when the mesh shows a defect that the checks left out
       // would have repaired: the mesher's, two faces running along an edge the same way (a
-      // face turned over), or the solid inside out; or when a face's bounds are turned over
-      // (ConvertSolid).
+      // face turned over), or the solid inside out; or when a spherical face's bounds are
+      // turned over (ConvertSolid).
       for (const bool thorough : {false, true}) {
         definition.messages.clear();
         const ThreadMessages redirect(&definition.messages);
@@ -1099,11 +1100,11 @@ class Walker {
             HealedSolid(definition.solid, healing.Of(definition.solid), thorough);
         const double size = SizeOf(healed);
         const bool clean = MeshedCleanly(healed, size);
-        const bool bounds_sound = ConvertSolid(healed, size, definition.mesh.get(),
-                                               &definition.features, &definition.notes);
+        const bool bounds_turned_over = ConvertSolid(healed, size, definition.mesh.get(),
+                                                     &definition.features, &definition.notes);
         const MeshCheck check = CheckMesh(*definition.mesh);
-        if (thorough ||
-            (clean && bounds_sound && check.consistently_oriented() && check.signed_volume > 0)) {
+        if (thorough || (clean && !bounds_turned_over && check.consistently_oriented() &&
+                         check.signed_volume > 0)) {
           break;
         }
         BRepTools::Clean(definition.solid);  // the first try's face meshes

@@ -34,7 +34,9 @@
 #include <TColgp_HArray1OfPnt.hxx>
 #include <TDF_LabelSequence.hxx>
 #include <TDocStd_Document.hxx>
+#include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Shell.hxx>
@@ -699,9 +701,11 @@ void WritePuckStep(const std::filesystem::path& file, double radius, double heig
                    bool bspline) {
   const TopoDS_Shape cylinder = BRepPrimAPI_MakeCylinder(radius, height).Shape();
   BRepFilletAPI_MakeFillet rounded(cylinder);
-  for (TopExp_Explorer e(cylinder, TopAbs_EDGE); e.More(); e.Next()) {
-    if (BRepAdaptor_Curve(TopoDS::Edge(e.Current())).GetType() == GeomAbs_Circle) {
-      rounded.Add(fillet, TopoDS::Edge(e.Current()));
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(cylinder, TopAbs_EDGE, edges);
+  for (int i = 1; i <= edges.Extent(); ++i) {
+    if (BRepAdaptor_Curve(TopoDS::Edge(edges(i))).GetType() == GeomAbs_Circle) {
+      rounded.Add(fillet, TopoDS::Edge(edges(i)));
     }
   }
   rounded.Build();
