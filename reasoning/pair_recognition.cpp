@@ -63,7 +63,7 @@ Recognition Recognizer::Run() {
   AddPinsInHoles();
   SetCompliantPartsApart();
   ApplyOverrides();
-  ReportImpliedPins();
+  SettleImpliedPins();
   ReportLooseFits();
   ReportOneParts();
   const std::vector<Screwed> screwed = TightThreads();

@@ -210,33 +210,77 @@ void Recognizer::ReportOneParts() {
   }
 }
 
-void Recognizer::ReportImpliedPins() {
-  std::map<std::pair<std::string, std::string>, std::vector<const Pair*>> by_parts;
-  for (const Pair& p : pairs_) {
+void Recognizer::SettleImpliedPins() {
+  // The implied pins of each two parts, by their axes (each with its pin's diameter).
+  struct Axis {
+    const WorldFeature* hole;
+    double pin;
+  };
+  struct Pins {
+    std::vector<std::size_t> pairs;
+    std::vector<Axis> axes;
+    std::set<std::string> holes;
+  };
+  std::map<std::pair<std::string, std::string>, Pins> by_parts;
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    const Pair& p = pairs_[i];
     if (p.source != PairSource::kImpliedPin) continue;
     std::string a(assembly_.PartId(p.a.part)), b(assembly_.PartId(p.b.part));
     if (b < a) std::swap(a, b);
-    by_parts[{a, b}].push_back(&p);
-  }
-  for (const auto& [parts, pairs] : by_parts) {
-    std::set<std::string> holes;
-    double pin = std::numeric_limits<double>::infinity();
-    for (const Pair* p : pairs) {
-      for (const FeatureRef f : {p->a, p->b}) {
-        holes.insert(assembly_.FeatureName(f));
-        pin = std::min(pin, At(f).f.diameter);
-      }
+    Pins& pins = by_parts[{a, b}];
+    pins.pairs.push_back(i);
+    const WorldFeature& hole = At(p.a);
+    const double pin = std::min(hole.f.diameter, At(p.b).f.diameter);
+    auto axis = std::find_if(pins.axes.begin(), pins.axes.end(), [&](const Axis& x) {
+      return AngleBetweenLines(x.hole->axis.direction, hole.axis.direction) <= A_ &&
+             DistanceToLine(hole.axis.origin, x.hole->axis.origin, x.hole->axis.direction) <= L_;
+    });
+    if (axis == pins.axes.end()) {
+      pins.axes.push_back({&hole, pin});
+    } else {
+      axis->pin = std::min(axis->pin, pin);
     }
-    diagnostics_.push_back(
-        {Severity::kInfo,
-         "implied_pin",
-         fmt::format("{} and {} turn on a pin of about {} that the file does not "
-                     "model, in holes {} (a revolute pair; an override of type "
-                     "none forbids it, \"infer\": {{\"implied_pins\": false}} all of them)",
-                     parts.first, parts.second, Mm(pin), fmt::join(holes, ", ")),
-         {parts.first, parts.second},
-         {holes.begin(), holes.end()}});
+    for (const FeatureRef f : {p.a, p.b}) pins.holes.insert(assembly_.FeatureName(f));
   }
+  std::vector<bool> dropped(pairs_.size(), false);
+  for (const auto& [parts, pins] : by_parts) {
+    std::string message;
+    if (pins.axes.size() == 1) {
+      message = fmt::format(
+          "{} and {} turn on a pin of about {} that the file does not model, in holes {} (a "
+          "revolute pair; an override of type none forbids it, \"infer\": {{\"implied_pins\": "
+          "false}} all of them)",
+          parts.first, parts.second, Mm(pins.axes.front().pin), fmt::join(pins.holes, ", "));
+    } else {
+      // Two pins apart hold the parts as dowels do: the first pin's pair becomes fixed.
+      Pair& held = pairs_[pins.pairs.front()];
+      held.type = PairType::kFixed;
+      held.dof = DegreesOfFreedom(PairType::kFixed);
+      for (std::size_t k = 1; k < pins.pairs.size(); ++k) dropped[pins.pairs[k]] = true;
+      std::vector<double> diameters;
+      for (const Axis& axis : pins.axes) diameters.push_back(axis.pin);
+      std::sort(diameters.begin(), diameters.end());
+      std::vector<std::string> sizes;
+      for (const double d : diameters) sizes.push_back(Mm(d));
+      message = fmt::format(
+          "{} and {} are held together by pins that the file does not model, in holes {}: "
+          "pins of about {} on {} axes let neither part turn (a fixed pair; an override of type "
+          "none on a pin's holes forbids that pin, \"infer\": {{\"implied_pins\": false}} all "
+          "of them)",
+          parts.first, parts.second, fmt::join(pins.holes, ", "), fmt::join(sizes, " and "),
+          pins.axes.size());
+    }
+    diagnostics_.push_back({Severity::kInfo,
+                            "implied_pin",
+                            message,
+                            {parts.first, parts.second},
+                            {pins.holes.begin(), pins.holes.end()}});
+  }
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    if (!dropped[i]) pairs_[kept++] = std::move(pairs_[i]);
+  }
+  pairs_.erase(pairs_.begin() + static_cast<std::ptrdiff_t>(kept), pairs_.end());
 }
 
 std::vector<Recognizer::Screwed> Recognizer::TightThreads() {

@@ -313,9 +313,12 @@ class Recognizer {
   /// touches (those pairs' other parts). Before the overrides, which may still force a pair.
   void SetCompliantPartsApart();
 
-  /// One info diagnostic `implied_pin` per two parts that implied pins join, naming the holes
-  /// and the pin's diameter (the smaller hole's).
-  void ReportImpliedPins();
+  /// Settles the implied pins left after the overrides, per two parts they join: pins on one
+  /// axis are a hinge (revolute pairs); pins on two or more axes (parallel ones apart, or
+  /// crossing) let neither part turn, and become one fixed pair. One info diagnostic
+  /// `implied_pin` per two parts names the holes and each axis's pin diameter (its smaller
+  /// hole's).
+  void SettleImpliedPins();
 
   /// The tapped hole or nut each tight thread is fixed in, the first by name when there are
   /// several (not the first found, which depends on the broad phase), by thread.

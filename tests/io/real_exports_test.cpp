@@ -111,8 +111,10 @@ std::vector<Expected> Cases() {
       // pivot screw ends in its nut's hole (drawn at the minor diameter). 22 where the truth
       // has 16: the five servos rest in the forearm's pockets with 1.4 to 27 mm of room along
       // x, and the thumb's knuckle has 2.5 mm between the palm's cheeks, more than a seat's
-      // play (kMaxSeatPlay), so their slides stay. 31 implied pins: the finger hinges (two
-      // knuckles each, mostly) and the forearm's two screw holes into the palm.
+      // play (kMaxSeatPlay), so their slides stay. 30 implied pins: the finger hinges (two
+      // knuckles each, mostly), and one fixed pair for the forearm's holes into the palm on two
+      // axes 28.5 mm apart (a 1.5 mm tendon channel and an 8.94 mm bore), the truth's fixed
+      // joint.
       {"robot_hand_finger_hinges_onshape/Assembly 1.step",
        "Assembly_1.FOREARM",
        {},
@@ -127,7 +129,7 @@ std::vector<Expected> Cases() {
        0,
        0,
        0,
-       31},
+       30},
       // The motor's connector is in no pair, sunk 2.1 mm into the motor's end cap: fixed to
       // it, so no warning. The motor's four long M3 screws (cross-recessed pan heads) run
       // through the tap-drilled stator into the flange. The pendulum rod's hub, held by

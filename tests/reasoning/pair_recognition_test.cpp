@@ -762,6 +762,45 @@ TEST(PairRecognition, CoaxialEmptyHolesOfTwoPartsAreAnImpliedPin) {
   EXPECT_FALSE(HasDiagnostic(none, "implied_pin"));
 }
 
+// Two plates, each with empty through holes on the z axis (`d0`) and on an axis `apart` mm
+// along x (`d1`): a pin the file leaves out in each pair of holes, as dowels or (in the robot
+// hand) tendon channels through a palm and its forearm.
+Assembly DowelledPlates(double d0, double d1, double apart) {
+  const auto hole = [](const char* id, double d, double x, double z0) {
+    return MakeFeature(id, K::kHole, V(x, 0, z0), V::UnitZ(),
+                       [&](Feature& f) { f.diameter = d, f.length = 3, f.through = true; });
+  };
+  return MakeAssembly(
+      {MakePart("base", {hole("a", d0, 0, 0), hole("b", d1, apart, 0)}, RigidTransform(), true),
+       MakePart("cover", {hole("a", d0, 0, 3), hole("b", d1, apart, 3)})});
+}
+
+TEST(PairRecognition, ImpliedPinsOnTwoAxesHoldThePartsFixed) {
+  // Pins on two parallel axes 28 mm apart let neither plate turn: one fixed pair, and one info
+  // naming all four holes and both pins.
+  const Recognition dowelled = Recognize(DowelledPlates(1.5, 8.9, 28));
+  const Pair p = Only(dowelled);
+  EXPECT_EQ(p.type, PairType::kFixed);
+  EXPECT_EQ(p.source, PairSource::kImpliedPin);
+  EXPECT_EQ(*p.dof, 0);
+  const Diagnostic* d = FindDiagnostic(dowelled, "implied_pin");
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->severity, Severity::kInfo);
+  EXPECT_NE(d->message.find("held together by pins"), std::string::npos) << d->message;
+  EXPECT_NE(d->message.find("base/a, base/b, cover/a, cover/b"), std::string::npos) << d->message;
+  EXPECT_NE(d->message.find("pins of about 1.5 mm and 8.9 mm on 2 axes"), std::string::npos)
+      << d->message;
+  EXPECT_EQ(Analyze(DowelledPlates(1.5, 8.9, 28)).motion.mobility.dof, 0);
+  // With one pin forbidden, the other is a hinge.
+  std::vector<Part> parts = DowelledPlates(1.5, 8.9, 28).parts();
+  const Recognition hinged =
+      Recognize(MakeAssembly(parts, {PairOverride{{FeatureRef{0, 1}, FeatureRef{1, 1}}, {}}}));
+  EXPECT_EQ(Only(hinged).type, PairType::kRevolute);
+  const Diagnostic* one = FindDiagnostic(hinged, "implied_pin");
+  ASSERT_NE(one, nullptr);
+  EXPECT_NE(one->message.find("turn on a pin of about 1.5 mm"), std::string::npos) << one->message;
+}
+
 TEST(PairRecognition, ALooseShaftGuidesOnlyAPartNothingElseHolds) {
   // 4.6 in 5 (8% of the hole): too loose to touch, but the pin is in no other pair, so the fit
   // guides it (a print-in-place hinge's pins are printed so).
