@@ -211,15 +211,26 @@ void Recognizer::ReportOneParts() {
 }
 
 void Recognizer::SettleImpliedPins() {
-  // The implied pins of each two parts, by their axes (each with its pin's diameter).
-  struct Axis {
+  // The implied pins of each two parts, by the pin each lies on (its smallest diameter).
+  struct Pin {
     const WorldFeature* hole;
-    double pin;
+    double diameter;
   };
   struct Pins {
     std::vector<std::size_t> pairs;
-    std::vector<Axis> axes;
+    std::vector<Pin> pins;
     std::set<std::string> holes;
+  };
+  // Holes lie on one pin when each one's middle is nearer the other's axis than two pins'
+  // radii: two pins there would cut into each other (holes a little out of line, or at a
+  // small angle, still make one hinge).
+  const auto one_pin = [](const Pin& x, const WorldFeature& h, double d) {
+    const auto middle = [](const AxisSegment& a) {
+      return a.origin + 0.5 * a.length * a.direction;
+    };
+    const double reach = 0.5 * (x.diameter + d);
+    return DistanceToLine(middle(h.axis), x.hole->axis.origin, x.hole->axis.direction) < reach &&
+           DistanceToLine(middle(x.hole->axis), h.axis.origin, h.axis.direction) < reach;
   };
   std::map<std::pair<std::string, std::string>, Pins> by_parts;
   for (std::size_t i = 0; i < pairs_.size(); ++i) {
@@ -230,27 +241,25 @@ void Recognizer::SettleImpliedPins() {
     Pins& pins = by_parts[{a, b}];
     pins.pairs.push_back(i);
     const WorldFeature& hole = At(p.a);
-    const double pin = std::min(hole.f.diameter, At(p.b).f.diameter);
-    auto axis = std::find_if(pins.axes.begin(), pins.axes.end(), [&](const Axis& x) {
-      return AngleBetweenLines(x.hole->axis.direction, hole.axis.direction) <= A_ &&
-             DistanceToLine(hole.axis.origin, x.hole->axis.origin, x.hole->axis.direction) <= L_;
-    });
-    if (axis == pins.axes.end()) {
-      pins.axes.push_back({&hole, pin});
+    const double d = std::min(hole.f.diameter, At(p.b).f.diameter);
+    auto pin = std::find_if(pins.pins.begin(), pins.pins.end(),
+                            [&](const Pin& x) { return one_pin(x, hole, d); });
+    if (pin == pins.pins.end()) {
+      pins.pins.push_back({&hole, d});
     } else {
-      axis->pin = std::min(axis->pin, pin);
+      pin->diameter = std::min(pin->diameter, d);
     }
     for (const FeatureRef f : {p.a, p.b}) pins.holes.insert(assembly_.FeatureName(f));
   }
   std::vector<bool> dropped(pairs_.size(), false);
   for (const auto& [parts, pins] : by_parts) {
     std::string message;
-    if (pins.axes.size() == 1) {
+    if (pins.pins.size() == 1) {
       message = fmt::format(
           "{} and {} turn on a pin of about {} that the file does not model, in holes {} (a "
           "revolute pair; an override of type none forbids it, \"infer\": {{\"implied_pins\": "
           "false}} all of them)",
-          parts.first, parts.second, Mm(pins.axes.front().pin), fmt::join(pins.holes, ", "));
+          parts.first, parts.second, Mm(pins.pins.front().diameter), fmt::join(pins.holes, ", "));
     } else {
       // Two pins apart hold the parts as dowels do: the first pin's pair becomes fixed.
       Pair& held = pairs_[pins.pairs.front()];
@@ -258,7 +267,7 @@ void Recognizer::SettleImpliedPins() {
       held.dof = DegreesOfFreedom(PairType::kFixed);
       for (std::size_t k = 1; k < pins.pairs.size(); ++k) dropped[pins.pairs[k]] = true;
       std::vector<double> diameters;
-      for (const Axis& axis : pins.axes) diameters.push_back(axis.pin);
+      for (const Pin& pin : pins.pins) diameters.push_back(pin.diameter);
       std::sort(diameters.begin(), diameters.end());
       std::vector<std::string> sizes;
       for (const double d : diameters) sizes.push_back(Mm(d));
@@ -268,7 +277,7 @@ void Recognizer::SettleImpliedPins() {
           "none on a pin's holes forbids that pin, \"infer\": {{\"implied_pins\": false}} all "
           "of them)",
           parts.first, parts.second, fmt::join(pins.holes, ", "), fmt::join(sizes, " and "),
-          pins.axes.size());
+          pins.pins.size());
     }
     diagnostics_.push_back({Severity::kInfo,
                             "implied_pin",

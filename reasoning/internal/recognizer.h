@@ -313,10 +313,11 @@ class Recognizer {
   /// touches (those pairs' other parts). Before the overrides, which may still force a pair.
   void SetCompliantPartsApart();
 
-  /// Settles the implied pins left after the overrides, per two parts they join: pins on one
-  /// axis are a hinge (revolute pairs); pins on two or more axes (parallel ones apart, or
-  /// crossing) let neither part turn, and become one fixed pair. One info diagnostic
-  /// `implied_pin` per two parts names the holes and each axis's pin diameter (its smaller
+  /// Settles the implied pins left after the overrides, per two parts they join: holes on one
+  /// pin (each one's middle nearer the other's axis than the two pins' radii, where two pins
+  /// would cut into each other) are a hinge (revolute pairs); two or more pins (parallel ones
+  /// apart, or crossing) let neither part turn, and become one fixed pair. One info diagnostic
+  /// `implied_pin` per two parts names the holes and each pin's diameter (its smallest
   /// hole's).
   void SettleImpliedPins();
 

@@ -799,6 +799,21 @@ TEST(PairRecognition, ImpliedPinsOnTwoAxesHoldThePartsFixed) {
   const Diagnostic* one = FindDiagnostic(hinged, "implied_pin");
   ASSERT_NE(one, nullptr);
   EXPECT_NE(one->message.find("turn on a pin of about 1.5 mm"), std::string::npos) << one->message;
+  // Holes a little out of line are one pin, not two: a fork's cheeks 0.08 mm apart across, each
+  // within the length tolerance of the knuckle's hole between them, still make a hinge.
+  const auto hole = [](const char* id, double x, double z0) {
+    return MakeFeature(id, K::kHole, V(x, 0, z0), V::UnitZ(),
+                       [&](Feature& f) { f.diameter = 3.2, f.length = 3, f.through = true; });
+  };
+  const Recognition hinge = Recognize(MakeAssembly(
+      {MakePart("fork", {hole("cheek_a", 0, 0), hole("cheek_b", 0.08, 6)}, RigidTransform(), true),
+       MakePart("lever", {hole("knuckle", 0.04, 3)})}));
+  ASSERT_EQ(hinge.pairs.size(), 2u);
+  for (const Pair& p : hinge.pairs) EXPECT_EQ(p.type, PairType::kRevolute);
+  const Diagnostic* knuckle = FindDiagnostic(hinge, "implied_pin");
+  ASSERT_NE(knuckle, nullptr);
+  EXPECT_NE(knuckle->message.find("turn on a pin of about 3.2 mm"), std::string::npos)
+      << knuckle->message;
 }
 
 TEST(PairRecognition, ALooseShaftGuidesOnlyAPartNothingElseHolds) {
