@@ -4,8 +4,13 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>  // fmt::join
 
+#include <algorithm>
 #include <array>
 #include <map>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "kernel/support/union_find.h"
 #include "reasoning/internal/recognizer.h"
@@ -211,26 +216,24 @@ void Recognizer::ReportOneParts() {
 }
 
 void Recognizer::SettleImpliedPins() {
-  // The implied pins of each two parts, by the pin each lies on (its smallest diameter).
-  struct Pin {
-    const WorldFeature* hole;
-    double diameter;
+  // Holes lie on one pin when their axes are parallel (within twice the angle tolerance: two
+  // pairs through one knuckle may each lean its own way) and each one's middle lies nearer the
+  // other's axis than the two pins' radii: holes a little out of line on one hinge rod, not
+  // two pins side by side.
+  const auto one_pin = [&](const WorldFeature& x, double dx, const WorldFeature& y, double dy) {
+    const auto middle = [](const AxisSegment& s) {
+      return s.origin + 0.5 * s.length * s.direction;
+    };
+    const double reach = 0.5 * (dx + dy);
+    return AngleBetweenLines(x.axis.direction, y.axis.direction) <= 2 * A_ &&
+           DistanceToLine(middle(y.axis), x.axis.origin, x.axis.direction) < reach &&
+           DistanceToLine(middle(x.axis), y.axis.origin, y.axis.direction) < reach;
   };
+  // The implied pins of each two parts, with each pair's pin diameter (its smaller hole's).
   struct Pins {
     std::vector<std::size_t> pairs;
-    std::vector<Pin> pins;
+    std::vector<double> diameters;
     std::set<std::string> holes;
-  };
-  // Holes lie on one pin when each one's middle is nearer the other's axis than two pins'
-  // radii: two pins there would cut into each other (holes a little out of line, or at a
-  // small angle, still make one hinge).
-  const auto one_pin = [](const Pin& x, const WorldFeature& h, double d) {
-    const auto middle = [](const AxisSegment& a) {
-      return a.origin + 0.5 * a.length * a.direction;
-    };
-    const double reach = 0.5 * (x.diameter + d);
-    return DistanceToLine(middle(h.axis), x.hole->axis.origin, x.hole->axis.direction) < reach &&
-           DistanceToLine(middle(x.hole->axis), h.axis.origin, h.axis.direction) < reach;
   };
   std::map<std::pair<std::string, std::string>, Pins> by_parts;
   for (std::size_t i = 0; i < pairs_.size(); ++i) {
@@ -240,44 +243,62 @@ void Recognizer::SettleImpliedPins() {
     if (b < a) std::swap(a, b);
     Pins& pins = by_parts[{a, b}];
     pins.pairs.push_back(i);
-    const WorldFeature& hole = At(p.a);
-    const double d = std::min(hole.f.diameter, At(p.b).f.diameter);
-    auto pin = std::find_if(pins.pins.begin(), pins.pins.end(),
-                            [&](const Pin& x) { return one_pin(x, hole, d); });
-    if (pin == pins.pins.end()) {
-      pins.pins.push_back({&hole, d});
-    } else {
-      pin->diameter = std::min(pin->diameter, d);
-    }
+    pins.diameters.push_back(std::min(At(p.a).f.diameter, At(p.b).f.diameter));
     for (const FeatureRef f : {p.a, p.b}) pins.holes.insert(assembly_.FeatureName(f));
   }
   std::vector<bool> dropped(pairs_.size(), false);
   for (const auto& [parts, pins] : by_parts) {
+    // Each pin (the pairs through it joined, whatever their order) and its diameter.
+    const std::size_t n = pins.pairs.size();
+    UnionFind same(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = i + 1; j < n; ++j) {
+        if (one_pin(At(pairs_[pins.pairs[i]].a), pins.diameters[i], At(pairs_[pins.pairs[j]].a),
+                    pins.diameters[j])) {
+          same.Join(static_cast<int>(i), static_cast<int>(j));
+        }
+      }
+    }
+    std::map<int, double> diameter_of_pin;
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto [it, added] =
+          diameter_of_pin.try_emplace(same.Find(static_cast<int>(k)), pins.diameters[k]);
+      if (!added) it->second = std::min(it->second, pins.diameters[k]);
+    }
     std::string message;
-    if (pins.pins.size() == 1) {
+    if (diameter_of_pin.size() == 1) {
       message = fmt::format(
           "{} and {} turn on a pin of about {} that the file does not model, in holes {} (a "
           "revolute pair; an override of type none forbids it, \"infer\": {{\"implied_pins\": "
           "false}} all of them)",
-          parts.first, parts.second, Mm(pins.pins.front().diameter), fmt::join(pins.holes, ", "));
+          parts.first, parts.second, Mm(diameter_of_pin.begin()->second),
+          fmt::join(pins.holes, ", "));
     } else {
-      // Two pins apart hold the parts as dowels do: the first pin's pair becomes fixed.
-      Pair& held = pairs_[pins.pairs.front()];
-      held.type = PairType::kFixed;
-      held.dof = DegreesOfFreedom(PairType::kFixed);
-      for (std::size_t k = 1; k < pins.pairs.size(); ++k) dropped[pins.pairs[k]] = true;
+      // Two pins apart hold the parts as dowels do: one fixed pair, on the holes whose names
+      // sort first (whatever the file's order), stands for them all.
+      const auto names = [&](std::size_t pair) {
+        return std::make_pair(assembly_.FeatureName(pairs_[pair].a),
+                              assembly_.FeatureName(pairs_[pair].b));
+      };
+      const std::size_t held =
+          *std::min_element(pins.pairs.begin(), pins.pairs.end(),
+                            [&](std::size_t x, std::size_t y) { return names(x) < names(y); });
+      pairs_[held].type = PairType::kFixed;
+      pairs_[held].dof = DegreesOfFreedom(PairType::kFixed);
+      for (const std::size_t pair : pins.pairs) dropped[pair] = pair != held;
       std::vector<double> diameters;
-      for (const Pin& pin : pins.pins) diameters.push_back(pin.diameter);
+      for (const auto& [pin, d] : diameter_of_pin) diameters.push_back(d);
       std::sort(diameters.begin(), diameters.end());
       std::vector<std::string> sizes;
       for (const double d : diameters) sizes.push_back(Mm(d));
+      sizes.erase(std::unique(sizes.begin(), sizes.end()), sizes.end());
       message = fmt::format(
           "{} and {} are held together by pins that the file does not model, in holes {}: "
-          "pins of about {} on {} axes let neither part turn (a fixed pair; an override of type "
-          "none on a pin's holes forbids that pin, \"infer\": {{\"implied_pins\": false}} all "
+          "pins of about {} on {} axes let neither part turn (a fixed pair; overrides of type "
+          "none on a pin's holes forbid that pin, \"infer\": {{\"implied_pins\": false}} all "
           "of them)",
           parts.first, parts.second, fmt::join(pins.holes, ", "), fmt::join(sizes, " and "),
-          pins.pins.size());
+          diameter_of_pin.size());
     }
     diagnostics_.push_back({Severity::kInfo,
                             "implied_pin",

@@ -43,7 +43,8 @@ struct Expected {
   int embedded = 0;
   // Hubs held by nothing but a shaft that turns in a bearing, fixed to it.
   int bearing_shafts = 0;
-  // Revolute pairs on pins the file leaves out (implied_pin).
+  // Pairs on pins the file leaves out (implied_pin): revolute, or one fixed pair for two parts
+  // pinned on two or more axes.
   int implied_pins = 0;
   // Floating parts fixed where they stand centred on another part's axis (centred).
   int centred = 0;

@@ -763,19 +763,23 @@ TEST(PairRecognition, CoaxialEmptyHolesOfTwoPartsAreAnImpliedPin) {
 }
 
 // Two plates, each with empty through holes on the z axis (`d0`) and on an axis `apart` mm
-// along x (`d1`): a pin the file leaves out in each pair of holes, as dowels or (in the robot
-// hand) tendon channels through a palm and its forearm.
-Assembly DowelledPlates(double d0, double d1, double apart) {
-  const auto hole = [](const char* id, double d, double x, double z0) {
-    return MakeFeature(id, K::kHole, V(x, 0, z0), V::UnitZ(),
-                       [&](Feature& f) { f.diameter = d, f.length = 3, f.through = true; });
+// along x (`d1`), listed in that order or (`b_first`) the other: a pin the file leaves out in
+// each pair of holes, as dowels or (in the robot hand) tendon channels through a palm and its
+// forearm.
+Assembly DowelledPlates(double d0, double d1, double apart, bool b_first = false) {
+  const auto plate = [&](const char* name, double z0, bool ground) {
+    const auto hole = [&](const char* id, double d, double x) {
+      return MakeFeature(id, K::kHole, V(x, 0, z0), V::UnitZ(),
+                         [&](Feature& f) { f.diameter = d, f.length = 3, f.through = true; });
+    };
+    std::vector<Feature> holes = {hole("a", d0, 0), hole("b", d1, apart)};
+    if (b_first) std::swap(holes[0], holes[1]);
+    return MakePart(name, holes, RigidTransform(), ground);
   };
-  return MakeAssembly(
-      {MakePart("base", {hole("a", d0, 0, 0), hole("b", d1, apart, 0)}, RigidTransform(), true),
-       MakePart("cover", {hole("a", d0, 0, 3), hole("b", d1, apart, 3)})});
+  return MakeAssembly({plate("base", 0, true), plate("cover", 3, false)});
 }
 
-TEST(PairRecognition, ImpliedPinsOnTwoAxesHoldThePartsFixed) {
+TEST(PairRecognition, ImpliedPinsApartHoldThePartsFixed) {
   // Pins on two parallel axes 28 mm apart let neither plate turn: one fixed pair, and one info
   // naming all four holes and both pins.
   const Recognition dowelled = Recognize(DowelledPlates(1.5, 8.9, 28));
@@ -791,6 +795,16 @@ TEST(PairRecognition, ImpliedPinsOnTwoAxesHoldThePartsFixed) {
   EXPECT_NE(d->message.find("pins of about 1.5 mm and 8.9 mm on 2 axes"), std::string::npos)
       << d->message;
   EXPECT_EQ(Analyze(DowelledPlates(1.5, 8.9, 28)).motion.mobility.dof, 0);
+  // The fixed pair stands on the same holes whatever the file's order.
+  const Pair swapped = Only(Recognize(DowelledPlates(1.5, 8.9, 28, true)));
+  const Assembly listed_b_first = DowelledPlates(1.5, 8.9, 28, true);
+  EXPECT_EQ(listed_b_first.FeatureName(swapped.a), "base/a");
+  EXPECT_EQ(listed_b_first.FeatureName(swapped.b), "cover/a");
+  // Pins alike are named once.
+  const Diagnostic* alike = FindDiagnostic(Recognize(DowelledPlates(1.5, 1.5, 28)), "implied_pin");
+  ASSERT_NE(alike, nullptr);
+  EXPECT_NE(alike->message.find("pins of about 1.5 mm on 2 axes"), std::string::npos)
+      << alike->message;
   // With one pin forbidden, the other is a hinge.
   std::vector<Part> parts = DowelledPlates(1.5, 8.9, 28).parts();
   const Recognition hinged =
@@ -799,21 +813,39 @@ TEST(PairRecognition, ImpliedPinsOnTwoAxesHoldThePartsFixed) {
   const Diagnostic* one = FindDiagnostic(hinged, "implied_pin");
   ASSERT_NE(one, nullptr);
   EXPECT_NE(one->message.find("turn on a pin of about 1.5 mm"), std::string::npos) << one->message;
-  // Holes a little out of line are one pin, not two: a fork's cheeks 0.08 mm apart across, each
-  // within the length tolerance of the knuckle's hole between them, still make a hinge.
+  // Crossing pins (along z, and along x 20 mm away) hold the plates too.
+  const auto hole = [](const char* id, V at, V axis) {
+    return MakeFeature(id, K::kHole, at, axis,
+                       [&](Feature& f) { f.diameter = 3, f.length = 3, f.through = true; });
+  };
+  const Recognition crossed = Recognize(MakeAssembly(
+      {MakePart("base", {hole("a", V(0, 0, 0), V::UnitZ()), hole("c", V(0, 20, 10), V::UnitX())},
+                RigidTransform(), true),
+       MakePart("cover",
+                {hole("a", V(0, 0, 3), V::UnitZ()), hole("c", V(3, 20, 10), V::UnitX())})}));
+  EXPECT_EQ(Only(crossed).type, PairType::kFixed);
+}
+
+TEST(PairRecognition, HolesALittleOutOfLineAreOneImpliedPin) {
+  // A fork's cheeks 0.08 mm apart across, each within the length tolerance of the knuckle's
+  // hole between them: one pin, a hinge, not two pins that hold the lever.
   const auto hole = [](const char* id, double x, double z0) {
     return MakeFeature(id, K::kHole, V(x, 0, z0), V::UnitZ(),
                        [&](Feature& f) { f.diameter = 3.2, f.length = 3, f.through = true; });
   };
-  const Recognition hinge = Recognize(MakeAssembly(
-      {MakePart("fork", {hole("cheek_a", 0, 0), hole("cheek_b", 0.08, 6)}, RigidTransform(), true),
-       MakePart("lever", {hole("knuckle", 0.04, 3)})}));
-  ASSERT_EQ(hinge.pairs.size(), 2u);
-  for (const Pair& p : hinge.pairs) EXPECT_EQ(p.type, PairType::kRevolute);
-  const Diagnostic* knuckle = FindDiagnostic(hinge, "implied_pin");
-  ASSERT_NE(knuckle, nullptr);
-  EXPECT_NE(knuckle->message.find("turn on a pin of about 3.2 mm"), std::string::npos)
-      << knuckle->message;
+  // Either part's name first: the pairs' order must not decide it.
+  for (const char* lever : {"lever", "a_lever"}) {
+    const Recognition hinge =
+        Recognize(MakeAssembly({MakePart("fork", {hole("cheek_a", 0, 0), hole("cheek_b", 0.08, 6)},
+                                         RigidTransform(), true),
+                                MakePart(lever, {hole("knuckle", 0.04, 3)})}));
+    ASSERT_EQ(hinge.pairs.size(), 2u) << lever;
+    for (const Pair& p : hinge.pairs) EXPECT_EQ(p.type, PairType::kRevolute) << lever;
+    const Diagnostic* knuckle = FindDiagnostic(hinge, "implied_pin");
+    ASSERT_NE(knuckle, nullptr);
+    EXPECT_NE(knuckle->message.find("turn on a pin of about 3.2 mm"), std::string::npos)
+        << knuckle->message;
+  }
 }
 
 TEST(PairRecognition, ALooseShaftGuidesOnlyAPartNothingElseHolds) {
