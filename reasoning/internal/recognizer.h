@@ -314,11 +314,11 @@ class Recognizer {
   void SetCompliantPartsApart();
 
   /// Settles the implied pins left after the overrides, per two parts they join: holes on one
-  /// pin (each one's middle nearer the other's axis than the two pins' radii, where two pins
-  /// would cut into each other) are a hinge (revolute pairs); two or more pins (parallel ones
-  /// apart, or crossing) let neither part turn, and become one fixed pair. One info diagnostic
-  /// `implied_pin` per two parts names the holes and each pin's diameter (its smallest
-  /// hole's).
+  /// pin (parallel, each one's middle nearer the other's axis than the two pins' radii: out of
+  /// line on one rod rather than two pins side by side) are a hinge (revolute pairs); two or
+  /// more pins (parallel ones apart, or crossing) let neither part turn, and become one fixed
+  /// pair, on the holes whose names sort first. One info diagnostic `implied_pin` per two parts
+  /// names the holes and each pin's diameter (its smallest hole's).
   void SettleImpliedPins();
 
   /// The tapped hole or nut each tight thread is fixed in, the first by name when there are

@@ -801,7 +801,8 @@ TEST(PairRecognition, ImpliedPinsApartHoldThePartsFixed) {
   EXPECT_EQ(listed_b_first.FeatureName(swapped.a), "base/a");
   EXPECT_EQ(listed_b_first.FeatureName(swapped.b), "cover/a");
   // Pins alike are named once.
-  const Diagnostic* alike = FindDiagnostic(Recognize(DowelledPlates(1.5, 1.5, 28)), "implied_pin");
+  const Recognition pinned_alike = Recognize(DowelledPlates(1.5, 1.5, 28));
+  const Diagnostic* alike = FindDiagnostic(pinned_alike, "implied_pin");
   ASSERT_NE(alike, nullptr);
   EXPECT_NE(alike->message.find("pins of about 1.5 mm on 2 axes"), std::string::npos)
       << alike->message;
