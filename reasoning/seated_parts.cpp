@@ -100,21 +100,16 @@ class Seater {
   // parts' reach (their bounds grown by kMaxSeatPlay) are not swept, nor their meshes built.
   std::optional<Stop> Travel(const std::vector<std::size_t>& moving,
                              const std::vector<std::size_t>& obstacles, const Eigen::Vector3d& d) {
+    const std::optional<Aabb> reach_W = Reach(moving);
+    if (!reach_W) return std::nullopt;
     SweepOptions options;
     options.max_travel = kMaxSeatPlay;
     options.min_approach = min_approach_;
-    Aabb reach_W;
-    for (std::size_t m : moving) {
-      if (!assembly_.part(m).HasGeometry()) return std::nullopt;
-      reach_W.Extend(BoundsInWorld(m));
-    }
-    reach_W.min.array() -= kMaxSeatPlay + assembly_.tolerance().length;
-    reach_W.max.array() += kMaxSeatPlay + assembly_.tolerance().length;
     std::optional<Stop> first;
     for (std::size_t m : moving) {
       const CollisionMesh* mesh_m = Mesh(m);
       for (std::size_t o : obstacles) {
-        if (!assembly_.part(o).HasGeometry() || !BoundsInWorld(o).Intersects(reach_W)) continue;
+        if (!InReach(o, *reach_W)) continue;
         const CollisionMesh* mesh_o = Mesh(o);
         const std::optional<SweepContact> contact = FirstBlockingContact(
             *mesh_m, assembly_.part(m).X_WP, *mesh_o, assembly_.part(o).X_WP, d, options);
@@ -124,6 +119,24 @@ class Seater {
       }
     }
     return first;
+  }
+
+  // Appends to `meshes` those that Travel(moving, obstacles, d) sweeps, whatever d.
+  void AppendSwept(const std::vector<std::size_t>& moving,
+                   const std::vector<std::size_t>& obstacles,
+                   std::vector<std::shared_ptr<const TriangleMesh>>* meshes) {
+    const std::optional<Aabb> reach_W = Reach(moving);
+    if (!reach_W) return;
+    for (std::size_t m : moving) meshes->push_back(assembly_.part(m).mesh);
+    for (std::size_t o : obstacles) {
+      if (InReach(o, *reach_W)) meshes->push_back(assembly_.part(o).mesh);
+    }
+  }
+
+  // Builds the collision meshes of `meshes` on all cores, ahead of the Travel calls that
+  // would build them one after another.
+  void BuildMeshes(const std::vector<std::shared_ptr<const TriangleMesh>>& meshes) {
+    meshes_.Build(meshes);
   }
 
   // Whether feature f lies within its part's mesh's bounds: the mesh is the part's shape
@@ -148,9 +161,25 @@ class Seater {
   Aabb BoundsInWorld(std::size_t part) {
     return TransformBox(assembly_.part(part).X_WP, Bounds(part));
   }
+  // The world box that the parts `moving` can sweep (their bounds grown by kMaxSeatPlay and
+  // the length tolerance); empty when one of them has no mesh.
+  std::optional<Aabb> Reach(const std::vector<std::size_t>& moving) {
+    Aabb reach_W;
+    for (std::size_t m : moving) {
+      if (!assembly_.part(m).HasGeometry()) return std::nullopt;
+      reach_W.Extend(BoundsInWorld(m));
+    }
+    reach_W.min.array() -= kMaxSeatPlay + assembly_.tolerance().length;
+    reach_W.max.array() += kMaxSeatPlay + assembly_.tolerance().length;
+    return reach_W;
+  }
+  // Whether part `obstacle` has a mesh within `reach_W` (Reach).
+  bool InReach(std::size_t obstacle, const Aabb& reach_W) {
+    return assembly_.part(obstacle).HasGeometry() && BoundsInWorld(obstacle).Intersects(reach_W);
+  }
 
-  // The collision mesh of part `part`, which must have a mesh: built on first use (a
-  // CollisionModel would build every part's, most of them never swept here).
+  // The collision mesh of part `part`, which must have a mesh: built by BuildMeshes, or on
+  // first use (a CollisionModel would build every part's, most of them never swept here).
   const CollisionMesh* Mesh(std::size_t part) { return &meshes_.Get(assembly_.part(part).mesh); }
 
   const Assembly& assembly_;
@@ -181,12 +210,18 @@ Seating SeatParts(const Assembly& assembly, const MotionAnalysis& motion,
     if (moving_bodies.count(a)) between[{a, b}].push_back(i);
     if (moving_bodies.count(b)) between[{b, a}].push_back(i);
   }
+  // A moving body whose pairs with the body it rests `on` leave it a single slide (and, for
+  // cylindrical pairs, a turn): their indices, and the slide's direction d (world).
+  struct Candidate {
+    std::size_t body = 0, on = 0;
+    const std::vector<std::size_t>* pairs = nullptr;
+    bool cylindrical = false;
+    Eigen::Vector3d d;
+  };
   Seater seater(assembly);
   const double tolerance = std::sin(assembly.tolerance().angle);
-  std::vector<Seat> seats;
-  std::vector<bool> seated(pairs->size(), false);  // a body pair is settled once, either way
+  std::vector<Candidate> candidates;
   for (const auto& [bodies, indices] : between) {
-    if (seated[indices.front()]) continue;
     std::vector<const Pair*> group;
     bool planar = true, cylindrical = true;
     for (std::size_t i : indices) {
@@ -200,7 +235,6 @@ Seating SeatParts(const Assembly& assembly, const MotionAnalysis& motion,
                      [&](const Pair* p) { return seater.OnMesh(p->a) && seater.OnMesh(p->b); })) {
       continue;
     }
-    const std::vector<std::size_t>& body_parts = subassemblies[bodies.first].parts;
     const Part& first = assembly.part(group.front()->a.part);
     const Eigen::Vector3d p_WR = assembly.feature(group.front()->a).WorldAxis(first.X_WP).origin;
     const Eigen::MatrixXd twists = AllowedTwists(assembly, group, p_WR, kLeverArm);
@@ -208,14 +242,30 @@ Seating SeatParts(const Assembly& assembly, const MotionAnalysis& motion,
     if (twists.cols() != (planar ? 1 : 2)) continue;
     const std::optional<Eigen::Vector3d> d = OnlyTranslation(twists, tolerance);
     if (!d) continue;
-    const std::vector<std::size_t>& seat_parts = subassemblies[bodies.second].parts;
-    const std::optional<Stop> ahead = seater.Travel(body_parts, seat_parts, *d);
+    candidates.push_back({bodies.first, bodies.second, &indices, cylindrical, *d});
+  }
+  // (A body pair seated one way is not tried the other way, whose meshes are built for
+  // nothing: a few parts at most.)
+  std::vector<std::shared_ptr<const TriangleMesh>> swept;
+  for (const Candidate& c : candidates) {
+    seater.AppendSwept(subassemblies[c.body].parts, subassemblies[c.on].parts, &swept);
+  }
+  seater.BuildMeshes(swept);
+
+  std::vector<Seat> seats;
+  std::vector<bool> seated(pairs->size(), false);  // a body pair is settled once, either way
+  for (const Candidate& c : candidates) {
+    const std::vector<std::size_t>& indices = *c.pairs;
+    if (seated[indices.front()]) continue;
+    const std::vector<std::size_t>& body_parts = subassemblies[c.body].parts;
+    const std::vector<std::size_t>& seat_parts = subassemblies[c.on].parts;
+    const std::optional<Stop> ahead = seater.Travel(body_parts, seat_parts, c.d);
     if (!ahead) continue;
-    const std::optional<Stop> behind = seater.Travel(body_parts, seat_parts, -*d);
+    const std::optional<Stop> behind = seater.Travel(body_parts, seat_parts, -c.d);
     if (!behind) continue;
     const double play = ahead->travel + behind->travel;
     if (play >= kMaxSeatPlay) continue;
-    seats.push_back({bodies.first, cylindrical, indices, {ahead->part, behind->part}, play});
+    seats.push_back({c.body, c.cylindrical, indices, {ahead->part, behind->part}, play});
     for (std::size_t i : indices) seated[i] = true;
   }
   if (seats.empty()) return seating;

@@ -1,11 +1,26 @@
 #include "kernel/collision/collision_mesh_cache.h"
 
+#include "kernel/support/parallel_for.h"
+
 namespace mechanist {
 
 const CollisionMesh& CollisionMeshCache::Get(const std::shared_ptr<const TriangleMesh>& mesh) {
   auto [it, added] = meshes_.try_emplace(mesh.get());
   if (added) it->second = std::make_unique<CollisionMesh>(mesh);
   return *it->second;
+}
+
+void CollisionMeshCache::Build(const std::vector<std::shared_ptr<const TriangleMesh>>& meshes) {
+  std::map<const TriangleMesh*, std::shared_ptr<const TriangleMesh>> missing;
+  for (const auto& mesh : meshes) {
+    if (!meshes_.count(mesh.get())) missing.emplace(mesh.get(), mesh);
+  }
+  std::vector<std::shared_ptr<const TriangleMesh>> work;
+  for (const auto& [raw, mesh] : missing) work.push_back(mesh);
+  std::vector<std::unique_ptr<CollisionMesh>> built(work.size());
+  ParallelFor(work.size(),
+              [&](std::size_t k) { built[k] = std::make_unique<CollisionMesh>(work[k]); });
+  for (std::size_t k = 0; k < work.size(); ++k) meshes_.emplace(work[k].get(), std::move(built[k]));
 }
 
 }  // namespace mechanist

@@ -2,6 +2,7 @@
 
 #include <map>
 #include <memory>
+#include <vector>
 
 #include "kernel/collision/collision_mesh.h"
 #include "kernel/mesh/triangle_mesh.h"
@@ -14,6 +15,11 @@ class CollisionMeshCache {
  public:
   /// The collision mesh of `mesh`, which must not be null; the cache keeps `mesh` alive.
   const CollisionMesh& Get(const std::shared_ptr<const TriangleMesh>& mesh);
+  /// Builds the collision meshes of `meshes` (none null; repeats allowed) that are not cached
+  /// yet, on all cores (ParallelFor), for later Get calls.
+  void Build(const std::vector<std::shared_ptr<const TriangleMesh>>& meshes);
+  /// How many collision meshes the cache holds.
+  std::size_t size() const { return meshes_.size(); }
 
  private:
   std::map<const TriangleMesh*, std::unique_ptr<CollisionMesh>> meshes_;

@@ -10,6 +10,7 @@
 
 #include "kernel/collision/broad_phase.h"
 #include "kernel/collision/collision_mesh.h"
+#include "kernel/collision/collision_mesh_cache.h"
 #include "kernel/collision/mesh_contact.h"
 #include "kernel/collision/translational_sweep.h"
 #include "kernel/geometry/exact_predicates.h"
@@ -95,6 +96,42 @@ TEST(CollisionMesh, HoledPlateContainsMaterialButNotTheHole) {
   EXPECT_FALSE(plate->Contains({0, 0, 5})) << "in the hole's mouth, on the top face's plane";
   EXPECT_TRUE(plate->Contains({6, 0, 2.5}));
   EXPECT_TRUE(plate->Contains({-9, 9, 0.1}));
+}
+
+TEST(CollisionMeshCache, BuildMakesEachMeshOnceForTheGetsThatFollow) {
+  Region2d square;
+  square.outer = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  std::vector<std::shared_ptr<const TriangleMesh>> meshes;
+  for (int k = 1; k <= 5; ++k) {
+    meshes.push_back(std::make_shared<TriangleMesh>(ExtrudeRegion(square, 0, k)));
+  }
+  auto open = std::make_shared<TriangleMesh>(*meshes[0]);
+  open->faces.pop_back();  // a sheet: solid() by winding number, not closed()
+  meshes.push_back(open);
+
+  CollisionMeshCache cache;
+  const CollisionMesh* built_lazily = &cache.Get(meshes[1]);
+  std::vector<std::shared_ptr<const TriangleMesh>> with_repeats = meshes;
+  with_repeats.insert(with_repeats.end(), meshes.begin(), meshes.end());
+  EXPECT_EQ(cache.size(), 1u);
+  cache.Build(with_repeats);
+  EXPECT_EQ(cache.size(), meshes.size()) << "each distinct mesh built once";
+  EXPECT_EQ(&cache.Get(meshes[1]), built_lazily) << "a cached mesh is kept, not rebuilt";
+  for (std::size_t k = 0; k < meshes.size(); ++k) {
+    const CollisionMesh& got = cache.Get(meshes[k]);
+    const CollisionMesh direct(meshes[k]);
+    EXPECT_EQ(&got.mesh(), meshes[k].get());
+    EXPECT_EQ(got.closed(), direct.closed());
+    EXPECT_EQ(got.solid(), direct.solid());
+    EXPECT_EQ(got.edges().size(), direct.edges().size());
+    EXPECT_EQ(got.bounds().max, direct.bounds().max);
+    cache.Build({meshes[k]});
+    EXPECT_EQ(&cache.Get(meshes[k]), &got);
+  }
+  EXPECT_TRUE(cache.Get(meshes[4]).closed());
+  EXPECT_DOUBLE_EQ(cache.Get(meshes[4]).bounds().max.z(), 5.0);
+  EXPECT_FALSE(cache.Get(open).closed());
+  EXPECT_EQ(cache.size(), meshes.size());
 }
 
 TEST(MeshContact, AgreesWithBruteForceOnRandomPoses) {
