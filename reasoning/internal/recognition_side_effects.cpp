@@ -277,8 +277,8 @@ void Recognizer::SettleImpliedPins() {
       // Two pins apart hold the parts as dowels do: one fixed pair, on the holes whose names
       // sort first (whatever the file's order), stands for them all.
       const auto names = [&](std::size_t pair) {
-        return std::make_pair(assembly_.FeatureName(pairs_[pair].a),
-                              assembly_.FeatureName(pairs_[pair].b));
+        return std::pair(assembly_.FeatureNameRank(pairs_[pair].a),
+                         assembly_.FeatureNameRank(pairs_[pair].b));
       };
       const std::size_t held =
           *std::min_element(pins.pairs.begin(), pins.pairs.end(),
