@@ -244,8 +244,8 @@ Seating SeatParts(const Assembly& assembly, const MotionAnalysis& motion,
     if (!d) continue;
     candidates.push_back({bodies.first, bodies.second, &indices, cylindrical, *d});
   }
-  // (A body pair seated one way is not tried the other way, whose meshes are built for
-  // nothing: a few parts at most.)
+  // (A body pair seated one way is not tried the other way: the meshes of the resting body's
+  // parts beyond the moving body's reach are then built for nothing.)
   std::vector<std::shared_ptr<const TriangleMesh>> swept;
   for (const Candidate& c : candidates) {
     seater.AppendSwept(subassemblies[c.body].parts, subassemblies[c.on].parts, &swept);

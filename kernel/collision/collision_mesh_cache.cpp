@@ -1,5 +1,7 @@
 #include "kernel/collision/collision_mesh_cache.h"
 
+#include <set>
+
 #include "kernel/support/parallel_for.h"
 
 namespace mechanist {
@@ -11,12 +13,11 @@ const CollisionMesh& CollisionMeshCache::Get(const std::shared_ptr<const Triangl
 }
 
 void CollisionMeshCache::Build(const std::vector<std::shared_ptr<const TriangleMesh>>& meshes) {
-  std::map<const TriangleMesh*, std::shared_ptr<const TriangleMesh>> missing;
+  std::set<const TriangleMesh*> seen;
+  std::vector<std::shared_ptr<const TriangleMesh>> work;  // in the order given
   for (const auto& mesh : meshes) {
-    if (!meshes_.count(mesh.get())) missing.emplace(mesh.get(), mesh);
+    if (!meshes_.count(mesh.get()) && seen.insert(mesh.get()).second) work.push_back(mesh);
   }
-  std::vector<std::shared_ptr<const TriangleMesh>> work;
-  for (const auto& [raw, mesh] : missing) work.push_back(mesh);
   std::vector<std::unique_ptr<CollisionMesh>> built(work.size());
   ParallelFor(work.size(),
               [&](std::size_t k) { built[k] = std::make_unique<CollisionMesh>(work[k]); });

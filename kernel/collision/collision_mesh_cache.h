@@ -9,8 +9,8 @@
 
 namespace mechanist {
 
-/// Collision meshes built on first use, one per distinct mesh: for queries that touch a few
-/// parts of an assembly (a CollisionModel builds every part's).
+/// Collision meshes built on first use, or ahead on all cores (Build), one per distinct mesh:
+/// for queries that touch a few parts of an assembly (a CollisionModel builds every part's).
 class CollisionMeshCache {
  public:
   /// The collision mesh of `mesh`, which must not be null; the cache keeps `mesh` alive.

@@ -276,13 +276,13 @@ void Recognizer::SettleImpliedPins() {
     } else {
       // Two pins apart hold the parts as dowels do: one fixed pair, on the holes whose names
       // sort first (whatever the file's order), stands for them all.
-      const auto names = [&](std::size_t pair) {
+      const auto ranks = [&](std::size_t pair) {
         return std::pair(assembly_.FeatureNameRank(pairs_[pair].a),
                          assembly_.FeatureNameRank(pairs_[pair].b));
       };
       const std::size_t held =
           *std::min_element(pins.pairs.begin(), pins.pairs.end(),
-                            [&](std::size_t x, std::size_t y) { return names(x) < names(y); });
+                            [&](std::size_t x, std::size_t y) { return ranks(x) < ranks(y); });
       pairs_[held].type = PairType::kFixed;
       pairs_[held].dof = DegreesOfFreedom(PairType::kFixed);
       for (const std::size_t pair : pins.pairs) dropped[pair] = pair != held;

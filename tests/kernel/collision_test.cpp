@@ -98,7 +98,7 @@ TEST(CollisionMesh, HoledPlateContainsMaterialButNotTheHole) {
   EXPECT_TRUE(plate->Contains({-9, 9, 0.1}));
 }
 
-TEST(CollisionMeshCache, BuildMakesEachMeshOnceForTheGetsThatFollow) {
+TEST(CollisionMeshCache, BuildCachesEachDistinctMeshAndKeepsThoseCached) {
   Region2d square;
   square.outer = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   std::vector<std::shared_ptr<const TriangleMesh>> meshes;
@@ -106,7 +106,7 @@ TEST(CollisionMeshCache, BuildMakesEachMeshOnceForTheGetsThatFollow) {
     meshes.push_back(std::make_shared<TriangleMesh>(ExtrudeRegion(square, 0, k)));
   }
   auto open = std::make_shared<TriangleMesh>(*meshes[0]);
-  open->faces.pop_back();  // a sheet: solid() by winding number, not closed()
+  open->faces.pop_back();  // a box with one triangle missing: not closed(), solid() by winding
   meshes.push_back(open);
 
   CollisionMeshCache cache;
@@ -131,6 +131,7 @@ TEST(CollisionMeshCache, BuildMakesEachMeshOnceForTheGetsThatFollow) {
   EXPECT_TRUE(cache.Get(meshes[4]).closed());
   EXPECT_DOUBLE_EQ(cache.Get(meshes[4]).bounds().max.z(), 5.0);
   EXPECT_FALSE(cache.Get(open).closed());
+  EXPECT_TRUE(cache.Get(open).solid());
   EXPECT_EQ(cache.size(), meshes.size());
 }
 
