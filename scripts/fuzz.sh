@@ -15,7 +15,7 @@ case $seconds in
 esac
 shift || true
 all=(assembly_file_fuzzer stl_reader_fuzzer obj_reader_fuzzer ply_reader_fuzzer
-     off_reader_fuzzer ccd_query_fuzzer analysis_fuzzer step_import_fuzzer)
+     off_reader_fuzzer ccd_query_fuzzer analysis_fuzzer step_import_fuzzer part21_records_fuzzer)
 if [ $# -gt 0 ]; then fuzzers=("$@"); else fuzzers=("${all[@]}"); fi
 
 scripts/install-deps.sh
@@ -44,6 +44,8 @@ seed off_reader_fuzzer fuzz/seeds/*.off tests/data/bad/*.off
 seed analysis_fuzzer fuzz/seeds/*.stl "$shared"/gears/spur_singles/*.stl
 seed step_import_fuzzer tests/data/bad/*.step "$shared"/step/*.stp \
   "$shared"/real/revolute_pin_solidedge_chrono/*.stp "$shared"/real/hinge_clamshell_build123d/*.step
+seed part21_records_fuzzer tests/data/bad/*.step "$shared"/step/*.stp "$shared"/real/*/*.stp \
+  "$shared"/real/*/*.step "$shared"/real/*/*.STEP
 # A CCD seed is a query file behind one byte that chooses its kind (even: vertex-face).
 seed ccd_query_fuzzer fuzz/seeds/*.ccd
 for f in "$shared"/ccd/*/*/*.csv; do

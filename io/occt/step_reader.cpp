@@ -62,6 +62,7 @@
 #include <string_view>
 #include <tuple>
 
+#include "io/occt/part21_work_library.h"
 #include "kernel/geometry/circle_fit.h"
 #include "kernel/mesh/mesh_check.h"
 #include "kernel/support/number_format.h"
@@ -1201,6 +1202,7 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
   app->NewDocument("MDTV-XCAF", document);
   STEPCAFControl_Reader reader;  // initialises the reader's processing (XSAlgo) first
   reader.SetNameMode(true);
+  reader.ChangeReader().WS()->SetLibrary(new Part21WorkLibrary);
   const Handle(DeferredHealing) healing = new DeferredHealing();
   const HealingDeferred deferred(healing);
   const IFSelect_ReturnStatus status = reader.ReadFile(file.string().c_str());

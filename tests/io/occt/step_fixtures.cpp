@@ -28,9 +28,15 @@
 #include <Interface_Static.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
+#include <Message_Printer.hxx>
 #include <STEPCAFControl_Reader.hxx>
 #include <STEPCAFControl_Writer.hxx>
+#include <STEPControl_Reader.hxx>
 #include <STEPControl_Writer.hxx>
+#include <StepData_Protocol.hxx>
+#include <StepData_StepModel.hxx>
+#include <StepData_StepWriter.hxx>
+#include <StepSelect_WorkLibrary.hxx>
 #include <TColgp_HArray1OfPnt.hxx>
 #include <TDF_LabelSequence.hxx>
 #include <TDocStd_Document.hxx>
@@ -44,6 +50,7 @@
 #include <XCAFApp_Application.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
+#include <XSControl_WorkSession.hxx>
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -56,10 +63,12 @@
 #include <gp_Vec.hxx>
 #include <map>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "io/occt/part21_work_library.h"
 #include "kernel/features/involute_gear.h"
 
 namespace mechanist::testing {
@@ -1030,6 +1039,55 @@ void WriteNeedleBearingStep(const std::filesystem::path& file) {
   builder.Add(all, Tube(8, 9.5, -6, 6));
   AddRollers(builder, all, 18, 2, 7, -5, 5);
   WriteStep(all, file);
+}
+
+namespace {
+
+// Keeps the messages sent at information gravity and above.
+class KeepingPrinter : public Message_Printer {
+ public:
+  explicit KeepingPrinter(std::vector<std::string>* kept) : kept_(kept) {
+    SetTraceLevel(Message_Info);
+  }
+
+ protected:
+  void send(const TCollection_AsciiString& text, const Message_Gravity gravity) const override {
+    if (gravity >= Message_Info) kept_->push_back(text.ToCString());
+  }
+
+ private:
+  std::vector<std::string>* kept_;
+};
+
+}  // namespace
+
+StepModelRead ReadStepModel(const std::filesystem::path& file, bool mechanist_parser) {
+  STEPControl_Reader reader;  // loads the STEP protocol
+  const Handle(StepData_Protocol) protocol =
+      Handle(StepData_Protocol)::DownCast(reader.WS()->Protocol());
+  const Handle(StepSelect_WorkLibrary) library =
+      mechanist_parser ? new Part21WorkLibrary : new StepSelect_WorkLibrary;
+  StepModelRead read;
+  const Handle(Message_Messenger) messenger = Message::DefaultMessenger();
+  const Message_SequenceOfPrinters saved = messenger->Printers();
+  messenger->ChangePrinters().Clear();
+  messenger->AddPrinter(new KeepingPrinter(&read.messages));
+  Handle(Interface_InterfaceModel) model;
+  read.status = library->ReadFile(file.string().c_str(), model, protocol);
+  messenger->ChangePrinters() = saved;
+  const Handle(StepData_StepModel) step = Handle(StepData_StepModel)::DownCast(model);
+  if (read.status != 0 || step.IsNull()) return read;
+  read.entities = step->NbEntities();
+  for (int n = 1; n <= read.entities; ++n) {
+    if (step->IsErrorEntity(n)) read.error_entities.push_back(n);
+    if (step->IsUnknownEntity(n)) read.unknown_entities.push_back(n);
+  }
+  StepData_StepWriter writer(step);
+  writer.SendModel(protocol);
+  std::ostringstream text;
+  writer.Print(text);
+  read.written = text.str();
+  return read;
 }
 
 }  // namespace mechanist::testing

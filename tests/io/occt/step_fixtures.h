@@ -218,4 +218,18 @@ void WritePuckStep(const std::filesystem::path& file, double radius, double heig
 /// Throws std::runtime_error when it cannot read or write.
 void WriteNurbsCopy(const std::filesystem::path& in, const std::filesystem::path& out);
 
+/// A STEP file read into Open CASCADE's model (StepData_StepModel), not transferred to shapes.
+struct StepModelRead {
+  int status = 0;       // the work library's: 0 read, -1 cannot be opened, 1 a syntax error
+  std::string written;  // the model written back as Part 21 text (StepData_StepWriter)
+  int entities = 0;
+  std::vector<int> error_entities;    // Open CASCADE's IsErrorEntity
+  std::vector<int> unknown_entities;  // IsUnknownEntity
+  std::vector<std::string> messages;  // what the reader sent at information gravity and above
+};
+
+/// `file` read by Open CASCADE's own parser (StepSelect_WorkLibrary, StepFile_Read) or, if
+/// `mechanist_parser`, by the scanner mechanist reads STEP files with (Part21WorkLibrary).
+StepModelRead ReadStepModel(const std::filesystem::path& file, bool mechanist_parser);
+
 }  // namespace mechanist::testing

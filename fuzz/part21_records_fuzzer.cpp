@@ -1,0 +1,43 @@
+// libFuzzer harness of mechanist's Part 21 scanner alone (io/occt/part21_records.h): any bytes
+// give records or nothing, without reading outside them (AddressSanitizer), and the records it
+// gives hold together: every text inside the input with a separator after it (where
+// Part21WorkLibrary writes its NUL), every record's parameters inside the list, every `$n`
+// named by max_sub.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <optional>
+#include <string_view>
+
+#include "io/occt/part21_records.h"
+
+namespace {
+
+void Require(bool holds) {
+  if (!holds) std::abort();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  const std::optional<mechanist::Part21Records> records = mechanist::ReadPart21Records(text);
+  if (!records) return 0;
+  using Span = mechanist::Part21Records::Span;
+  const auto inside = [&](Span s) { return std::size_t{s.begin} + s.size < size; };
+  Require(records->header_records <= records->records.size());
+  for (const mechanist::Part21Records::Record& r : records->records) {
+    Require(r.sub >= 0 && r.sub <= records->max_sub);
+    Require(r.ident.size == 0 || inside(r.ident));
+    Require(r.type.size == 0 || inside(r.type));
+    Require(std::size_t{r.first} + r.count <= records->params.size());
+  }
+  for (const mechanist::Part21Records::Param& p : records->params) {
+    if (p.kind == mechanist::Part21Records::Kind::kSub) {
+      Require(p.sub >= 1 && p.sub <= records->max_sub);
+    } else {
+      Require(p.text.size > 0 && inside(p.text));
+    }
+  }
+  return 0;
+}
