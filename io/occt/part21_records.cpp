@@ -18,12 +18,12 @@ bool IsLetter(char c) { return IsUpper(c) || (c >= 'a' && c <= 'z'); }
 bool IsWordChar(char c) { return IsLetter(c) || IsDigit(c) || c == '_'; }
 bool IsSpace(char c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
 bool IsHexDigit(char c) { return IsDigit(c) || (c >= 'A' && c <= 'F'); }
-// A character of a text other than its apostrophes: printable ASCII, tabs and line breaks, and
-// the bytes above 0x80 (UTF-8 and Latin-1 names); Open CASCADE's scanner ends a text on the
-// other control characters.
+// A character of a text other than its apostrophes, as read here: printable ASCII, tabs and
+// line breaks, and the bytes from 0x80 (UTF-8 and Latin-1 names). Other control characters
+// are left to Open CASCADE's parser, to be safe: its scanners have read them differently.
 bool IsTextChar(char c) {
   const auto u = static_cast<unsigned char>(c);
-  return (u >= 0x20 && u <= 0x7E) || u > 0x80 || c == '\t' || c == '\n' || c == '\r';
+  return (u >= 0x20 && u <= 0x7E) || u >= 0x80 || c == '\t' || c == '\n' || c == '\r';
 }
 
 // [begin, end) of the text (shorter than 4 GiB).
@@ -53,6 +53,8 @@ class Scanner {
     while (!Keyword("ENDSEC;")) {
       if (!Entity()) return std::nullopt;
     }
+    // Open CASCADE's grammar wants an entity at least: it reports an empty data section.
+    if (out_.records.size() == out_.header_records) return std::nullopt;
     // Open CASCADE's scanner ignores whatever follows the end keyword.
     if (!Keyword("END-ISO-10303-21;")) return std::nullopt;
     return std::move(out_);
@@ -63,9 +65,9 @@ class Scanner {
 
   char Peek() const { return at_ < text_.size() ? text_[at_] : '\0'; }
 
-  // Skips blanks and comments. A comment holding an apostrophe or a keyword that Open
-  // CASCADE's scanner still sees inside comments (a text, ISO-10303-21; or ENDSTEP;) is left
-  // to it.
+  // Skips blanks and comments. A comment holding an apostrophe or a keyword (which older Open
+  // CASCADE scanners saw inside comments: a text, ISO-10303-21; or ENDSTEP;) is left to Open
+  // CASCADE's parser, to be safe.
   bool SkipSpace() {
     for (;;) {
       while (at_ < text_.size() && IsSpace(text_[at_])) ++at_;
@@ -94,11 +96,13 @@ class Scanner {
     return true;
   }
 
-  // `[a-zA-Z][a-zA-Z0-9_]*` at the current place.
+  // `[a-zA-Z][a-zA-Z0-9_]*` at the current place; empty for ENDSCOPE, a keyword to Open
+  // CASCADE's scanner.
   Span Word() {
     const std::size_t begin = at_;
     if (!IsLetter(Peek())) return {};
     while (at_ < text_.size() && IsWordChar(text_[at_])) ++at_;
+    if (text_.substr(begin, at_ - begin) == "ENDSCOPE") return {};
     return SpanOf(begin, at_);
   }
 
@@ -223,8 +227,8 @@ class Scanner {
   }
 
   // A text. Open CASCADE's scanner ends a text at an apostrophe followed by blanks and line
-  // breaks, then ',' or ')'; elsewhere only doubled apostrophes (one apostrophe of the text)
-  // are read here.
+  // breaks, then ',' or ')' (EndsText); elsewhere only doubled apostrophes (one apostrophe of
+  // the text) are read here.
   bool Text() {
     ++at_;
     for (;;) {
@@ -241,11 +245,12 @@ class Scanner {
     }
   }
 
-  // Whether the apostrophe before the current place ends a text.
+  // Whether the apostrophe before the current place ends a text to Open CASCADE's scanner:
+  // blanks, line breaks and double quotes (its rule's class holds them), then ',' or ')'.
   bool EndsText() const {
     std::size_t next = at_;
-    while (next < text_.size() &&
-           (text_[next] == ' ' || text_[next] == '\n' || text_[next] == '\r')) {
+    while (next < text_.size() && (text_[next] == ' ' || text_[next] == '\n' ||
+                                   text_[next] == '\r' || text_[next] == '"')) {
       ++next;
     }
     return next < text_.size() && (text_[next] == ',' || text_[next] == ')');

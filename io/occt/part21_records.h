@@ -1,8 +1,9 @@
 #pragma once
 // A STEP file's text (ISO 10303-21 exchange structure) as the records Open CASCADE's own
 // parser (StepFile_Read, flex and bison) hands to StepData_StepReaderData, read by a
-// hand-written scanner about twice as fast. It reads the subset real CAD exports use and gives
-// up (nullopt) on anything else, so that the caller can leave such a file, and its error
+// hand-written scanner (a 4 MB export in 0.01 s; the whole model then loads about four times
+// as fast as through StepFile_Read, bench/part21_bench). It reads the subset real CAD exports use
+// and gives up (nullopt) on anything else, so that the caller can leave such a file, and its error
 // messages, to Open CASCADE's parser. No Open CASCADE types here: the scanner is tested and
 // fuzzed on its own.
 #include <cstddef>
@@ -41,11 +42,13 @@ struct Part21Records {
     kMisc,
     kSub
   };
+  /// A parameter: its kind and its text, or the nested list it names.
   struct Param {
     Kind kind = Kind::kMisc;
     Span text;    // all kinds but kSub
     int sub = 0;  // kSub: the nested list `$sub`
   };
+  /// An entity, a part of a complex entity, or a nested list, with its parameters.
   struct Record {
     Span ident;   // `#7`; empty for a header entity and a complex entity's further parts
     int sub = 0;  // > 0: a nested list, ident `$sub`
@@ -60,11 +63,11 @@ struct Part21Records {
 };
 
 /// The records of `text`, a whole STEP file; nullopt when it is not in the subset read here:
-/// anything malformed, scopes, user-defined types (`!NAME`), a second data section, texts with
-/// an apostrophe inside other than doubled, numbers Open CASCADE's scanner splits (`1E5`), lists
-/// nested more than 64 deep, control characters outside texts, files of 4 GiB and more. For every
-/// text it reads, Open CASCADE's scanner ends each token where this one does (checked by tests
-/// against StepFile_Read on real exports).
+/// anything malformed, an empty data section, scopes, user-defined types (`!NAME`), a second data
+/// section, texts with an apostrophe inside other than doubled, numbers Open CASCADE's scanner
+/// splits (`1E5`), lists nested more than 64 deep, control characters outside texts, files of 4 GiB
+/// and more. For every text it reads, Open CASCADE's scanner ends each token where this one does
+/// (checked by tests against StepFile_Read on real exports).
 std::optional<Part21Records> ReadPart21Records(std::string_view text);
 
 }  // namespace mechanist

@@ -6,7 +6,10 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -27,6 +30,27 @@ std::string Wrapped(const std::string& data) {
          "FILE_SCHEMA(('AUTOMOTIVE_DESIGN'));\nENDSEC;\nDATA;\n" +
          data + "\nENDSEC;\nEND-ISO-10303-21;\n";
 }
+
+// A folder of this test process's own (ctest runs tests in parallel), removed at the end of
+// the scope.
+class ScratchFolder {
+ public:
+  explicit ScratchFolder(const std::string& name)
+      : path_(std::filesystem::temp_directory_path() /
+              fmt::format("mechanist_{}_{}", name, ::getpid())) {
+    std::filesystem::create_directories(path_);
+  }
+  ~ScratchFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
 
 std::string Slurp(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -99,6 +123,7 @@ TEST(Part21Records, WhatItDoesNotReadIsLeftToOpenCascade) {
       "#1=A('it's');",         // an apostrophe inside a text
       "#1=A('it'',1);",        // a doubled apostrophe before ','
       "#1=A('it' 's');",       // an apostrophe then a blank
+      "#1=A('1''\",2');",      // a double quote after an apostrophe: the text ends there
       "#1=A('x' /* c */,1);",  // a comment after a text
       "#1=A('a\x01');",        // a control character in a text
       "#1=A(1,,2);",           // an empty parameter
@@ -121,7 +146,8 @@ TEST(Part21Records, WhatItDoesNotReadIsLeftToOpenCascade) {
   EXPECT_TRUE(ReadPart21Records(Wrapped("#1=A(1);")).has_value());
   for (const std::string& text :
        {std::string(), std::string("ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1=A(1);"),
-        Wrapped("#1=A(1);").replace(0, 3, "STEP"), Wrapped("#1=A(1);\nENDSEC;\nDATA;\n#2=A(1);")}) {
+        Wrapped("#1=A(1);").replace(0, 3, "STEP"), Wrapped("#1=A(1);\nENDSEC;\nDATA;\n#2=A(1);"),
+        Wrapped(""), Wrapped("#1=ENDSCOPE(1);")}) {
     EXPECT_FALSE(ReadPart21Records(text).has_value()) << text;
   }
 }
@@ -157,8 +183,19 @@ void ExpectSameModel(const std::filesystem::path& file) {
   EXPECT_EQ(ours.entities, theirs.entities);
   EXPECT_EQ(ours.error_entities, theirs.error_entities);
   EXPECT_EQ(ours.unknown_entities, theirs.unknown_entities);
+  EXPECT_EQ(ours.checks, theirs.checks);
   EXPECT_EQ(ours.messages, theirs.messages);
   EXPECT_TRUE(ours.written == theirs.written) << "the models written back differ";
+}
+
+// `data` as the data section of a file in `folder`, read both ways; `inside`: whether the
+// scanner reads it (else Open CASCADE's parser does, for both).
+void ExpectSameModelOf(const std::string& data, bool inside, const ScratchFolder& folder) {
+  static int count = 0;
+  const std::filesystem::path file = folder.path() / fmt::format("file{}.step", ++count);
+  std::ofstream(file) << Wrapped(data);
+  EXPECT_EQ(ReadPart21Records(Slurp(file)).has_value(), inside) << data;
+  ExpectSameModel(file);
 }
 
 TEST(Part21WorkLibrary, ModelsAreOpenCascadesOnEverySharedStepFile) {
@@ -169,39 +206,43 @@ TEST(Part21WorkLibrary, ModelsAreOpenCascadesOnEverySharedStepFile) {
 }
 
 TEST(Part21WorkLibrary, ModelsChecksAndMessagesAreOpenCascadesOnBadAndFaultyFiles) {
-  // Bad inputs inside the subset (the others are read by Open CASCADE's parser alone).
-  std::vector<std::filesystem::path> files;
+  // Bad inputs: inside the subset, and outside it (read by Open CASCADE's parser both ways,
+  // with its status and messages).
   for (const char* name : {"step_dangling_reference.step", "step_no_solid.step"}) {
-    files.push_back(kSource / "tests/data/bad" / name);
-    ASSERT_TRUE(ReadPart21Records(Slurp(files.back())).has_value()) << name;
+    ASSERT_TRUE(ReadPart21Records(Slurp(kSource / "tests/data/bad" / name)).has_value());
+    ExpectSameModel(kSource / "tests/data/bad" / name);
   }
+  for (const char* name : {"step_truncated.step", "step_not_step.step", "step_header_only.step"}) {
+    ASSERT_FALSE(ReadPart21Records(Slurp(kSource / "tests/data/bad" / name)).has_value());
+    ExpectSameModel(kSource / "tests/data/bad" / name);
+  }
+  ExpectSameModel(kSource / "tests/data/bad/no_such_file.step");  // cannot be opened: -1
+  const ScratchFolder folder("part21_faulty");
+  ExpectSameModel(folder.path());  // a folder: not a regular file
   // Faulty files inside the subset, which Open CASCADE loads with checks and messages.
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "mechanist_part21_faulty";
-  std::filesystem::create_directories(dir);
-  const std::vector<std::string> faulty = {
-      "#1=CARTESIAN_POINT('',(0.,0.,0.));\n#2=DIRECTION('',(0.,0.,1.));\n"
-      "#3=AXIS2_PLACEMENT_3D('',#1,#2,#99);",  // a dangling reference
-      "#1=CARTESIAN_POINT('',(0.,0.,0.));\n#1=CARTESIAN_POINT('',(1.,0.,0.));",  // named twice
-      "#1=NOT_A_STEP_TYPE(1,'a');",                                              // an unknown type
-      "#1=CARTESIAN_POINT('');",                            // too few parameters
-      "#1=CARTESIAN_POINT('',(0.,'a',.T.));",               // wrong kinds
-      "#1=DIRECTION('',(0.,0.,1.));\n#2=VECTOR('',#1,*);",  // '*' for a value
-  };
-  for (std::size_t k = 0; k < faulty.size(); ++k) {
-    const std::filesystem::path file = dir / fmt::format("faulty{}.step", k);
-    std::ofstream(file) << Wrapped(faulty[k]);
-    ASSERT_TRUE(ReadPart21Records(Slurp(file)).has_value()) << faulty[k];
-    files.push_back(file);
+  for (const char* faulty : {
+           "#1=CARTESIAN_POINT('',(0.,0.,0.));\n#2=DIRECTION('',(0.,0.,1.));\n"
+           "#3=AXIS2_PLACEMENT_3D('',#1,#2,#99);",  // a dangling reference
+           "#1=CARTESIAN_POINT('',(0.,0.,0.));\n#1=CARTESIAN_POINT('',(1.,0.,0.));",  // twice
+           "#1=NOT_A_STEP_TYPE(1,'a');",                                              // unknown
+           "#1=CARTESIAN_POINT('');",                            // too few parameters
+           "#1=CARTESIAN_POINT('',(0.,'a',.T.));",               // wrong kinds
+           "#1=DIRECTION('',(0.,0.,1.));\n#2=VECTOR('',#1,*);",  // '*' for a value
+           // a list where a derived attribute's '*' is looked for (its `$1` read after loading)
+           "#1=(LENGTH_UNIT() NAMED_UNIT((0)) SI_UNIT(.MILLI.,.METRE.));",
+           "#1=A(('a',(1,2)),B(3));\n#2=(C(.T.,*,$) D((\"0F\",(-1))));",  // unknown, nested
+       }) {
+    ExpectSameModelOf(faulty, true, folder);
   }
-  for (const std::filesystem::path& file : files) ExpectSameModel(file);
-  std::filesystem::remove_all(dir);
+  // Outside the subset: read by Open CASCADE's parser either way.
+  for (const char* outside : {"", "#1=!USER_TYPE(1);", "#1=A('1''\",2');", "#1=A(1E5);"}) {
+    ExpectSameModelOf(outside, false, folder);
+  }
 }
 
 TEST(Part21WorkLibrary, ModelsAreOpenCascadesOnFilesItsWriterWrites) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "mechanist_part21_written";
-  std::filesystem::create_directories(dir);
+  const ScratchFolder folder("part21_written");
+  const std::filesystem::path& dir = folder.path();
   testing::WriteSpurGearPairStep(dir / "spur.step", 12, 30, 2);
   testing::WriteBallBearingStep(dir / "bearing.step", 9);
   testing::WriteStepVariant(kShared / "step/as1_pe_203.stp", dir / "inches.step",
@@ -210,7 +251,6 @@ TEST(Part21WorkLibrary, ModelsAreOpenCascadesOnFilesItsWriterWrites) {
     ASSERT_TRUE(ReadPart21Records(Slurp(dir / name)).has_value()) << name;
     ExpectSameModel(dir / name);
   }
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -25,6 +25,7 @@
 #include <GC_MakeArcOfCircle.hxx>
 #include <GeomAPI_Interpolate.hxx>
 #include <Geom_BSplineCurve.hxx>
+#include <Interface_Check.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
@@ -1043,16 +1044,18 @@ void WriteNeedleBearingStep(const std::filesystem::path& file) {
 
 namespace {
 
-// Keeps the messages sent at information gravity and above.
+// Keeps the messages sent at information gravity and above, and the error reports sent as
+// traces.
 class KeepingPrinter : public Message_Printer {
  public:
   explicit KeepingPrinter(std::vector<std::string>* kept) : kept_(kept) {
-    SetTraceLevel(Message_Info);
+    SetTraceLevel(Message_Trace);
   }
 
  protected:
   void send(const TCollection_AsciiString& text, const Message_Gravity gravity) const override {
-    if (gravity >= Message_Info) kept_->push_back(text.ToCString());
+    const std::string line = text.ToCString();
+    if (gravity >= Message_Info || line.find("ERR ") != std::string::npos) kept_->push_back(line);
   }
 
  private:
@@ -1078,10 +1081,24 @@ StepModelRead ReadStepModel(const std::filesystem::path& file, bool mechanist_pa
   const Handle(StepData_StepModel) step = Handle(StepData_StepModel)::DownCast(model);
   if (read.status != 0 || step.IsNull()) return read;
   read.entities = step->NbEntities();
+  const auto add_checks = [&](int n, const Handle(Interface_Check) & check) {
+    for (int k = 1; k <= check->NbFails(); ++k) {
+      read.checks.push_back(std::to_string(n) + ": fail: " + check->CFail(k));
+    }
+    for (int k = 1; k <= check->NbWarnings(); ++k) {
+      read.checks.push_back(std::to_string(n) + ": warning: " + check->CWarning(k));
+    }
+  };
+  add_checks(0, step->GlobalCheck());
   for (int n = 1; n <= read.entities; ++n) {
     if (step->IsErrorEntity(n)) read.error_entities.push_back(n);
     if (step->IsUnknownEntity(n)) read.unknown_entities.push_back(n);
+    add_checks(n, step->Check(n, /*syntactic=*/true));
+    if (step->HasSemanticChecks()) add_checks(n, step->Check(n, /*syntactic=*/false));
   }
+  // Open CASCADE's writer does not return on a model it recovered from syntax errors (an empty
+  // data section, a number it split): such a model is not written back.
+  if (step->GlobalCheck()->NbFails() > 0) return read;
   StepData_StepWriter writer(step);
   writer.SendModel(protocol);
   std::ostringstream text;

@@ -221,11 +221,16 @@ void WriteNurbsCopy(const std::filesystem::path& in, const std::filesystem::path
 /// A STEP file read into Open CASCADE's model (StepData_StepModel), not transferred to shapes.
 struct StepModelRead {
   int status = 0;       // the work library's: 0 read, -1 cannot be opened, 1 a syntax error
-  std::string written;  // the model written back as Part 21 text (StepData_StepWriter)
+  std::string written;  // the model written back as Part 21 text (StepData_StepWriter), unless
+                        // its global check has fails (Open CASCADE's writer hangs on some)
   int entities = 0;
   std::vector<int> error_entities;    // Open CASCADE's IsErrorEntity
   std::vector<int> unknown_entities;  // IsUnknownEntity
-  std::vector<std::string> messages;  // what the reader sent at information gravity and above
+  /// The model's global check and each entity's, as "entity: fail|warning: text" lines.
+  std::vector<std::string> checks;
+  /// What the reader sent at information gravity and above, and its error reports sent as
+  /// traces (those holding "ERR "), which mechanist's import shows.
+  std::vector<std::string> messages;
 };
 
 /// `file` read by Open CASCADE's own parser (StepSelect_WorkLibrary, StepFile_Read) or, if
