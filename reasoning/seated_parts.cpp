@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <string>
 
 #include "kernel/collision/collision_mesh.h"
@@ -17,6 +18,7 @@
 #include "kernel/collision/translational_sweep.h"
 #include "kernel/geometry/aabb.h"
 #include "kernel/support/number_format.h"
+#include "kernel/support/parallel_for.h"
 
 namespace mechanist {
 namespace {
@@ -92,14 +94,25 @@ struct Seat {
 
 class Seater {
  public:
+  // The bounds of every part's mesh are taken here, once for each distinct mesh, so that the
+  // sweeps (Travel) only read.
   explicit Seater(const Assembly& assembly)
-      : assembly_(assembly), min_approach_(std::sin(assembly.tolerance().angle)) {}
+      : assembly_(assembly), min_approach_(std::sin(assembly.tolerance().angle)) {
+    for (const Part& part : assembly.parts()) {
+      if (!part.HasGeometry()) continue;
+      auto [it, added] = bounds_.try_emplace(part.mesh.get());
+      if (added) it->second = part.mesh->Bounds();
+    }
+  }
 
   // How far the parts `moving` travel along d before a part of `obstacles` stops them, up to
   // kMaxSeatPlay; empty when nothing does, or a part has no mesh. Obstacles beyond the moving
-  // parts' reach (their bounds grown by kMaxSeatPlay) are not swept, nor their meshes built.
+  // parts' reach (their bounds grown by kMaxSeatPlay) are not swept. The meshes it sweeps
+  // (AppendSwept) must have been built (BuildMeshes); it only reads, so that several threads
+  // may sweep at once.
   std::optional<Stop> Travel(const std::vector<std::size_t>& moving,
-                             const std::vector<std::size_t>& obstacles, const Eigen::Vector3d& d) {
+                             const std::vector<std::size_t>& obstacles,
+                             const Eigen::Vector3d& d) const {
     const std::optional<Aabb> reach_W = Reach(moving);
     if (!reach_W) return std::nullopt;
     SweepOptions options;
@@ -124,7 +137,7 @@ class Seater {
   // Appends to `meshes` those that Travel(moving, obstacles, d) sweeps, whatever d.
   void AppendSwept(const std::vector<std::size_t>& moving,
                    const std::vector<std::size_t>& obstacles,
-                   std::vector<std::shared_ptr<const TriangleMesh>>* meshes) {
+                   std::vector<std::shared_ptr<const TriangleMesh>>* meshes) const {
     const std::optional<Aabb> reach_W = Reach(moving);
     if (!reach_W) return;
     for (std::size_t m : moving) meshes->push_back(assembly_.part(m).mesh);
@@ -133,15 +146,14 @@ class Seater {
     }
   }
 
-  // Builds the collision meshes of `meshes` on all cores, ahead of the Travel calls that
-  // would build them one after another.
+  // Builds the collision meshes of `meshes` on all cores, for the Travel calls.
   void BuildMeshes(const std::vector<std::shared_ptr<const TriangleMesh>>& meshes) {
     meshes_.Build(meshes);
   }
 
   // Whether feature f lies within its part's mesh's bounds: the mesh is the part's shape
   // where the pair is (a stand-in mesh far from the features says nothing about the seat).
-  bool OnMesh(FeatureRef f) {
+  bool OnMesh(FeatureRef f) const {
     if (!assembly_.part(f.part).HasGeometry()) return false;
     const Aabb& box_P = Bounds(f.part);
     const Eigen::Vector3d p = assembly_.feature(f).origin;
@@ -152,18 +164,13 @@ class Seater {
 
  private:
   // The bounds of part `part`'s mesh, which it must have, in its frame and in the world's.
-  const Aabb& Bounds(std::size_t part) {
-    const TriangleMesh& mesh = *assembly_.part(part).mesh;
-    auto [it, added] = bounds_.try_emplace(&mesh);
-    if (added) it->second = mesh.Bounds();
-    return it->second;
-  }
-  Aabb BoundsInWorld(std::size_t part) {
+  const Aabb& Bounds(std::size_t part) const { return bounds_.at(assembly_.part(part).mesh.get()); }
+  Aabb BoundsInWorld(std::size_t part) const {
     return TransformBox(assembly_.part(part).X_WP, Bounds(part));
   }
   // The world box that the parts `moving` can sweep (their bounds grown by kMaxSeatPlay and
   // the length tolerance); empty when one of them has no mesh.
-  std::optional<Aabb> Reach(const std::vector<std::size_t>& moving) {
+  std::optional<Aabb> Reach(const std::vector<std::size_t>& moving) const {
     Aabb reach_W;
     for (std::size_t m : moving) {
       if (!assembly_.part(m).HasGeometry()) return std::nullopt;
@@ -174,13 +181,17 @@ class Seater {
     return reach_W;
   }
   // Whether part `obstacle` has a mesh within `reach_W` (Reach).
-  bool InReach(std::size_t obstacle, const Aabb& reach_W) {
+  bool InReach(std::size_t obstacle, const Aabb& reach_W) const {
     return assembly_.part(obstacle).HasGeometry() && BoundsInWorld(obstacle).Intersects(reach_W);
   }
 
-  // The collision mesh of part `part`, which must have a mesh: built by BuildMeshes, or on
-  // first use (a CollisionModel would build every part's, most of them never swept here).
-  const CollisionMesh* Mesh(std::size_t part) { return &meshes_.Get(assembly_.part(part).mesh); }
+  // The collision mesh of part `part`, built by BuildMeshes (a CollisionModel would build every
+  // part's, most of them never swept here).
+  const CollisionMesh* Mesh(std::size_t part) const {
+    const CollisionMesh* mesh = meshes_.Find(assembly_.part(part).mesh.get());
+    if (mesh == nullptr) throw std::logic_error("SeatParts: a swept mesh was not built");
+    return mesh;
+  }
 
   const Assembly& assembly_;
   double min_approach_ = 0.0;
@@ -244,25 +255,33 @@ Seating SeatParts(const Assembly& assembly, const MotionAnalysis& motion,
     if (!d) continue;
     candidates.push_back({bodies.first, bodies.second, &indices, cylindrical, *d});
   }
-  // (A body pair seated one way is not tried the other way: the meshes of the resting body's
-  // parts beyond the moving body's reach are then built for nothing.)
   std::vector<std::shared_ptr<const TriangleMesh>> swept;
   for (const Candidate& c : candidates) {
     seater.AppendSwept(subassemblies[c.body].parts, subassemblies[c.on].parts, &swept);
   }
   seater.BuildMeshes(swept);
+  // Every candidate's slide swept both ways, on all cores. (A body pair seated one way is not
+  // taken the other way below: its sweeps that way are done for nothing.)
+  struct Slide {
+    std::optional<Stop> ahead, behind;
+  };
+  std::vector<Slide> slides(candidates.size());
+  ParallelFor(candidates.size(), [&](std::size_t k) {
+    const Candidate& c = candidates[k];
+    const std::vector<std::size_t>& body_parts = subassemblies[c.body].parts;
+    const std::vector<std::size_t>& seat_parts = subassemblies[c.on].parts;
+    slides[k].ahead = seater.Travel(body_parts, seat_parts, c.d);
+    if (slides[k].ahead) slides[k].behind = seater.Travel(body_parts, seat_parts, -c.d);
+  });
 
   std::vector<Seat> seats;
   std::vector<bool> seated(pairs->size(), false);  // a body pair is settled once, either way
-  for (const Candidate& c : candidates) {
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    const Candidate& c = candidates[k];
     const std::vector<std::size_t>& indices = *c.pairs;
-    if (seated[indices.front()]) continue;
-    const std::vector<std::size_t>& body_parts = subassemblies[c.body].parts;
-    const std::vector<std::size_t>& seat_parts = subassemblies[c.on].parts;
-    const std::optional<Stop> ahead = seater.Travel(body_parts, seat_parts, c.d);
-    if (!ahead) continue;
-    const std::optional<Stop> behind = seater.Travel(body_parts, seat_parts, -c.d);
-    if (!behind) continue;
+    const std::optional<Stop>& ahead = slides[k].ahead;
+    const std::optional<Stop>& behind = slides[k].behind;
+    if (seated[indices.front()] || !ahead || !behind) continue;
     const double play = ahead->travel + behind->travel;
     if (play >= kMaxSeatPlay) continue;
     seats.push_back({c.body, c.cylindrical, indices, {ahead->part, behind->part}, play});

@@ -12,6 +12,11 @@ const CollisionMesh& CollisionMeshCache::Get(const std::shared_ptr<const Triangl
   return *it->second;
 }
 
+const CollisionMesh* CollisionMeshCache::Find(const TriangleMesh* mesh) const {
+  const auto found = meshes_.find(mesh);
+  return found == meshes_.end() ? nullptr : found->second.get();
+}
+
 void CollisionMeshCache::Build(const std::vector<std::shared_ptr<const TriangleMesh>>& meshes) {
   std::set<const TriangleMesh*> seen;
   std::vector<std::shared_ptr<const TriangleMesh>> work;  // in the order given

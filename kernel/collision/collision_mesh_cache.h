@@ -18,6 +18,9 @@ class CollisionMeshCache {
   /// Builds the collision meshes of `meshes` (none null; repeats allowed) that are not cached
   /// yet, on all cores (ParallelFor), for later Get calls.
   void Build(const std::vector<std::shared_ptr<const TriangleMesh>>& meshes);
+  /// The cached collision mesh of `mesh`, or null when it has none yet. Safe to call from
+  /// several threads at once while nothing calls Get or Build.
+  const CollisionMesh* Find(const TriangleMesh* mesh) const;
   /// How many collision meshes the cache holds.
   std::size_t size() const { return meshes_.size(); }
 

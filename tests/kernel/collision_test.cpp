@@ -98,7 +98,7 @@ TEST(CollisionMesh, HoledPlateContainsMaterialButNotTheHole) {
   EXPECT_TRUE(plate->Contains({-9, 9, 0.1}));
 }
 
-TEST(CollisionMeshCache, BuildCachesEachDistinctMeshAndKeepsThoseCached) {
+TEST(CollisionMeshCache, BuildCachesEachDistinctMeshAndKeepsThoseCachedWhichFindGives) {
   Region2d square;
   square.outer = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   std::vector<std::shared_ptr<const TriangleMesh>> meshes;
@@ -110,7 +110,10 @@ TEST(CollisionMeshCache, BuildCachesEachDistinctMeshAndKeepsThoseCached) {
   meshes.push_back(open);
 
   CollisionMeshCache cache;
+  EXPECT_EQ(cache.Find(meshes[1].get()), nullptr) << "Find builds nothing";
   const CollisionMesh* built_lazily = &cache.Get(meshes[1]);
+  EXPECT_EQ(cache.Find(meshes[1].get()), built_lazily);
+  EXPECT_EQ(cache.Find(meshes[2].get()), nullptr);
   std::vector<std::shared_ptr<const TriangleMesh>> with_repeats = meshes;
   with_repeats.insert(with_repeats.end(), meshes.begin(), meshes.end());
   EXPECT_EQ(cache.size(), 1u);
@@ -127,6 +130,7 @@ TEST(CollisionMeshCache, BuildCachesEachDistinctMeshAndKeepsThoseCached) {
     EXPECT_EQ(got.bounds().max, direct.bounds().max);
     cache.Build({meshes[k]});
     EXPECT_EQ(&cache.Get(meshes[k]), &got);
+    EXPECT_EQ(cache.Find(meshes[k].get()), &got);
   }
   EXPECT_TRUE(cache.Get(meshes[4]).closed());
   EXPECT_DOUBLE_EQ(cache.Get(meshes[4]).bounds().max.z(), 5.0);
