@@ -260,18 +260,28 @@ Seating SeatParts(const Assembly& assembly, const MotionAnalysis& motion,
     seater.AppendSwept(subassemblies[c.body].parts, subassemblies[c.on].parts, &swept);
   }
   seater.BuildMeshes(swept);
-  // Every candidate's slide swept both ways, on all cores. (A body pair seated one way is not
-  // taken the other way below: its sweeps that way are done for nothing.)
+  // The slides swept both ways, on all cores. When both bodies of a pair move, the pair is a
+  // candidate twice, (a, b) and then (b, a), with the same pairs: the second is swept below
+  // only when the first was not seated.
   struct Slide {
     std::optional<Stop> ahead, behind;
   };
-  std::vector<Slide> slides(candidates.size());
-  ParallelFor(candidates.size(), [&](std::size_t k) {
-    const Candidate& c = candidates[k];
+  const auto sweep = [&](const Candidate& c) {
     const std::vector<std::size_t>& body_parts = subassemblies[c.body].parts;
     const std::vector<std::size_t>& seat_parts = subassemblies[c.on].parts;
-    slides[k].ahead = seater.Travel(body_parts, seat_parts, c.d);
-    if (slides[k].ahead) slides[k].behind = seater.Travel(body_parts, seat_parts, -c.d);
+    Slide slide;
+    slide.ahead = seater.Travel(body_parts, seat_parts, c.d);
+    if (slide.ahead) slide.behind = seater.Travel(body_parts, seat_parts, -c.d);
+    return slide;
+  };
+  std::vector<bool> second(candidates.size(), false);
+  std::set<std::size_t> first_pairs;
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    second[k] = !first_pairs.insert(candidates[k].pairs->front()).second;
+  }
+  std::vector<Slide> slides(candidates.size());
+  ParallelFor(candidates.size(), [&](std::size_t k) {
+    if (!second[k]) slides[k] = sweep(candidates[k]);
   });
 
   std::vector<Seat> seats;
@@ -279,9 +289,11 @@ Seating SeatParts(const Assembly& assembly, const MotionAnalysis& motion,
   for (std::size_t k = 0; k < candidates.size(); ++k) {
     const Candidate& c = candidates[k];
     const std::vector<std::size_t>& indices = *c.pairs;
+    if (seated[indices.front()]) continue;
+    if (second[k]) slides[k] = sweep(c);
     const std::optional<Stop>& ahead = slides[k].ahead;
     const std::optional<Stop>& behind = slides[k].behind;
-    if (seated[indices.front()] || !ahead || !behind) continue;
+    if (!ahead || !behind) continue;
     const double play = ahead->travel + behind->travel;
     if (play >= kMaxSeatPlay) continue;
     seats.push_back({c.body, c.cylindrical, indices, {ahead->part, behind->part}, play});

@@ -170,7 +170,7 @@ class Scanner {
       Span type;
       if (c != '(') {
         type = Word();
-        if (!SkipSpace() || Peek() != '(') return false;
+        if (type.size == 0 || !SkipSpace() || Peek() != '(') return false;
       }
       const int sub = next_sub_++;
       if (sub > out_.max_sub) out_.max_sub = sub;

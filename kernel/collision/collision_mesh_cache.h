@@ -16,7 +16,7 @@ class CollisionMeshCache {
   /// The collision mesh of `mesh`, which must not be null; the cache keeps `mesh` alive.
   const CollisionMesh& Get(const std::shared_ptr<const TriangleMesh>& mesh);
   /// Builds the collision meshes of `meshes` (none null; repeats allowed) that are not cached
-  /// yet, on all cores (ParallelFor), for later Get calls.
+  /// yet, on all cores (ParallelFor), for later Get or Find calls.
   void Build(const std::vector<std::shared_ptr<const TriangleMesh>>& meshes);
   /// The cached collision mesh of `mesh`, or null when it has none yet. Safe to call from
   /// several threads at once while nothing calls Get or Build.

@@ -147,7 +147,7 @@ TEST(Part21Records, WhatItDoesNotReadIsLeftToOpenCascade) {
   for (const std::string& text :
        {std::string(), std::string("ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n#1=A(1);"),
         Wrapped("#1=A(1);").replace(0, 3, "STEP"), Wrapped("#1=A(1);\nENDSEC;\nDATA;\n#2=A(1);"),
-        Wrapped(""), Wrapped("#1=ENDSCOPE(1);")}) {
+        Wrapped(""), Wrapped("#1=ENDSCOPE(1);"), Wrapped("#1=A(ENDSCOPE(1));")}) {
     EXPECT_FALSE(ReadPart21Records(text).has_value()) << text;
   }
 }

@@ -152,6 +152,31 @@ TEST(MeshCheck, FlippedFaceIsMisoriented) {
   EXPECT_TRUE(AnyProblemContains(check, "consistently oriented"));
 }
 
+TEST(MeshCheck, FarApartIndicesAreCheckedAsNearOnes) {
+  // The cube's vertices spread over 280,001 (unused ones between): edges keyed by indices
+  // past 2^18 group as those of the compact cube.
+  const TriangleMesh cube = UnitCube();
+  TriangleMesh spread;
+  spread.vertices.assign(280001, Eigen::Vector3d(0.5, 0.5, 0.5));
+  for (int k = 0; k < 8; ++k) spread.vertices[40000 * k] = cube.vertices[k];
+  for (TriangleMesh::Face f : cube.faces) {
+    for (std::int32_t& i : f) i *= 40000;
+    spread.faces.push_back(f);
+  }
+  EXPECT_TRUE(CheckMesh(spread).ok());
+  Flip(spread.faces[5]);
+  spread.faces.erase(spread.faces.begin() + 8);
+  TriangleMesh compact = cube;
+  Flip(compact.faces[5]);
+  compact.faces.erase(compact.faces.begin() + 8);
+  const MeshCheck spread_check = CheckMesh(spread), compact_check = CheckMesh(compact);
+  EXPECT_EQ(spread_check.boundary_edges, compact_check.boundary_edges);
+  EXPECT_EQ(spread_check.misoriented_edges, compact_check.misoriented_edges);
+  EXPECT_EQ(spread_check.non_manifold_edges, compact_check.non_manifold_edges);
+  EXPECT_EQ(spread_check.boundary_edges, 3u);
+  EXPECT_EQ(spread_check.misoriented_edges, 2u);
+}
+
 TEST(MeshCheck, RemovedFaceLeavesBoundaryEdges) {
   TriangleMesh mesh = UnitCube();
   mesh.faces.erase(mesh.faces.begin() + 3);

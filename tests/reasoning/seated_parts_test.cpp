@@ -174,6 +174,45 @@ TEST(SeatedParts, ABlockOnAFloorAloneIsNotSeated) {
   EXPECT_TRUE(WithCode(an, "seated").empty());
 }
 
+TEST(SeatedParts, BlocksInTwoPocketsAreEachSeated) {
+  // Two candidates, swept at once (on two cores where there are two): each seated, with its
+  // own play, reported per tray in the order of the parts.
+  AssemblySpec spec = BlockInPocket(0.2, 0.3).spec();
+  const Assembly second = BlockInPocket(0.1, 0.15);
+  for (Part p : second.spec().parts) {
+    p.id += "_2";
+    p.X_WP = RigidTransform::Translation({100, 0, 0});
+    spec.parts.push_back(p);
+  }
+  const Analysis an = Analyze(Assembly(std::move(spec)));
+  EXPECT_EQ(an.motion.mobility.dof, 0);
+  EXPECT_EQ(CountSource(an, PairSource::kSeated, PairType::kFixed), 2);
+  const std::vector<const Diagnostic*> seated = WithCode(an, "seated");
+  ASSERT_EQ(seated.size(), 2u);
+  EXPECT_EQ(seated[0]->parts, (std::vector<std::string>{"block", "tray"}));
+  EXPECT_NE(seated[0]->message.find("within 0.5 mm"), std::string::npos) << seated[0]->message;
+  EXPECT_EQ(seated[1]->parts, (std::vector<std::string>{"block_2", "tray_2"}));
+  EXPECT_NE(seated[1]->message.find("within 0.25 mm"), std::string::npos) << seated[1]->message;
+}
+
+TEST(SeatedParts, ABlockInAPocketOfASlidingTrayIsSeatedOnce) {
+  // The tray slides on a base (a planar pair), so both it and the block move: the block on
+  // the tray and the tray on the block are both candidates, with the same pairs. The first
+  // seats them; the second is not taken again.
+  AssemblySpec spec = BlockInPocket(0.2, 0.3).spec();
+  spec.parts[0].ground = false;
+  spec.parts[0].features.push_back(Face("underside", {5, 10, -5}, {0, 0, -1}, 60, 60));
+  spec.parts.push_back(MeshPart("base", {Face("top", {5, 10, -5}, {0, 0, 1}, 100, 100)},
+                                {{Eigen::Vector3d(-40, -40, -10), Eigen::Vector3d(60, 60, -5)}},
+                                /*ground=*/true));
+  const Analysis an = Analyze(Assembly(std::move(spec)));
+  EXPECT_EQ(CountSource(an, PairSource::kSeated, PairType::kFixed), 1);
+  const std::vector<const Diagnostic*> seated = WithCode(an, "seated");
+  ASSERT_EQ(seated.size(), 1u);
+  EXPECT_EQ(seated[0]->parts, (std::vector<std::string>{"block", "tray"}));
+  EXPECT_EQ(an.motion.mobility.dof, 3) << "the tray's slides and turn on the base";
+}
+
 TEST(SeatedParts, ALinkOnAPinBetweenCheeksTurnsOnly) {
   const Analysis held = Analyze(LinkOnPin(0.25));
   EXPECT_EQ(held.motion.mobility.dof, 1);
