@@ -72,12 +72,13 @@ std::vector<Command> Commands();
 /// How long reading one input may take, seconds (--read-timeout); 0: no bound.
 extern double g_read_timeout;
 
-/// The assembly in `file`, read within g_read_timeout.
+/// The assembly in `file`, read within g_read_timeout; the reading of its STEP files shown on
+/// stderr when it is a terminal.
 Assembly ReadInput(const std::string& file);
 /// Runs `read` within g_read_timeout, naming `file` when it takes longer.
 void WithinReadTimeout(const std::string& file, const std::function<void()>& read);
 /// The file's assembly with its adjustments solved and locked (the designer tightens the
-/// bolts), a line per adjustment on `out`.
+/// bolts), a line per adjustment on `out`; read as ReadInput reads.
 Assembly LoadAdjusted(const std::string& file, std::ostream& out);
 /// The index of the driver named by --driver, or nothing for an empty name. Throws InputError.
 std::optional<std::size_t> DriverIndex(const std::string& file, const Assembly& assembly,

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "cli/command.h"
@@ -38,9 +39,9 @@ class ReadTimeout {
   explicit ReadTimeout(const std::string& file) {
     if (!(g_read_timeout > 0)) return;
     g_timeout_message = fmt::format(
-        "mechanist: error: {}: reading it took longer than {} s (--read-timeout); the file may be "
-        "damaged\n",
-        file, FormatNumber(g_read_timeout));
+        "{}mechanist: error: {}: reading it took longer than {} s (--read-timeout); the file may "
+        "be damaged\n",
+        ::isatty(STDERR_FILENO) ? "\n" : "", file, FormatNumber(g_read_timeout));
     std::signal(SIGALRM, OnReadTimeout);
     itimerval timer{};
     timer.it_value.tv_sec = static_cast<time_t>(g_read_timeout);
@@ -62,6 +63,38 @@ class ReadTimeout {
   bool armed_ = false;
 };
 
+// Shows the reading of each STEP file on stderr when it is a terminal, a line per file
+// ("reading motor.step:  42%"); ends the line of a reading that failed when it goes, so that the
+// error starts a line of its own.
+class ReadingProgress {
+ public:
+  ReadingProgress() = default;
+  ~ReadingProgress() {
+    if (unfinished_) std::fputc('\n', stderr);
+  }
+  ReadingProgress(const ReadingProgress&) = delete;
+  ReadingProgress& operator=(const ReadingProgress&) = delete;
+
+  // What LoadOptions::reading takes; empty when stderr is not a terminal.
+  StepFileProgress Lines() {
+    if (!::isatty(STDERR_FILENO)) return {};
+    return [this](const std::filesystem::path& file, double fraction) {
+      const int percent = static_cast<int>(100 * fraction);
+      if (file == file_ && percent == percent_) return;
+      file_ = file;
+      percent_ = percent;
+      unfinished_ = percent < 100;
+      std::fprintf(stderr, "\rreading %s: %3d%%%s", file.filename().c_str(), percent,
+                   unfinished_ ? "" : "\n");
+    };
+  }
+
+ private:
+  std::filesystem::path file_;
+  int percent_ = -1;
+  bool unfinished_ = false;
+};
+
 }  // namespace
 
 void Session::Report(const std::string& path, std::string content) {
@@ -75,13 +108,16 @@ void WithinReadTimeout(const std::string& file, const std::function<void()>& rea
 
 Assembly ReadInput(const std::string& file) {
   const ReadTimeout timeout(file);
-  return LoadAssembly(file);
+  ReadingProgress progress;
+  return LoadAssembly(file, {.reading = progress.Lines()});
 }
 
 Assembly LoadAdjusted(const std::string& file, std::ostream& out) {
   AdjustmentSummary summary;
   const ReadTimeout timeout(file);
-  Assembly assembly = LoadAssembly(file, {.adjust = true, .adjustments = &summary});
+  ReadingProgress progress;
+  Assembly assembly =
+      LoadAssembly(file, {.adjust = true, .adjustments = &summary, .reading = progress.Lines()});
   for (std::size_t k = 0; k < summary.adjustments.size(); ++k) {
     const Adjustment& a = assembly.adjustments()[k];
     if (!summary.adjustments[k].used) continue;

@@ -31,12 +31,14 @@ namespace {
 
 // ReadStep, once the memory it takes is known to be there.
 std::vector<StepSolid> ImportStep(const std::filesystem::path& file,
-                                  std::vector<StepMessage>* messages) {
+                                  std::vector<StepMessage>* messages,
+                                  const StepFileProgress& progress) {
   if (const auto shortfall = internal::MemoryShortfall(
           internal::ReadingNeed(file, internal::kStepBytesPerFileByte), "a STEP file")) {
     throw std::runtime_error(*shortfall);
   }
-  return ReadStep(file, messages);
+  if (!progress) return ReadStep(file, messages);
+  return ReadStep(file, messages, [&](double fraction) { progress(file, fraction); });
 }
 
 using Json = nlohmann::ordered_json;
@@ -87,7 +89,8 @@ class Reader {
   Reader(JsonSource source, std::filesystem::path dir)
       : src_(std::move(source)), dir_(std::move(dir)) {}
 
-  WrittenParts ReadParts() {
+  WrittenParts ReadParts(const StepFileProgress& progress) {
+    progress_ = progress;
     const Json& root = src_.root;
     ExpectObject(root, "");
     CheckKeys(root, "",
@@ -454,7 +457,7 @@ class Reader {
     std::vector<StepSolid> solids;
     std::vector<StepMessage> messages;
     try {
-      solids = ImportStep((dir_ / relative).lexically_normal(), &messages);
+      solids = ImportStep((dir_ / relative).lexically_normal(), &messages, progress_);
     } catch (const std::exception& e) {
       Fail(p, fmt::format("cannot import \"{}\": {}", relative, e.what()));
     }
@@ -572,7 +575,7 @@ class Reader {
     std::vector<StepSolid> solids;
     std::vector<StepMessage> messages;
     try {
-      solids = ImportStep((dir_ / relative).lexically_normal(), &messages);
+      solids = ImportStep((dir_ / relative).lexically_normal(), &messages, progress_);
     } catch (const std::exception& e) {
       Fail(pointer, fmt::format("cannot use mesh \"{}\": {}", relative, e.what()));
     }
@@ -1433,6 +1436,7 @@ class Reader {
 
   JsonSource src_;
   std::filesystem::path dir_;
+  StepFileProgress progress_;  // while ReadParts runs
   AssemblySpec spec_;
   std::vector<PartOrigin> origins_;  // per part
   // The entries whose `place` ReadRelations reads: (part index, its entry).
@@ -1527,8 +1531,8 @@ AssemblyFileReader::AssemblyFileReader(AssemblyFileReader&&) noexcept = default;
 AssemblyFileReader& AssemblyFileReader::operator=(AssemblyFileReader&&) noexcept = default;
 AssemblyFileReader::~AssemblyFileReader() = default;
 
-WrittenParts AssemblyFileReader::ReadParts() {
-  return impl_->Run([&] { return impl_->reader.ReadParts(); });
+WrittenParts AssemblyFileReader::ReadParts(const StepFileProgress& progress) {
+  return impl_->Run([&] { return impl_->reader.ReadParts(progress); });
 }
 
 AssemblySpec AssemblyFileReader::ReadRelations(AssemblySpec spec) {

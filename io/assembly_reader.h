@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/step_reader.h"
 #include "kernel/assembly/assembly.h"
 #include "reasoning/feature_completion.h"
 
@@ -44,8 +45,9 @@ class AssemblyFileReader {
   AssemblyFileReader& operator=(AssemblyFileReader&&) noexcept;
   ~AssemblyFileReader();
 
-  /// The settings and the parts as written (imported STEP solids, the file's own parts).
-  WrittenParts ReadParts();
+  /// The settings and the parts as written (imported STEP solids, the file's own parts);
+  /// `progress` (when given) follows the reading of each STEP file.
+  WrittenParts ReadParts(const StepFileProgress& progress = {});
   /// Adds to `spec` (the parts ReadParts gave, completed) the placement conditions, drivers,
   /// adjustments, goals, steps, overrides and expectations.
   AssemblySpec ReadRelations(AssemblySpec spec);

@@ -22,7 +22,7 @@ void Append(std::vector<Diagnostic> found, AssemblySpec* spec) {
 }
 
 Assembly Load(AssemblyFileReader reader, const std::string& file, const LoadOptions& options) {
-  WrittenParts written = reader.ReadParts();
+  WrittenParts written = reader.ReadParts(options.reading);
   Append(CompleteFeatures(&written.spec.parts, written.origins), &written.spec);
   AssemblySpec spec = reader.ReadRelations(std::move(written.spec));
   try {

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <string_view>
 
+#include "io/step_reader.h"
 #include "kernel/assembly/assembly.h"
 #include "reasoning/adjustment.h"
 
@@ -16,6 +17,8 @@ struct LoadOptions {
   bool adjust = false;
   /// Receives the solve when `adjust` is set and the file declares adjustments and goals.
   AdjustmentSummary* adjustments = nullptr;
+  /// Follows the reading of each STEP file (AssemblyFileReader::ReadParts).
+  StepFileProgress reading = {};
 };
 
 /// The one path from an assembly file (or a STEP assembly alone) to the assembly every

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -44,12 +45,22 @@ struct StepMessage {
   std::string text;    ///< one line: blank runs and "***" as single spaces
 };
 
+/// Receives the fraction of a STEP file's reading done, in [0, 1], never decreasing, 1 last
+/// when the reading succeeds. Called from the reading threads, one call at a time.
+using StepProgress = std::function<void(double fraction)>;
+
+/// As StepProgress, for the STEP file `step_file` among others (an assembly file's imports).
+using StepFileProgress =
+    std::function<void(const std::filesystem::path& step_file, double fraction)>;
+
 /// Reads a STEP file (AP203/AP214) with its product structure through Open CASCADE's XCAF
 /// reader, triangulates each solid (0.01 mm or 0.1% of its size, whichever is coarser, and
 /// 0.3 rad) and takes features from its analytic faces. Open CASCADE's messages go to
-/// `messages` (when given), never to stdout. Throws std::runtime_error when it cannot be read
-/// or holds no solid.
+/// `messages` (when given), never to stdout; `progress` (when given) follows the reading, the
+/// solids weighed by their faces. Throws std::runtime_error when it cannot be read or holds no
+/// solid.
 std::vector<StepSolid> ReadStep(const std::filesystem::path& file,
-                                std::vector<StepMessage>* messages = nullptr);
+                                std::vector<StepMessage>* messages = nullptr,
+                                const StepProgress& progress = {});
 
 }  // namespace mechanist

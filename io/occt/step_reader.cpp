@@ -57,6 +57,8 @@
 #include <gp_Cone.hxx>
 #include <gp_Sphere.hxx>
 #include <map>
+#include <mutex>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -1081,8 +1083,16 @@ class Walker {
   // every solid walked its features and notes; Open CASCADE's messages meanwhile go to
   // `messages` in the order of the solids, whichever thread sent them. Rethrows the
   // Standard_Failure of the first solid, in walking order, on which Open CASCADE failed or
-  // crashed.
-  void ConvertAll(const DeferredHealing& healing, std::vector<StepMessage>* messages) {
+  // crashed. `converted` receives the fraction of the faces converted after each solid.
+  void ConvertAll(const DeferredHealing& healing, std::vector<StepMessage>* messages,
+                  const StepProgress& converted) {
+    std::vector<std::size_t> faces(definitions_.size(), 0);
+    for (std::size_t d = 0; d < definitions_.size(); ++d) {
+      for (TopExp_Explorer e(definitions_[d].solid, TopAbs_FACE); e.More(); e.Next()) ++faces[d];
+    }
+    const double all_faces = std::max<double>(1, std::accumulate(faces.begin(), faces.end(), 0.0));
+    std::mutex reporting;
+    std::size_t faces_converted = 0;
     ParallelFor(definitions_.size(), [&](std::size_t d) {
       Definition& definition = definitions_[d];
       const AlternateSignalStack stack;
@@ -1109,6 +1119,11 @@ class Walker {
           break;
         }
         BRepTools::Clean(definition.solid);  // the first try's face meshes
+      }
+      if (converted) {
+        const std::lock_guard<std::mutex> lock(reporting);
+        faces_converted += faces[d];
+        converted(faces_converted / all_faces);
       }
     });
     for (const Definition& definition : definitions_) {
@@ -1193,10 +1208,20 @@ std::vector<std::string> UnreadPartFiles(const STEPCAFControl_Reader& reader,
   return unread;
 }
 
+// The shares of a STEP file's reading done once it is parsed and once its shapes are
+// transferred (as they are on the robot hand, the largest real export); healing and meshing the
+// solids take the rest.
+constexpr double kParsed = 0.12;
+constexpr double kTransferred = 0.18;
+
 // The solids of `file`; `messages` (Open CASCADE's, collected while reading) name the entity
-// at fault when it cannot be read.
+// at fault when it cannot be read. `progress` as ReadStep's.
 std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
-                                  std::vector<StepMessage>* messages) {
+                                  std::vector<StepMessage>* messages,
+                                  const StepProgress& progress) {
+  const auto report = [&progress](double fraction) {
+    if (progress) progress(fraction);
+  };
   Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
   Handle(TDocStd_Document) document;
   app->NewDocument("MDTV-XCAF", document);
@@ -1211,6 +1236,7 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
     throw std::runtime_error(fmt::format("cannot read it as STEP (AP203/AP214): {}{}",
                                          ReadFailure(status), FirstError(*messages)));
   }
+  report(kParsed);
   if (!reader.Transfer(document)) {
     app->Close(document);
     throw std::runtime_error(
@@ -1225,6 +1251,7 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
         "read: {}",
         unread.size() == 1 ? "one" : std::to_string(unread.size()), fmt::join(unread, ", ")));
   }
+  report(kTransferred);
   const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(document->Main());
   TDF_LabelSequence roots;
   tool->GetFreeShapes(roots);
@@ -1233,7 +1260,9 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
   for (int i = 1; i <= roots.Length(); ++i) {
     walker.Walk(roots(i), Sanitised(NameOf(roots(i))), TopLoc_Location());
   }
-  walker.ConvertAll(*healing, messages);
+  walker.ConvertAll(*healing, messages, [&report](double converted) {
+    report(kTransferred + (1 - kTransferred) * converted);
+  });
   app->Close(document);
   if (solids.empty()) throw std::runtime_error("the STEP file holds no solid");
   // Unique paths (two solids named alike at the top level).
@@ -1246,13 +1275,14 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
   for (StepSolid& s : solids) {
     if (!s.body_of.empty()) s.body_of = first_path.emplace(s.body_of, s.path).first->second;
   }
+  report(1.0);
   return solids;
 }
 
 }  // namespace
 
 std::vector<StepSolid> ReadStep(const std::filesystem::path& file,
-                                std::vector<StepMessage>* messages) {
+                                std::vector<StepMessage>* messages, const StepProgress& progress) {
   if (!std::filesystem::exists(file)) throw std::runtime_error("no such file");
   if (std::filesystem::is_regular_file(file) && std::filesystem::file_size(file) == 0) {
     throw std::runtime_error("the file is empty");
@@ -1263,7 +1293,7 @@ std::vector<StepSolid> ReadStep(const std::filesystem::path& file,
   const SignalsAsExceptions signals;
   try {
     OCC_CATCH_SIGNALS
-    return ReadSolids(file, &kept);
+    return ReadSolids(file, &kept, progress);
   } catch (const Standard_Failure& failure) {
     // A crash inside Open CASCADE (a null entity of a damaged file dereferenced) or one of its
     // exceptions: the file cannot be read, and the process goes on.

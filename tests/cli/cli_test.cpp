@@ -34,6 +34,29 @@ TEST(Cli, VersionAndHelp) {
   EXPECT_NE(help.out.find("info"), std::string::npos);
 }
 
+// On a terminal (script(1) gives the command one), reading a STEP file shows its progress on a
+// line that ends at 100%; a reading that fails ends its line before the error; through a pipe,
+// nothing is shown.
+TEST(Cli, ReadingAStepFileShowsItsProgressOnATerminal) {
+  const std::string as1 = std::string(MECHANIST_SHARED_DATA) + "/step/as1_pe_203.stp";
+  const CommandResult piped = Mechanist("info " + as1);
+  EXPECT_EQ(piped.exit_code, 0) << piped.out;
+  EXPECT_EQ(piped.out.find("reading"), std::string::npos) << piped.out;
+  const auto on_terminal = [](const std::string& args) {
+    return mechanist::testing::RunCommand("script -qec '" + std::string(MECHANIST_EXE) + " " +
+                                          args + "' /dev/null < /dev/null");
+  };
+  // The terminal turns each line's end into "\r\n".
+  const CommandResult shown = on_terminal("info " + as1);
+  EXPECT_EQ(shown.exit_code, 0) << shown.out;
+  EXPECT_NE(shown.out.find("\rreading as1_pe_203.stp: 100%\r\n"), std::string::npos) << shown.out;
+  EXPECT_NE(shown.out.find("reading as1_pe_203.stp:  12%"), std::string::npos) << shown.out;
+  const CommandResult failed = on_terminal("info " + std::string(MECHANIST_SOURCE_DIR) +
+                                           "/tests/data/bad/step_no_solid.step");
+  EXPECT_EQ(failed.exit_code, 2) << failed.out;
+  EXPECT_NE(failed.out.find("%\r\nmechanist: error: "), std::string::npos) << failed.out;
+}
+
 TEST(Cli, UsageErrorsExitWithTwo) {
   EXPECT_EQ(Mechanist("").exit_code, 2);
   EXPECT_EQ(Mechanist("frobnicate").exit_code, 2);

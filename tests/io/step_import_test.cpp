@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdint>
 #include <filesystem>
@@ -17,6 +19,7 @@
 #include <numbers>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include "cycloid_outline.h"
 #include "io/feature_report.h"
@@ -69,6 +72,52 @@ TEST(StepImport, As1KeepsItsProductStructureAndSharesItsProducts) {
   int holes = 0;
   for (const Feature& f : plate.features) holes += f.kind == FeatureKind::kHole;
   EXPECT_EQ(holes, 6);
+}
+
+// The reading's progress: one call at a time, never decreasing, a step after each of AS1's 5
+// products (meshed once for all their instances), 1 at the end; the same through LoadAssembly,
+// which names the file.
+TEST(StepImport, ProgressFollowsTheReadingToItsEnd) {
+  std::vector<double> fractions;
+  std::atomic<int> inside{0};
+  bool overlapped = false;
+  const std::vector<StepSolid> solids = ReadStep(kAs1, nullptr, [&](double fraction) {
+    overlapped = overlapped || inside++ > 0;
+    fractions.push_back(fraction);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));  // time for another call to come
+    --inside;
+  });
+  ASSERT_EQ(solids.size(), 18u);
+  EXPECT_FALSE(overlapped);
+  ASSERT_FALSE(fractions.empty());
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()))
+      << ::testing::PrintToString(fractions);
+  EXPECT_GT(fractions.front(), 0.0);
+  EXPECT_EQ(fractions.back(), 1.0);
+  const auto under_way = std::count_if(fractions.begin(), fractions.end(),
+                                       [&](double f) { return f > fractions.front() && f < 1; });
+  EXPECT_GE(under_way, 4) << ::testing::PrintToString(fractions);
+
+  std::set<std::filesystem::path> named;
+  double last = 0;
+  LoadAssembly(kAs1, {.reading = [&](const std::filesystem::path& file, double fraction) {
+                 named.insert(file);
+                 last = fraction;
+               }});
+  ASSERT_EQ(named.size(), 1u);
+  EXPECT_TRUE(std::filesystem::equivalent(*named.begin(), kAs1));
+  EXPECT_EQ(last, 1.0);
+}
+
+// A file that parses but gives no shape: the progress stops short of the end.
+TEST(StepImport, ProgressStopsShortWhenTheReadingFails) {
+  std::vector<double> fractions;
+  EXPECT_THROW(
+      ReadStep(std::filesystem::path(MECHANIST_SOURCE_DIR) / "tests/data/bad/step_no_solid.step",
+               nullptr, [&](double fraction) { fractions.push_back(fraction); }),
+      std::runtime_error);
+  ASSERT_FALSE(fractions.empty());  // parsed
+  EXPECT_LT(fractions.back(), 1.0);
 }
 
 TEST(StepImport, As1IsOneRigidBoltedAssembly) {
