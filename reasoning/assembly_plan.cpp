@@ -23,10 +23,12 @@ bool Carries(const Pair& pair) {
 
 class Planner {
  public:
-  Planner(const Assembly& assembly, const Analysis& analysis, const CollisionModel& model)
+  Planner(const Assembly& assembly, const Analysis& analysis, const CollisionModel& model,
+          const std::function<void(double)>& progress)
       : assembly_(assembly),
         analysis_(analysis),
         model_(model),
+        progress_(progress),
         state_(InitialState(assembly)),
         tolerance_(assembly.tolerance().length),
         min_approach_(std::sin(assembly.tolerance().angle)) {
@@ -37,6 +39,7 @@ class Planner {
 
   AssemblyPlan Plan() {
     AssemblyPlan plan;
+    Report(0);
     for (PartContact& c : FindContacts(assembly_, state_, model_, analysis_.pairs)) {
       if (c.verdict == ContactVerdict::kClash) plan.clashes.push_back(c);
     }
@@ -46,6 +49,7 @@ class Planner {
       plan.from_steps = true;
       CheckSteps(&plan);
     }
+    Report(1);
     bool all_clear = plan.unplaced.empty();
     for (const InsertionStep& s : plan.steps) all_clear = all_clear && s.clear;
     plan.assemblable = all_clear && plan.clashes.empty();
@@ -239,6 +243,7 @@ class Planner {
       if (placed[p]) plan->base.push_back(p);
     }
     for (std::size_t k = 0; k < assembly_.steps().size(); ++k) {
+      Report(static_cast<double>(k) / assembly_.steps().size());
       const AssemblyStep& s = assembly_.steps()[k];
       InsertionStep step;
       step.part = s.insert.part;
@@ -327,6 +332,10 @@ class Planner {
     std::vector<bool> present(n, true);
     std::vector<InsertionStep> removed;  // in removal order
     std::vector<bool> done(units.size(), false);
+    // Progress: the units removed, then those that cannot leave, each attempted once more.
+    const double to_place =
+        static_cast<double>(std::count(base_unit.begin(), base_unit.end(), false));
+    std::size_t decided = 0;
     for (bool progress = true; progress;) {
       progress = false;
       for (std::size_t u = 0; u < units.size(); ++u) {
@@ -337,6 +346,7 @@ class Planner {
         done[u] = true;
         removed.push_back(*step);
         progress = true;
+        Report(++decided / to_place);
       }
     }
     for (std::size_t u = 0; u < units.size(); ++u) {
@@ -344,6 +354,7 @@ class Planner {
         plan->base.insert(plan->base.end(), units[u].begin(), units[u].end());
       } else if (!done[u]) {
         plan->unplaced.push_back(BestAttempt(units[u], present));
+        Report(++decided / to_place);
       }
     }
     std::sort(plan->base.begin(), plan->base.end());
@@ -427,9 +438,14 @@ class Planner {
     return *best;
   }
 
+  void Report(double fraction) const {
+    if (progress_) progress_(fraction);
+  }
+
   const Assembly& assembly_;
   const Analysis& analysis_;
   const CollisionModel& model_;
+  const std::function<void(double)>& progress_;
   AssemblyState state_;
   double tolerance_;
   double min_approach_;
@@ -439,8 +455,9 @@ class Planner {
 }  // namespace
 
 AssemblyPlan PlanAssembly(const Assembly& assembly, const Analysis& analysis,
-                          const CollisionModel& model) {
-  return Planner(assembly, analysis, model).Plan();
+                          const CollisionModel& model,
+                          const std::function<void(double)>& progress) {
+  return Planner(assembly, analysis, model, progress).Plan();
 }
 
 }  // namespace mechanist

@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -73,7 +74,12 @@ struct AssemblyPlan {
 ///
 /// The assembly is assemblable when there are no clashes and every step is clear (or every
 /// part is placed).
+///
+/// `progress` (optional) receives the fraction done, never decreasing, 1 last: 0 at the start
+/// (the clashes at rest are found first), then as the steps are checked, or as each part (with
+/// what it carries) is removed or found unable to leave.
 AssemblyPlan PlanAssembly(const Assembly& assembly, const Analysis& analysis,
-                          const CollisionModel& model);
+                          const CollisionModel& model,
+                          const std::function<void(double)>& progress = {});
 
 }  // namespace mechanist

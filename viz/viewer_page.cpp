@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include "kernel/assembly/assembly_state.h"
 #include "kernel/collision/collision_model.h"
 #include "kernel/geometry/aabb.h"
+#include "kernel/support/parallel_for.h"
 #include "reasoning/assembly_plan.h"
 #include "reasoning/drag.h"
 #include "reasoning/expectation_check.h"
@@ -237,8 +239,9 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
       std::any_of(assembly.expectations().begin(), assembly.expectations().end(),
                   [](const Expectation& e) { return e.kind == Expectation::Kind::kAssemblable; });
   if (asked || (options.plan && collision)) {
-    plan = collision ? PlanAssembly(assembly, analysis, *collision)
-                     : PlanAssembly(assembly, analysis, CollisionModel(assembly));
+    plan = collision
+               ? PlanAssembly(assembly, analysis, *collision, options.plan_progress)
+               : PlanAssembly(assembly, analysis, CollisionModel(assembly), options.plan_progress);
   }
   data["assembly"] = plan && options.plan ? Sequence(*plan) : json(nullptr);
   json expectations = json::array();
@@ -336,6 +339,21 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
   const double reach = bounds.empty() ? 0.0 : bounds.size().norm();
   data["reach_mm"] = reach;
   if (!options.ranges) collision.reset();
+  // A range search per distinct motion (the drags of a rigid body's parts move it alike),
+  // searched on every core once the drags are known.
+  struct RangeSearch {
+    std::vector<ScrewPath> paths;
+    bool turn = false;
+    MovableRange range;
+  };
+  std::vector<RangeSearch> searches;
+  std::map<std::string, std::size_t> search_of;  // by the kind of drag and its paths
+  struct Shown {
+    std::size_t part;
+    const char* drag;  // "turn" or "slide"
+    std::size_t search;
+  };
+  std::vector<Shown> shown;
   json drags = json::array();
   for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
     json entry = json::object();
@@ -348,10 +366,10 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
         for (const PartMotion& m : r.motion.parts) paths.push_back(m.path);
         j["paths"] = Paths(paths);
         if (collision && (rotate || reach > 0)) {
-          const MovableRange range =
-              FindMovableRange(assembly, analysis, *collision, paths, rotate ? 1.0 : reach, rotate);
-          j["ahead"] = Contact(range.ahead);
-          j["behind"] = Contact(range.behind);
+          const auto [found, added] =
+              search_of.emplace(fmt::format("{} {}", rotate, j["paths"].dump()), searches.size());
+          if (added) searches.push_back({std::move(paths), rotate, {}});
+          shown.push_back({p, rotate ? "turn" : "slide", found->second});
         }
       } else {
         j["reason"] = r.motion.reason;
@@ -360,6 +378,21 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
       entry[rotate ? "turn" : "slide"] = j;
     }
     drags.push_back(entry);
+  }
+  std::mutex reporting;
+  std::size_t searched = 0;
+  ParallelFor(searches.size(), [&](std::size_t k) {
+    RangeSearch& search = searches[k];
+    search.range = FindMovableRange(assembly, analysis, *collision, search.paths,
+                                    search.turn ? 1.0 : reach, search.turn);
+    if (options.range_progress) {
+      const std::lock_guard<std::mutex> lock(reporting);
+      options.range_progress(static_cast<double>(++searched) / searches.size());
+    }
+  });
+  for (const Shown& s : shown) {
+    drags[s.part][s.drag]["ahead"] = Contact(searches[s.search].range.ahead);
+    drags[s.part][s.drag]["behind"] = Contact(searches[s.search].range.behind);
   }
   data["drags"] = drags;
   return data;

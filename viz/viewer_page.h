@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "kernel/assembly/assembly.h"
@@ -23,6 +24,12 @@ struct ViewerOptions {
   /// Find the enclosed gaps at this voxel edge (mm) and show them as translucent volumes with
   /// their volumes; 0: no gaps.
   double gap_voxel = 0.0;
+  /// Receives the fraction of the assembly sequence planned (PlanAssembly's progress);
+  /// optional.
+  std::function<void(double)> plan_progress;
+  /// Receives the fraction of the drags' range searches done (each distinct motion searched
+  /// once, on every core), one call at a time; optional.
+  std::function<void(double)> range_progress;
 };
 
 /// One self-contained HTML page (no server, no network) to look at and work the analysed

@@ -20,7 +20,8 @@ Command AssembleCommand() {
     app.add_option("--json", *json, "write the JSON report to this file");
   };
   c.run = [json](Session& s) {
-    const AssemblyPlan plan = PlanAssembly(*s.assembly, *s.analysis, *s.collision);
+    const AssemblyPlan plan =
+        PlanAssembly(*s.assembly, *s.analysis, *s.collision, Progress("assembly sequence"));
     WriteAssemblySummary(*s.assembly, *s.analysis, plan, std::cout);
     if (!json->empty()) s.Report(*json, AssemblyPlanJson(*s.assembly, *s.analysis, plan));
     return plan.assemblable ? kExitOk : kExitFailures;

@@ -55,6 +55,8 @@ Command ViewCommand() {
     options.ranges = o->ranges || (!o->no_ranges && triangles <= kMaxSweptTriangles);
     options.plan = o->plan || (!o->no_plan && triangles <= kMaxSweptTriangles);
     options.gap_voxel = o->gaps * s.assembly->units().mm_per_length;
+    options.plan_progress = Progress("assembly sequence");
+    options.range_progress = Progress("movable ranges");
     if (!options.ranges && !o->no_ranges) {
       std::cout << "movable ranges not searched: " << triangles
                 << " triangles, more than 100,000 (--ranges searches them)\n";

@@ -36,8 +36,8 @@ TEST(Cli, VersionAndHelp) {
 
 // On a terminal (script(1) gives the command one), reading a STEP file shows its progress on a
 // line that ends at 100%; a reading that fails ends its line before the error; through a pipe,
-// nothing is shown.
-TEST(Cli, ReadingAStepFileShowsItsProgressOnATerminal) {
+// nothing is shown. Planning an assembly sequence shows its progress too.
+TEST(Cli, LongWorkShowsItsProgressOnATerminal) {
   const std::string as1 = std::string(MECHANIST_SHARED_DATA) + "/step/as1_pe_203.stp";
   const CommandResult piped = Mechanist("info " + as1);
   EXPECT_EQ(piped.exit_code, 0) << piped.out;
@@ -55,6 +55,13 @@ TEST(Cli, ReadingAStepFileShowsItsProgressOnATerminal) {
                                            "/tests/data/bad/step_no_solid.step");
   EXPECT_EQ(failed.exit_code, 2) << failed.out;
   EXPECT_NE(failed.out.find("%\r\nmechanist: error: "), std::string::npos) << failed.out;
+  // So does the planning of an assembly sequence (here the file's steps, checked in turn).
+  const CommandResult planned = on_terminal("assemble " + Example("bracket_plate_bolt_nut"));
+  EXPECT_NE(planned.out.find("\rassembly sequence:   0%"), std::string::npos) << planned.out;
+  EXPECT_NE(planned.out.find("\rassembly sequence: 100%\r\n"), std::string::npos) << planned.out;
+  EXPECT_EQ(
+      Mechanist("assemble " + Example("bracket_plate_bolt_nut")).out.find("assembly sequence:"),
+      std::string::npos);
 }
 
 TEST(Cli, UsageErrorsExitWithTwo) {

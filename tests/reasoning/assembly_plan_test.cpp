@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "kernel/collision/collision_model.h"
 #include "kernel/collision/translational_sweep.h"
@@ -61,6 +63,25 @@ TEST(AssemblyPlan, FoundSequenceIsClearInsertionByInsertion) {
     }
     placed.push_back(s.part);
   }
+}
+
+// The progress: 0 first, a step per cube removed (26 of them), 1 last, never decreasing; a cube
+// that cannot leave counts once it is found so.
+TEST(AssemblyPlan, ProgressCountsThePartsPlaced) {
+  std::vector<double> fractions;
+  const auto record = [&](double fraction) { fractions.push_back(fraction); };
+  const Assembly a = Block([](int i, int j, int k) { return i + j + k == 0; });
+  PlanAssembly(a, Analyze(a), CollisionModel(a), record);
+  ASSERT_EQ(fractions.size(), 28u);
+  EXPECT_EQ(fractions.front(), 0.0);
+  EXPECT_NEAR(fractions[13], 13.0 / 26, 1e-12);
+  EXPECT_EQ(fractions.back(), 1.0);
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+
+  fractions.clear();
+  const Assembly walled = Block([](int i, int j, int k) { return !(i == 1 && j == 1 && k == 1); });
+  PlanAssembly(walled, Analyze(walled), CollisionModel(walled), record);
+  EXPECT_EQ(fractions, (std::vector<double>{0.0, 1.0, 1.0}));
 }
 
 TEST(AssemblyPlan, PartWalledInByGroundCannotBePlaced) {

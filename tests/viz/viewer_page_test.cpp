@@ -6,15 +6,22 @@
 
 #include "viz/viewer_page.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "io/load_assembly.h"
 #include "io/text_edit.h"
@@ -22,6 +29,7 @@
 #include "reasoning/analysis.h"
 #include "reasoning/assembly_plan.h"
 #include "reasoning/motion_run.h"
+#include "reasoning/movable_range.h"
 #include "reasoning/operation_check.h"
 #include "run_command.h"
 
@@ -93,6 +101,58 @@ TEST(ViewerPage, CarriesTheDriversPathsThatStateAtUses) {
   // The file's expectations, evaluated as `mechanist check` does: all nine pass.
   ASSERT_EQ(data["expectations"].size(), assembly.expectations().size());
   for (const json& e : data["expectations"]) EXPECT_TRUE(e["passed"]) << e.dump();
+}
+
+// Drags that move the parts alike (the parts of one rigid body) share one range search; the
+// searches run on every core, the progress reported one call at a time, a step per search up
+// to 1; each drag shows the range FindMovableRange finds for its own paths.
+TEST(ViewerPage, SearchesEachDistinctDragOnceWithItsProgress) {
+  const Assembly assembly = LoadAssembly(kWorm);
+  const Analysis analysis = Analyze(assembly);
+  ViewerOptions options;
+  options.plan = false;
+  std::vector<double> fractions;
+  std::atomic<int> inside{0};
+  bool overlapped = false;
+  options.range_progress = [&](double fraction) {
+    overlapped = overlapped || inside++ > 0;
+    fractions.push_back(fraction);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));  // time for another call to come
+    --inside;
+  };
+  const json data = PageData(ViewerHtml(assembly, analysis, options));
+  const CollisionModel collision(assembly);
+  const double reach = data["reach_mm"];
+  std::set<std::string> motions;
+  int drags = 0;
+  for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
+    for (const bool turn : {true, false}) {
+      const json& drag = data["drags"][p].value(turn ? "turn" : "slide", json());
+      if (!drag.contains("paths")) continue;
+      ++drags;
+      motions.insert(fmt::format("{} {}", turn, drag["paths"].dump()));
+      std::vector<ScrewPath> paths(assembly.parts().size());
+      for (const auto& [part, screws] : drag["paths"].items()) {
+        paths[std::stoul(part)] = PathOf(screws);
+      }
+      const MovableRange range =
+          FindMovableRange(assembly, analysis, collision, paths, turn ? 1.0 : reach, turn);
+      SCOPED_TRACE(fmt::format("{} {}", assembly.part(p).id, turn ? "turn" : "slide"));
+      for (const auto& [side, contact] :
+           {std::pair{"ahead", range.ahead}, {"behind", range.behind}}) {
+        ASSERT_EQ(drag[side].is_null(), !contact.has_value()) << side;
+        if (contact) {
+          EXPECT_NEAR(drag[side]["at"].get<double>(), contact->at, 1e-12) << side;
+        }
+      }
+    }
+  }
+  EXPECT_GT(drags, static_cast<int>(motions.size()));  // some drags move alike
+  EXPECT_EQ(fractions.size(), motions.size());
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  ASSERT_FALSE(fractions.empty());
+  EXPECT_EQ(fractions.back(), 1.0);
+  EXPECT_FALSE(overlapped);
 }
 
 TEST(ViewerPage, RunsSeveralDriversAlsoAllTogether) {
