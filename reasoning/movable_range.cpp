@@ -18,10 +18,13 @@ MovableRange FindMovableRange(const Assembly& assembly, const Analysis& analysis
         m.travel_per_unit *= sense;
       }
     }
-    for (const OperationClash& c : SweepPaths(assembly, analysis, collision, run, amount).clashes) {
-      if (!yields[c.part_a] && !yields[c.part_b]) return c;
-    }
-    return std::nullopt;
+    // Parts that yield are not swept at all: their contacts are no stops.
+    const std::vector<OperationClash> stops =
+        SweepPaths(assembly, analysis, collision, run, amount, [&](std::size_t a, std::size_t b) {
+          return !yields[a] && !yields[b];
+        }).clashes;
+    if (stops.empty()) return std::nullopt;
+    return stops.front();
   };
   MovableRange range;
   range.ahead = first_contact(1.0);

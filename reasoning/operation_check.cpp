@@ -95,7 +95,7 @@ void SettleFreeMotions(const Assembly& assembly, const Analysis& analysis,
 
 OperationCheck SweepPaths(const Assembly& assembly, const Analysis& analysis,
                           const CollisionModel& model, const std::vector<ScrewPath>& path,
-                          double amount) {
+                          double amount, const PartPairFilter& swept) {
   OperationCheck check;
   check.amount = amount;
   const AssemblyState state = InitialState(assembly);
@@ -120,6 +120,7 @@ OperationCheck SweepPaths(const Assembly& assembly, const Analysis& analysis,
     if (path[i].still() && path[j].still()) continue;
     if (analysis.subassembly_of[i] == analysis.subassembly_of[j]) continue;
     if (paired.count({i, j})) continue;
+    if (swept && !swept(i, j)) continue;
     const CollisionMesh& a = model.part_mesh(i);
     const CollisionMesh& b = model.part_mesh(j);
     if (SurfaceDistance(a, state.X_WP[i], b, state.X_WP[j], 2 * tolerance) <= tolerance) {

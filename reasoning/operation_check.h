@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -55,13 +56,17 @@ struct OperationCheck {
   std::optional<Analysis> after;
 };
 
+/// Whether the parts `a` and `b` are to be swept against each other.
+using PartPairFilter = std::function<bool(std::size_t a, std::size_t b)>;
+
 /// The sweep of CheckOperation along given paths (per part: the pose after s is
 /// paths[p].At(s) * X_WP) over s in [0, amount], without settling free motions: the first
 /// contact of each pair of parts that move relative to each other (clashes and undecided by
-/// `at`), and the pairs touching at rest. `driver` is empty and `possible` true.
+/// `at`), and the pairs touching at rest; with `swept`, only of the pairs it accepts. `driver`
+/// is empty and `possible` true.
 OperationCheck SweepPaths(const Assembly& assembly, const Analysis& analysis,
                           const CollisionModel& model, const std::vector<ScrewPath>& paths,
-                          double amount);
+                          double amount, const PartPairFilter& swept = {});
 
 /// Runs the mechanism from its file poses as PlanRun says (one driver in the sense of its rate,
 /// or all drivers at their rates, over `amount` or the drivers' amounts) and sweeps every pair
