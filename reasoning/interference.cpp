@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "kernel/collision/broad_phase.h"
+#include "kernel/support/parallel_for.h"
 
 namespace mechanist {
 
@@ -128,13 +129,21 @@ std::vector<PartContact> FindContacts(const Assembly& assembly, const AssemblySt
   for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
     boxes.push_back(TransformBox(state.X_WP[p], model.part_mesh(p).bounds()));
   }
+  // Measured on every core (each measure only reads the meshes), then judged in order.
+  const auto near = OverlappingBoxes(boxes, tolerance);
+  std::vector<ContactMeasure> measures(near.size());
+  ParallelFor(near.size(), [&](std::size_t k) {
+    const auto [i, j] = near[k];
+    measures[k] = MeasureContact(model.part_mesh(i), state.X_WP[i], model.part_mesh(j),
+                                 state.X_WP[j], tolerance);
+  });
   std::vector<PartContact> contacts;
-  for (const auto& [i, j] : OverlappingBoxes(boxes, tolerance)) {
+  for (std::size_t n = 0; n < near.size(); ++n) {
+    const auto [i, j] = near[n];
     PartContact contact;
     contact.part_a = i;
     contact.part_b = j;
-    contact.measure = MeasureContact(model.part_mesh(i), state.X_WP[i], model.part_mesh(j),
-                                     state.X_WP[j], tolerance);
+    contact.measure = measures[n];
     if (contact.measure.kind == ContactMeasure::Kind::kSeparate) continue;
     if (contact.measure.kind == ContactMeasure::Kind::kPenetrating) {
       contact.verdict = ContactVerdict::kClash;

@@ -51,10 +51,10 @@ bool InPairRegion(const Assembly& assembly, const AssemblyState& state, const Pa
                   const Eigen::Vector3d& p_W, double tolerance);
 
 /// Every pair of parts whose meshes meet at `state`: a part-level sort-and-sweep broad phase
-/// on world boxes, then MeasureContact. Penetrations deeper than the file's length tolerance
-/// are designed fits when the deepest point lies in the engagement region of a pair between
-/// the two parts that overlaps by design (OverlapIsDesigned) (`pairs`, as recognised at this
-/// state), clashes otherwise. Sorted by part ids. Deterministic.
+/// on world boxes, then MeasureContact (on every core). Penetrations deeper than the file's length
+/// tolerance are designed fits when the deepest point lies in the engagement region of a pair
+/// between the two parts that overlaps by design (OverlapIsDesigned) (`pairs`, as recognised at
+/// this state), clashes otherwise. Sorted by part ids. Deterministic.
 std::vector<PartContact> FindContacts(const Assembly& assembly, const AssemblyState& state,
                                       const CollisionModel& model, const std::vector<Pair>& pairs);
 

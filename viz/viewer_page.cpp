@@ -294,8 +294,11 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
   // Clashes at rest (as `mechanist interference` finds them): the parts and where.
   json clashes = json::array();
   if (collision) {
-    for (const PartContact& c :
-         FindContacts(assembly, InitialState(assembly), *collision, analysis.pairs)) {
+    // The assembly plan, when made, found them first.
+    const std::vector<PartContact> at_rest =
+        plan ? plan->clashes
+             : FindContacts(assembly, InitialState(assembly), *collision, analysis.pairs);
+    for (const PartContact& c : at_rest) {
       if (c.verdict != ContactVerdict::kClash) continue;
       clashes.push_back(
           {{"parts", json::array({c.part_a, c.part_b})},
