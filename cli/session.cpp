@@ -22,10 +22,16 @@ namespace {
 
 // The message the alarm writes, prepared beforehand: a signal handler may only write and exit.
 std::string g_timeout_message;
+// Whether a progress line on stderr waits for its end (ReadingProgress), so that the message
+// starts a line of its own.
+volatile std::sig_atomic_t g_progress_line_open = 0;
 
 void OnReadTimeout(int) {
   // No exception can leave Open CASCADE at an arbitrary point safely (it may hold the heap's
   // lock): the process ends here, before any output file is written.
+  if (g_progress_line_open) {
+    [[maybe_unused]] const auto ended = ::write(STDERR_FILENO, "\n", 1);
+  }
   [[maybe_unused]] const auto written =
       ::write(STDERR_FILENO, g_timeout_message.data(), g_timeout_message.size());
   ::_exit(kExitUsage);
@@ -39,9 +45,9 @@ class ReadTimeout {
   explicit ReadTimeout(const std::string& file) {
     if (!(g_read_timeout > 0)) return;
     g_timeout_message = fmt::format(
-        "{}mechanist: error: {}: reading it took longer than {} s (--read-timeout); the file may "
-        "be damaged\n",
-        ::isatty(STDERR_FILENO) ? "\n" : "", file, FormatNumber(g_read_timeout));
+        "mechanist: error: {}: reading it took longer than {} s (--read-timeout); the file may be "
+        "damaged\n",
+        file, FormatNumber(g_read_timeout));
     std::signal(SIGALRM, OnReadTimeout);
     itimerval timer{};
     timer.it_value.tv_sec = static_cast<time_t>(g_read_timeout);
@@ -64,13 +70,14 @@ class ReadTimeout {
 };
 
 // Shows the reading of each STEP file on stderr when it is a terminal, a line per file
-// ("reading motor.step:  42%"); ends the line of a reading that failed when it goes, so that the
-// error starts a line of its own.
+// ("reading motor.step:  42%"); ends the line of a reading that failed when it goes (and says
+// it is open to the read-timeout alarm), so that the error starts a line of its own.
 class ReadingProgress {
  public:
   ReadingProgress() = default;
   ~ReadingProgress() {
     if (unfinished_) std::fputc('\n', stderr);
+    g_progress_line_open = 0;
   }
   ReadingProgress(const ReadingProgress&) = delete;
   ReadingProgress& operator=(const ReadingProgress&) = delete;
@@ -86,6 +93,7 @@ class ReadingProgress {
       unfinished_ = percent < 100;
       std::fprintf(stderr, "\rreading %s: %3d%%%s", file.filename().c_str(), percent,
                    unfinished_ ? "" : "\n");
+      g_progress_line_open = unfinished_;
     };
   }
 

@@ -1436,7 +1436,7 @@ class Reader {
 
   JsonSource src_;
   std::filesystem::path dir_;
-  StepFileProgress progress_;  // while ReadParts runs
+  StepFileProgress progress_;  // ReadParts's, for the STEP files it imports (only it does)
   AssemblySpec spec_;
   std::vector<PartOrigin> origins_;  // per part
   // The entries whose `place` ReadRelations reads: (part index, its entry).

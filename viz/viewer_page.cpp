@@ -294,11 +294,10 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
   // Clashes at rest (as `mechanist interference` finds them): the parts and where.
   json clashes = json::array();
   if (collision) {
-    // The assembly plan, when made, found them first.
-    const std::vector<PartContact> at_rest =
-        plan ? plan->clashes
-             : FindContacts(assembly, InitialState(assembly), *collision, analysis.pairs);
-    for (const PartContact& c : at_rest) {
+    std::vector<PartContact> measured;  // unless the assembly plan, when made, found them
+    if (!plan)
+      measured = FindContacts(assembly, InitialState(assembly), *collision, analysis.pairs);
+    for (const PartContact& c : plan ? plan->clashes : measured) {
       if (c.verdict != ContactVerdict::kClash) continue;
       clashes.push_back(
           {{"parts", json::array({c.part_a, c.part_b})},
@@ -384,6 +383,7 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
   }
   std::mutex reporting;
   std::size_t searched = 0;
+  if (options.range_progress && !searches.empty()) options.range_progress(0);
   ParallelFor(searches.size(), [&](std::size_t k) {
     RangeSearch& search = searches[k];
     search.range = FindMovableRange(assembly, analysis, *collision, search.paths,

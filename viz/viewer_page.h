@@ -28,7 +28,7 @@ struct ViewerOptions {
   /// optional.
   std::function<void(double)> plan_progress;
   /// Receives the fraction of the drags' range searches done (each distinct motion searched
-  /// once, on every core), one call at a time; optional.
+  /// once, on every core): 0 first, then one call at a time; optional.
   std::function<void(double)> range_progress;
 };
 

@@ -1087,7 +1087,7 @@ class Walker {
   void ConvertAll(const DeferredHealing& healing, std::vector<StepMessage>* messages,
                   const StepProgress& converted) {
     std::vector<std::size_t> faces(definitions_.size(), 0);
-    for (std::size_t d = 0; d < definitions_.size(); ++d) {
+    for (std::size_t d = 0; converted && d < definitions_.size(); ++d) {
       for (TopExp_Explorer e(definitions_[d].solid, TopAbs_FACE); e.More(); e.Next()) ++faces[d];
     }
     const double all_faces = std::max<double>(1, std::accumulate(faces.begin(), faces.end(), 0.0));
@@ -1260,9 +1260,11 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
   for (int i = 1; i <= roots.Length(); ++i) {
     walker.Walk(roots(i), Sanitised(NameOf(roots(i))), TopLoc_Location());
   }
-  walker.ConvertAll(*healing, messages, [&report](double converted) {
-    report(kTransferred + (1 - kTransferred) * converted);
-  });
+  walker.ConvertAll(*healing, messages,
+                    progress ? StepProgress([&report](double converted) {
+                      report(kTransferred + (1 - kTransferred) * converted);
+                    })
+                             : StepProgress());
   app->Close(document);
   if (solids.empty()) throw std::runtime_error("the STEP file holds no solid");
   // Unique paths (two solids named alike at the top level).

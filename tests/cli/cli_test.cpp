@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -38,6 +39,7 @@ TEST(Cli, VersionAndHelp) {
 // line that ends at 100%; a reading that fails ends its line before the error; through a pipe,
 // nothing is shown. Planning an assembly sequence shows its progress too.
 TEST(Cli, LongWorkShowsItsProgressOnATerminal) {
+  if (std::system("command -v script > /dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1)";
   const std::string as1 = std::string(MECHANIST_SHARED_DATA) + "/step/as1_pe_203.stp";
   const CommandResult piped = Mechanist("info " + as1);
   EXPECT_EQ(piped.exit_code, 0) << piped.out;
@@ -55,6 +57,15 @@ TEST(Cli, LongWorkShowsItsProgressOnATerminal) {
                                            "/tests/data/bad/step_no_solid.step");
   EXPECT_EQ(failed.exit_code, 2) << failed.out;
   EXPECT_NE(failed.out.find("%\r\nmechanist: error: "), std::string::npos) << failed.out;
+  // Cut short by the read timeout, the error starts a line of its own too (after the progress
+  // line when the reading got that far).
+  const CommandResult timed_out =
+      on_terminal("--read-timeout 0.6 info \"" + std::string(MECHANIST_SHARED_DATA) +
+                  "/real/robot_hand_finger_hinges_onshape/Assembly 1.step\"");
+  EXPECT_EQ(timed_out.exit_code, 2) << timed_out.out;
+  const std::size_t error = timed_out.out.find("mechanist: error: ");
+  ASSERT_NE(error, std::string::npos) << timed_out.out;
+  EXPECT_TRUE(error == 0 || timed_out.out[error - 1] == '\n') << timed_out.out;
   // So does the planning of an assembly sequence (here the file's steps, checked in turn).
   const CommandResult planned = on_terminal("assemble " + Example("bracket_plate_bolt_nut"));
   EXPECT_NE(planned.out.find("\rassembly sequence:   0%"), std::string::npos) << planned.out;

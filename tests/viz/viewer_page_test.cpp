@@ -140,9 +140,10 @@ RangeOracle OracleRange(const Assembly& assembly, const Analysis& analysis,
 }
 
 // Drags that move the parts alike (the parts of one rigid body) share one range search; the
-// searches run on every core, the progress reported one call at a time, a step per search up
-// to 1; each drag shows the range of the oracle above. On the worm drive, and on
-// pushed_by_contact, whose part a turns freely: dragging what meets it is not stopped by it.
+// searches run on every core, the progress reported one call at a time, 0 then a step per
+// search up to 1; each drag shows the range of the oracle above (its time and parts). On the worm
+// drive, and on pushed_by_contact, whose part a turns freely: dragging what meets it is not stopped
+// by it.
 TEST(ViewerPage, SearchesEachDistinctDragOnceWithItsProgress) {
   bool met_yielding = false;
   for (const std::string name : {"robot_hand_worm", "pushed_by_contact"}) {
@@ -185,12 +186,14 @@ TEST(ViewerPage, SearchesEachDistinctDragOnceWithItsProgress) {
           ASSERT_EQ(drag[side].is_null(), !contact.has_value()) << side;
           if (contact) {
             EXPECT_NEAR(drag[side]["at"].get<double>(), contact->at, 1e-12) << side;
+            EXPECT_EQ(drag[side]["parts"], json::array({contact->part_a, contact->part_b})) << side;
           }
         }
       }
     }
     EXPECT_GE(drags, static_cast<int>(motions.size()));
-    EXPECT_EQ(fractions.size(), motions.size());
+    ASSERT_EQ(fractions.size(), motions.size() + 1);  // 0, then one per search
+    EXPECT_EQ(fractions.front(), 0.0);
     EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
     ASSERT_FALSE(fractions.empty());
     EXPECT_EQ(fractions.back(), 1.0);
