@@ -43,8 +43,8 @@ Command ViewCommand() {
     const std::string path =
         o->out.empty() ? fmt::format("{}.html", std::filesystem::path(s.file).stem().string())
                        : o->out;
-    // The swept checks of every drag and of every insertion take minutes on a large real
-    // file (the Onshape robot hand, 279,525 triangles: 43 s for one finger's drag): above
+    // The swept checks of every drag and of every insertion take long on a large real file
+    // (the Onshape robot hand, 279,525 triangles: its drags' ranges 22 s): above
     // kMaxSweptTriangles they run only when asked.
     constexpr std::size_t kMaxSweptTriangles = 100000;
     std::size_t triangles = 0;
