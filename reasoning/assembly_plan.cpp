@@ -1,12 +1,15 @@
 #include "reasoning/assembly_plan.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <numeric>
 
 #include "kernel/assembly/assembly_state.h"
 #include "kernel/collision/translational_sweep.h"
+#include "kernel/support/parallel_for.h"
 
 namespace mechanist {
 namespace {
@@ -19,6 +22,27 @@ bool HasDirection(FeatureKind kind) {
 bool Carries(const Pair& pair) {
   return pair.type == PairType::kFixed &&
          (pair.fastening == PairFastening::kPressFit || pair.source == PairSource::kOverride);
+}
+
+// The least travel s in [0, max_travel] at which `moving`, moved by s along d, meets `fixed`
+// (the slabs of the three axes); none when it does not within max_travel.
+std::optional<double> TravelToMeet(const Aabb& moving, const Aabb& fixed, const Eigen::Vector3d& d,
+                                   double max_travel) {
+  double lo = 0.0, hi = max_travel;
+  for (int a = 0; a < 3; ++a) {
+    if (d[a] == 0.0) {
+      if (moving.max[a] < fixed.min[a] || fixed.max[a] < moving.min[a]) return std::nullopt;
+      continue;
+    }
+    const double enter =
+        (d[a] > 0 ? fixed.min[a] - moving.max[a] : fixed.max[a] - moving.min[a]) / d[a];
+    const double leave =
+        (d[a] > 0 ? fixed.max[a] - moving.min[a] : fixed.min[a] - moving.max[a]) / d[a];
+    lo = std::max(lo, enter);
+    hi = std::min(hi, leave);
+    if (lo > hi) return std::nullopt;
+  }
+  return lo;
 }
 
 class Planner {
@@ -142,13 +166,17 @@ class Planner {
     return std::nullopt;
   }
 
-  // Sweeps `group` (at its final poses shifted by `start_shift` along d) by up to `travel`
-  // along the unit `d` against `obstacles`; fills `blocked_by`, sorted by travel. Contacts
-  // within the tolerance of `seat_travel` or beyond are the seat and do not count.
-  std::vector<InsertionObstacle> Sweep(const std::vector<std::size_t>& group,
-                                       const std::vector<std::size_t>& obstacles,
-                                       const Eigen::Vector3d& d, double start_shift, double travel,
-                                       double seat_travel) const {
+  // `box` grown by the length tolerance on every side.
+  Aabb Grown(Aabb box) const {
+    box.min.array() -= tolerance_;
+    box.max.array() += tolerance_;
+    return box;
+  }
+
+  // The box that `group` (at its final poses shifted by `start_shift` along d) sweeps over
+  // when it travels `travel` along d.
+  Aabb SweptBox(const std::vector<std::size_t>& group, const Eigen::Vector3d& d, double start_shift,
+                double travel) const {
     Aabb swept;
     for (const std::size_t m : group) {
       Aabb box = boxes_[m];
@@ -159,37 +187,57 @@ class Planner {
       box.max += travel * d;
       swept.Extend(box);
     }
+    return swept;
+  }
+
+  // Where `obstacle` first stops `group` sweeping as Sweep says (`swept`: SweptBox), if it
+  // does.
+  std::optional<InsertionObstacle> FirstStop(const std::vector<std::size_t>& group,
+                                             std::size_t obstacle, const Aabb& swept,
+                                             const Eigen::Vector3d& d, double start_shift,
+                                             double travel, double seat_travel) const {
+    if (!Grown(boxes_[obstacle]).Intersects(swept)) return std::nullopt;
+    std::optional<InsertionObstacle> first;
+    for (const std::size_t m : group) {
+      if (const auto held = HeldAcross(m, obstacle, d)) {
+        // Held from the start of a removal, or at the very end of an insertion.
+        const double at = std::isfinite(seat_travel) ? seat_travel : 0.0;
+        if (!first || at < first->travel) {
+          const Eigen::Vector3d p_W = state_.X_WP[held->part] * assembly_.feature(*held).origin;
+          first = InsertionObstacle{obstacle, at, 0.0, p_W};
+        }
+        continue;
+      }
+      SweepOptions options;
+      options.max_travel = travel;
+      options.min_approach = min_approach_;
+      options.ignore = IgnoreFor(m, obstacle, d);
+      const RigidTransform X_WM = RigidTransform::Translation(start_shift * d) * state_.X_WP[m];
+      const auto contact = FirstBlockingContact(
+          model_.part_mesh(m), X_WM, model_.part_mesh(obstacle), state_.X_WP[obstacle], d, options);
+      if (!contact || contact->travel >= seat_travel - tolerance_) continue;
+      if (!first || contact->travel < first->travel) {
+        first = InsertionObstacle{obstacle, contact->travel, seat_travel - contact->travel,
+                                  contact->p_W};
+      }
+    }
+    return first;
+  }
+
+  // Sweeps `group` (at its final poses shifted by `start_shift` along d) by up to `travel`
+  // along the unit `d` against `obstacles`; returns where each obstacle stops it, sorted by
+  // travel. Contacts within the tolerance of `seat_travel` or beyond are the seat and do not
+  // count.
+  std::vector<InsertionObstacle> Sweep(const std::vector<std::size_t>& group,
+                                       const std::vector<std::size_t>& obstacles,
+                                       const Eigen::Vector3d& d, double start_shift, double travel,
+                                       double seat_travel) const {
+    const Aabb swept = SweptBox(group, d, start_shift, travel);
     std::vector<InsertionObstacle> blocked;
     for (const std::size_t o : obstacles) {
-      Aabb grown = boxes_[o];
-      grown.min.array() -= tolerance_;
-      grown.max.array() += tolerance_;
-      if (!grown.Intersects(swept)) continue;
-      std::optional<InsertionObstacle> first;
-      for (const std::size_t m : group) {
-        if (const auto held = HeldAcross(m, o, d)) {
-          // Held from the start of a removal, or at the very end of an insertion.
-          const double at = std::isfinite(seat_travel) ? seat_travel : 0.0;
-          if (!first || at < first->travel) {
-            const Eigen::Vector3d p_W = state_.X_WP[held->part] * assembly_.feature(*held).origin;
-            first = InsertionObstacle{o, at, 0.0, p_W};
-          }
-          continue;
-        }
-        SweepOptions options;
-        options.max_travel = travel;
-        options.min_approach = min_approach_;
-        options.ignore = IgnoreFor(m, o, d);
-        const RigidTransform X_WM = RigidTransform::Translation(start_shift * d) * state_.X_WP[m];
-        const auto contact = FirstBlockingContact(model_.part_mesh(m), X_WM, model_.part_mesh(o),
-                                                  state_.X_WP[o], d, options);
-        if (!contact || contact->travel >= seat_travel - tolerance_) continue;
-        if (!first || contact->travel < first->travel) {
-          first =
-              InsertionObstacle{o, contact->travel, seat_travel - contact->travel, contact->p_W};
-        }
+      if (auto stop = FirstStop(group, o, swept, d, start_shift, travel, seat_travel)) {
+        blocked.push_back(*stop);
       }
-      if (first) blocked.push_back(*first);
     }
     std::sort(
         blocked.begin(), blocked.end(),
@@ -198,6 +246,51 @@ class Planner {
                  (x.travel == y.travel && assembly_.part(x.part).id < assembly_.part(y.part).id);
         });
     return blocked;
+  }
+
+  // Whether any of `obstacles` stops `group` as Sweep says: the first stop found ends the
+  // search (a removal only asks whether its way is clear).
+  bool Stopped(const std::vector<std::size_t>& group, const std::vector<std::size_t>& obstacles,
+               const Eigen::Vector3d& d, double start_shift, double travel,
+               double seat_travel) const {
+    const Aabb swept = SweptBox(group, d, start_shift, travel);
+    return std::any_of(obstacles.begin(), obstacles.end(), [&](std::size_t o) {
+      return FirstStop(group, o, swept, d, start_shift, travel, seat_travel).has_value();
+    });
+  }
+
+  // How far `group` leaves along d (swept as Sweep sweeps it, with no seat) before the first
+  // of `obstacles` stops it: `travel` when none does. Stops looking once a stop within `enough`
+  // is found (the caller only asks whether the group gets further than that). A branch and
+  // bound: an obstacle cannot stop the group before their boxes meet, so the obstacles are
+  // swept in the order in which the group's box meets theirs, each only as far as the nearest
+  // stop found yet, and the first met no sooner than that ends the search. (The sweeps of
+  // parts sliding past each other are long and find nothing: on the Onshape robot hand a best
+  // attempt took a minute.)
+  double FreeTravel(const std::vector<std::size_t>& group,
+                    const std::vector<std::size_t>& obstacles, const Eigen::Vector3d& d,
+                    double travel, double enough) const {
+    const double no_seat = std::numeric_limits<double>::infinity();
+    const Aabb swept = SweptBox(group, d, 0.0, travel);
+    const Aabb start = SweptBox(group, d, 0.0, 0.0);
+    std::vector<std::pair<double, std::size_t>> met;  // travel at which the boxes meet, obstacle
+    for (const std::size_t o : obstacles) {
+      const Aabb grown = Grown(boxes_[o]);
+      if (!grown.Intersects(swept)) continue;
+      // A fit across d holds the group from the start, wherever the boxes meet (FirstStop).
+      for (const std::size_t m : group) {
+        if (HeldAcross(m, o, d)) return 0.0;
+      }
+      if (const auto at = TravelToMeet(start, grown, d, travel)) met.emplace_back(*at, o);
+    }
+    std::sort(met.begin(), met.end());
+    double free = travel;
+    for (const auto& [at, o] : met) {
+      if (at >= free || free <= enough) break;
+      const auto stop = FirstStop(group, o, SweptBox(group, d, 0.0, free), d, 0.0, free, no_seat);
+      if (stop) free = std::min(free, stop->travel);
+    }
+    return free;
   }
 
   // Distance along d that takes `group`'s boxes clear of `others`' boxes (plus a margin).
@@ -338,25 +431,42 @@ class Planner {
     std::size_t decided = 0;
     for (bool progress = true; progress;) {
       progress = false;
-      for (std::size_t u = 0; u < units.size(); ++u) {
-        if (done[u] || base_unit[u]) continue;
-        std::optional<InsertionStep> step = TryRemove(units[u], present);
-        if (!step) continue;
+      // A pass over the units in order, each tried with the parts that those before it left:
+      // the units from `next` on are tried at once, the first of them that can leave goes, and
+      // the pass goes on after it.
+      for (std::size_t next = 0; next < units.size();) {
+        std::vector<std::size_t> pending;
+        for (std::size_t u = next; u < units.size(); ++u) {
+          if (!done[u] && !base_unit[u]) pending.push_back(u);
+        }
+        auto removable = FirstRemovable(pending, units, present);
+        if (!removable) break;
+        auto& [u, step] = *removable;
         for (const std::size_t p : units[u]) present[p] = false;
         done[u] = true;
-        removed.push_back(*step);
+        removed.push_back(std::move(step));
         progress = true;
         Report(++decided / to_place);
+        next = u + 1;
       }
     }
+    std::vector<std::size_t> stuck;
     for (std::size_t u = 0; u < units.size(); ++u) {
       if (base_unit[u]) {
         plan->base.insert(plan->base.end(), units[u].begin(), units[u].end());
       } else if (!done[u]) {
-        plan->unplaced.push_back(BestAttempt(units[u], present));
-        Report(++decided / to_place);
+        stuck.push_back(u);
       }
     }
+    // Each unit that cannot leave is shown as its furthest attempt; with the removals over,
+    // the attempts are independent of each other.
+    plan->unplaced.resize(stuck.size());
+    std::mutex reporting;
+    ParallelFor(stuck.size(), [&](std::size_t k) {
+      plan->unplaced[k] = BestAttempt(units[stuck[k]], present);
+      const std::lock_guard<std::mutex> lock(reporting);
+      Report(++decided / to_place);
+    });
     std::sort(plan->base.begin(), plan->base.end());
     plan->steps.assign(removed.rbegin(), removed.rend());
   }
@@ -401,9 +511,9 @@ class Planner {
     for (const auto& [r, feature] : RemovalDirections(unit)) {
       const double travel = ClearingDistance(unit, others, r);
       // Leaving: no seat at the far end, so every contact counts.
-      const auto blocked =
-          Sweep(unit, others, r, 0.0, travel, std::numeric_limits<double>::infinity());
-      if (!blocked.empty()) continue;
+      if (Stopped(unit, others, r, 0.0, travel, std::numeric_limits<double>::infinity())) {
+        continue;
+      }
       InsertionStep step = MakeStep(unit, r, feature, present);
       step.travel = travel;
       step.clear = true;
@@ -412,30 +522,55 @@ class Planner {
     return std::nullopt;
   }
 
-  // The removal direction that gets furthest, reported as the insertion it would be.
+  // The first of `candidates` (units, in order) that can leave with the parts `present` as
+  // they are, with its step. The candidates are tried on all cores; those after one that can
+  // leave may be left untried, those before it are all tried, so the answer does not depend on
+  // the threads' timing.
+  std::optional<std::pair<std::size_t, InsertionStep>> FirstRemovable(
+      const std::vector<std::size_t>& candidates,
+      const std::vector<std::vector<std::size_t>>& units, const std::vector<bool>& present) const {
+    std::vector<std::optional<InsertionStep>> steps(candidates.size());
+    std::atomic<std::size_t> first{candidates.size()};
+    ParallelFor(candidates.size(), [&](std::size_t k) {
+      if (k > first) return;
+      steps[k] = TryRemove(units[candidates[k]], present);
+      if (!steps[k]) return;
+      std::size_t known = first;
+      while (k < known && !first.compare_exchange_weak(known, k)) {
+      }
+    });
+    if (first == candidates.size()) return std::nullopt;
+    return std::make_pair(candidates[first], std::move(*steps[first]));
+  }
+
+  // The removal direction that gets furthest (the first of those that get equally far),
+  // reported as the insertion it would be.
   InsertionStep BestAttempt(const std::vector<std::size_t>& unit,
                             const std::vector<bool>& present) const {
     const std::vector<std::size_t> others = Others(unit, present);
-    std::optional<InsertionStep> best;
-    double best_free = -1.0;
+    std::optional<std::pair<Eigen::Vector3d, std::optional<FeatureRef>>> best;
+    double best_free = -1.0, best_travel = 0.0;
     for (const auto& [r, feature] : RemovalDirections(unit)) {
       const double travel = ClearingDistance(unit, others, r);
-      auto blocked = Sweep(unit, others, r, 0.0, travel, std::numeric_limits<double>::infinity());
-      const double free = blocked.empty() ? travel : blocked.front().travel;
+      const double free = FreeTravel(unit, others, r, travel, best_free);
       if (free <= best_free) continue;
       best_free = free;
-      InsertionStep step = MakeStep(unit, r, feature, present);
-      step.travel = travel;
-      // As an insertion: the obstacle is met `travel - free` after the start.
-      for (InsertionObstacle& o : blocked) {
-        o.short_by = o.travel;
-        o.travel = travel - o.travel;
-      }
-      std::reverse(blocked.begin(), blocked.end());  // by insertion travel again
-      step.blocked_by = std::move(blocked);
-      best = step;
+      best_travel = travel;
+      best.emplace(r, feature);
     }
-    return *best;
+    const auto& [r, feature] = *best;
+    InsertionStep step = MakeStep(unit, r, feature, present);
+    step.travel = best_travel;
+    auto blocked =
+        Sweep(unit, others, r, 0.0, best_travel, std::numeric_limits<double>::infinity());
+    // As an insertion: the obstacle is met `travel - free` after the start.
+    for (InsertionObstacle& o : blocked) {
+      o.short_by = o.travel;
+      o.travel = best_travel - o.travel;
+    }
+    std::reverse(blocked.begin(), blocked.end());  // by insertion travel again
+    step.blocked_by = std::move(blocked);
+    return step;
   }
 
   void Report(double fraction) const {

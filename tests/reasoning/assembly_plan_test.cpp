@@ -1,12 +1,18 @@
 // Assembly sequences on blocks of unit cubes: a found sequence re-checked insertion by
-// insertion with the kernel's sweep (an oracle independent of the planner's search), and a
-// part walled in by ground parts reported as unplaced with its blockers.
+// insertion with the kernel's sweep (an oracle independent of the planner's search), the
+// order of the disassembly against an oracle for cubes on a grid, and a part walled in by
+// ground parts reported as unplaced with its blockers.
 #include "reasoning/assembly_plan.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <memory>
+#include <set>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "kernel/collision/collision_model.h"
@@ -20,12 +26,13 @@ namespace {
 using testing::MakeAssembly;
 using testing::MakePart;
 
-// A 3 x 3 x 3 block of unit cubes, face to face; `ground(i, j, k)` says which are ground.
-Assembly Block(const std::function<bool(int, int, int)>& ground) {
+// An n x n x n block of unit cubes, face to face, named cIJK and listed in that order;
+// `ground(i, j, k)` says which are ground.
+Assembly Block(const std::function<bool(int, int, int)>& ground, int n = 3) {
   std::vector<Part> parts;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      for (int k = 0; k < 3; ++k) {
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      for (int k = 0; k < n; ++k) {
         parts.push_back(MakePart("c" + std::to_string(i) + std::to_string(j) + std::to_string(k),
                                  {}, RigidTransform::Translation({1.0 * i, 1.0 * j, 1.0 * k}),
                                  ground(i, j, k)));
@@ -65,6 +72,69 @@ TEST(AssemblyPlan, FoundSequenceIsClearInsertionByInsertion) {
   }
 }
 
+// The disassembly goes in passes over the parts in their order, each part tried with the
+// parts left by those before it. The oracle, for cubes on a grid: a cube leaves along the first
+// of +x, -x, +y, -y, +z, -z (the planner's order for parts without features) whose ray holds
+// no cube still there (a cube slides past its face-to-face neighbours). The block is chosen so
+// that a cube waits for one after it: two passes remove parts, and one cube is walled in.
+TEST(AssemblyPlan, DisassemblyGoesInPassesOverThePartsInOrder) {
+  constexpr int n = 4;
+  const auto ground = [](int i, int j, int k) { return (i + 2 * j + 4 * k) % 3 == 1; };
+  using Cell = std::array<int, 3>;
+  const std::array<Cell, 6> directions = {
+      {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}};
+  std::vector<Cell> cells;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      for (int k = 0; k < n; ++k) cells.push_back({i, j, k});
+    }
+  }
+  std::set<Cell> present(cells.begin(), cells.end());
+  std::vector<std::pair<std::string, Cell>> removals;  // cube and the way it leaves
+  int removing_passes = 0;
+  for (bool progress = true; progress;) {
+    progress = false;
+    for (const Cell& c : cells) {
+      if (ground(c[0], c[1], c[2]) || !present.count(c)) continue;
+      for (const Cell& d : directions) {
+        bool free = true;
+        for (int t = 1; t <= n; ++t) {
+          free = free && !present.count({c[0] + t * d[0], c[1] + t * d[1], c[2] + t * d[2]});
+        }
+        if (!free) continue;
+        present.erase(c);
+        removals.emplace_back(
+            "c" + std::to_string(c[0]) + std::to_string(c[1]) + std::to_string(c[2]), d);
+        progress = true;
+        break;
+      }
+    }
+    removing_passes += progress ? 1 : 0;
+  }
+  std::vector<std::string> walled_in;
+  for (const Cell& c : cells) {
+    if (!ground(c[0], c[1], c[2]) && present.count(c)) {
+      walled_in.push_back("c" + std::to_string(c[0]) + std::to_string(c[1]) + std::to_string(c[2]));
+    }
+  }
+  ASSERT_EQ(removing_passes, 2) << "the block no longer makes a cube wait";
+  ASSERT_EQ(walled_in.size(), 1u);
+
+  const Assembly a = Block(ground, n);
+  const AssemblyPlan plan = PlanAssembly(a, Analyze(a), CollisionModel(a));
+  ASSERT_EQ(plan.steps.size(), removals.size());
+  for (std::size_t s = 0; s < removals.size(); ++s) {
+    // Steps are insertions: the removals reversed, each along the opposite way.
+    const InsertionStep& step = plan.steps[removals.size() - 1 - s];
+    EXPECT_EQ(a.part(step.part).id, removals[s].first) << "removal " << s;
+    const Cell& d = removals[s].second;
+    EXPECT_EQ(step.direction_W, -Eigen::Vector3d(d[0], d[1], d[2])) << removals[s].first;
+  }
+  std::vector<std::string> unplaced;
+  for (const InsertionStep& u : plan.unplaced) unplaced.push_back(a.part(u.part).id);
+  EXPECT_EQ(unplaced, walled_in);
+}
+
 // The progress: 0 first, a step per cube removed (26 of them), 1 last, never decreasing; a cube
 // that cannot leave counts once it is found so.
 TEST(AssemblyPlan, ProgressCountsThePartsPlaced) {
@@ -96,6 +166,35 @@ TEST(AssemblyPlan, PartWalledInByGroundCannotBePlaced) {
   ASSERT_EQ(u.blocked_by.size(), 1u);
   // It touches its neighbour at once: the whole travel is lost.
   EXPECT_NEAR(u.blocked_by.front().short_by, 0.0, 1e-12);
+}
+
+// A cube boxed in by ground blocks at different gaps: its best attempt is the direction with
+// the widest gap, +z (4.5; +x 2, +y 1, -x and -z 0), not -y, where a long thin bar stops it
+// after 4 beside a block that would stop it after 5: the obstacles' boxes are met in that
+// order, but the bar's box is left last, so a search that ranked obstacles by anything but
+// where their boxes are first met could stop at the block.
+TEST(AssemblyPlan, BestAttemptGoesWhereTheGapIsWidest) {
+  const auto block = [](const std::string& id, const Eigen::Vector3d& lo,
+                        const Eigen::Vector3d& hi) {
+    Part part = MakePart(id, {}, RigidTransform(), true);
+    auto mesh = std::make_shared<TriangleMesh>(*part.mesh);
+    for (Eigen::Vector3d& v : mesh->vertices) v = lo + v.cwiseProduct(hi - lo);
+    part.mesh = mesh;
+    return part;
+  };
+  const Assembly a =
+      MakeAssembly({block("bar", {0, -15, 0}, {0.4, -4, 1}), block("y5", {0.6, -6, 0}, {1, -5, 1}),
+                    block("x2", {3, 0, 0}, {4, 1, 1}), block("x0", {-1, 0, 0}, {0, 1, 1}),
+                    block("y1", {0, 2, 0}, {1, 3, 1}), block("z4.5", {0, 0, 5.5}, {1, 1, 6.5}),
+                    block("z0", {0, 0, -1}, {1, 1, 0}), MakePart("m", {}, RigidTransform())});
+  const AssemblyPlan plan = PlanAssembly(a, Analyze(a), CollisionModel(a));
+  ASSERT_EQ(plan.unplaced.size(), 1u);
+  const InsertionStep& u = plan.unplaced.front();
+  EXPECT_EQ(a.part(u.part).id, "m");
+  EXPECT_EQ(u.direction_W, Eigen::Vector3d(0, 0, -1)) << "inserted against its way out, +z";
+  ASSERT_EQ(u.blocked_by.size(), 1u);
+  EXPECT_EQ(a.part(u.blocked_by[0].part).id, "z4.5");
+  EXPECT_NEAR(u.blocked_by[0].short_by, 4.5, 1e-9);
 }
 
 TEST(AssemblyPlan, OverlappingCubesAreAClash) {
