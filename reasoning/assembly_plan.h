@@ -67,17 +67,21 @@ struct AssemblyPlan {
 /// angular tolerance (sliding).
 ///
 /// Search: ground parts (or, without any, the part with the largest box) form the base; the
-/// other parts are removed one at a time, in the order of the file, each along the first of
-/// its feature axes (the sense that withdraws a convex feature first) or of the world's
-/// principal directions that is clear; the sequence is the reverse. Parts that cannot leave
-/// are `unplaced`.
+/// other parts are removed one at a time, in passes over the parts in the order of the file
+/// until a pass removes none, each along the first of its feature axes (the sense that
+/// withdraws a convex feature first) or of the world's principal directions that is clear;
+/// the sequence is the reverse. Parts that cannot leave are `unplaced`, each with its best
+/// attempt: the direction in which it gets furthest (the first of those that get equally far),
+/// with every part on its way. The search runs on all cores and gives the one-at-a-time
+/// search's answer whatever the threads' timing.
 ///
 /// The assembly is assemblable when there are no clashes and every step is clear (or every
 /// part is placed).
 ///
 /// `progress` (optional) receives the fraction done, never decreasing, 1 last: 0 at the start
 /// (the clashes at rest are found first), then as the steps are checked, or as each part (with
-/// what it carries) is removed or found unable to leave.
+/// what it carries) is removed or found unable to leave. The calls are made one at a time, not
+/// always on the calling thread.
 AssemblyPlan PlanAssembly(const Assembly& assembly, const Analysis& analysis,
                           const CollisionModel& model,
                           const std::function<void(double)>& progress = {});
