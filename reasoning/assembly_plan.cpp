@@ -248,14 +248,15 @@ class Planner {
     return blocked;
   }
 
-  // Whether any of `obstacles` stops `group` as Sweep says: the first stop found ends the
-  // search (a removal only asks whether its way is clear).
+  // Whether any of `obstacles` stops `group` leaving along d by `travel` (swept as Sweep
+  // sweeps it, from its final poses, with no seat): the first stop found ends the search (a
+  // removal only asks whether its way is clear).
   bool Stopped(const std::vector<std::size_t>& group, const std::vector<std::size_t>& obstacles,
-               const Eigen::Vector3d& d, double start_shift, double travel,
-               double seat_travel) const {
-    const Aabb swept = SweptBox(group, d, start_shift, travel);
+               const Eigen::Vector3d& d, double travel) const {
+    const double no_seat = std::numeric_limits<double>::infinity();
+    const Aabb swept = SweptBox(group, d, 0.0, travel);
     return std::any_of(obstacles.begin(), obstacles.end(), [&](std::size_t o) {
-      return FirstStop(group, o, swept, d, start_shift, travel, seat_travel).has_value();
+      return FirstStop(group, o, swept, d, 0.0, travel, no_seat).has_value();
     });
   }
 
@@ -272,7 +273,7 @@ class Planner {
                     double travel, double enough) const {
     const double no_seat = std::numeric_limits<double>::infinity();
     const Aabb swept = SweptBox(group, d, 0.0, travel);
-    const Aabb start = SweptBox(group, d, 0.0, 0.0);
+    const Aabb start = SweptBox(group, d, 0.0, 0.0);  // the group's box where it stands
     std::vector<std::pair<double, std::size_t>> met;  // travel at which the boxes meet, obstacle
     for (const std::size_t o : obstacles) {
       const Aabb grown = Grown(boxes_[o]);
@@ -511,7 +512,7 @@ class Planner {
     for (const auto& [r, feature] : RemovalDirections(unit)) {
       const double travel = ClearingDistance(unit, others, r);
       // Leaving: no seat at the far end, so every contact counts.
-      if (Stopped(unit, others, r, 0.0, travel, std::numeric_limits<double>::infinity())) {
+      if (Stopped(unit, others, r, travel)) {
         continue;
       }
       InsertionStep step = MakeStep(unit, r, feature, present);

@@ -52,8 +52,11 @@ void DeepestInside(const std::vector<Eigen::Vector3d>& samples_S, const RigidTra
                    bool inside) {
   for (const Eigen::Vector3d& p_S : samples_S) {
     const Eigen::Vector3d p_O = X_OS * p_S;
-    if (!inside && !other.Contains(p_O)) continue;
+    // The distance first: a point no deeper than the deepest yet needs no inside test (on an
+    // open solid's surface that test is the slowest, its winding number there a half).
     const double d = other.ClosestPoint(p_O).distance;
+    if (deepest->found && d <= deepest->depth) continue;
+    if (!inside && !other.Contains(p_O)) continue;
     if (!deepest->found || d > deepest->depth) {
       deepest->depth = d;
       deepest->p_W = X_WS * p_S;
@@ -203,7 +206,7 @@ ContactMeasure MeasureContact(const CollisionMesh& a, const RigidTransform& X_WA
         // the two frames, so a face lying on the other's surface may test either way.
         const auto [p, q, r] = mesh.Triangle(f);
         const Eigen::Vector3d centroid_O = X_OS * ((p + q + r) / 3.0);
-        if (!other.Contains(centroid_O) || other.ClosestPoint(centroid_O).distance <= rounding) {
+        if (other.ClosestPoint(centroid_O).distance <= rounding || !other.Contains(centroid_O)) {
           continue;
         }
       }

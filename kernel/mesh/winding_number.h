@@ -15,4 +15,11 @@ namespace mechanist {
 /// the surface itself. O(faces).
 double WindingNumber(const TriangleMesh& mesh, const Eigen::Vector3d& p_M);
 
+/// The signed solid angle (steradians) that the triangle with corners a, b, c (relative to the
+/// point that sees it) subtends (Van Oosterom and Strackee 1983): positive when the point lies
+/// on the side its normal (b - a) x (c - a) points away from, as points inside a closed mesh
+/// wound outward do.
+double TriangleSolidAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                          const Eigen::Vector3d& c);
+
 }  // namespace mechanist

@@ -15,6 +15,7 @@
 #include "kernel/collision/translational_sweep.h"
 #include "kernel/geometry/exact_predicates.h"
 #include "kernel/mesh/mesh_builder.h"
+#include "kernel/mesh/winding_number.h"
 
 namespace mechanist {
 namespace {
@@ -96,6 +97,58 @@ TEST(CollisionMesh, HoledPlateContainsMaterialButNotTheHole) {
   EXPECT_FALSE(plate->Contains({0, 0, 5})) << "in the hole's mouth, on the top face's plane";
   EXPECT_TRUE(plate->Contains({6, 0, 2.5}));
   EXPECT_TRUE(plate->Contains({-9, 9, 0.1}));
+}
+
+// A solid that is not closed: a finely meshed ball and a holed plate in one mesh, each with a
+// few triangles missing (as in a CAD tessellation with cracks).
+std::shared_ptr<const CollisionMesh> CrackedSolids() {
+  TriangleMesh ball = MakeUvSphere(10, 60, 120);
+  ball.faces.erase(ball.faces.begin() + 3000, ball.faces.begin() + 3003);
+  Region2d r;
+  r.outer = {{-30, -15}, {30, -15}, {30, 15}, {-30, 15}};
+  r.holes.push_back(CircleRing({0, 0}, 6, 64));
+  TriangleMesh plate = ExtrudeRegion(r, 12, 20);
+  plate.faces.pop_back();
+  ball.Append(plate);
+  return std::make_shared<CollisionMesh>(std::make_shared<TriangleMesh>(std::move(ball)));
+}
+
+TEST(CollisionMesh, WindingNumberByTheHierarchyStaysWithinItsBoundAndContainsIsExact) {
+  // Oracle: the exact sum over every triangle (WindingNumber), at points spread over the box
+  // and at points just off the faces (where the inside test of contacts is asked).
+  const auto solids = CrackedSolids();
+  ASSERT_FALSE(solids->closed());
+  ASSERT_TRUE(solids->solid());
+  ASSERT_GT(solids->mesh().faces.size(), 14000u);
+  std::mt19937 random(3);
+  Aabb box = solids->bounds();
+  box.min.array() -= 10;
+  box.max.array() += 10;
+  std::uniform_real_distribution<double> x(box.min.x(), box.max.x()), y(box.min.y(), box.max.y()),
+      z(box.min.z(), box.max.z()), side(-0.05, 0.05);
+  std::uniform_int_distribution<std::int32_t> face(
+      0, static_cast<std::int32_t>(solids->mesh().faces.size()) - 1);
+  int inside = 0, estimated = 0;
+  double worst_bound = 0.0;
+  for (int i = 0; i < 800; ++i) {
+    Eigen::Vector3d p(x(random), y(random), z(random));
+    if (i % 2) {
+      const std::int32_t f = face(random);
+      const auto [a, b, c] = solids->Triangle(f);
+      p = (a + b + c) / 3.0 + side(random) * solids->face_normals()[f];
+    }
+    const double exact = WindingNumber(solids->mesh(), p);
+    const CollisionMesh::WindingEstimate fast = solids->WindingNumberAt(p);
+    EXPECT_LE(std::abs(fast.value - exact), fast.error_bound + 1e-12) << p.transpose();
+    worst_bound = std::max(worst_bound, fast.error_bound);
+    estimated += fast.error_bound > 0.0;
+    EXPECT_EQ(solids->Contains(p), std::abs(exact) >= 0.5) << p.transpose();
+    inside += std::abs(exact) >= 0.5;
+  }
+  EXPECT_GT(estimated, 700);  // the expansions were used
+  EXPECT_LT(worst_bound, 0.1);
+  EXPECT_GT(inside, 200);  // both answers are asked for
+  EXPECT_LT(inside, 600);
 }
 
 TEST(CollisionMeshCache, BuildCachesEachDistinctMeshAndKeepsThoseCachedWhichFindGives) {

@@ -102,7 +102,15 @@ bool TrianglesSurelyApart(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1,
 bool SegmentIntersectsTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& q,
                                const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                                const Eigen::Vector3d& c) {
-  return TrianglesIntersect(p, q, q, a, b, c);
+  // Most segments a sweep asks about end on one side of the triangle's plane: no need for CGAL.
+  if (SurelyOneSide(a, b, c, p, q, q) != 0) return false;
+  const K::Triangle_3 t(P(a), P(b), P(c));
+  // A degenerate triangle is covered by its edges (TrianglesIntersect). Otherwise the segment
+  // goes to CGAL as a segment: passed as the triangle (p, q, q), exactly degenerate, it would
+  // make every call prove that degeneracy in exact arithmetic.
+  if (t.is_degenerate()) return TrianglesIntersect(p, q, q, a, b, c);
+  const K::Segment_3 s(P(p), P(q));
+  return s.is_degenerate() ? t.has_on(s.source()) : CGAL::do_intersect(s, t);
 }
 
 }  // namespace mechanist
