@@ -83,7 +83,7 @@ int SurelyOneSide(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eige
     const Eigen::Vector3d w = *x - a;
     const double d = n.dot(w);
     const double permanent = n_abs.dot(w.cwiseAbs());
-    if (std::abs(d) <= kBound * permanent) return 0;
+    if (!(std::abs(d) > kBound * permanent)) return 0;  // also when d is not a number
     const int s = d > 0 ? 1 : -1;
     if (side != 0 && s != side) return 0;
     side = s;
