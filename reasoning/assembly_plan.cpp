@@ -114,6 +114,16 @@ class Planner {
     return std::nullopt;
   }
 
+  // Whether `p` joins `moving` and `obstacle` through something that is there while they are
+  // placed: not a pin that the file leaves out (PairSource::kImpliedPin), which goes through
+  // the holes once both parts are in place, so that it neither holds a part nor makes room for
+  // it on the way.
+  static bool Engages(const Pair& p, std::size_t moving, std::size_t obstacle) {
+    const bool between = (p.a.part == moving && p.b.part == obstacle) ||
+                         (p.b.part == moving && p.a.part == obstacle);
+    return between && p.source != PairSource::kImpliedPin;
+  }
+
   // Contacts inside the engagement region of a pair between the moving part and the obstacle
   // are the designed engagement: for meshing teeth always (the meshes only approximate the
   // tooth flanks), for axial fits when the motion runs along the pair's axis (a thread
@@ -122,9 +132,7 @@ class Planner {
                                                         const Eigen::Vector3d& d) const {
     std::vector<FeatureRef> regions;
     for (const Pair& p : analysis_.pairs) {
-      const bool between = (p.a.part == moving && p.b.part == obstacle) ||
-                           (p.b.part == moving && p.a.part == obstacle);
-      if (!between) continue;
+      if (!Engages(p, moving, obstacle)) continue;
       const FeatureRef theirs = p.a.part == obstacle ? p.a : p.b;
       if (!IsCoupling(p.type) &&
           std::abs(WorldAxis(theirs).dot(d)) < std::cos(assembly_.tolerance().angle)) {
@@ -149,9 +157,7 @@ class Planner {
   std::optional<FeatureRef> HeldAcross(std::size_t moving, std::size_t obstacle,
                                        const Eigen::Vector3d& d) const {
     for (const Pair& p : analysis_.pairs) {
-      const bool between = (p.a.part == moving && p.b.part == obstacle) ||
-                           (p.b.part == moving && p.a.part == obstacle);
-      if (!between) continue;
+      if (!Engages(p, moving, obstacle)) continue;
       const FeatureKind ka = assembly_.feature(p.a).kind, kb = assembly_.feature(p.b).kind;
       auto axial = [](FeatureKind k) {
         return k == FeatureKind::kShaft || k == FeatureKind::kHole || k == FeatureKind::kThread ||
@@ -367,7 +373,10 @@ class Planner {
   }
 
   // Candidate directions in which `unit` may leave, in order of preference, each with the
-  // feature that suggests it.
+  // feature that suggests it: the axes of its features, the world's axes, then the world's
+  // axes turned square to each axis the unit pivots on (a revolute or cylindrical pair with a
+  // part outside it), as a finger segment leaves its fork across the pin, along the finger,
+  // when the finger stands at an angle to the world's axes.
   std::vector<std::pair<Eigen::Vector3d, std::optional<FeatureRef>>> RemovalDirections(
       const std::vector<std::size_t>& unit) const {
     std::vector<std::pair<Eigen::Vector3d, std::optional<FeatureRef>>> dirs;
@@ -389,6 +398,19 @@ class Planner {
     for (int k = 0; k < 3; ++k) {
       add(Eigen::Vector3d::Unit(k), std::nullopt);
       add(-Eigen::Vector3d::Unit(k), std::nullopt);
+    }
+    for (const Pair& pair : analysis_.pairs) {
+      if (pair.type != PairType::kRevolute && pair.type != PairType::kCylindrical) continue;
+      const bool a_in = std::find(unit.begin(), unit.end(), pair.a.part) != unit.end();
+      const bool b_in = std::find(unit.begin(), unit.end(), pair.b.part) != unit.end();
+      if (a_in == b_in) continue;
+      const Eigen::Vector3d axis = WorldAxis(a_in ? pair.a : pair.b);
+      for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector3d across = Eigen::Vector3d::Unit(k) - axis(k) * axis;
+        if (across.norm() < std::sin(assembly_.tolerance().angle)) continue;  // along the axis
+        add(across.normalized(), std::nullopt);
+        add(-across.normalized(), std::nullopt);
+      }
     }
     return dirs;
   }

@@ -1,7 +1,8 @@
 // Assembly sequences on blocks of unit cubes: a found sequence re-checked insertion by
 // insertion with the kernel's sweep (an oracle independent of the planner's search), the
-// order of the disassembly against an oracle for cubes on a grid, and a part walled in by
-// ground parts reported as unplaced with its blockers.
+// order of the disassembly against an oracle for cubes on a grid, a part walled in by
+// ground parts reported as unplaced with its blockers, and a lever in a fork whose pin the
+// file leaves out, which goes in across the pin's axis.
 #include "reasoning/assembly_plan.h"
 
 #include <gtest/gtest.h>
@@ -195,6 +196,94 @@ TEST(AssemblyPlan, BestAttemptGoesWhereTheGapIsWidest) {
   ASSERT_EQ(u.blocked_by.size(), 1u);
   EXPECT_EQ(a.part(u.blocked_by[0].part).id, "z4.5");
   EXPECT_NEAR(u.blocked_by[0].short_by, 4.5, 1e-9);
+}
+
+// A box mesh per corner pair, all in one mesh (closed shells side by side).
+std::shared_ptr<const TriangleMesh> Boxes(
+    const std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>>& boxes) {
+  auto mesh = std::make_shared<TriangleMesh>();
+  for (const auto& [lo, hi] : boxes) {
+    const auto first = static_cast<std::int32_t>(mesh->vertices.size());
+    for (const Eigen::Vector3d& v : testing::UnitCube()->vertices) {
+      mesh->vertices.push_back(lo + v.cwiseProduct(hi - lo));
+    }
+    for (const auto& f : testing::UnitCube()->faces) {
+      mesh->faces.push_back({first + f[0], first + f[1], first + f[2]});
+    }
+  }
+  return mesh;
+}
+
+// A hinge whose pin the file leaves out (the Onshape robot hand's finger joints), at X_WF: a
+// lever's 10 mm knuckle between the two cheeks of a ground fork that also closes it behind
+// (-x) and, when `closed_sides`, on +-y; the knuckle's bore and the cheeks' holes coaxial on z.
+std::vector<Part> Hinge(const RigidTransform& X_WF, bool closed_sides) {
+  using V = Eigen::Vector3d;
+  const auto hole = [](const char* id, double d, double z0, double z1) {
+    return testing::MakeFeature(id, FeatureKind::kHole, V(5, 5, z0), V::UnitZ(), [&](Feature& f) {
+      f.diameter = d, f.length = z1 - z0, f.through = true;
+    });
+  };
+  Part fork =
+      MakePart("fork", {hole("cheek_a", 3.45, -5, 0), hole("cheek_b", 3.45, 10, 15)}, X_WF, true);
+  std::vector<std::pair<V, V>> walls = {
+      {V(0, 0, -5), V(10, 10, 0)}, {V(0, 0, 10), V(10, 10, 15)}, {V(-5, -5, -5), V(0, 15, 15)}};
+  if (closed_sides) {
+    walls.push_back({V(0, -5, -5), V(20, 0, 15)});
+    walls.push_back({V(0, 10, -5), V(20, 15, 15)});
+  }
+  fork.mesh = Boxes(walls);
+  Part lever = MakePart("lever", {hole("knuckle", 3.2, 0, 10)}, X_WF);
+  lever.mesh = Boxes({{V(0, 0, 0), V(10, 10, 10)}});
+  return {fork, lever};
+}
+
+// The pin goes in once both parts are in place, so it does not hold the lever while it is
+// placed: the lever goes in across the axis, from +x, the first way out that is clear (along
+// the axis the cheeks stop it at once). A pin that is modelled does hold it: then the lever
+// cannot leave but along the pin's axis, where the cheeks stop it.
+TEST(AssemblyPlan, AnImpliedPinGoesInAfterThePartsItJoins) {
+  const Assembly hinge = MakeAssembly(Hinge(RigidTransform(), false));
+  const Analysis an = Analyze(hinge);
+  ASSERT_FALSE(an.pairs.empty());
+  for (const Pair& p : an.pairs) ASSERT_EQ(p.source, PairSource::kImpliedPin);
+  const AssemblyPlan plan = PlanAssembly(hinge, an, CollisionModel(hinge));
+  EXPECT_TRUE(plan.assemblable);
+  ASSERT_EQ(plan.steps.size(), 1u);
+  EXPECT_EQ(hinge.part(plan.steps[0].part).id, "lever");
+  EXPECT_TRUE(plan.steps[0].clear);
+  EXPECT_EQ(plan.steps[0].direction_W, Eigen::Vector3d(-1, 0, 0));
+
+  std::vector<Part> parts = Hinge(RigidTransform(), false);
+  const Feature shaft = testing::MakeFeature("shaft", FeatureKind::kShaft,
+                                             Eigen::Vector3d(5, 5, -5), Eigen::Vector3d::UnitZ(),
+                                             [](Feature& f) { f.diameter = 3.2, f.length = 20; });
+  Part pin = MakePart("pin", {shaft}, RigidTransform(), true);
+  pin.mesh = Boxes({{Eigen::Vector3d(4, 4, -5), Eigen::Vector3d(6, 6, 15)}});
+  parts.push_back(pin);
+  const Assembly pinned = MakeAssembly(parts);
+  const Analysis pinned_an = Analyze(pinned);
+  for (const Pair& p : pinned_an.pairs) EXPECT_NE(p.source, PairSource::kImpliedPin);
+  const AssemblyPlan held = PlanAssembly(pinned, pinned_an, CollisionModel(pinned));
+  EXPECT_FALSE(held.assemblable);
+  ASSERT_EQ(held.unplaced.size(), 1u);
+  EXPECT_EQ(pinned.part(held.unplaced[0].part).id, "lever");
+}
+
+// The hinge closed on +-y too and tilted 20 degrees about y: its only way out, across the
+// pin, along the lever, is none of the world's axes (each runs into a cheek or a wall) but the
+// world's x turned square to the pin's axis.
+TEST(AssemblyPlan, APartOnAPivotLeavesAcrossItsAxis) {
+  const RigidTransform X_WF =
+      RigidTransform::AxisAngle(Eigen::Vector3d::UnitY(), 20 * std::acos(-1.0) / 180);
+  const Assembly hinge = MakeAssembly(Hinge(X_WF, true));
+  const AssemblyPlan plan = PlanAssembly(hinge, Analyze(hinge), CollisionModel(hinge));
+  EXPECT_TRUE(plan.assemblable);
+  ASSERT_EQ(plan.steps.size(), 1u);
+  EXPECT_TRUE(plan.steps[0].clear);
+  EXPECT_TRUE(
+      plan.steps[0].direction_W.isApprox(-X_WF.RotateDirection(Eigen::Vector3d::UnitX()), 1e-12))
+      << plan.steps[0].direction_W.transpose();
 }
 
 TEST(AssemblyPlan, OverlappingCubesAreAClash) {
