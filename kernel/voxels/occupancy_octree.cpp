@@ -7,11 +7,13 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "kernel/collision/collision_mesh.h"
 #include "kernel/mesh/mesh_check.h"
 #include "kernel/mesh/winding_number.h"
 #include "kernel/voxels/triangle_box_overlap.h"
@@ -596,6 +598,7 @@ class OctreeBuilder {
     }
     tree_.voxel_ = voxel;
     GatherTriangles();
+    PrepareInsideTests();
     Aabb bounds;
     for (const auto& v : vertices_) bounds.Extend(v);
     if (bounds.empty()) bounds.Extend(Eigen::Vector3d::Zero());
@@ -649,6 +652,46 @@ class OctreeBuilder {
         triangle_mesh_.push_back(static_cast<std::int32_t>(m));
       }
     }
+  }
+
+  // Whether each mesh is closed and consistently oriented (closed_), and, for one that is not
+  // but bounds a solid (CollisionMesh::solid: cracks, T-junctions; most STEP tessellations), the
+  // collision hierarchy that sums its winding number quickly (winding_tree_), once per mesh
+  // however many parts share it.
+  void PrepareInsideTests() {
+    closed_.assign(meshes_.size(), false);
+    winding_tree_.assign(meshes_.size(), nullptr);
+    std::map<const TriangleMesh*, std::size_t> first_of;  // parts often share one mesh
+    for (std::size_t m = 0; m < meshes_.size(); ++m) {
+      const TriangleMesh* mesh = meshes_[m].mesh;
+      if (mesh == nullptr) continue;
+      const auto [it, added] = first_of.try_emplace(mesh, m);
+      if (!added) {
+        closed_[m] = closed_[it->second];
+        winding_tree_[m] = winding_tree_[it->second];
+        continue;
+      }
+      const MeshCheck check = CheckMesh(*mesh);
+      closed_[m] = check.closed() && check.consistently_oriented();
+      if (closed_[m] || mesh->faces.empty()) continue;
+      // Not owning (the aliasing constructor with no owner): the posed meshes outlive the
+      // builder.
+      const std::shared_ptr<const TriangleMesh> unowned(std::shared_ptr<const TriangleMesh>(),
+                                                        mesh);
+      auto tree = std::make_unique<CollisionMesh>(unowned);
+      if (!tree->solid()) continue;
+      winding_tree_[m] = tree.get();
+      winding_trees_.push_back(std::move(tree));
+    }
+  }
+
+  // Whether the generalized winding number of mesh `m` at p_M (its own frame) is at least 1/2
+  // in magnitude: summed over its collision hierarchy where it has one (CollisionMesh::Contains,
+  // the same answer: the exact sum decides wherever the hierarchy's error bound could change
+  // it), else exactly (WindingNumber).
+  bool WindsAround(std::size_t m, const Eigen::Vector3d& p_M) const {
+    if (winding_tree_[m] != nullptr) return winding_tree_[m]->Contains(p_M);
+    return std::abs(WindingNumber(*meshes_[m].mesh, p_M)) >= 0.5;
   }
 
   // Fills the subtree of `cell`, whose box the triangles `tris` touch.
@@ -791,7 +834,7 @@ class OctreeBuilder {
     for (std::size_t m = 0; m < meshes_.size(); ++m) {
       if (meshes_[m].mesh == nullptr || !mesh_box_W_[m].Intersects(Aabb{p_W, p_W})) continue;
       const Eigen::Vector3d p_M = meshes_[m].X_WM.inverse() * p_W;
-      if (std::abs(WindingNumber(*meshes_[m].mesh, p_M)) >= 0.5) {
+      if (WindsAround(m, p_M)) {
         return static_cast<std::int32_t>(m);
       }
     }
@@ -806,17 +849,11 @@ class OctreeBuilder {
     auto& nodes = tree_.nodes_;
     mesh_box_W_.resize(meshes_.size());
     std::vector<Aabb> open_box_W;
-    std::map<const TriangleMesh*, bool> closed;  // parts often share one mesh
     for (std::size_t m = 0; m < meshes_.size(); ++m) {
       const TriangleMesh* mesh = meshes_[m].mesh;
       if (mesh == nullptr) continue;
       mesh_box_W_[m] = TransformBox(meshes_[m].X_WM, mesh->Bounds());
-      auto [it, inserted] = closed.try_emplace(mesh, false);
-      if (inserted) {
-        const MeshCheck check = CheckMesh(*mesh);
-        it->second = check.closed() && check.consistently_oriented();
-      }
-      if (!it->second) open_box_W.push_back(mesh_box_W_[m]);
+      if (!closed_[m]) open_box_W.push_back(mesh_box_W_[m]);
     }
     const auto untouched = [&](std::int32_t node) {
       return OccupancyOctree::IsLeaf(nodes[node]) &&
@@ -1008,7 +1045,7 @@ class OctreeBuilder {
       if (!inside) {
         const Eigen::Vector3d center_M =
             meshes_[mesh].X_WM.inverse() * (lo + Eigen::Vector3d::Constant(h / 2));
-        inside = std::abs(WindingNumber(*meshes_[mesh].mesh, center_M)) >= 0.5;
+        inside = WindsAround(mesh, center_M);
       }
       if (*inside) return true;
     }
@@ -1132,6 +1169,9 @@ class OctreeBuilder {
   std::vector<std::array<std::int32_t, 3>> triangles_;
   std::vector<std::int32_t> triangle_mesh_;
   std::vector<Aabb> mesh_box_W_;
+  std::vector<bool> closed_;                                   // per mesh (PrepareInsideTests)
+  std::vector<const CollisionMesh*> winding_tree_;             // per mesh, or null
+  std::vector<std::unique_ptr<CollisionMesh>> winding_trees_;  // owns those
   std::vector<Triangle> voxel_tris_;    // the triangles of the voxel being split, reused
   std::vector<std::int32_t> touching_;  // the meshes touching that voxel, reused
   std::vector<std::int32_t> reaching_;  // those reaching inside it, reused

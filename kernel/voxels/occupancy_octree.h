@@ -50,7 +50,9 @@ enum class CellState : std::uint8_t {
 /// boundary or misoriented edges) may let its inside and outside join through an opening wider
 /// than a voxel, so inside its bounding box every untouched cell is decided by the winding number
 /// at its own centre (near 1 inside a part with a hole) and only cells of equal state are joined;
-/// components of equal state that touch are merged afterwards.
+/// components of equal state that touch are merged afterwards. Such a mesh's winding number is
+/// summed over its collision hierarchy when it bounds a solid (CollisionMesh::Contains: the
+/// exact sum's answer), else exactly.
 ///
 /// Free octants. A partial voxel's octants (half-size cubes) that no surface enters and that
 /// lie outside the parts are free (free_octants()); they join each other and the empty
