@@ -373,10 +373,11 @@ class Planner {
   }
 
   // Candidate directions in which `unit` may leave, in order of preference, each with the
-  // feature that suggests it: the axes of its features, the world's axes, then the world's
-  // axes turned square to each axis the unit pivots on (a revolute or cylindrical pair with a
-  // part outside it), as a finger segment leaves its fork across the pin, along the finger,
-  // when the finger stands at an angle to the world's axes.
+  // feature that suggests it: the axes of its features, the world's axes, then for each axis
+  // the unit pivots on (a revolute or cylindrical pair with a part outside it) the way from the
+  // axis to the centre of the unit's box, square to the axis, and the world's axes turned
+  // square to it, both senses: a finger segment leaves its fork across the pin, along the
+  // finger, whichever way the finger stands.
   std::vector<std::pair<Eigen::Vector3d, std::optional<FeatureRef>>> RemovalDirections(
       const std::vector<std::size_t>& unit) const {
     std::vector<std::pair<Eigen::Vector3d, std::optional<FeatureRef>>> dirs;
@@ -404,7 +405,17 @@ class Planner {
       const bool a_in = std::find(unit.begin(), unit.end(), pair.a.part) != unit.end();
       const bool b_in = std::find(unit.begin(), unit.end(), pair.b.part) != unit.end();
       if (a_in == b_in) continue;
-      const Eigen::Vector3d axis = WorldAxis(a_in ? pair.a : pair.b);
+      const FeatureRef pivot = a_in ? pair.a : pair.b;
+      const Eigen::Vector3d axis = WorldAxis(pivot);
+      Aabb box;
+      for (const std::size_t p : unit) box.Extend(boxes_[p]);
+      const Eigen::Vector3d out =
+          box.center() - state_.X_WP[pivot.part] * assembly_.feature(pivot).origin;
+      const Eigen::Vector3d away = out - out.dot(axis) * axis;
+      if (away.norm() > tolerance_) {
+        add(away.normalized(), std::nullopt);
+        add(-away.normalized(), std::nullopt);
+      }
       for (int k = 0; k < 3; ++k) {
         const Eigen::Vector3d across = Eigen::Vector3d::Unit(k) - axis(k) * axis;
         if (across.norm() < std::sin(assembly_.tolerance().angle)) continue;  // along the axis

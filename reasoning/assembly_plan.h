@@ -65,15 +65,16 @@ struct AssemblyPlan {
 /// obstacle (a thread entering its nut) and contacts within the length tolerance of the final
 /// pose (the seat) do not block; nor do contacts that approach slower than the sine of the
 /// angular tolerance (sliding). An axial fit holds the part against travel across its axis,
-/// unless it is an implied pin (PairSource::kImpliedPin): the pin the file leaves out goes in
-/// after both parts.
+/// unless it is an implied pin or a fixed pair of implied pins (PairSource::kImpliedPin): the
+/// pins the file leaves out go in after both parts.
 ///
 /// Search: ground parts (or, without any, the part with the largest box) form the base; the
 /// other parts are removed one at a time, in passes over the parts in the order of the file
-/// until a pass removes none, each along the first of its feature axes (the sense that
-/// withdraws a convex feature first), the world's principal directions, or those directions
-/// turned square to an axis it pivots on (a revolute or cylindrical pair with a part outside
-/// it) that is clear; the sequence is the reverse. Parts that cannot leave are `unplaced`, each with its best
+/// until a pass removes none, each along the first clear direction among its feature axes (the
+/// sense that withdraws a convex feature first), the world's principal directions, and, for
+/// each axis it pivots on (a revolute or cylindrical pair with a part outside it), the way from
+/// the axis to the middle of its box and the principal directions, each turned square to the
+/// axis; the sequence is the reverse. Parts that cannot leave are `unplaced`, each with its best
 /// attempt: the direction in which it gets furthest (the first of those that get equally far),
 /// with every part on its way. The search runs on all cores and gives the one-at-a-time
 /// search's answer whatever the threads' timing.

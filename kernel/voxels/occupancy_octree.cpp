@@ -686,9 +686,13 @@ class OctreeBuilder {
   }
 
   // Whether the generalized winding number of mesh `m` at p_M (its own frame) is at least 1/2
-  // in magnitude: summed over its collision hierarchy where it has one (CollisionMesh::Contains,
-  // the same answer: the exact sum decides wherever the hierarchy's error bound could change
-  // it), else exactly (WindingNumber).
+  // in magnitude: by CollisionMesh::Contains where the mesh has a hierarchy, else exactly
+  // (WindingNumber). Contains gives the exact sum's answer at the points asked here, which lie
+  // off the surface: the hierarchy's sum with the exact sum wherever its error bound could
+  // change the answer, or, for a mesh that is closed once coincident vertices are merged (a
+  // soup), exact ray crossings, the winding number being an integer off its surface. (Outside
+  // the mesh's own box it says outside: the exact sum there stays below 1/2 unless openings in
+  // stacked layers of surface line up.)
   bool WindsAround(std::size_t m, const Eigen::Vector3d& p_M) const {
     if (winding_tree_[m] != nullptr) return winding_tree_[m]->Contains(p_M);
     return std::abs(WindingNumber(*meshes_[m].mesh, p_M)) >= 0.5;

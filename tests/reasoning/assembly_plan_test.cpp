@@ -2,7 +2,8 @@
 // insertion with the kernel's sweep (an oracle independent of the planner's search), the
 // order of the disassembly against an oracle for cubes on a grid, a part walled in by
 // ground parts reported as unplaced with its blockers, and a lever in a fork whose pin the
-// file leaves out, which goes in across the pin's axis.
+// file leaves out, which goes in across the pin's axis, also when the fork stands at an angle
+// to the world's axes.
 #include "reasoning/assembly_plan.h"
 
 #include <gtest/gtest.h>
@@ -215,9 +216,10 @@ std::shared_ptr<const TriangleMesh> Boxes(
 }
 
 // A hinge whose pin the file leaves out (the Onshape robot hand's finger joints), at X_WF: a
-// lever's 10 mm knuckle between the two cheeks of a ground fork that also closes it behind
-// (-x) and, when `closed_sides`, on +-y; the knuckle's bore and the cheeks' holes coaxial on z.
-std::vector<Part> Hinge(const RigidTransform& X_WF, bool closed_sides) {
+// lever whose 10 mm knuckle sits between the two cheeks of a ground fork, reaching `length`
+// along +x out of it, the fork also closed behind (-x) and, when `closed_sides`, on +-y; the
+// knuckle's bore and the cheeks' holes coaxial on z.
+std::vector<Part> Hinge(const RigidTransform& X_WF, bool closed_sides, double length = 10) {
   using V = Eigen::Vector3d;
   const auto hole = [](const char* id, double d, double z0, double z1) {
     return testing::MakeFeature(id, FeatureKind::kHole, V(5, 5, z0), V::UnitZ(), [&](Feature& f) {
@@ -234,14 +236,15 @@ std::vector<Part> Hinge(const RigidTransform& X_WF, bool closed_sides) {
   }
   fork.mesh = Boxes(walls);
   Part lever = MakePart("lever", {hole("knuckle", 3.2, 0, 10)}, X_WF);
-  lever.mesh = Boxes({{V(0, 0, 0), V(10, 10, 10)}});
+  lever.mesh = Boxes({{V(0, 0, 0), V(length, 10, 10)}});
   return {fork, lever};
 }
 
 // The pin goes in once both parts are in place, so it does not hold the lever while it is
 // placed: the lever goes in across the axis, from +x, the first way out that is clear (along
-// the axis the cheeks stop it at once). A pin that is modelled does hold it: then the lever
-// cannot leave but along the pin's axis, where the cheeks stop it.
+// the axis the cheeks stop it at once). A pin that is modelled does hold it (HeldAcross; its
+// mesh is only its ends in the cheeks, out of the lever's way): then the lever cannot leave
+// but along the pin's axis, where the cheeks stop it.
 TEST(AssemblyPlan, AnImpliedPinGoesInAfterThePartsItJoins) {
   const Assembly hinge = MakeAssembly(Hinge(RigidTransform(), false));
   const Analysis an = Analyze(hinge);
@@ -259,31 +262,43 @@ TEST(AssemblyPlan, AnImpliedPinGoesInAfterThePartsItJoins) {
                                              Eigen::Vector3d(5, 5, -5), Eigen::Vector3d::UnitZ(),
                                              [](Feature& f) { f.diameter = 3.2, f.length = 20; });
   Part pin = MakePart("pin", {shaft}, RigidTransform(), true);
-  pin.mesh = Boxes({{Eigen::Vector3d(4, 4, -5), Eigen::Vector3d(6, 6, 15)}});
+  pin.mesh = Boxes({{Eigen::Vector3d(4, 4, -5), Eigen::Vector3d(6, 6, 0)},
+                    {Eigen::Vector3d(4, 4, 10), Eigen::Vector3d(6, 6, 15)}});
   parts.push_back(pin);
   const Assembly pinned = MakeAssembly(parts);
   const Analysis pinned_an = Analyze(pinned);
-  for (const Pair& p : pinned_an.pairs) EXPECT_NE(p.source, PairSource::kImpliedPin);
+  bool lever_on_pin = false;
+  for (const Pair& p : pinned_an.pairs) {
+    EXPECT_NE(p.source, PairSource::kImpliedPin);
+    lever_on_pin =
+        lever_on_pin || (pinned.part(p.a.part).id == "pin" && pinned.part(p.b.part).id == "lever");
+  }
+  EXPECT_TRUE(lever_on_pin);
   const AssemblyPlan held = PlanAssembly(pinned, pinned_an, CollisionModel(pinned));
   EXPECT_FALSE(held.assemblable);
   ASSERT_EQ(held.unplaced.size(), 1u);
   EXPECT_EQ(pinned.part(held.unplaced[0].part).id, "lever");
 }
 
-// The hinge closed on +-y too and tilted 20 degrees about y: its only way out, across the
-// pin, along the lever, is none of the world's axes (each runs into a cheek or a wall) but the
-// world's x turned square to the pin's axis.
+// The hinge closed on +-y too, so that its only way out is across the pin, along the lever
+// (x in the fork's frame). Turned 30 degrees about the pin (z), no world axis is that way, nor
+// any world axis turned square to the pin: the way from the pin to the lever's middle is.
+// Tilted 20 degrees about y with the lever's middle on the pin, the world's x turned square to
+// the pin is.
 TEST(AssemblyPlan, APartOnAPivotLeavesAcrossItsAxis) {
-  const RigidTransform X_WF =
-      RigidTransform::AxisAngle(Eigen::Vector3d::UnitY(), 20 * std::acos(-1.0) / 180);
-  const Assembly hinge = MakeAssembly(Hinge(X_WF, true));
-  const AssemblyPlan plan = PlanAssembly(hinge, Analyze(hinge), CollisionModel(hinge));
-  EXPECT_TRUE(plan.assemblable);
-  ASSERT_EQ(plan.steps.size(), 1u);
-  EXPECT_TRUE(plan.steps[0].clear);
-  EXPECT_TRUE(
-      plan.steps[0].direction_W.isApprox(-X_WF.RotateDirection(Eigen::Vector3d::UnitX()), 1e-12))
-      << plan.steps[0].direction_W.transpose();
+  const double degree = std::acos(-1.0) / 180;
+  for (const auto& [X_WF, length] :
+       {std::pair{RigidTransform::AxisAngle(Eigen::Vector3d::UnitZ(), 30 * degree), 20.0},
+        std::pair{RigidTransform::AxisAngle(Eigen::Vector3d::UnitY(), 20 * degree), 10.0}}) {
+    const Assembly hinge = MakeAssembly(Hinge(X_WF, true, length));
+    const AssemblyPlan plan = PlanAssembly(hinge, Analyze(hinge), CollisionModel(hinge));
+    EXPECT_TRUE(plan.assemblable);
+    ASSERT_EQ(plan.steps.size(), 1u);
+    EXPECT_TRUE(plan.steps[0].clear);
+    EXPECT_TRUE(
+        plan.steps[0].direction_W.isApprox(-X_WF.RotateDirection(Eigen::Vector3d::UnitX()), 1e-12))
+        << plan.steps[0].direction_W.transpose();
+  }
 }
 
 TEST(AssemblyPlan, OverlappingCubesAreAClash) {
