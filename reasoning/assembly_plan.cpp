@@ -400,6 +400,8 @@ class Planner {
       add(Eigen::Vector3d::Unit(k), std::nullopt);
       add(-Eigen::Vector3d::Unit(k), std::nullopt);
     }
+    Aabb box;
+    for (const std::size_t p : unit) box.Extend(boxes_[p]);
     for (const Pair& pair : analysis_.pairs) {
       if (pair.type != PairType::kRevolute && pair.type != PairType::kCylindrical) continue;
       const bool a_in = std::find(unit.begin(), unit.end(), pair.a.part) != unit.end();
@@ -407,8 +409,6 @@ class Planner {
       if (a_in == b_in) continue;
       const FeatureRef pivot = a_in ? pair.a : pair.b;
       const Eigen::Vector3d axis = WorldAxis(pivot);
-      Aabb box;
-      for (const std::size_t p : unit) box.Extend(boxes_[p]);
       const Eigen::Vector3d out =
           box.center() - state_.X_WP[pivot.part] * assembly_.feature(pivot).origin;
       const Eigen::Vector3d away = out - out.dot(axis) * axis;
