@@ -7,6 +7,7 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 
 #include "kernel/assembly/assembly_check.h"
 #include "kernel/support/number_format.h"
@@ -82,6 +83,66 @@ std::string ContactText(const Assembly& assembly, const Analysis& analysis, cons
   return s;
 }
 
+Json BlockedJson(const Assembly& assembly, const std::vector<InsertionObstacle>& blocked_by) {
+  Json blocked = Json::array();
+  for (const InsertionObstacle& o : blocked_by) {
+    blocked.push_back({{"part", assembly.part(o.part).id},
+                       {"travel", Num(o.travel)},
+                       {"short_by", Num(o.short_by)},
+                       {"location", Point(o.p_W)}});
+  }
+  return blocked;
+}
+
+std::string BlockedText(const Assembly& assembly, bool clear,
+                        const std::vector<InsertionObstacle>& blocked_by) {
+  if (clear) return "clear";
+  std::string t = "blocked by ";
+  auto out = std::back_inserter(t);
+  for (std::size_t k = 0; k < blocked_by.size(); ++k) {
+    const InsertionObstacle& o = blocked_by[k];
+    fmt::format_to(out, "{}{} after {} mm ({} mm short of its place) at {}", k ? "; " : "",
+                   assembly.part(o.part).id, FormatNumber(o.travel), FormatNumber(o.short_by),
+                   Text(o.p_W));
+  }
+  return t;
+}
+
+Json PinsJson(const Assembly& assembly, const std::vector<PinInsertion>& pins) {
+  Json list = Json::array();
+  for (const PinInsertion& p : pins) {
+    Json holes = Json::array();
+    for (const FeatureRef& h : p.holes) holes.push_back(assembly.FeatureName(h));
+    list.push_back({{"holes", holes},
+                    {"diameter", Num(p.diameter)},
+                    {"ends", Json::array({Point(p.ends_W[0]), Point(p.ends_W[1])})},
+                    {"direction", Point(p.direction_W)},
+                    {"travel", Num(p.travel)},
+                    {"clear", p.clear},
+                    {"blocked_by", BlockedJson(assembly, p.blocked_by)}});
+  }
+  return list;
+}
+
+// "then the pin the file leaves out, 3.2 mm, through A/hole_1, B/hole_1 along (0, 0, 1),
+// 12 mm: clear", one line per pin, each indented by `indent`.
+std::string PinsText(const Assembly& assembly, const std::vector<PinInsertion>& pins,
+                     std::string_view indent) {
+  std::string t;
+  auto out = std::back_inserter(t);
+  for (const PinInsertion& p : pins) {
+    std::string holes;
+    for (const FeatureRef& h : p.holes) {
+      holes += (holes.empty() ? "" : ", ") + assembly.FeatureName(h);
+    }
+    fmt::format_to(out,
+                   "{}then the pin the file leaves out, {} mm, through {} along {}, {} mm: {}\n",
+                   indent, FormatNumber(p.diameter), holes, Text(p.direction_W),
+                   FormatNumber(p.travel), BlockedText(assembly, p.clear, p.blocked_by));
+  }
+  return t;
+}
+
 Json StepJson(const Assembly& assembly, const Analysis& analysis, const InsertionStep& s) {
   Json j;
   j["part"] = assembly.part(s.part).id;
@@ -93,15 +154,9 @@ Json StepJson(const Assembly& assembly, const Analysis& analysis, const Insertio
   j["direction"] = Point(s.direction_W);
   j["travel"] = Num(s.travel);
   j["clear"] = s.clear;
-  Json blocked = Json::array();
-  for (const InsertionObstacle& o : s.blocked_by) {
-    blocked.push_back({{"part", assembly.part(o.part).id},
-                       {"travel", Num(o.travel)},
-                       {"short_by", Num(o.short_by)},
-                       {"location", Point(o.p_W)}});
-  }
-  j["blocked_by"] = blocked;
+  j["blocked_by"] = BlockedJson(assembly, s.blocked_by);
   j["pair"] = s.pair ? Json(PairText(assembly, analysis, *s.pair)) : Json(nullptr);
+  j["pins"] = PinsJson(assembly, s.pins);
   return j;
 }
 
@@ -111,18 +166,8 @@ std::string StepText(const Assembly& assembly, const Analysis& analysis, const I
   for (const std::size_t c : s.carried) fmt::format_to(out, " + {}", assembly.part(c).id);
   if (s.feature) fmt::format_to(out, " ({})", assembly.FeatureName(*s.feature));
   if (s.into) fmt::format_to(out, " into {}", assembly.FeatureName(*s.into));
-  fmt::format_to(out, " along {}, {} mm: ", Text(s.direction_W), FormatNumber(s.travel));
-  if (s.clear) {
-    t += "clear";
-  } else {
-    t += "blocked by ";
-    for (std::size_t k = 0; k < s.blocked_by.size(); ++k) {
-      const InsertionObstacle& o = s.blocked_by[k];
-      fmt::format_to(out, "{}{} after {} mm ({} mm short of its place) at {}", k ? "; " : "",
-                     assembly.part(o.part).id, FormatNumber(o.travel), FormatNumber(o.short_by),
-                     Text(o.p_W));
-    }
-  }
+  fmt::format_to(out, " along {}, {} mm: {}", Text(s.direction_W), FormatNumber(s.travel),
+                 BlockedText(assembly, s.clear, s.blocked_by));
   if (s.pair) fmt::format_to(out, "; makes {}", PairText(assembly, analysis, *s.pair));
   return t;
 }
@@ -287,12 +332,14 @@ void WriteAssemblySummary(const Assembly& assembly, const Analysis& analysis,
   WriteSkippedParts(assembly, out);
   out << "in place first:";
   for (const std::size_t p : plan.base) out << " " << assembly.part(p).id;
-  out << "\n";
+  out << "\n" << PinsText(assembly, plan.base_pins, "  ");
   for (std::size_t k = 0; k < plan.steps.size(); ++k) {
-    out << "  " << k + 1 << ". " << StepText(assembly, analysis, plan.steps[k]) << "\n";
+    out << "  " << k + 1 << ". " << StepText(assembly, analysis, plan.steps[k]) << "\n"
+        << PinsText(assembly, plan.steps[k].pins, "     ");
   }
   for (const InsertionStep& s : plan.unplaced) {
-    out << "  cannot be placed: " << StepText(assembly, analysis, s) << "\n";
+    out << "  cannot be placed: " << StepText(assembly, analysis, s) << "\n"
+        << PinsText(assembly, s.pins, "     ");
   }
   for (const PartContact& c : plan.clashes) {
     out << "  clash: " << ContactText(assembly, analysis, c) << "\n";
@@ -309,6 +356,7 @@ std::string AssemblyPlanJson(const Assembly& assembly, const Analysis& analysis,
   Json base = Json::array();
   for (const std::size_t p : plan.base) base.push_back(assembly.part(p).id);
   report["base"] = base;
+  report["base_pins"] = PinsJson(assembly, plan.base_pins);
   Json steps = Json::array(), unplaced = Json::array(), clashes = Json::array();
   for (const InsertionStep& s : plan.steps) steps.push_back(StepJson(assembly, analysis, s));
   for (const InsertionStep& s : plan.unplaced) unplaced.push_back(StepJson(assembly, analysis, s));

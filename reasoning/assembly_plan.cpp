@@ -4,11 +4,14 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <numeric>
 
 #include "kernel/assembly/assembly_state.h"
+#include "kernel/collision/collision_mesh.h"
 #include "kernel/collision/translational_sweep.h"
+#include "kernel/mesh/mesh_builder.h"
 #include "kernel/support/parallel_for.h"
 
 namespace mechanist {
@@ -59,6 +62,7 @@ class Planner {
     for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
       boxes_.push_back(TransformBox(state_.X_WP[p], model.part_mesh(p).bounds()));
     }
+    pins_ = ImpliedPins();
   }
 
   AssemblyPlan Plan() {
@@ -74,13 +78,207 @@ class Planner {
       CheckSteps(&plan);
     }
     Report(1);
-    bool all_clear = plan.unplaced.empty();
-    for (const InsertionStep& s : plan.steps) all_clear = all_clear && s.clear;
+    const auto pins_clear = [](const std::vector<PinInsertion>& pins) {
+      return std::all_of(pins.begin(), pins.end(), [](const PinInsertion& p) { return p.clear; });
+    };
+    bool all_clear = plan.unplaced.empty() && pins_clear(plan.base_pins);
+    for (const InsertionStep& s : plan.steps) {
+      all_clear = all_clear && s.clear && pins_clear(s.pins);
+    }
     plan.assemblable = all_clear && plan.clashes.empty();
     return plan;
   }
 
  private:
+  // A hinge pin that the file leaves out, at its place: a cylinder of its smallest hole's
+  // diameter over the length of all its holes, in a frame (X_WPin) whose z is the first hole's
+  // axis.
+  struct Pin {
+    std::vector<FeatureRef> holes;   // in the order of their names
+    std::vector<std::size_t> parts;  // its holes' parts, sorted
+    double diameter = 0.0;
+    std::array<Eigen::Vector3d, 2> ends_W;
+    RigidTransform X_WPin;
+    std::shared_ptr<const CollisionMesh> mesh;
+    Aabb box;  // in the world, at its place
+  };
+
+  // Whether holes `x` and `y` lie on one line (within the angle and length tolerances).
+  bool OnOneLine(FeatureRef x, FeatureRef y) const {
+    const Eigen::Vector3d u = WorldAxis(x), v = WorldAxis(y);
+    const Eigen::Vector3d d = state_.X_WP[y.part] * assembly_.feature(y).origin -
+                              state_.X_WP[x.part] * assembly_.feature(x).origin;
+    return std::abs(u.dot(v)) >= std::cos(assembly_.tolerance().angle) &&
+           (d - d.dot(u) * u).norm() <= tolerance_;
+  }
+
+  // The hinge pins that the file leaves out: the holes of the revolute implied-pin pairs
+  // (PairSource::kImpliedPin), joined where they share a hole or where two holes of one part lie
+  // on one line (the ears of a clevis on one rod), in the order of their first holes' names.
+  std::vector<Pin> ImpliedPins() const {
+    std::vector<std::vector<FeatureRef>> groups;
+    for (const Pair& p : analysis_.pairs) {
+      if (p.source == PairSource::kImpliedPin && p.type == PairType::kRevolute) {
+        groups.push_back({p.a, p.b});
+      }
+    }
+    const auto joined = [&](const std::vector<FeatureRef>& g, const std::vector<FeatureRef>& h) {
+      for (const FeatureRef x : g) {
+        for (const FeatureRef y : h) {
+          if (x == y || (x.part == y.part && OnOneLine(x, y))) return true;
+        }
+      }
+      return false;
+    };
+    for (std::size_t i = 0; i < groups.size(); ++i) {
+      for (std::size_t j = i + 1; j < groups.size();) {
+        if (!joined(groups[i], groups[j])) {
+          ++j;
+          continue;
+        }
+        groups[i].insert(groups[i].end(), groups[j].begin(), groups[j].end());
+        groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(j));
+        j = i + 1;  // what joined may join groups passed over
+      }
+      std::sort(groups[i].begin(), groups[i].end());
+      groups[i].erase(std::unique(groups[i].begin(), groups[i].end()), groups[i].end());
+    }
+    const auto by_name = [&](FeatureRef x, FeatureRef y) {
+      return assembly_.FeatureName(x) < assembly_.FeatureName(y);
+    };
+    for (auto& g : groups) std::sort(g.begin(), g.end(), by_name);
+    std::sort(groups.begin(), groups.end(),
+              [&](const auto& x, const auto& y) { return by_name(x.front(), y.front()); });
+    std::vector<Pin> pins;
+    for (const std::vector<FeatureRef>& holes : groups) {
+      Pin pin;
+      pin.holes = holes;
+      const Eigen::Vector3d z = WorldAxis(holes.front());
+      const Eigen::Vector3d o =
+          state_.X_WP[holes.front().part] * assembly_.feature(holes.front()).origin;
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      pin.diameter = lo;
+      for (const FeatureRef h : holes) {
+        const Feature& f = assembly_.feature(h);
+        const double start = (state_.X_WP[h.part] * f.origin - o).dot(z);
+        const double end = start + f.length * WorldAxis(h).dot(z);
+        lo = std::min({lo, start, end});
+        hi = std::max({hi, start, end});
+        pin.diameter = std::min(pin.diameter, f.diameter);
+        pin.parts.push_back(h.part);
+      }
+      if (!(lo < hi) || !(pin.diameter > 0)) continue;  // no length or width to push in
+      std::sort(pin.parts.begin(), pin.parts.end());
+      pin.parts.erase(std::unique(pin.parts.begin(), pin.parts.end()), pin.parts.end());
+      pin.ends_W = {o + lo * z, o + hi * z};
+      pin.X_WPin = RigidTransform::FromZAxis(o, z);
+      constexpr int kSides = 24;
+      pin.mesh =
+          std::make_shared<const CollisionMesh>(std::make_shared<const TriangleMesh>(ExtrudeRegion(
+              {CircleRing(Eigen::Vector2d::Zero(), pin.diameter / 2, kSides), {}}, lo, hi)));
+      pin.box = TransformBox(pin.X_WPin, pin.mesh->bounds());
+      pins.push_back(std::move(pin));
+    }
+    return pins;
+  }
+
+  // The pins through a part of `unit` whose parts are all `present`.
+  std::vector<const Pin*> PinsThrough(const std::vector<std::size_t>& unit,
+                                      const std::vector<bool>& present) const {
+    std::vector<const Pin*> through;
+    for (const Pin& pin : pins_) {
+      const bool in_unit = std::any_of(pin.parts.begin(), pin.parts.end(), [&](std::size_t p) {
+        return std::find(unit.begin(), unit.end(), p) != unit.end();
+      });
+      const bool all_present = std::all_of(pin.parts.begin(), pin.parts.end(),
+                                           [&](std::size_t p) { return present[p]; });
+      if (in_unit && all_present) through.push_back(&pin);
+    }
+    return through;
+  }
+
+  // The pins whose parts are all among `parts` (sorted), pushed in with the parts `present`.
+  std::vector<PinInsertion> PinsAmong(const std::vector<std::size_t>& parts,
+                                      const std::vector<bool>& present) const {
+    std::vector<PinInsertion> among;
+    for (const Pin& pin : pins_) {
+      if (std::includes(parts.begin(), parts.end(), pin.parts.begin(), pin.parts.end())) {
+        among.push_back(InsertPin(pin, present));
+      }
+    }
+    return among;
+  }
+
+  // `pin` pushed into its place along its axis from outside the parts `present`, from the end
+  // its first hole's axis points away from first, then from the other; the first clear attempt,
+  // else the one whose first stop is nearest its place (the first of equals).
+  PinInsertion InsertPin(const Pin& pin, const std::vector<bool>& present) const {
+    std::vector<std::size_t> obstacles;
+    for (std::size_t p = 0; p < present.size(); ++p) {
+      if (present[p]) obstacles.push_back(p);
+    }
+    std::optional<PinInsertion> best;
+    for (const double sense : {1.0, -1.0}) {
+      PinInsertion attempt;
+      attempt.holes = pin.holes;
+      attempt.diameter = pin.diameter;
+      attempt.ends_W = pin.ends_W;
+      attempt.direction_W = sense * pin.X_WPin.RotateDirection(Eigen::Vector3d::UnitZ());
+      attempt.travel = ClearingDistance(Extent(pin.box, -attempt.direction_W, false), obstacles,
+                                        -attempt.direction_W);
+      attempt.blocked_by = PinStops(pin, obstacles, attempt.direction_W, attempt.travel);
+      attempt.clear = attempt.blocked_by.empty();
+      if (attempt.clear) return attempt;
+      if (!best || attempt.blocked_by.front().short_by < best->blocked_by.front().short_by) {
+        best = std::move(attempt);
+      }
+    }
+    return *best;
+  }
+
+  // Where each of `obstacles` first stops `pin` travelling `travel` along d into its place
+  // (swept as Sweep sweeps a part, its place the seat), sorted by travel. Contacts inside the
+  // pin's holes are its fit: they do not block.
+  std::vector<InsertionObstacle> PinStops(const Pin& pin, const std::vector<std::size_t>& obstacles,
+                                          const Eigen::Vector3d& d, double travel) const {
+    Aabb swept = pin.box;
+    swept.Extend(Aabb{pin.box.min - travel * d, pin.box.max - travel * d});
+    const RigidTransform X_WStart = RigidTransform::Translation(-travel * d) * pin.X_WPin;
+    std::vector<InsertionObstacle> blocked;
+    for (const std::size_t o : obstacles) {
+      if (!Grown(boxes_[o]).Intersects(swept)) continue;
+      std::vector<FeatureRef> fits;
+      for (const FeatureRef h : pin.holes) {
+        if (h.part == o) fits.push_back(h);
+      }
+      SweepOptions options;
+      options.max_travel = travel;
+      options.min_approach = min_approach_;
+      if (!fits.empty()) {
+        options.ignore = [this, fits](const Eigen::Vector3d& p_W) {
+          return std::any_of(fits.begin(), fits.end(), [&](FeatureRef h) {
+            return InEngagementRegion(assembly_.feature(h), state_.X_WP[h.part], p_W, tolerance_);
+          });
+        };
+      }
+      const auto contact = FirstBlockingContact(*pin.mesh, X_WStart, model_.part_mesh(o),
+                                                state_.X_WP[o], d, options);
+      if (!contact || contact->travel >= travel - tolerance_) continue;
+      blocked.push_back({o, contact->travel, travel - contact->travel, contact->p_W});
+    }
+    SortByTravel(&blocked);
+    return blocked;
+  }
+
+  void SortByTravel(std::vector<InsertionObstacle>* blocked) const {
+    std::sort(
+        blocked->begin(), blocked->end(),
+        [&](const InsertionObstacle& x, const InsertionObstacle& y) {
+          return x.travel < y.travel ||
+                 (x.travel == y.travel && assembly_.part(x.part).id < assembly_.part(y.part).id);
+        });
+  }
+
   // The parts carried along with `part`: reachable through carrying pairs, among `eligible`.
   std::vector<std::size_t> Carried(std::size_t part, const std::vector<bool>& eligible) const {
     std::vector<std::size_t> found = {part};
@@ -245,12 +443,7 @@ class Planner {
         blocked.push_back(*stop);
       }
     }
-    std::sort(
-        blocked.begin(), blocked.end(),
-        [&](const InsertionObstacle& x, const InsertionObstacle& y) {
-          return x.travel < y.travel ||
-                 (x.travel == y.travel && assembly_.part(x.part).id < assembly_.part(y.part).id);
-        });
+    SortByTravel(&blocked);
     return blocked;
   }
 
@@ -300,26 +493,37 @@ class Planner {
     return free;
   }
 
+  // The least (or, when `max`, the greatest) of p.d over the corners of `box`.
+  static double Extent(const Aabb& box, const Eigen::Vector3d& d, bool max) {
+    double best =
+        max ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
+    for (int corner = 0; corner < 8; ++corner) {
+      const Eigen::Vector3d p((corner & 1) ? box.max.x() : box.min.x(),
+                              (corner & 2) ? box.max.y() : box.min.y(),
+                              (corner & 4) ? box.max.z() : box.min.z());
+      best = max ? std::max(best, p.dot(d)) : std::min(best, p.dot(d));
+    }
+    return best;
+  }
+
   // Distance along d that takes `group`'s boxes clear of `others`' boxes (plus a margin).
   double ClearingDistance(const std::vector<std::size_t>& group,
                           const std::vector<std::size_t>& others, const Eigen::Vector3d& d) const {
-    auto extent = [&](const Aabb& box, bool max) {
-      double best =
-          max ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
-      for (int corner = 0; corner < 8; ++corner) {
-        const Eigen::Vector3d p((corner & 1) ? box.max.x() : box.min.x(),
-                                (corner & 2) ? box.max.y() : box.min.y(),
-                                (corner & 4) ? box.max.z() : box.min.z());
-        best = max ? std::max(best, p.dot(d)) : std::min(best, p.dot(d));
-      }
-      return best;
-    };
     double group_min = std::numeric_limits<double>::infinity();
-    for (const std::size_t m : group) group_min = std::min(group_min, extent(boxes_[m], false));
+    for (const std::size_t m : group) group_min = std::min(group_min, Extent(boxes_[m], d, false));
+    return ClearingDistance(group_min, others, d);
+  }
+
+  // Distance along d that takes what reaches down to `lowest` along d clear of `others`' boxes
+  // (plus a margin).
+  double ClearingDistance(double lowest, const std::vector<std::size_t>& others,
+                          const Eigen::Vector3d& d) const {
     double others_max = -std::numeric_limits<double>::infinity();
-    for (const std::size_t o : others) others_max = std::max(others_max, extent(boxes_[o], true));
+    for (const std::size_t o : others) {
+      others_max = std::max(others_max, Extent(boxes_[o], d, true));
+    }
     if (!std::isfinite(others_max)) return 0.0;
-    return std::max(0.0, others_max - group_min) + 1.0 + tolerance_;
+    return std::max(0.0, others_max - lowest) + 1.0 + tolerance_;
   }
 
   void CheckSteps(AssemblyPlan* plan) const {
@@ -342,6 +546,7 @@ class Planner {
     for (std::size_t p = 0; p < n; ++p) {
       if (placed[p]) plan->base.push_back(p);
     }
+    plan->base_pins = PinsAmong(plan->base, placed);
     for (std::size_t k = 0; k < assembly_.steps().size(); ++k) {
       Report(static_cast<double>(k) / assembly_.steps().size());
       const AssemblyStep& s = assembly_.steps()[k];
@@ -368,6 +573,9 @@ class Planner {
           Sweep(group, obstacles, step.direction_W, -step.travel, step.travel, step.travel);
       step.clear = step.blocked_by.empty();
       for (const std::size_t m : group) placed[m] = true;
+      for (const Pin* pin : PinsThrough(group, placed)) {
+        step.pins.push_back(InsertPin(*pin, placed));
+      }
       plan->steps.push_back(step);
     }
   }
@@ -502,6 +710,7 @@ class Planner {
       Report(++decided / to_place);
     });
     std::sort(plan->base.begin(), plan->base.end());
+    plan->base_pins = PinsAmong(plan->base, present);
     plan->steps.assign(removed.rbegin(), removed.rend());
   }
 
@@ -541,6 +750,12 @@ class Planner {
 
   std::optional<InsertionStep> TryRemove(const std::vector<std::size_t>& unit,
                                          const std::vector<bool>& present) const {
+    // The pins through the unit come out first.
+    std::vector<PinInsertion> pins;
+    for (const Pin* pin : PinsThrough(unit, present)) {
+      pins.push_back(InsertPin(*pin, present));
+      if (!pins.back().clear) return std::nullopt;
+    }
     const std::vector<std::size_t> others = Others(unit, present);
     for (const auto& [r, feature] : RemovalDirections(unit)) {
       const double travel = ClearingDistance(unit, others, r);
@@ -551,6 +766,7 @@ class Planner {
       InsertionStep step = MakeStep(unit, r, feature, present);
       step.travel = travel;
       step.clear = true;
+      step.pins = std::move(pins);
       return step;
     }
     return std::nullopt;
@@ -604,6 +820,8 @@ class Planner {
     }
     std::reverse(blocked.begin(), blocked.end());  // by insertion travel again
     step.blocked_by = std::move(blocked);
+    step.clear = step.blocked_by.empty();  // held by a pin that cannot come out
+    for (const Pin* pin : PinsThrough(unit, present)) step.pins.push_back(InsertPin(*pin, present));
     return step;
   }
 
@@ -619,6 +837,7 @@ class Planner {
   double tolerance_;
   double min_approach_;
   std::vector<Aabb> boxes_;
+  std::vector<Pin> pins_;
 };
 
 }  // namespace

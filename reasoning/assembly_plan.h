@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -25,6 +26,21 @@ struct InsertionObstacle {
   Eigen::Vector3d p_W = Eigen::Vector3d::Zero();  ///< contact point at that travel
 };
 
+/// A pin that the file leaves out (a hinge's implied pin: revolute pairs of source
+/// PairSource::kImpliedPin that share a hole), pushed along its axis through its holes once the
+/// parts it joins are in place. Its shape is a cylinder of its smallest hole's diameter over the
+/// holes' whole length; contacts inside its holes do not block it (the fit is by design).
+struct PinInsertion {
+  std::vector<FeatureRef> holes;  ///< the holes it goes through, in the order of their names
+  double diameter = 0.0;          ///< mm, its smallest hole's
+  /// The ends of its axis in place (world, mm): where its holes' spans along it begin and end.
+  std::array<Eigen::Vector3d, 2> ends_W = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  Eigen::Vector3d direction_W = Eigen::Vector3d::UnitZ();  ///< unit direction of travel
+  double travel = 0.0;  ///< mm from the start outside everything in place to its place
+  bool clear = false;
+  std::vector<InsertionObstacle> blocked_by;  ///< first contact per obstacle, by travel
+};
+
 /// One insertion: a part (and what travels with it) moving in a straight line into its pose.
 struct InsertionStep {
   std::size_t part = 0;
@@ -36,6 +52,9 @@ struct InsertionStep {
   bool clear = false;
   std::vector<InsertionObstacle> blocked_by;  ///< first contact per obstacle, by travel
   std::optional<std::size_t> pair;  ///< index into Analysis::pairs of the relation created
+  /// The pins the file leaves out that go in right after this step: those through this
+  /// step's parts whose other parts are in place.
+  std::vector<PinInsertion> pins;
 };
 
 /// Whether and how the assembly can be put together.
@@ -43,6 +62,8 @@ struct AssemblyPlan {
   bool assemblable = false;
   bool from_steps = false;        ///< the file's `steps` were checked (else a search ran)
   std::vector<std::size_t> base;  ///< parts in place before the first step
+  /// The pins the file leaves out that join parts in place before the first step only.
+  std::vector<PinInsertion> base_pins;
   std::vector<InsertionStep> steps;
   /// Search only: parts that no straight insertion brings into place, with the attempt that
   /// got furthest (its blockers).
@@ -66,7 +87,11 @@ struct AssemblyPlan {
 /// pose (the seat) do not block; nor do contacts that approach slower than the sine of the
 /// angular tolerance (sliding). An axial fit holds the part against travel across its axis,
 /// unless it is an implied pin or a fixed pair of implied pins (PairSource::kImpliedPin): the
-/// pins the file leaves out go in after both parts.
+/// pins the file leaves out go in after both parts: each hinge pin right after the step that
+/// places the last of its parts (`pins`), from whichever end of its axis is clear (the first
+/// hole's axis' sense first; else the attempt that gets furthest is reported, with what
+/// stops it). Dowels (a fixed pair of implied pins) are not listed: the analysis keeps one pair
+/// for all of them.
 ///
 /// Search: ground parts (or, without any, the part with the largest box) form the base; the
 /// other parts are removed one at a time, in passes over the parts in the order of the file
@@ -74,13 +99,14 @@ struct AssemblyPlan {
 /// sense that withdraws a convex feature first), the world's principal directions, and, for
 /// each axis it pivots on (a revolute or cylindrical pair with a part outside it), the way from
 /// the axis to the middle of its box and the principal directions, each turned square to the
-/// axis; the sequence is the reverse. Parts that cannot leave are `unplaced`, each with its best
-/// attempt: the direction in which it gets furthest (the first of those that get equally far),
-/// with every part on its way. The search runs on all cores and gives the one-at-a-time
-/// search's answer whatever the threads' timing.
+/// axis; a part leaves only when the pins the file leaves out through it can come out first
+/// (with the parts present then); the sequence is the reverse. Parts that cannot leave are
+/// `unplaced`, each with its best attempt: the direction in which it gets furthest (the first
+/// of those that get equally far), with every part on its way, and its pins. The search runs
+/// on all cores and gives the one-at-a-time search's answer whatever the threads' timing.
 ///
-/// The assembly is assemblable when there are no clashes and every step is clear (or every
-/// part is placed).
+/// The assembly is assemblable when there are no clashes, every part is placed, and every step
+/// and every pin is clear.
 ///
 /// `progress` (optional) receives the fraction done, never decreasing, 1 last: 0 at the start
 /// (the clashes at rest are found first), then as the steps are checked, or as each part (with

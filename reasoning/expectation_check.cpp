@@ -154,14 +154,25 @@ ExpectationResult CheckAssemblable(const Assembly& assembly, const AssemblyPlan*
     return r;
   }
   r.passed = plan->assemblable == e.flag;
-  std::size_t blocked = plan->unplaced.size();
-  for (const InsertionStep& s : plan->steps) blocked += s.clear ? 0 : 1;
+  std::size_t blocked = plan->unplaced.size(), blocked_pins = 0;
+  const auto count_pins = [&](const std::vector<PinInsertion>& pins) {
+    for (const PinInsertion& p : pins) blocked_pins += p.clear ? 0 : 1;
+  };
+  count_pins(plan->base_pins);
+  for (const InsertionStep& s : plan->steps) {
+    blocked += s.clear ? 0 : 1;
+    count_pins(s.pins);
+  }
   if (plan->assemblable) {
     r.detail = fmt::format("found assemblable ({} insertions {})", plan->steps.size(),
                            plan->from_steps ? "from the file's steps" : "found by disassembly");
   } else {
     r.detail = fmt::format("found not assemblable: {} clashes, {} blocked insertions",
                            plan->clashes.size(), blocked);
+    if (blocked_pins > 0) {
+      fmt::format_to(std::back_inserter(r.detail), ", {} pins the file leaves out blocked",
+                     blocked_pins);
+    }
     if (!plan->clashes.empty()) {
       fmt::format_to(std::back_inserter(r.detail), " (first clash: {} and {})",
                      assembly.part(plan->clashes.front().part_a).id,

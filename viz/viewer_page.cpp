@@ -137,28 +137,54 @@ json QuantisedMesh(const TriangleMesh& mesh) {
 }
 
 // The assembly sequence for the stepper: the insertions in order, then the parts no insertion
-// places (with the attempt that got furthest).
-json Insertion(const InsertionStep& step, bool placed) {
+// places (with the attempt that got furthest), each with the pins the file leaves out that go
+// in after it.
+json Blocked(const std::vector<InsertionObstacle>& blocked_by) {
   json blocked = json::array();
-  for (const InsertionObstacle& o : step.blocked_by) {
+  for (const InsertionObstacle& o : blocked_by) {
     blocked.push_back({{"part", o.part},
                        {"travel", o.travel},
                        {"short_by", o.short_by},
                        {"point", Vector(o.p_W)}});
   }
-  return {
-      {"part", step.part},     {"carried", step.carried}, {"direction", Vector(step.direction_W)},
-      {"travel", step.travel}, {"clear", step.clear},     {"placed", placed},
-      {"blocked_by", blocked}};
+  return blocked;
 }
 
-json Sequence(const AssemblyPlan& plan) {
+json Pins(const Assembly& assembly, const std::vector<PinInsertion>& pins) {
+  json list = json::array();
+  for (const PinInsertion& pin : pins) {
+    json holes = json::array();
+    for (const FeatureRef& h : pin.holes) holes.push_back(assembly.FeatureName(h));
+    list.push_back({{"holes", holes},
+                    {"diameter", pin.diameter},
+                    {"ends", json::array({Vector(pin.ends_W[0]), Vector(pin.ends_W[1])})},
+                    {"direction", Vector(pin.direction_W)},
+                    {"travel", pin.travel},
+                    {"clear", pin.clear},
+                    {"blocked_by", Blocked(pin.blocked_by)}});
+  }
+  return list;
+}
+
+json Insertion(const Assembly& assembly, const InsertionStep& step, bool placed) {
+  return {{"part", step.part},
+          {"carried", step.carried},
+          {"direction", Vector(step.direction_W)},
+          {"travel", step.travel},
+          {"clear", step.clear},
+          {"placed", placed},
+          {"blocked_by", Blocked(step.blocked_by)},
+          {"pins", Pins(assembly, step.pins)}};
+}
+
+json Sequence(const Assembly& assembly, const AssemblyPlan& plan) {
   json steps = json::array();
-  for (const InsertionStep& step : plan.steps) steps.push_back(Insertion(step, true));
-  for (const InsertionStep& step : plan.unplaced) steps.push_back(Insertion(step, false));
+  for (const InsertionStep& step : plan.steps) steps.push_back(Insertion(assembly, step, true));
+  for (const InsertionStep& step : plan.unplaced) steps.push_back(Insertion(assembly, step, false));
   return {{"assemblable", plan.assemblable},
           {"from_steps", plan.from_steps},
           {"base", plan.base},
+          {"base_pins", Pins(assembly, plan.base_pins)},
           {"steps", steps}};
 }
 
@@ -243,7 +269,7 @@ json Data(const Assembly& assembly, const Analysis& analysis, const ViewerOption
                ? PlanAssembly(assembly, analysis, *collision, options.plan_progress)
                : PlanAssembly(assembly, analysis, CollisionModel(assembly), options.plan_progress);
   }
-  data["assembly"] = plan && options.plan ? Sequence(*plan) : json(nullptr);
+  data["assembly"] = plan && options.plan ? Sequence(assembly, *plan) : json(nullptr);
   json expectations = json::array();
   for (const ExpectationResult& r :
        CheckExpectations(assembly, analysis, plan ? &*plan : nullptr)) {

@@ -643,21 +643,54 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   // ---- assembly sequence ----
   // Step k shows the base and the parts of steps before k in place, step k's part (and what
   // it carries) travelling along its direction into place, u of the way (a blocked step only
-  // up to its first contact, the obstacle marked), and hides the parts of later steps.
+  // up to its first contact, the obstacle marked), and hides the parts of later steps. The pins
+  // the file leaves out show in place from the end of the step after which they go in (the
+  // base's from the start), those that cannot go in not at all.
   const plan = data.assembly;
   let step = null, stepTimer = null;
   const stepMarker = contactDot([0, 0, 0]);
   stepMarker.visible = false;
   scene.add(stepMarker);
+  const pinMeshes = [];  // { mesh, pin, step }: step -1 for the base's pins
+  const addPins = (pins, k) => {
+    for (const pin of pins) {
+      const a = new THREE.Vector3(...pin.ends[0]), b = new THREE.Vector3(...pin.ends[1]);
+      const mesh = new THREE.Mesh(
+        new THREE.CylinderGeometry(pin.diameter / 2, pin.diameter / 2, a.distanceTo(b), 24),
+        new THREE.MeshStandardMaterial({ color: 0x9aa0a8, metalness: 0.6, roughness: 0.4,
+                                         side: THREE.DoubleSide, clippingPlanes: clipping }));
+      mesh.position.copy(a).add(b).multiplyScalar(0.5);
+      mesh.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), b.clone().sub(a).normalize());
+      mesh.visible = false;
+      scene.add(mesh);
+      pinMeshes.push({ mesh, pin, step: k });
+    }
+  };
+  if (plan) {
+    addPins(plan.base_pins, -1);
+    plan.steps.forEach((st, k) => addPins(st.pins, k));
+  }
+  const showPins = (k, u) => {
+    for (const m of pinMeshes) {
+      m.mesh.visible = k !== null && m.pin.clear && (m.step < k || (m.step === k && u >= 1));
+    }
+  };
+  const stepClear = (st) => st.clear && st.pins.every((pin) => pin.clear);
+  const blockedWords = (blocked_by) => {
+    const first = blocked_by[0];
+    return "blocked by " + (first ? data.parts[first.part].id + " after " +
+      (first.travel / data.mm_per_length).toFixed(2) + " " + data.length_unit : "?");
+  };
   const stepWords = (st) => {
     const moving = [st.part].concat(st.carried).map((p) => data.parts[p].id).join(" + ");
     const d = st.direction.map((v) => +v.toFixed(3)).join(", ");
     let words = moving + " along (" + d + "), " +
-      (st.travel / data.mm_per_length).toFixed(2) + " " + data.length_unit;
-    if (st.clear) return words + ": clear";
-    const first = st.blocked_by[0];
-    words += ": blocked by " + (first ? data.parts[first.part].id + " after " +
-      (first.travel / data.mm_per_length).toFixed(2) + " " + data.length_unit : "?");
+      (st.travel / data.mm_per_length).toFixed(2) + " " + data.length_unit + ": " +
+      (st.clear ? "clear" : blockedWords(st.blocked_by));
+    for (const pin of st.pins) {
+      words += "; then the pin through " + pin.holes.join(", ") + ": " +
+        (pin.clear ? "clear" : blockedWords(pin.blocked_by));
+    }
     return words + (st.placed ? "" : " (cannot be placed)");
   };
   // The obstacle of a blocked step is drawn see-through in red, so that the part it stops
@@ -689,6 +722,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       if (j > k) [other.part].concat(other.carried).forEach((p) => later.add(p));
     });
     parts.forEach((part, p) => { part.group.visible = !later.has(p); });
+    showPins(k, u);
     changed();
     const first = st.clear ? null : st.blocked_by[0] || null;
     const end = first ? first.travel : st.travel;
@@ -708,6 +742,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       row.classList.toggle("on", j === k);
     });
     return { part: data.parts[st.part].id, clear: st.clear, placed: st.placed,
+             pins: pinMeshes.filter((m) => m.mesh.visible).length,
              obstacle: reached ? data.parts[first.part].id : null,
              at: reached ? first.travel / data.mm_per_length : null,
              hidden: [...later].map((p) => data.parts[p].id) };
@@ -726,7 +761,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       u = Math.min(u + 0.025, 1);
       stepTo(k, u);
       if (u < 1) return;
-      if (k + 1 < plan.steps.length && plan.steps[k].clear) { k += 1; u = 0; return; }
+      if (k + 1 < plan.steps.length && stepClear(plan.steps[k])) { k += 1; u = 0; return; }
       stopPlaying();
     }, 30);
   };
@@ -735,6 +770,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     stopPlaying();
     step = null;
     stepMarker.visible = false;
+    showPins(null, 0);
     seeThrough(null);
     showAll();
   }
@@ -748,7 +784,8 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     $("assembly-summary").className = plan.assemblable ? "passed" : "failed";
     $("assembly-controls").style.display = plan.steps.length ? "" : "none";
     plan.steps.forEach((st, k) => {
-      const row = text("div", (k + 1) + ". " + stepWords(st), "row" + (st.clear ? "" : " error"));
+      const row = text("div", (k + 1) + ". " + stepWords(st),
+                       "row" + (stepClear(st) ? "" : " error"));
       row.addEventListener("click", () => { stopPlaying(); stepTo(k, 1); });
       $("assembly-steps").appendChild(row);
     });
@@ -798,6 +835,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       clipping.push(section);
     }
     for (const part of parts) part.material.needsUpdate = true;
+    for (const m of pinMeshes) m.mesh.material.needsUpdate = true;
     changed();
   };
   $("section").addEventListener("change", setSection);
@@ -875,8 +913,8 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       return [r.left + ((c.x + 1) / 2) * r.width, r.top + ((1 - c.y) / 2) * r.height];
     },
     /** Shows assembly step k (0-based) u of the way in (default: to its end): the moving part,
-     *  whether it is clear, the obstacle it meets at the end of a blocked step and after how
-     *  many length units, and the parts of later steps, hidden. */
+     *  whether it is clear, the number of pins shown in place, the obstacle it meets at the end
+     *  of a blocked step and after how many length units, and the parts of later steps, hidden. */
     assemblyStep(k, u = 1) {
       const result = stepTo(k, u);
       draw();

@@ -69,7 +69,7 @@ TEST(AssemblyExamples, EveryExampleIsFreeOfClashesAssemblableAndRunsClear) {
       EXPECT_EQ(run.pairs_swept > 0, PartsWithoutGeometry(a).size() < a.parts().size()) << file;
     }
   }
-  EXPECT_EQ(examples, 12);
+  EXPECT_EQ(examples, 13);
 }
 
 TEST(AssemblyExamples, BoltLargerThanThePlateHoleIsAClashAndBlocksItsStep) {

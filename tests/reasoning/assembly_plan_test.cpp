@@ -3,7 +3,7 @@
 // order of the disassembly against an oracle for cubes on a grid, a part walled in by
 // ground parts reported as unplaced with its blockers, and a lever in a fork whose pin the
 // file leaves out, which goes in across the pin's axis, also when the fork stands at an angle
-// to the world's axes.
+// to the world's axes, and that pin, which goes in after them from an end that no part covers.
 #include "reasoning/assembly_plan.h"
 
 #include <gtest/gtest.h>
@@ -20,6 +20,7 @@
 #include "kernel/collision/collision_model.h"
 #include "kernel/collision/translational_sweep.h"
 #include "reasoning/analysis.h"
+#include "reasoning/expectation_check.h"
 #include "test_assembly.h"
 
 namespace mechanist {
@@ -256,6 +257,19 @@ TEST(AssemblyPlan, AnImpliedPinGoesInAfterThePartsItJoins) {
   EXPECT_EQ(hinge.part(plan.steps[0].part).id, "lever");
   EXPECT_TRUE(plan.steps[0].clear);
   EXPECT_EQ(plan.steps[0].direction_W, Eigen::Vector3d(-1, 0, 0));
+  // Then the pin, through the cheeks and the knuckle (contacts in their holes are its fit: the
+  // fork's mesh models no hole), from below, the first hole's axis' sense.
+  ASSERT_EQ(plan.steps[0].pins.size(), 1u);
+  const PinInsertion& pin_in = plan.steps[0].pins[0];
+  std::vector<std::string> holes;
+  for (const FeatureRef& h : pin_in.holes) holes.push_back(hinge.FeatureName(h));
+  EXPECT_EQ(holes, (std::vector<std::string>{"fork/cheek_a", "fork/cheek_b", "lever/knuckle"}));
+  EXPECT_DOUBLE_EQ(pin_in.diameter, 3.2);
+  EXPECT_TRUE(pin_in.ends_W[0].isApprox(Eigen::Vector3d(5, 5, -5), 1e-12));
+  EXPECT_TRUE(pin_in.ends_W[1].isApprox(Eigen::Vector3d(5, 5, 15), 1e-12));
+  EXPECT_TRUE(pin_in.clear);
+  EXPECT_EQ(pin_in.direction_W, Eigen::Vector3d(0, 0, 1));
+  EXPECT_TRUE(plan.base_pins.empty());
 
   std::vector<Part> parts = Hinge(RigidTransform(), false);
   const Feature shaft = testing::MakeFeature("shaft", FeatureKind::kShaft,
@@ -278,6 +292,64 @@ TEST(AssemblyPlan, AnImpliedPinGoesInAfterThePartsItJoins) {
   EXPECT_FALSE(held.assemblable);
   ASSERT_EQ(held.unplaced.size(), 1u);
   EXPECT_EQ(pinned.part(held.unplaced[0].part).id, "lever");
+}
+
+// Ground caps over the pin's ends. One cap: the pin goes in from the other end. Both: it
+// cannot go in, so the lever cannot be placed either (the pin would have to come out before
+// it), though its own way in is clear; the attempt shows the pin stopped by the cap nearest
+// its place. With the lever ground too, the pin goes in before the first step.
+TEST(AssemblyPlan, AHingePinGoesInFromAnOpenEnd) {
+  using V = Eigen::Vector3d;
+  const auto cap = [](const char* id, double z0, double z1) {
+    Part part = MakePart(id, {}, RigidTransform(), true);
+    part.mesh = Boxes({{V(0, 0, z0), V(10, 10, z1)}});
+    return part;
+  };
+  std::vector<Part> parts = Hinge(RigidTransform(), false);
+  parts.push_back(cap("cap_below", -8, -5));
+  const Assembly one_cap = MakeAssembly(parts);
+  const AssemblyPlan plan = PlanAssembly(one_cap, Analyze(one_cap), CollisionModel(one_cap));
+  EXPECT_TRUE(plan.assemblable);
+  ASSERT_EQ(plan.steps.size(), 1u);
+  ASSERT_EQ(plan.steps[0].pins.size(), 1u);
+  EXPECT_TRUE(plan.steps[0].pins[0].clear);
+  EXPECT_EQ(plan.steps[0].pins[0].direction_W, V(0, 0, -1));
+
+  parts.push_back(cap("cap_above", 15, 17));
+  const Assembly capped = MakeAssembly(parts);
+  const AssemblyPlan stuck = PlanAssembly(capped, Analyze(capped), CollisionModel(capped));
+  EXPECT_FALSE(stuck.assemblable);
+  EXPECT_TRUE(stuck.steps.empty());
+  ASSERT_EQ(stuck.unplaced.size(), 1u);
+  const InsertionStep& lever = stuck.unplaced[0];
+  EXPECT_EQ(capped.part(lever.part).id, "lever");
+  EXPECT_TRUE(lever.clear);
+  ASSERT_EQ(lever.pins.size(), 1u);
+  EXPECT_FALSE(lever.pins[0].clear);
+  ASSERT_EQ(lever.pins[0].blocked_by.size(), 1u);
+  // The pin (z -5 to 15 in place) meets cap_below's underside (z -8) 23 mm short of its place
+  // from below, cap_above's top (z 17) 22 mm short from above.
+  EXPECT_EQ(lever.pins[0].direction_W, V(0, 0, -1));
+  EXPECT_EQ(capped.part(lever.pins[0].blocked_by[0].part).id, "cap_above");
+  EXPECT_NEAR(lever.pins[0].blocked_by[0].short_by, 22.0, 1e-9);
+
+  parts[1].ground = true;
+  const Assembly all_ground = MakeAssembly(parts);
+  const AssemblyPlan based =
+      PlanAssembly(all_ground, Analyze(all_ground), CollisionModel(all_ground));
+  EXPECT_TRUE(based.steps.empty());
+  EXPECT_FALSE(based.assemblable);
+  ASSERT_EQ(based.base_pins.size(), 1u);
+  EXPECT_FALSE(based.base_pins[0].clear);
+  Expectation assemblable;
+  assemblable.kind = Expectation::Kind::kAssemblable;
+  assemblable.flag = true;
+  const ExpectationResult said =
+      CheckExpectation(all_ground, Analyze(all_ground), assemblable, &based);
+  EXPECT_FALSE(said.passed);
+  EXPECT_EQ(said.detail,
+            "found not assemblable: 0 clashes, 0 blocked insertions, 1 pins the file leaves out "
+            "blocked");
 }
 
 // The hinge closed on +-y too, so that its only way out is across the pin, along the lever

@@ -209,6 +209,32 @@ function fail(message) {
                 result.end.at.toFixed(2) + ", " + result.end.hidden.length + " later parts hidden");
     await shot("viewer_step.png");
   }
+  if (checks.pins) {
+    // The pins the file leaves out: a step's pins show in place at its end, not before, and
+    // its row in the list says how each goes in.
+    const t = checks.pins;
+    const result = await page.evaluate((t) => {
+      const m = window.mechanist;
+      const k = m.data.assembly.steps.findIndex((st) => m.data.parts[st.part].id === t.part);
+      if (k < 0) return null;
+      const before = m.assemblyStep(k, 0.5).pins;
+      const after = m.assemblyStep(k, 1).pins;
+      const row = document.querySelectorAll("#assembly-steps .row")[k];
+      return { before, after, words: row.textContent, error: row.classList.contains("error") };
+    }, t);
+    if (!result) fail("no assembly step inserts " + t.part);
+    if (result.before !== t.before || result.after !== t.after) {
+      fail("the step of " + t.part + " shows " + result.before + " pins half way and " +
+           result.after + " at its end, not " + t.before + " and " + t.after);
+    }
+    if (!result.words.includes(t.words) || result.error !== t.error) {
+      fail("the step's row reads '" + result.words + "' (error " + result.error + "), not '" +
+           t.words + "' (error " + t.error + ")");
+    }
+    console.log("ok the step of " + t.part + " shows " + result.after + " pins at its end: " +
+                result.words);
+    await shot("viewer_pin.png");
+  }
   if (checks.cache) {
     // A drag drawn from the cache of the still parts looks as when everything is redrawn.
     const c = checks.cache;

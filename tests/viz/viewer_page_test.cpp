@@ -496,6 +496,21 @@ TEST(ViewerPage, WorksInABrowser) {
   std::ofstream(dir / "hinge.html") << ViewerHtml(hinge, Analyze(hinge));
   const json printed = {{"step", {{"part", "COMPOUND"}, {"obstacle", "COMPOUND_solid2"}}}};
   EXPECT_EQ(RunBrowser(dir, "hinge.html", printed), "") << "a real STEP export";
+
+  // A lever in a clevis whose pin the file leaves out: the pin shows in place once the lever
+  // is in, entering from cheek_a's side (the guard covers cheek_b's).
+  const Assembly clevis = LoadAssembly(std::string(MECHANIST_SOURCE_DIR) +
+                                       "/examples/clevis_pin_left_out/assembly.json");
+  std::ofstream(dir / "clevis.html") << ViewerHtml(clevis, Analyze(clevis));
+  const json pin = {{"pins",
+                     {{"part", "lever"},
+                      {"before", 0},
+                      {"after", 1},
+                      {"error", false},
+                      {"words",
+                       "then the pin through cheek_a/pivot, cheek_b/pivot, lever/pivot: "
+                       "clear"}}}};
+  EXPECT_EQ(RunBrowser(dir, "clevis.html", pin), "") << "a pin the file leaves out";
 }
 
 }  // namespace
