@@ -125,9 +125,10 @@ Json PinsJson(const Assembly& assembly, const std::vector<PinInsertion>& pins) {
 }
 
 // "then the pin the file leaves out, 3.2 mm, through A/hole_1, B/hole_1 along (0, 0, 1),
-// 12 mm: clear", one line per pin, each indented by `indent`.
+// 12 mm: clear", one line per pin, each indented by `indent`; `then` false for an unplaced
+// part's attempt, whose pins go in at no point ("its pin the file leaves out, ...").
 std::string PinsText(const Assembly& assembly, const std::vector<PinInsertion>& pins,
-                     std::string_view indent) {
+                     std::string_view indent, bool then) {
   std::string t;
   auto out = std::back_inserter(t);
   for (const PinInsertion& p : pins) {
@@ -135,10 +136,10 @@ std::string PinsText(const Assembly& assembly, const std::vector<PinInsertion>& 
     for (const FeatureRef& h : p.holes) {
       holes += (holes.empty() ? "" : ", ") + assembly.FeatureName(h);
     }
-    fmt::format_to(out,
-                   "{}then the pin the file leaves out, {} mm, through {} along {}, {} mm: {}\n",
-                   indent, FormatNumber(p.diameter), holes, Text(p.direction_W),
-                   FormatNumber(p.travel), BlockedText(assembly, p.clear, p.blocked_by));
+    fmt::format_to(out, "{}{} pin the file leaves out, {} mm, through {} along {}, {} mm: {}\n",
+                   indent, then ? "then the" : "its", FormatNumber(p.diameter), holes,
+                   Text(p.direction_W), FormatNumber(p.travel),
+                   BlockedText(assembly, p.clear, p.blocked_by));
   }
   return t;
 }
@@ -332,14 +333,14 @@ void WriteAssemblySummary(const Assembly& assembly, const Analysis& analysis,
   WriteSkippedParts(assembly, out);
   out << "in place first:";
   for (const std::size_t p : plan.base) out << " " << assembly.part(p).id;
-  out << "\n" << PinsText(assembly, plan.base_pins, "  ");
+  out << "\n" << PinsText(assembly, plan.base_pins, "  ", true);
   for (std::size_t k = 0; k < plan.steps.size(); ++k) {
     out << "  " << k + 1 << ". " << StepText(assembly, analysis, plan.steps[k]) << "\n"
-        << PinsText(assembly, plan.steps[k].pins, "     ");
+        << PinsText(assembly, plan.steps[k].pins, "     ", true);
   }
   for (const InsertionStep& s : plan.unplaced) {
     out << "  cannot be placed: " << StepText(assembly, analysis, s) << "\n"
-        << PinsText(assembly, s.pins, "     ");
+        << PinsText(assembly, s.pins, "     ", false);
   }
   for (const PartContact& c : plan.clashes) {
     out << "  clash: " << ContactText(assembly, analysis, c) << "\n";

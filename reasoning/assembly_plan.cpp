@@ -4,14 +4,11 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <memory>
 #include <mutex>
 #include <numeric>
 
 #include "kernel/assembly/assembly_state.h"
-#include "kernel/collision/collision_mesh.h"
 #include "kernel/collision/translational_sweep.h"
-#include "kernel/mesh/mesh_builder.h"
 #include "kernel/support/parallel_for.h"
 
 namespace mechanist {
@@ -62,7 +59,7 @@ class Planner {
     for (std::size_t p = 0; p < assembly.parts().size(); ++p) {
       boxes_.push_back(TransformBox(state_.X_WP[p], model.part_mesh(p).bounds()));
     }
-    pins_ = ImpliedPins();
+    pins_ = FindHingePins(assembly, analysis, state_, model);
   }
 
   AssemblyPlan Plan() {
@@ -90,103 +87,11 @@ class Planner {
   }
 
  private:
-  // A hinge pin that the file leaves out, at its place: a cylinder of its smallest hole's
-  // diameter over the length of all its holes, in a frame (X_WPin) whose z is the first hole's
-  // axis.
-  struct Pin {
-    std::vector<FeatureRef> holes;   // in the order of their names
-    std::vector<std::size_t> parts;  // its holes' parts, sorted
-    double diameter = 0.0;
-    std::array<Eigen::Vector3d, 2> ends_W;
-    RigidTransform X_WPin;
-    std::shared_ptr<const CollisionMesh> mesh;
-    Aabb box;  // in the world, at its place
-  };
-
-  // Whether holes `x` and `y` lie on one line (within the angle and length tolerances).
-  bool OnOneLine(FeatureRef x, FeatureRef y) const {
-    const Eigen::Vector3d u = WorldAxis(x), v = WorldAxis(y);
-    const Eigen::Vector3d d = state_.X_WP[y.part] * assembly_.feature(y).origin -
-                              state_.X_WP[x.part] * assembly_.feature(x).origin;
-    return std::abs(u.dot(v)) >= std::cos(assembly_.tolerance().angle) &&
-           (d - d.dot(u) * u).norm() <= tolerance_;
-  }
-
-  // The hinge pins that the file leaves out: the holes of the revolute implied-pin pairs
-  // (PairSource::kImpliedPin), joined where they share a hole or where two holes of one part lie
-  // on one line (the ears of a clevis on one rod), in the order of their first holes' names.
-  std::vector<Pin> ImpliedPins() const {
-    std::vector<std::vector<FeatureRef>> groups;
-    for (const Pair& p : analysis_.pairs) {
-      if (p.source == PairSource::kImpliedPin && p.type == PairType::kRevolute) {
-        groups.push_back({p.a, p.b});
-      }
-    }
-    const auto joined = [&](const std::vector<FeatureRef>& g, const std::vector<FeatureRef>& h) {
-      for (const FeatureRef x : g) {
-        for (const FeatureRef y : h) {
-          if (x == y || (x.part == y.part && OnOneLine(x, y))) return true;
-        }
-      }
-      return false;
-    };
-    for (std::size_t i = 0; i < groups.size(); ++i) {
-      for (std::size_t j = i + 1; j < groups.size();) {
-        if (!joined(groups[i], groups[j])) {
-          ++j;
-          continue;
-        }
-        groups[i].insert(groups[i].end(), groups[j].begin(), groups[j].end());
-        groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(j));
-        j = i + 1;  // what joined may join groups passed over
-      }
-      std::sort(groups[i].begin(), groups[i].end());
-      groups[i].erase(std::unique(groups[i].begin(), groups[i].end()), groups[i].end());
-    }
-    const auto by_name = [&](FeatureRef x, FeatureRef y) {
-      return assembly_.FeatureName(x) < assembly_.FeatureName(y);
-    };
-    for (auto& g : groups) std::sort(g.begin(), g.end(), by_name);
-    std::sort(groups.begin(), groups.end(),
-              [&](const auto& x, const auto& y) { return by_name(x.front(), y.front()); });
-    std::vector<Pin> pins;
-    for (const std::vector<FeatureRef>& holes : groups) {
-      Pin pin;
-      pin.holes = holes;
-      const Eigen::Vector3d z = WorldAxis(holes.front());
-      const Eigen::Vector3d o =
-          state_.X_WP[holes.front().part] * assembly_.feature(holes.front()).origin;
-      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-      pin.diameter = lo;
-      for (const FeatureRef h : holes) {
-        const Feature& f = assembly_.feature(h);
-        const double start = (state_.X_WP[h.part] * f.origin - o).dot(z);
-        const double end = start + f.length * WorldAxis(h).dot(z);
-        lo = std::min({lo, start, end});
-        hi = std::max({hi, start, end});
-        pin.diameter = std::min(pin.diameter, f.diameter);
-        pin.parts.push_back(h.part);
-      }
-      if (!(lo < hi) || !(pin.diameter > 0)) continue;  // no length or width to push in
-      std::sort(pin.parts.begin(), pin.parts.end());
-      pin.parts.erase(std::unique(pin.parts.begin(), pin.parts.end()), pin.parts.end());
-      pin.ends_W = {o + lo * z, o + hi * z};
-      pin.X_WPin = RigidTransform::FromZAxis(o, z);
-      constexpr int kSides = 24;
-      pin.mesh =
-          std::make_shared<const CollisionMesh>(std::make_shared<const TriangleMesh>(ExtrudeRegion(
-              {CircleRing(Eigen::Vector2d::Zero(), pin.diameter / 2, kSides), {}}, lo, hi)));
-      pin.box = TransformBox(pin.X_WPin, pin.mesh->bounds());
-      pins.push_back(std::move(pin));
-    }
-    return pins;
-  }
-
   // The pins through a part of `unit` whose parts are all `present`.
-  std::vector<const Pin*> PinsThrough(const std::vector<std::size_t>& unit,
-                                      const std::vector<bool>& present) const {
-    std::vector<const Pin*> through;
-    for (const Pin& pin : pins_) {
+  std::vector<const HingePin*> PinsThrough(const std::vector<std::size_t>& unit,
+                                           const std::vector<bool>& present) const {
+    std::vector<const HingePin*> through;
+    for (const HingePin& pin : pins_) {
       const bool in_unit = std::any_of(pin.parts.begin(), pin.parts.end(), [&](std::size_t p) {
         return std::find(unit.begin(), unit.end(), p) != unit.end();
       });
@@ -201,7 +106,7 @@ class Planner {
   std::vector<PinInsertion> PinsAmong(const std::vector<std::size_t>& parts,
                                       const std::vector<bool>& present) const {
     std::vector<PinInsertion> among;
-    for (const Pin& pin : pins_) {
+    for (const HingePin& pin : pins_) {
       if (std::includes(parts.begin(), parts.end(), pin.parts.begin(), pin.parts.end())) {
         among.push_back(InsertPin(pin, present));
       }
@@ -212,7 +117,7 @@ class Planner {
   // `pin` pushed into its place along its axis from outside the parts `present`, from the end
   // its first hole's axis points away from first, then from the other; the first clear attempt,
   // else the one whose first stop is nearest its place (the first of equals).
-  PinInsertion InsertPin(const Pin& pin, const std::vector<bool>& present) const {
+  PinInsertion InsertPin(const HingePin& pin, const std::vector<bool>& present) const {
     std::vector<std::size_t> obstacles;
     for (std::size_t p = 0; p < present.size(); ++p) {
       if (present[p]) obstacles.push_back(p);
@@ -239,7 +144,8 @@ class Planner {
   // Where each of `obstacles` first stops `pin` travelling `travel` along d into its place
   // (swept as Sweep sweeps a part, its place the seat), sorted by travel. Contacts inside the
   // pin's holes are its fit: they do not block.
-  std::vector<InsertionObstacle> PinStops(const Pin& pin, const std::vector<std::size_t>& obstacles,
+  std::vector<InsertionObstacle> PinStops(const HingePin& pin,
+                                          const std::vector<std::size_t>& obstacles,
                                           const Eigen::Vector3d& d, double travel) const {
     Aabb swept = pin.box;
     swept.Extend(Aabb{pin.box.min - travel * d, pin.box.max - travel * d});
@@ -573,7 +479,7 @@ class Planner {
           Sweep(group, obstacles, step.direction_W, -step.travel, step.travel, step.travel);
       step.clear = step.blocked_by.empty();
       for (const std::size_t m : group) placed[m] = true;
-      for (const Pin* pin : PinsThrough(group, placed)) {
+      for (const HingePin* pin : PinsThrough(group, placed)) {
         step.pins.push_back(InsertPin(*pin, placed));
       }
       plan->steps.push_back(step);
@@ -710,7 +616,10 @@ class Planner {
       Report(++decided / to_place);
     });
     std::sort(plan->base.begin(), plan->base.end());
-    plan->base_pins = PinsAmong(plan->base, present);
+    // The base's pins go in before anything else is there.
+    std::vector<bool> base_only(n, false);
+    for (const std::size_t p : plan->base) base_only[p] = true;
+    plan->base_pins = PinsAmong(plan->base, base_only);
     plan->steps.assign(removed.rbegin(), removed.rend());
   }
 
@@ -752,7 +661,7 @@ class Planner {
                                          const std::vector<bool>& present) const {
     // The pins through the unit come out first.
     std::vector<PinInsertion> pins;
-    for (const Pin* pin : PinsThrough(unit, present)) {
+    for (const HingePin* pin : PinsThrough(unit, present)) {
       pins.push_back(InsertPin(*pin, present));
       if (!pins.back().clear) return std::nullopt;
     }
@@ -821,7 +730,8 @@ class Planner {
     std::reverse(blocked.begin(), blocked.end());  // by insertion travel again
     step.blocked_by = std::move(blocked);
     step.clear = step.blocked_by.empty();  // held by a pin that cannot come out
-    for (const Pin* pin : PinsThrough(unit, present)) step.pins.push_back(InsertPin(*pin, present));
+    for (const HingePin* pin : PinsThrough(unit, present))
+      step.pins.push_back(InsertPin(*pin, present));
     return step;
   }
 
@@ -837,7 +747,7 @@ class Planner {
   double tolerance_;
   double min_approach_;
   std::vector<Aabb> boxes_;
-  std::vector<Pin> pins_;
+  std::vector<HingePin> pins_;
 };
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "kernel/collision/collision_model.h"
 #include "kernel/features/feature_ref.h"
 #include "reasoning/analysis.h"
+#include "reasoning/hinge_pins.h"
 #include "reasoning/interference.h"
 
 namespace mechanist {
@@ -26,14 +27,13 @@ struct InsertionObstacle {
   Eigen::Vector3d p_W = Eigen::Vector3d::Zero();  ///< contact point at that travel
 };
 
-/// A pin that the file leaves out (a hinge's implied pin: revolute pairs of source
-/// PairSource::kImpliedPin that share a hole), pushed along its axis through its holes once the
-/// parts it joins are in place. Its shape is a cylinder of its smallest hole's diameter over the
-/// holes' whole length; contacts inside its holes do not block it (the fit is by design).
+/// A hinge pin that the file leaves out (HingePin, FindHingePins), pushed along its axis
+/// through its holes once the parts it joins are in place. Contacts inside its holes do not
+/// block it (the fit is by design; the meshes need not model the bores).
 struct PinInsertion {
   std::vector<FeatureRef> holes;  ///< the holes it goes through, in the order of their names
   double diameter = 0.0;          ///< mm, its smallest hole's
-  /// The ends of its axis in place (world, mm): where its holes' spans along it begin and end.
+  /// The ends of its axis in place (world, mm), in the sense of its first hole's axis.
   std::array<Eigen::Vector3d, 2> ends_W = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
   Eigen::Vector3d direction_W = Eigen::Vector3d::UnitZ();  ///< unit direction of travel
   double travel = 0.0;  ///< mm from the start outside everything in place to its place
@@ -49,6 +49,8 @@ struct InsertionStep {
   std::optional<FeatureRef> into;     ///< the feature it goes into
   Eigen::Vector3d direction_W = Eigen::Vector3d::UnitZ();  ///< unit direction of travel
   double travel = 0.0;  ///< mm from the start outside everything in place to the final pose
+  /// Nothing stops the part; for an unplaced part's attempt, true when only a pin through it
+  /// that cannot come out keeps it from leaving.
   bool clear = false;
   std::vector<InsertionObstacle> blocked_by;  ///< first contact per obstacle, by travel
   std::optional<std::size_t> pair;  ///< index into Analysis::pairs of the relation created
@@ -87,11 +89,13 @@ struct AssemblyPlan {
 /// pose (the seat) do not block; nor do contacts that approach slower than the sine of the
 /// angular tolerance (sliding). An axial fit holds the part against travel across its axis,
 /// unless it is an implied pin or a fixed pair of implied pins (PairSource::kImpliedPin): the
-/// pins the file leaves out go in after both parts: each hinge pin right after the step that
-/// places the last of its parts (`pins`), from whichever end of its axis is clear (the first
-/// hole's axis' sense first; else the attempt that gets furthest is reported, with what
-/// stops it). Dowels (a fixed pair of implied pins) are not listed: the analysis keeps one pair
-/// for all of them.
+/// pins the file leaves out go in after both parts: each hinge pin (FindHingePins) right after
+/// the step that places the last of its parts (`pins`; the base's before the first step,
+/// `base_pins`), from whichever end of its axis is clear (its first hole's, by name, axis'
+/// sense first; else the attempt whose first stop is nearest its place is reported, with what
+/// stops it). Dowels are not listed (see FindHingePins). A pin in place is no obstacle to the
+/// parts placed after it (not modelled: a part that would pass through a pin's span between its
+/// holes is reported clear).
 ///
 /// Search: ground parts (or, without any, the part with the largest box) form the base; the
 /// other parts are removed one at a time, in passes over the parts in the order of the file

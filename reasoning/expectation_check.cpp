@@ -170,8 +170,8 @@ ExpectationResult CheckAssemblable(const Assembly& assembly, const AssemblyPlan*
     r.detail = fmt::format("found not assemblable: {} clashes, {} blocked insertions",
                            plan->clashes.size(), blocked);
     if (blocked_pins > 0) {
-      fmt::format_to(std::back_inserter(r.detail), ", {} pins the file leaves out blocked",
-                     blocked_pins);
+      fmt::format_to(std::back_inserter(r.detail), ", {} pin{} the file leaves out blocked",
+                     blocked_pins, blocked_pins == 1 ? "" : "s");
     }
     if (!plan->clashes.empty()) {
       fmt::format_to(std::back_inserter(r.detail), " (first clash: {} and {})",

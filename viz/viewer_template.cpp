@@ -645,7 +645,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   // it carries) travelling along its direction into place, u of the way (a blocked step only
   // up to its first contact, the obstacle marked), and hides the parts of later steps. The pins
   // the file leaves out show in place from the end of the step after which they go in (the
-  // base's from the start), those that cannot go in not at all.
+  // base's from the start), those that cannot go in and those of parts never placed not at all.
   const plan = data.assembly;
   let step = null, stepTimer = null;
   const stepMarker = contactDot([0, 0, 0]);
@@ -668,11 +668,13 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   };
   if (plan) {
     addPins(plan.base_pins, -1);
-    plan.steps.forEach((st, k) => addPins(st.pins, k));
+    plan.steps.forEach((st, k) => { if (st.placed) addPins(st.pins, k); });
   }
+  // A step's own pins show once its part is in: at its end, and only if nothing stopped it.
   const showPins = (k, u) => {
     for (const m of pinMeshes) {
-      m.mesh.visible = k !== null && m.pin.clear && (m.step < k || (m.step === k && u >= 1));
+      m.mesh.visible = k !== null && m.pin.clear &&
+        (m.step < k || (m.step === k && u >= 1 && plan.steps[k].clear));
     }
   };
   const stepClear = (st) => st.clear && st.pins.every((pin) => pin.clear);

@@ -26,6 +26,7 @@
 namespace mechanist {
 namespace {
 
+using testing::Boxes;
 using testing::MakeAssembly;
 using testing::MakePart;
 
@@ -200,22 +201,6 @@ TEST(AssemblyPlan, BestAttemptGoesWhereTheGapIsWidest) {
   EXPECT_NEAR(u.blocked_by[0].short_by, 4.5, 1e-9);
 }
 
-// A box mesh per corner pair, all in one mesh (closed shells side by side).
-std::shared_ptr<const TriangleMesh> Boxes(
-    const std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>>& boxes) {
-  auto mesh = std::make_shared<TriangleMesh>();
-  for (const auto& [lo, hi] : boxes) {
-    const auto first = static_cast<std::int32_t>(mesh->vertices.size());
-    for (const Eigen::Vector3d& v : testing::UnitCube()->vertices) {
-      mesh->vertices.push_back(lo + v.cwiseProduct(hi - lo));
-    }
-    for (const auto& f : testing::UnitCube()->faces) {
-      mesh->faces.push_back({first + f[0], first + f[1], first + f[2]});
-    }
-  }
-  return mesh;
-}
-
 // A hinge whose pin the file leaves out (the Onshape robot hand's finger joints), at X_WF: a
 // lever whose 10 mm knuckle sits between the two cheeks of a ground fork, reaching `length`
 // along +x out of it, the fork also closed behind (-x) and, when `closed_sides`, on +-y; the
@@ -314,6 +299,20 @@ TEST(AssemblyPlan, AHingePinGoesInFromAnOpenEnd) {
   ASSERT_EQ(plan.steps[0].pins.size(), 1u);
   EXPECT_TRUE(plan.steps[0].pins[0].clear);
   EXPECT_EQ(plan.steps[0].pins[0].direction_W, V(0, 0, -1));
+  // The same with the file's steps (the lever's knuckle onto cheek_a): the pin goes in after
+  // the lever's step, however that step goes.
+  AssemblySpec spec;
+  spec.name = "stepped";
+  spec.parts = parts;
+  spec.steps = {{FeatureRef{1, 0}, FeatureRef{0, 0}}};
+  const Assembly stepped(std::move(spec));
+  const AssemblyPlan checked = PlanAssembly(stepped, Analyze(stepped), CollisionModel(stepped));
+  EXPECT_TRUE(checked.from_steps);
+  EXPECT_TRUE(checked.base_pins.empty());
+  ASSERT_EQ(checked.steps.size(), 1u);
+  ASSERT_EQ(checked.steps[0].pins.size(), 1u);
+  EXPECT_TRUE(checked.steps[0].pins[0].clear);
+  EXPECT_EQ(checked.steps[0].pins[0].direction_W, V(0, 0, -1));
 
   parts.push_back(cap("cap_above", 15, 17));
   const Assembly capped = MakeAssembly(parts);
@@ -348,7 +347,7 @@ TEST(AssemblyPlan, AHingePinGoesInFromAnOpenEnd) {
       CheckExpectation(all_ground, Analyze(all_ground), assemblable, &based);
   EXPECT_FALSE(said.passed);
   EXPECT_EQ(said.detail,
-            "found not assemblable: 0 clashes, 0 blocked insertions, 1 pins the file leaves out "
+            "found not assemblable: 0 clashes, 0 blocked insertions, 1 pin the file leaves out "
             "blocked");
 }
 

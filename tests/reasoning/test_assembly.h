@@ -2,9 +2,11 @@
 
 // Builds small assemblies in code for reasoning tests: unit-cube parts carrying features.
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "kernel/assembly/assembly.h"
@@ -20,6 +22,22 @@ inline std::shared_ptr<const TriangleMesh> UnitCube() {
     return std::shared_ptr<const TriangleMesh>(mesh);
   }();
   return cube;
+}
+
+/// Boxes given by their corners (min, max), each a closed shell of the one mesh.
+inline std::shared_ptr<const TriangleMesh> Boxes(
+    const std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>>& boxes) {
+  auto mesh = std::make_shared<TriangleMesh>();
+  for (const auto& [lo, hi] : boxes) {
+    const auto first = static_cast<std::int32_t>(mesh->vertices.size());
+    for (const Eigen::Vector3d& v : UnitCube()->vertices) {
+      mesh->vertices.push_back(lo + v.cwiseProduct(hi - lo));
+    }
+    for (const auto& f : UnitCube()->faces) {
+      mesh->faces.push_back({first + f[0], first + f[1], first + f[2]});
+    }
+  }
+  return mesh;
 }
 
 /// A feature of `kind` at `origin` along `axis` (normalised), parameters set by `set`.
