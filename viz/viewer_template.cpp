@@ -690,8 +690,8 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       (st.travel / data.mm_per_length).toFixed(2) + " " + data.length_unit + ": " +
       (st.clear ? "clear" : blockedWords(st.blocked_by));
     for (const pin of st.pins) {
-      words += "; then the pin through " + pin.holes.join(", ") + ": " +
-        (pin.clear ? "clear" : blockedWords(pin.blocked_by));
+      words += (st.placed ? "; then the pin through " : "; its pin through ") +
+        pin.holes.join(", ") + ": " + (pin.clear ? "clear" : blockedWords(pin.blocked_by));
     }
     return words + (st.placed ? "" : " (cannot be placed)");
   };
