@@ -659,12 +659,6 @@ class Planner {
 
   std::optional<InsertionStep> TryRemove(const std::vector<std::size_t>& unit,
                                          const std::vector<bool>& present) const {
-    // The pins through the unit come out first.
-    std::vector<PinInsertion> pins;
-    for (const HingePin* pin : PinsThrough(unit, present)) {
-      pins.push_back(InsertPin(*pin, present));
-      if (!pins.back().clear) return std::nullopt;
-    }
     const std::vector<std::size_t> others = Others(unit, present);
     for (const auto& [r, feature] : RemovalDirections(unit)) {
       const double travel = ClearingDistance(unit, others, r);
@@ -672,10 +666,15 @@ class Planner {
       if (Stopped(unit, others, r, travel)) {
         continue;
       }
+      // The pins through the unit come out first; they are tried once the unit's own way out
+      // is known, since most units tried cannot leave yet whatever their pins do.
       InsertionStep step = MakeStep(unit, r, feature, present);
+      for (const HingePin* pin : PinsThrough(unit, present)) {
+        step.pins.push_back(InsertPin(*pin, present));
+        if (!step.pins.back().clear) return std::nullopt;
+      }
       step.travel = travel;
       step.clear = true;
-      step.pins = std::move(pins);
       return step;
     }
     return std::nullopt;
