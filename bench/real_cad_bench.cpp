@@ -2,7 +2,9 @@
 // tessellation, recognition) and the analysis (pairs, motion, diagnostics) of every STEP file
 // of ../shared/data/real, with its parts, pairs and mobility. Goal (issue 24): each file under
 // 2 s in all on the 2-core machine. Then, not in that total, the clash check at rest
-// (`mechanist interference`: the collision model and FindContacts), with the contacts found. The
+// (`mechanist interference`: the collision model and FindContacts), with the contacts found,
+// and the assembly plan (`mechanist assemble` once the model is built: PlanAssembly), with
+// the steps it places and the parts it leaves unplaced. The
 // heap is set as the command line sets it (KeepFreedHeapForReuse). The runs after a process's first
 // find the heap grown already: for a user's time, time `mechanist analyze FILE` as a whole process
 // (farm-bench).
@@ -20,6 +22,7 @@
 #include "kernel/collision/collision_model.h"
 #include "kernel/support/heap_tuning.h"
 #include "reasoning/analysis.h"
+#include "reasoning/assembly_plan.h"
 #include "reasoning/interference.h"
 
 namespace {
@@ -48,11 +51,12 @@ int main() {
     }
   }
   std::sort(files.begin(), files.end());
-  std::printf("%-40s %6s %6s %9s %9s %9s %9s %10s %9s\n", "file", "parts", "pairs", "mobility",
-              "import s", "analyse s", "total s", "contacts", "clash s");
+  std::printf("%-40s %6s %6s %9s %9s %9s %9s %10s %9s %7s %9s %10s\n", "file", "parts", "pairs",
+              "mobility", "import s", "analyse s", "total s", "contacts", "clash s", "placed",
+              "unplaced", "assemble s");
   for (const std::filesystem::path& file : files) {
-    std::vector<double> import, analyse, clash;
-    std::size_t parts = 0, pairs = 0, contacts = 0;
+    std::vector<double> import, analyse, clash, assemble;
+    std::size_t parts = 0, pairs = 0, contacts = 0, placed = 0, unplaced = 0;
     int mobility = 0;
     for (int run = 0; run < 3; ++run) {
       auto start = std::chrono::steady_clock::now();
@@ -68,11 +72,16 @@ int main() {
       const mechanist::CollisionModel model(a);
       contacts = mechanist::FindContacts(a, mechanist::InitialState(a), model, an.pairs).size();
       clash.push_back(Seconds(start));
+      start = std::chrono::steady_clock::now();
+      const mechanist::AssemblyPlan plan = mechanist::PlanAssembly(a, an, model);
+      assemble.push_back(Seconds(start));
+      placed = plan.steps.size();
+      unplaced = plan.unplaced.size();
     }
     const double i = Median(import), n = Median(analyse);
-    std::printf("%-40s %6zu %6zu %9d %9.2f %9.2f %9.2f %10zu %9.2f\n",
+    std::printf("%-40s %6zu %6zu %9d %9.2f %9.2f %9.2f %10zu %9.2f %7zu %9zu %10.2f\n",
                 file.parent_path().filename().string().substr(0, 40).c_str(), parts, pairs,
-                mobility, i, n, i + n, contacts, Median(clash));
+                mobility, i, n, i + n, contacts, Median(clash), placed, unplaced, Median(assemble));
     std::fflush(stdout);
   }
   return 0;

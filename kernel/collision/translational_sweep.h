@@ -53,6 +53,9 @@ struct SweepContact {
 /// them that approaches blocks; when either mesh is open, every edge pair is tested and an
 /// edge crossing that approaches blocks. Throws std::invalid_argument for a negative or
 /// non-finite max_travel, a negative min_approach, or a direction that is not a unit vector.
+/// The meshes' hierarchies are searched with the parallelograms that the edges sweep (and the
+/// segments the points travel), not their boxes, so a long oblique travel costs about what it
+/// passes near.
 std::optional<SweepContact> FirstBlockingContact(
     const CollisionMesh& moving, const RigidTransform& X_WM, const CollisionMesh& obstacle,
     const RigidTransform& X_WO, const Eigen::Vector3d& d_W, const SweepOptions& options);

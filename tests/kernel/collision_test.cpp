@@ -1,10 +1,12 @@
 // Collision kernel: static intersection and contact classification against a brute-force
 // oracle over all triangle pairs, analytic depths, and the translational sweep against the
-// static test on either side of the contact it reports.
+// static test on either side of the contact it reports and, on fine meshes of balls and rods,
+// against the travels at which the spheres and cylinders through and inside them touch.
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <random>
 
@@ -438,6 +440,95 @@ TEST(TranslationalSweep, AgreesWithStaticTestOnRandomSweeps) {
     }
   }
   EXPECT_GT(contacts, 20);
+}
+
+// Radius of the largest ball about the origin inside every face's plane of a convex mesh.
+double InscribedRadius(const TriangleMesh& mesh) {
+  double radius = std::numeric_limits<double>::infinity();
+  for (const auto& f : mesh.faces) {
+    const Eigen::Vector3d &a = mesh.vertices[f[0]], &b = mesh.vertices[f[1]],
+                          &c = mesh.vertices[f[2]];
+    radius = std::min(radius, std::abs((b - a).cross(c - a).normalized().dot(a)));
+  }
+  return radius;
+}
+
+// Two finely meshed balls (hierarchies many levels deep) swept at each other from far apart
+// along random directions, most of them oblique to the meshes' edges: each mesh lies between
+// the sphere through its vertices and the one inside its faces, so the first contact falls
+// between the travels at which those spheres touch, and a ball passing wider than the outer
+// spheres meets nothing. A face of the obstacle that the sweep reaches but the hierarchy's
+// pruning drops would show as a later contact or none.
+TEST(TranslationalSweep, FineBallsMeetWhereTheirSpheresSay) {
+  const TriangleMesh ball_m = MakeUvSphere(10, 30, 60), ball_o = MakeUvSphere(6, 24, 48);
+  const CollisionMesh moving(std::make_shared<TriangleMesh>(ball_m));
+  const CollisionMesh obstacle(std::make_shared<TriangleMesh>(ball_o));
+  const double outer = 10 + 6, inner = InscribedRadius(ball_m) + InscribedRadius(ball_o);
+  ASSERT_GT(inner, 0.99 * outer);
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int contacts = 0, misses = 0;
+  for (int i = 0; i < 200; ++i) {
+    const RigidTransform X_WO = RandomPose(rng, 5.0);
+    const Eigen::Vector3d d = Eigen::Vector3d(u(rng), u(rng), u(rng)).normalized();
+    const Eigen::Vector3d across = d.cross(Eigen::Vector3d(u(rng), u(rng), u(rng))).normalized();
+    const double offset = 24.0 * std::abs(u(rng));  // the centres' distance across d
+    const Eigen::Vector3d p_WMo = X_WO.translation() - 100.0 * d + offset * across;
+    const RigidTransform X_WM =
+        RigidTransform::Translation(p_WMo) * RandomPose(rng, 0.0);  // turned about its centre
+    SweepOptions options;
+    options.max_travel = 200;
+    const auto c = FirstBlockingContact(moving, X_WM, obstacle, X_WO, d, options);
+    // Travel at which spheres about the centres whose radii sum to r touch.
+    const auto touch = [&](double r) { return 100.0 - std::sqrt(r * r - offset * offset); };
+    if (offset < inner) {
+      ASSERT_TRUE(c) << "sweep " << i << " passes " << offset << " mm off the centre";
+      EXPECT_GE(c->travel, touch(outer) - 1e-9) << i;
+      EXPECT_LE(c->travel, touch(inner) + 1e-9) << i;
+      ++contacts;
+    } else if (offset > outer) {
+      EXPECT_FALSE(c) << "sweep " << i << " passes " << offset << " mm off the centre";
+      ++misses;
+    } else if (c) {
+      EXPECT_GE(c->travel, touch(outer) - 1e-9) << i;
+    }
+  }
+  EXPECT_GT(contacts, 100);
+  EXPECT_GT(misses, 40);
+}
+
+// Two finely meshed rods crossing at random angles, one swept onto the other along their
+// common normal: their first contact is of side edges crossing (edge-edge), at a travel between
+// those at which the cylinders through their corners and the ones inside their sides touch
+// (the axes' distance then the sum of the radii). A pruned-away edge shows as a later contact
+// or none.
+TEST(TranslationalSweep, CrossedRodsMeetWhereTheirCylindersSay) {
+  constexpr int kSegments = 40;
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double inside = std::cos(kPi / kSegments);
+  for (int i = 0; i < 100; ++i) {
+    const auto moving = Cylinder(3, -60, 60, kSegments, kPi * u(rng));
+    const auto obstacle = Cylinder(2, -60, 60, kSegments, kPi * u(rng));
+    const RigidTransform X_WO = RandomPose(rng, 5.0);
+    const Eigen::Vector3d axis_o = X_WO.RotateDirection(Eigen::Vector3d::UnitZ());
+    const Eigen::Vector3d across =
+        axis_o.cross(Eigen::Vector3d(u(rng), u(rng), u(rng))).normalized();
+    const double angle = kPi / 6 + kPi / 3 * std::abs(u(rng));  // 30 to 90 degrees
+    const Eigen::Vector3d axis_m = std::cos(angle) * axis_o + std::sin(angle) * across;
+    const Eigen::Vector3d normal = axis_o.cross(axis_m).normalized();
+    // The axes' nearest points: 20 mm or less from each rod's middle, `gap` apart along normal.
+    const double gap = 8.0 + 20.0 * std::abs(u(rng));
+    const Eigen::Vector3d p_WOc = X_WO.translation() + 20.0 * u(rng) * axis_o;
+    const RigidTransform X_WM =
+        RigidTransform::FromZAxis(p_WOc + gap * normal + 20.0 * u(rng) * axis_m, axis_m);
+    SweepOptions options;
+    options.max_travel = 40;
+    const auto c = FirstBlockingContact(*moving, X_WM, *obstacle, X_WO, -normal, options);
+    ASSERT_TRUE(c) << "sweep " << i;
+    EXPECT_GE(c->travel, gap - (3 + 2) - 1e-9) << i;
+    EXPECT_LE(c->travel, gap - (3 + 2) * inside + 1e-9) << i;
+  }
 }
 
 TEST(TranslationalSweep, IgnoredRegionLetsAThreadIntoItsNut) {
