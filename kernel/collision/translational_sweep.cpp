@@ -20,8 +20,9 @@ bool LeansOffTheFrame(const Eigen::Vector3d& axis) {
   return (m.array() >= 0.1 * m.maxCoeff()).count() >= 2 && m.maxCoeff() > 0.0;
 }
 
-// The axes square to a direction of travel d, d x e_k for the frame's axes e_k, that lean off
-// the frame (LeansOffTheFrame): separating axes of every band swept along d (SweptSegment).
+// The axes perpendicular to a direction of travel d, d x e_k for the frame's axes e_k, that
+// lean off the frame (LeansOffTheFrame): separating axes of every band swept along d
+// (SweptSegment).
 struct AcrossTravel {
   explicit AcrossTravel(const Eigen::Vector3d& d) {
     for (int k = 0; k < 3; ++k) {
@@ -34,9 +35,8 @@ struct AcrossTravel {
 
 // The parallelogram that the segment from `a` to a + edge sweeps over travelling `length`
 // along the unit d (a point's path when edge is zero), grown by `margin` on every side, for
-// pruning a hierarchy of boxes. The box of a long oblique band holds much of an obstacle that
-// the band itself passes by (the Onshape robot hand's servo swept past its palm: 37 s with
-// boxes alone, under 0.1 s so). Meets is the separating-axis test of a box and a convex polygon
+// pruning a hierarchy of boxes: the box of a long oblique band holds much of an obstacle that
+// the band itself passes by. Meets is the separating-axis test of a box and a convex polygon
 // over the box's axes, the polygon's normal and the cross products of its two sides with the
 // box's axes (Eberly, "Intersection of convex objects: the method of separating axes"), the
 // last two kinds where they lean off the frame. The axes across d (`across`) serve every band
@@ -45,21 +45,18 @@ class SweptSegment {
  public:
   SweptSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& edge, const Eigen::Vector3d& d,
                double length, const AcrossTravel& across, double margin)
-      : a_(a), margin_(margin) {
-    const Eigen::Vector3d sweep = length * d;
-    const Eigen::Vector3d low = edge.cwiseMin(0.0) + sweep.cwiseMin(0.0);
-    const Eigen::Vector3d high = edge.cwiseMax(0.0) + sweep.cwiseMax(0.0);
+      : a_(a), edge_(edge), sweep_(length * d), margin_(margin) {
+    const Eigen::Vector3d low = edge_.cwiseMin(0.0) + sweep_.cwiseMin(0.0);
+    const Eigen::Vector3d high = edge_.cwiseMax(0.0) + sweep_.cwiseMax(0.0);
     centre_ = a + 0.5 * (low + high);
     half_ = 0.5 * (high - low) + Eigen::Vector3d::Constant(margin);
-    // The polygon's corners project on an axis to 0, its dot products with edge and with
-    // sweep, and their sum; along an axis across d the sweep projects to 0.
-    for (const Eigen::Vector3d& axis : across.axes) Add(axis, edge, Eigen::Vector3d::Zero());
+    for (const Eigen::Vector3d& axis : across.axes) Add(axis);
     if (edge.isZero()) return;
     for (const Eigen::Vector3d& axis :
          {Eigen::Vector3d(edge.cross(d)), Eigen::Vector3d(edge.cross(Eigen::Vector3d::UnitX())),
           Eigen::Vector3d(edge.cross(Eigen::Vector3d::UnitY())),
           Eigen::Vector3d(edge.cross(Eigen::Vector3d::UnitZ()))}) {
-      if (LeansOffTheFrame(axis)) Add(axis, Eigen::Vector3d::Zero(), sweep);
+      if (LeansOffTheFrame(axis)) Add(axis);
     }
   }
 
@@ -82,25 +79,28 @@ class SweptSegment {
     double lo = 0.0, hi = 0.0;              // the grown polygon's extent along it, from a
   };
 
-  // An axis along which the polygon's sides `edge` and `sweep` (either left zero when it
-  // projects to 0) run.
-  void Add(const Eigen::Vector3d& direction, const Eigen::Vector3d& edge,
-           const Eigen::Vector3d& sweep) {
+  // An axis to test, with the polygon's extent along it: its corners project to 0, its
+  // sides' projections and their sum. Both sides are projected on every axis, even where one
+  // is perpendicular to it in exact arithmetic: the normal of an edge that runs along d within
+  // rounding is rounding noise, along which the edge may reach far.
+  void Add(const Eigen::Vector3d& direction) {
     const Eigen::Vector3d magnitudes = direction.cwiseAbs();
-    const double e = direction.dot(edge), s = direction.dot(sweep);
+    const double e = direction.dot(edge_), s = direction.dot(sweep_);
     const double grown = margin_ * magnitudes.sum();
     axes_[count_++] = {direction, magnitudes, std::min(0.0, e) + std::min(0.0, s) - grown,
                        std::max(0.0, e) + std::max(0.0, s) + grown};
   }
 
-  Eigen::Vector3d a_, centre_, half_;  // half_: the grown polygon's box's half extents
+  Eigen::Vector3d a_, edge_, sweep_;
+  Eigen::Vector3d centre_, half_;  // the grown polygon's box
   double margin_;
+  // At most three axes across d and the edge's four (its normal and three cross products).
   std::array<Axis, 7> axes_;
   int count_ = 0;
 };
 
 // Calls visit(face) for every face of `mesh` in a leaf of its hierarchy whose box meets
-// `region` (SweptSegment::Meets, in the mesh's frame M).
+// `region` (SweptSegment::Meets, in the mesh's own frame).
 template <typename Visit>
 void ForEachFaceNear(const CollisionMesh& mesh, const SweptSegment& region, Visit&& visit) {
   std::vector<std::int32_t> stack = {0};
@@ -226,8 +226,9 @@ std::optional<SweepContact> FirstBlockingContact(
 
   for (const Eigen::Vector3d& v : leading_m) {
     // Only travels below the best contact so far matter.
-    const Eigen::Vector3d end = v + best.limit(L) * d;
-    const SweptSegment path(v, Eigen::Vector3d::Zero(), d, best.limit(L), across_o, margin);
+    const double limit = best.limit(L);
+    const Eigen::Vector3d end = v + limit * d;
+    const SweptSegment path(v, Eigen::Vector3d::Zero(), d, limit, across_o, margin);
     ForEachFaceNear(obstacle, path, [&](std::int32_t f) {
       const Eigen::Vector3d& n = obstacle.face_normals()[f];
       const double approach = obstacle.closed() ? -n.dot(d) : std::abs(n.dot(d));

@@ -457,8 +457,9 @@ double InscribedRadius(const TriangleMesh& mesh) {
 // along random directions, most of them oblique to the meshes' edges: each mesh lies between
 // the sphere through its vertices and the one inside its faces, so the first contact falls
 // between the travels at which those spheres touch, and a ball passing wider than the outer
-// spheres meets nothing. A face of the obstacle that the sweep reaches but the hierarchy's
-// pruning drops would show as a later contact or none.
+// spheres meets nothing; the exact static test finds the meshes apart just before the contact
+// and intersecting just after it. A face of the obstacle that the sweep reaches but the
+// hierarchy's pruning drops would show as a later contact or none.
 TEST(TranslationalSweep, FineBallsMeetWhereTheirSpheresSay) {
   const TriangleMesh ball_m = MakeUvSphere(10, 30, 60), ball_o = MakeUvSphere(6, 24, 48);
   const CollisionMesh moving(std::make_shared<TriangleMesh>(ball_m));
@@ -481,10 +482,13 @@ TEST(TranslationalSweep, FineBallsMeetWhereTheirSpheresSay) {
     const auto c = FirstBlockingContact(moving, X_WM, obstacle, X_WO, d, options);
     // Travel at which spheres about the centres whose radii sum to r touch.
     const auto touch = [&](double r) { return 100.0 - std::sqrt(r * r - offset * offset); };
+    auto at = [&](double s) { return RigidTransform::Translation(s * d) * X_WM; };
     if (offset < inner) {
       ASSERT_TRUE(c) << "sweep " << i << " passes " << offset << " mm off the centre";
       EXPECT_GE(c->travel, touch(outer) - 1e-9) << i;
       EXPECT_LE(c->travel, touch(inner) + 1e-9) << i;
+      EXPECT_FALSE(SurfacesIntersect(moving, at(c->travel - 1e-7), obstacle, X_WO)) << i;
+      EXPECT_TRUE(SurfacesIntersect(moving, at(c->travel + 1e-7), obstacle, X_WO)) << i;
       ++contacts;
     } else if (offset > outer) {
       EXPECT_FALSE(c) << "sweep " << i << " passes " << offset << " mm off the centre";
@@ -500,8 +504,8 @@ TEST(TranslationalSweep, FineBallsMeetWhereTheirSpheresSay) {
 // Two finely meshed rods crossing at random angles, one swept onto the other along their
 // common normal: their first contact is of side edges crossing (edge-edge), at a travel between
 // those at which the cylinders through their corners and the ones inside their sides touch
-// (the axes' distance then the sum of the radii). A pruned-away edge shows as a later contact
-// or none.
+// (the axes' distance then the sum of the radii), the meshes apart just before it and
+// intersecting just after. A pruned-away edge shows as a later contact or none.
 TEST(TranslationalSweep, CrossedRodsMeetWhereTheirCylindersSay) {
   constexpr int kSegments = 40;
   std::mt19937 rng(29);
@@ -526,8 +530,12 @@ TEST(TranslationalSweep, CrossedRodsMeetWhereTheirCylindersSay) {
     options.max_travel = 40;
     const auto c = FirstBlockingContact(*moving, X_WM, *obstacle, X_WO, -normal, options);
     ASSERT_TRUE(c) << "sweep " << i;
+    EXPECT_EQ(c->kind, SweepContact::Kind::kEdgeEdge) << i;
     EXPECT_GE(c->travel, gap - (3 + 2) - 1e-9) << i;
     EXPECT_LE(c->travel, gap - (3 + 2) * inside + 1e-9) << i;
+    auto at = [&](double s) { return RigidTransform::Translation(-s * normal) * X_WM; };
+    EXPECT_FALSE(SurfacesIntersect(*moving, at(c->travel - 1e-7), *obstacle, X_WO)) << i;
+    EXPECT_TRUE(SurfacesIntersect(*moving, at(c->travel + 1e-7), *obstacle, X_WO)) << i;
   }
 }
 
