@@ -1,11 +1,10 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer harnesses (clang, AddressSanitizer, UndefinedBehaviorSanitizer) into
-# ${BUILD_DIR:-build-sanitize} (the folder of `scripts/test.sh --sanitize`, whose objects they
-# share) and runs each for SECONDS (default 600; STEP import three times as
-# long) on seed corpora of the examples, tests/data/bad and ../shared/data. Crashes, hangs and
-# sanitizer reports go to BUILD_DIR/fuzz/artifacts/<fuzzer>/; the run goes on after each
-# (libFuzzer's fork mode), and a summary line per fuzzer ends the run. Exit code 1 when any
-# fuzzer left an artifact.
+# Builds the libFuzzer harnesses (clang, AddressSanitizer, UndefinedBehaviorSanitizer, libFuzzer's
+# coverage in every object) into ${BUILD_DIR:-build-fuzz} and runs each for SECONDS (default
+# 600; STEP import three times as long) on seed corpora of the examples, tests/data/bad and
+# ../shared/data. Crashes, hangs and sanitizer reports go to BUILD_DIR/fuzz/artifacts/<fuzzer>/;
+# the run goes on after each (libFuzzer's fork mode), and a summary line per fuzzer ends the
+# run. Exit code 1 when any fuzzer left an artifact.
 #   scripts/fuzz.sh [SECONDS] [FUZZER...]   e.g. scripts/fuzz.sh 60 stl_reader_fuzzer
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,9 +18,9 @@ all=(assembly_file_fuzzer stl_reader_fuzzer obj_reader_fuzzer ply_reader_fuzzer
 if [ $# -gt 0 ]; then fuzzers=("$@"); else fuzzers=("${all[@]}"); fi
 
 scripts/install-deps.sh
-build_dir=${BUILD_DIR:-build-sanitize}
+build_dir=${BUILD_DIR:-build-fuzz}
 CC=clang CXX=clang++ cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DMECHANIST_FUZZ=ON \
-  -DMECHANIST_BUILD_BENCH=OFF > /dev/null
+  -DMECHANIST_FUZZ_COVERAGE=ON -DMECHANIST_BUILD_BENCH=OFF > /dev/null
 cmake --build "$build_dir" -j "$(nproc)" --target "${fuzzers[@]}"
 
 shared=../shared/data
