@@ -511,6 +511,30 @@ TEST(ViewerPage, WorksInABrowser) {
                        "then the pin through cheek_a/pivot, cheek_b/pivot, lever/pivot: "
                        "clear"}}}};
   EXPECT_EQ(RunBrowser(dir, "clevis.html", pin), "") << "a pin the file leaves out";
+
+  // The same clevis with a second guard against cheek_a's outside: the pin can enter from
+  // neither end, so the lever cannot be placed; its row says that only its pin keeps it out,
+  // and no pin shows.
+  const std::string clevis_file =
+      std::string(MECHANIST_SOURCE_DIR) + "/examples/clevis_pin_left_out/assembly.json";
+  const Assembly guarded = LoadAssemblyText(
+      testing::Replace(testing::ReadText(clevis_file), R"(    {"id": "lever",)",
+                       R"(    {"id": "guard_a", "ground": true,
+     "library": {"kind": "plate", "length": 40, "width": 20, "thickness": 5},
+     "pose": {"position": [-15, 0, 40], "rotation": {"axis": [0, 1, 0], "angle": 90}}},
+    {"id": "lever",)"),
+      clevis_file);
+  std::ofstream(dir / "guarded.html") << ViewerHtml(guarded, Analyze(guarded));
+  const json unplaced = {{"pins",
+                          {{"part", "lever"},
+                           {"before", 0},
+                           {"after", 0},
+                           {"error", true},
+                           {"words",
+                            {"clear; its pin through cheek_a/pivot, cheek_b/pivot, lever/pivot: "
+                             "blocked by guard",
+                             "(cannot be placed)"}}}}};
+  EXPECT_EQ(RunBrowser(dir, "guarded.html", unplaced), "") << "a pin that cannot go in";
 }
 
 }  // namespace
