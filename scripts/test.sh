@@ -33,7 +33,7 @@ excluded=()
 if $sanitize; then
   export CC=clang CXX=clang++
   # The fuzzers are built to replay their seeds; without libFuzzer's coverage, which only
-  # fuzzing needs (scripts/fuzz.sh builds with it), the sanitized tests take half the time.
+  # fuzzing needs (scripts/fuzz.sh builds with it), the sanitized tests take 0.6 of the time.
   MECHANIST_CMAKE_ARGS+=" -DMECHANIST_FUZZ=ON -DMECHANIST_FUZZ_COVERAGE=OFF"
   MECHANIST_CMAKE_ARGS+=" -DMECHANIST_BUILD_BENCH=OFF"
   # Any report ends the test that made it. Open CASCADE and VTK keep some memory to the end of
