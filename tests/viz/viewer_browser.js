@@ -228,6 +228,7 @@ function fail(message) {
            result.after + " at its end, not " + t.before + " and " + t.after);
     }
     const words = [].concat(t.words);  // one or more pieces of the row, in order
+    if (!words.length || words.some((w) => !w)) fail("no words to look for in the row");
     let at = 0;
     const inOrder = words.every((w) => {
       const found = result.words.indexOf(w, at);

@@ -514,7 +514,8 @@ TEST(ViewerPage, WorksInABrowser) {
 
   // The same clevis with a second guard against cheek_a's outside: the pin can enter from
   // neither end, so the lever cannot be placed; its row says that only its pin keeps it out,
-  // and no pin shows.
+  // and no pin shows. Both ends stop the pin as near its place, so the attempt reported is the
+  // first, along its first hole's axis (-x), which the guard on cheek_b's side stops.
   const std::string clevis_file =
       std::string(MECHANIST_SOURCE_DIR) + "/examples/clevis_pin_left_out/assembly.json";
   const Assembly guarded = LoadAssemblyText(
@@ -532,7 +533,7 @@ TEST(ViewerPage, WorksInABrowser) {
                            {"error", true},
                            {"words",
                             {"clear; its pin through cheek_a/pivot, cheek_b/pivot, lever/pivot: "
-                             "blocked by guard",
+                             "blocked by guard after",
                              "(cannot be placed)"}}}}};
   EXPECT_EQ(RunBrowser(dir, "guarded.html", unplaced), "") << "a pin that cannot go in";
 }
