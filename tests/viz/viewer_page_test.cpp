@@ -499,8 +499,9 @@ TEST(ViewerPage, WorksInABrowser) {
 
   // A lever in a clevis whose pin the file leaves out: the pin shows in place once the lever
   // is in, entering from cheek_a's side (the guard covers cheek_b's).
-  const Assembly clevis = LoadAssembly(std::string(MECHANIST_SOURCE_DIR) +
-                                       "/examples/clevis_pin_left_out/assembly.json");
+  const std::string clevis_file =
+      std::string(MECHANIST_SOURCE_DIR) + "/examples/clevis_pin_left_out/assembly.json";
+  const Assembly clevis = LoadAssembly(clevis_file);
   std::ofstream(dir / "clevis.html") << ViewerHtml(clevis, Analyze(clevis));
   const json pin = {{"pins",
                      {{"part", "lever"},
@@ -516,15 +517,13 @@ TEST(ViewerPage, WorksInABrowser) {
   // neither end, so the lever cannot be placed; its row says that only its pin keeps it out,
   // and no pin shows. Both ends stop the pin as near its place, so the attempt reported is the
   // first, along its first hole's axis (-x), which the guard on cheek_b's side stops.
-  const std::string clevis_file =
-      std::string(MECHANIST_SOURCE_DIR) + "/examples/clevis_pin_left_out/assembly.json";
-  const Assembly guarded = LoadAssemblyText(
+  const std::string guarded_text =
       testing::Replace(testing::ReadText(clevis_file), R"(    {"id": "lever",)",
                        R"(    {"id": "guard_a", "ground": true,
      "library": {"kind": "plate", "length": 40, "width": 20, "thickness": 5},
      "pose": {"position": [-15, 0, 40], "rotation": {"axis": [0, 1, 0], "angle": 90}}},
-    {"id": "lever",)"),
-      clevis_file);
+    {"id": "lever",)");
+  const Assembly guarded = LoadAssemblyText(guarded_text, clevis_file);
   std::ofstream(dir / "guarded.html") << ViewerHtml(guarded, Analyze(guarded));
   const json unplaced = {{"pins",
                           {{"part", "lever"},
