@@ -13,15 +13,12 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "kernel/assembly/assembly.h"
 #include "kernel/collision/collision_model.h"
 #include "reasoning/analysis.h"
-
-namespace CLI {
-class App;
-}
 
 namespace mechanist::cli {
 
@@ -50,6 +47,47 @@ struct Session {
   void Report(const std::string& path, std::string content);
 };
 
+/// A bound on a number option's value.
+enum class Bound { kNone, kNonNegative, kPositive };
+
+/// One option of a command, declared as data: main.cpp alone hands the options to CLI11, whose
+/// header takes 8 to 9 seconds to compile in every source that includes it. Read as CLI11
+/// reads: `Option("--out", &out, "output folder").Required()`.
+struct Option {
+  /// Where the parsed value goes; a bool makes a flag.
+  using Target =
+      std::variant<std::string*, std::size_t*, double*, std::vector<std::string>*, bool*>;
+
+  Option(std::string name, Target target, std::string help)
+      : name(std::move(name)), target(target), help(std::move(help)) {}
+  Option&& Required() && {
+    required = true;
+    return std::move(*this);
+  }
+  Option&& Bounded(Bound b) && {
+    bound = b;
+    return std::move(*this);
+  }
+  /// Splits a list's value ("png,glb").
+  Option&& Delimiter(char d) && {
+    delimiter = d;
+    return std::move(*this);
+  }
+  /// May not be given with `other`, an option declared before this one.
+  Option&& Excludes(std::string other) && {
+    excludes = std::move(other);
+    return std::move(*this);
+  }
+
+  std::string name;  ///< as given, "--json"
+  Target target;
+  std::string help;
+  bool required = false;
+  Bound bound = Bound::kNone;
+  char delimiter = '\0';
+  std::string excludes;
+};
+
 /// One command of the table.
 struct Command {
   std::string name;
@@ -58,8 +96,8 @@ struct Command {
   Input input = Input::kRead;
   bool analysis = false;   ///< Analyze the assembly
   bool collision = false;  ///< build the collision model
-  /// Declares the command's own options on its subcommand (FILE is declared by main).
-  std::function<void(CLI::App&)> options;
+  /// The command's own options, in the order `--help` lists them (FILE is declared by main).
+  std::vector<Option> options;
   /// Checks the options before anything is read; may be empty.
   std::function<void(const std::string& file)> check;
   /// Runs the command; returns its exit code.

@@ -7,7 +7,11 @@
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
+#include <map>
 #include <new>
+#include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "cli/commands.h"
@@ -18,6 +22,25 @@
 namespace {
 
 using namespace mechanist::cli;
+
+// Declares `option` on `app`; `declared` holds the options declared on `app` before it.
+void Declare(const Option& option, CLI::App& app, std::map<std::string, CLI::Option*>& declared) {
+  CLI::Option* declaration = std::visit(
+      [&](auto* target) {
+        if constexpr (std::is_same_v<decltype(target), bool*>) {
+          return app.add_flag(option.name, *target, option.help);
+        } else {
+          return app.add_option(option.name, *target, option.help);
+        }
+      },
+      option.target);
+  if (option.required) declaration->required();
+  if (option.bound == Bound::kNonNegative) declaration->check(CLI::NonNegativeNumber);
+  if (option.bound == Bound::kPositive) declaration->check(CLI::PositiveNumber);
+  if (option.delimiter != '\0') declaration->delimiter(option.delimiter);
+  if (!option.excludes.empty()) declaration->excludes(declared.at(option.excludes));
+  declared[option.name] = declaration;
+}
 
 // Reads what `command` needs, runs it, and writes its reports once it has run.
 int Run(const Command& command, const std::string& file) {
@@ -55,7 +78,8 @@ int main(int argc, char** argv) {
   for (const Command& command : commands) {
     CLI::App* sub = app.add_subcommand(command.name, command.help);
     sub->add_option("FILE", file, command.file_help)->required();
-    if (command.options) command.options(*sub);
+    std::map<std::string, CLI::Option*> declared;
+    for (const Option& option : command.options) Declare(option, *sub, declared);
     subcommands.push_back(sub);
   }
 

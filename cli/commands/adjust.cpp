@@ -1,4 +1,3 @@
-#include <CLI/CLI.hpp>
 #include <iostream>
 #include <memory>
 
@@ -19,9 +18,9 @@ Command AdjustCommand() {
   Command c;
   c.name = "adjust";
   c.help = "Solve the adjustments for the goals; exit 1 if a goal cannot be met";
-  c.options = [o](CLI::App& app) {
-    app.add_option("--json", o->json, "write the JSON report to this file");
-    app.add_option("--write", o->write, "write the adjusted assembly to this new file");
+  c.options = {
+      Option("--json", &o->json, "write the JSON report to this file"),
+      Option("--write", &o->write, "write the adjusted assembly to this new file"),
   };
   c.run = [o](Session& s) {
     const Assembly& assembly = *s.assembly;

@@ -1,4 +1,3 @@
-#include <CLI/CLI.hpp>
 #include <iostream>
 #include <memory>
 
@@ -17,9 +16,9 @@ Command AnalyzeCommand() {
   c.help = "Recognise pairs and subassemblies; print a summary, optionally write reports";
   c.input = Input::kAdjusted;
   c.analysis = true;
-  c.options = [o](CLI::App& app) {
-    app.add_option("--json", o->json, "write the JSON report to this file");
-    app.add_option("--dot", o->dot, "write the pair graph as Graphviz DOT to this file");
+  c.options = {
+      Option("--json", &o->json, "write the JSON report to this file"),
+      Option("--dot", &o->dot, "write the pair graph as Graphviz DOT to this file"),
   };
   c.run = [o](Session& s) {
     WriteAnalysisSummary(*s.assembly, *s.analysis, std::cout);

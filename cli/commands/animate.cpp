@@ -1,6 +1,5 @@
 #include <fmt/format.h>
 
-#include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -41,23 +40,22 @@ Command AnimateCommand() {
   c.help = "Run the mechanism and write PNG frames, videos, a ParaView series and glTF";
   c.input = Input::kAdjusted;
   c.analysis = true;
-  c.options = [o](CLI::App& app) {
-    app.add_option("--out", o->out, "output folder (created)")->required();
-    app.add_option("--frames", o->frames, "number of frames (default 120)");
-    app.add_option("--amount", o->amount,
-                   "how far: driver revolutions or length units (default: the driver's amount)")
-        ->check(CLI::NonNegativeNumber);
-    app.add_option("--size", o->size, "image size WIDTHxHEIGHT (default 800x600)");
-    app.add_option("--format", o->formats,
-                   "png,ogv,mp4,pvd,glb (default: all; mp4 only when ffmpeg is installed)")
-        ->delimiter(',');
-    app.add_option("--view", o->view, "iso, front, top or side (default iso)");
-    app.add_option("--driver", o->driver, "run only this driver (default: all at their rates)");
-    app.add_option("--fps", o->fps, "video and glTF frames per second (default 30)");
-    app.add_option("--gaps", o->gaps,
-                   "show the enclosed gaps found at this voxel size (file units)");
-    app.add_flag("--no-clashes", o->no_clashes, "skip the clash checks (no red parts)");
-    app.add_flag("--no-axes", o->no_axes, "do not draw feature axes");
+  c.options = {
+      Option("--out", &o->out, "output folder (created)").Required(),
+      Option("--frames", &o->frames, "number of frames (default 120)"),
+      Option("--amount", &o->amount,
+             "how far: driver revolutions or length units (default: the driver's amount)")
+          .Bounded(Bound::kNonNegative),
+      Option("--size", &o->size, "image size WIDTHxHEIGHT (default 800x600)"),
+      Option("--format", &o->formats,
+             "png,ogv,mp4,pvd,glb (default: all; mp4 only when ffmpeg is installed)")
+          .Delimiter(','),
+      Option("--view", &o->view, "iso, front, top or side (default iso)"),
+      Option("--driver", &o->driver, "run only this driver (default: all at their rates)"),
+      Option("--fps", &o->fps, "video and glTF frames per second (default 30)"),
+      Option("--gaps", &o->gaps, "show the enclosed gaps found at this voxel size (file units)"),
+      Option("--no-clashes", &o->no_clashes, "skip the clash checks (no red parts)"),
+      Option("--no-axes", &o->no_axes, "do not draw feature axes"),
   };
   // The options are checked before the file is read and its adjustments solved.
   c.check = [o](const std::string& file) {

@@ -1,4 +1,3 @@
-#include <CLI/CLI.hpp>
 #include <iostream>
 #include <memory>
 
@@ -16,8 +15,8 @@ Command AssembleCommand() {
   c.input = Input::kAdjusted;
   c.analysis = true;
   c.collision = true;
-  c.options = [json](CLI::App& app) {
-    app.add_option("--json", *json, "write the JSON report to this file");
+  c.options = {
+      Option("--json", json.get(), "write the JSON report to this file"),
   };
   c.run = [json](Session& s) {
     const AssemblyPlan plan =

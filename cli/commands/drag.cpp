@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <CLI/CLI.hpp>
 #include <iostream>
 #include <memory>
 
@@ -23,12 +22,12 @@ Command DragCommand() {
   c.help = "Turn or push one part: what moves with it, and which pair absorbs the motion";
   c.input = Input::kAdjusted;
   c.analysis = true;
-  c.options = [o](CLI::App& app) {
-    app.add_option("--part", o->part, "the part to drag")->required();
-    app.add_option("--feature", o->feature,
-                   "the feature whose axis to use (default: its first in a pair)");
-    CLI::Option* rotate = app.add_flag("--rotate", o->rotate, "turn about the axis (default)");
-    app.add_flag("--translate", o->translate, "push along the axis")->excludes(rotate);
+  c.options = {
+      Option("--part", &o->part, "the part to drag").Required(),
+      Option("--feature", &o->feature,
+             "the feature whose axis to use (default: its first in a pair)"),
+      Option("--rotate", &o->rotate, "turn about the axis (default)"),
+      Option("--translate", &o->translate, "push along the axis").Excludes("--rotate"),
   };
   c.run = [o](Session& s) {
     const Assembly& assembly = *s.assembly;

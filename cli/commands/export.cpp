@@ -1,6 +1,5 @@
 #include <fmt/format.h>
 
-#include <CLI/CLI.hpp>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -31,13 +30,13 @@ Command ExportCommand() {
   c.help = "Write the mechanism for simulators: URDF and MJCF with joints and couplings";
   c.input = Input::kAdjusted;
   c.analysis = true;
-  c.options = [o](CLI::App& app) {
-    app.add_option("--urdf", o->urdf, "write URDF to this file (meshes beside it)");
-    app.add_option("--mjcf", o->mjcf, "write MuJoCo MJCF to this file (meshes beside it)");
-    app.add_option("--density", o->density, "kg/m^3 of every part (default 7850, steel)");
-    app.add_flag("--drive", o->drive, "MJCF: a keyframe at the file pose with the drivers running");
-    app.add_flag("--no-limits", o->no_limits,
-                 "skip the swept check for joint ranges (faster on large files)");
+  c.options = {
+      Option("--urdf", &o->urdf, "write URDF to this file (meshes beside it)"),
+      Option("--mjcf", &o->mjcf, "write MuJoCo MJCF to this file (meshes beside it)"),
+      Option("--density", &o->density, "kg/m^3 of every part (default 7850, steel)"),
+      Option("--drive", &o->drive, "MJCF: a keyframe at the file pose with the drivers running"),
+      Option("--no-limits", &o->no_limits,
+             "skip the swept check for joint ranges (faster on large files)"),
   };
   c.check = [o](const std::string& file) {
     if (o->urdf.empty() && o->mjcf.empty()) {

@@ -1,4 +1,3 @@
-#include <CLI/CLI.hpp>
 #include <cctype>
 #include <filesystem>
 #include <iostream>
@@ -20,8 +19,8 @@ Command FeaturesCommand() {
   c.help = "Recognise the features of a mesh, or of an assembly's mesh parts";
   c.file_help = "a mesh (.stl, .obj, .ply, .off), an assembly (.json) or a STEP file";
   c.input = Input::kNone;
-  c.options = [json](CLI::App& app) {
-    app.add_option("--json", *json, "write the JSON report to this file");
+  c.options = {
+      Option("--json", json.get(), "write the JSON report to this file"),
   };
   c.run = [json](Session& s) {
     std::string extension = std::filesystem::path(s.file).extension().string();

@@ -1,6 +1,5 @@
 #include <fmt/format.h>
 
-#include <CLI/CLI.hpp>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -23,10 +22,10 @@ Command GapsCommand() {
   Command c;
   c.name = "gaps";
   c.help = "Find the empty spaces enclosed between parts, with their volumes";
-  c.options = [o](CLI::App& app) {
-    app.add_option("--voxel", o->voxel, "voxel edge, in the file's length units")->required();
-    app.add_option("--json", o->json, "write the JSON report to this file");
-    app.add_option("--vtk", o->vtk, "write the voxels as a VTK image (.vti) to this file");
+  c.options = {
+      Option("--voxel", &o->voxel, "voxel edge, in the file's length units").Required(),
+      Option("--json", &o->json, "write the JSON report to this file"),
+      Option("--vtk", &o->vtk, "write the voxels as a VTK image (.vti) to this file"),
   };
   c.run = [o](Session& s) {
     const Assembly& assembly = *s.assembly;

@@ -1,6 +1,5 @@
 #include "reasoning/interference.h"
 
-#include <CLI/CLI.hpp>
 #include <iostream>
 #include <memory>
 
@@ -18,8 +17,8 @@ Command InterferenceCommand() {
   c.input = Input::kAdjusted;
   c.analysis = true;
   c.collision = true;
-  c.options = [json](CLI::App& app) {
-    app.add_option("--json", *json, "write the JSON report to this file");
+  c.options = {
+      Option("--json", json.get(), "write the JSON report to this file"),
   };
   c.run = [json](Session& s) {
     const auto contacts =

@@ -1,4 +1,3 @@
-#include <CLI/CLI.hpp>
 #include <iostream>
 #include <memory>
 
@@ -20,12 +19,12 @@ Command SweepCommand() {
   c.input = Input::kAdjusted;
   c.analysis = true;
   c.collision = true;
-  c.options = [o](CLI::App& app) {
-    app.add_option("--driver", o->driver, "run only this driver (default: all at their rates)");
-    app.add_option("--amount", o->amount,
-                   "how far: driver revolutions or length units (default: the driver's amount)")
-        ->check(CLI::NonNegativeNumber);
-    app.add_option("--json", o->json, "write the JSON report to this file");
+  c.options = {
+      Option("--driver", &o->driver, "run only this driver (default: all at their rates)"),
+      Option("--amount", &o->amount,
+             "how far: driver revolutions or length units (default: the driver's amount)")
+          .Bounded(Bound::kNonNegative),
+      Option("--json", &o->json, "write the JSON report to this file"),
   };
   c.run = [o](Session& s) {
     const std::optional<std::size_t> driver = DriverIndex(s.file, *s.assembly, o->driver);

@@ -1,6 +1,5 @@
 #include <fmt/format.h>
 
-#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -26,18 +25,16 @@ Command ViewCommand() {
   c.help = "Write an interactive 3D viewer of the mechanism: one HTML file, opens offline";
   c.input = Input::kAdjusted;
   c.analysis = true;
-  c.options = [o](CLI::App& app) {
-    app.add_option("--out", o->out, "the HTML file (default: FILE's name with .html, here)");
-    CLI::Option* ranges = app.add_flag(
-        "--ranges", o->ranges, "search where each drag stops even above 100,000 triangles (slow)");
-    app.add_flag("--no-ranges", o->no_ranges, "do not search where each drag stops")
-        ->excludes(ranges);
-    CLI::Option* plan = app.add_flag(
-        "--plan", o->plan, "plan the assembly sequence even above 100,000 triangles (slow)");
-    app.add_flag("--no-plan", o->no_plan, "do not plan the assembly sequence")->excludes(plan);
-    app.add_option("--gaps", o->gaps,
-                   "show the enclosed gaps found at this voxel size (file units)")
-        ->check(CLI::PositiveNumber);
+  c.options = {
+      Option("--out", &o->out, "the HTML file (default: FILE's name with .html, here)"),
+      Option("--ranges", &o->ranges,
+             "search where each drag stops even above 100,000 triangles (slow)"),
+      Option("--no-ranges", &o->no_ranges, "do not search where each drag stops")
+          .Excludes("--ranges"),
+      Option("--plan", &o->plan, "plan the assembly sequence even above 100,000 triangles (slow)"),
+      Option("--no-plan", &o->no_plan, "do not plan the assembly sequence").Excludes("--plan"),
+      Option("--gaps", &o->gaps, "show the enclosed gaps found at this voxel size (file units)")
+          .Bounded(Bound::kPositive),
   };
   c.run = [o](Session& s) {
     const std::string path =
