@@ -35,7 +35,7 @@ Target TargetOf(const AssemblySpec& spec, FeatureRef ref) {
 // part's x axis made perpendicular to u (its y when x is along u), so that the choice is the
 // same on every machine.
 Matrix3d Shortest(const Vector3d& u, const Vector3d& v) {
-  if (u.dot(v) > -1.0 + 1e-12) return Eigen::Quaterniond::FromTwoVectors(u, v).toRotationMatrix();
+  if (u.dot(v) > -1.0 + 1e-12) return ShortestRotation(u, v);
   Vector3d w = Vector3d::UnitX() - u.x() * u;
   if (w.norm() < 1e-6) w = Vector3d::UnitY() - u.y() * u;
   return Eigen::AngleAxisd(M_PI, w.normalized()).toRotationMatrix();

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>  // fmt::join
 
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -17,19 +16,12 @@
 #include "kernel/collision/collision_mesh_cache.h"
 #include "kernel/collision/translational_sweep.h"
 #include "kernel/geometry/aabb.h"
+#include "kernel/solvers/linear_algebra.h"
 #include "kernel/support/number_format.h"
 #include "kernel/support/parallel_for.h"
 
 namespace mechanist {
 namespace {
-
-// An orthonormal basis of m's null space, as columns: the right singular vectors whose
-// singular values are at most `tolerance`.
-Eigen::MatrixXd NullSpace(const Eigen::MatrixXd& m, double tolerance) {
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(m, Eigen::ComputeFullV);
-  const Eigen::Index rank = (svd.singularValues().array() > tolerance).count();
-  return svd.matrixV().rightCols(m.cols() - rank);
-}
 
 // The relative twists (rotation; velocity of the point at the origin) of body B against S
 // that the pairs between them allow: the null space of their velocity constraints, as

@@ -15,8 +15,6 @@
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <Eigen/Eigenvalues>
-#include <Eigen/QR>
-#include <Eigen/SVD>
 #include <GProp_GProps.hxx>
 #include <GeomLib_IsPlanarSurface.hxx>
 #include <IMeshData_Status.hxx>
@@ -67,6 +65,7 @@
 #include "io/occt/part21_work_library.h"
 #include "kernel/geometry/circle_fit.h"
 #include "kernel/mesh/mesh_check.h"
+#include "kernel/solvers/linear_algebra.h"
 #include "kernel/support/number_format.h"
 #include "kernel/support/parallel_for.h"
 
@@ -276,7 +275,7 @@ AnalyticFit FitSphere(const SurfaceSamples& s, double tolerance) {
     A.row(k) << q.x(), q.y(), q.z(), 1.0;
     b(k) = -q.squaredNorm();
   }
-  const Eigen::Vector4d c = A.colPivHouseholderQr().solve(b);
+  const Eigen::Vector4d c = SolveLeastSquares(A, b);
   const Eigen::Vector3d centre = -0.5 * c.head<3>();
   const double r2 = centre.squaredNorm() - c(3);
   if (!(r2 > 0)) return {};
@@ -315,8 +314,7 @@ AnalyticFit FitRevolution(const SurfaceSamples& s, double tolerance) {
     const Eigen::Vector3d q = (s.points[k] - mean) / scale;
     rows.row(k) << q.cross(s.normals[k]).transpose(), s.normals[k].transpose();
   }
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(rows, Eigen::ComputeThinV);
-  const Eigen::Matrix<double, 6, 1> v = svd.matrixV().col(5);
+  const Eigen::Matrix<double, 6, 1> v = LeastSingularVector(rows);
   if (v.head<3>().norm() < 1e-6) return {};
   const Eigen::Vector3d d = v.head<3>().normalized(), m = v.tail<3>() / v.head<3>().norm();
   const Eigen::Vector3d origin = mean + scale * d.cross(m);  // the axis' point nearest the mean
@@ -344,7 +342,7 @@ AnalyticFit FitRevolution(const SurfaceSamples& s, double tolerance) {
     A.row(k) << 1.0, meridian[k].x();
     b(k) = meridian[k].y();
   }
-  const Eigen::Vector2d line = A.colPivHouseholderQr().solve(b);
+  const Eigen::Vector2d line = SolveLeastSquares(A, b);
   const Eigen::Vector2d tangent = Eigen::Vector2d(1, line(1)).normalized();
   const Eigen::Vector2d across(-tangent.y(), tangent.x());
   bool square = true;

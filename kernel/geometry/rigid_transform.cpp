@@ -1,6 +1,7 @@
 #include "kernel/geometry/rigid_transform.h"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 namespace mechanist {
@@ -58,18 +59,14 @@ RigidTransform RigidTransform::FromZAxis(const Eigen::Vector3d& p_origin,
     throw std::invalid_argument("z axis must be a finite non-zero vector and the origin finite");
   }
   const Eigen::Vector3d z = z_axis / n;
-  // FromTwoVectors(a, b) loses precision as b nears -a (1 + a.b cancels: 4e-5 rad at 2e-6 rad
+  // ShortestRotation(a, b) loses precision as b nears -a (1 + a.b cancels: 4e-5 rad at 2e-6 rad
   // from -z), so axes in the lower half start from -z, reached by a half turn about x.
   if (z.z() >= 0.0) {
-    return RigidTransform(
-        Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), z).toRotationMatrix(),
-        p_origin, Unchecked{});
+    return RigidTransform(ShortestRotation(Eigen::Vector3d::UnitZ(), z), p_origin, Unchecked{});
   }
   const Eigen::Matrix3d half_turn_x = Eigen::Vector3d(1, -1, -1).asDiagonal();
-  return RigidTransform(
-      Eigen::Quaterniond::FromTwoVectors(-Eigen::Vector3d::UnitZ(), z).toRotationMatrix() *
-          half_turn_x,
-      p_origin, Unchecked{});
+  return RigidTransform(ShortestRotation(-Eigen::Vector3d::UnitZ(), z) * half_turn_x, p_origin,
+                        Unchecked{});
 }
 
 Eigen::Matrix4d RigidTransform::matrix() const {
@@ -93,6 +90,27 @@ bool RigidTransform::IsNearlyEqualTo(const RigidTransform& other, double length_
   const Eigen::AngleAxisd difference(R_.transpose() * other.R_);
   return (p_ - other.p_).norm() <= length_tolerance &&
          std::abs(difference.angle()) <= angle_tolerance;
+}
+
+Eigen::Matrix3d ShortestRotation(const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+  const double nu = u.norm(), nv = v.norm();
+  if (!(nu > 0.0) || !(nv > 0.0) || !std::isfinite(nu) || !std::isfinite(nv)) {
+    throw std::invalid_argument("the directions of a rotation must be finite and non-zero");
+  }
+  // Eigen's operations in Eigen's order, so that the result is the same to the last bit.
+  const Eigen::Vector3d v0 = u.normalized();
+  const Eigen::Vector3d v1 = v.normalized();
+  const double c = v1.dot(v0);
+  if (c < -1.0 + 1e-12) {
+    return Eigen::AngleAxisd(std::numbers::pi, v0.unitOrthogonal()).toRotationMatrix();
+  }
+  const Eigen::Vector3d axis = v0.cross(v1);
+  const double s = std::sqrt((1.0 + c) * 2.0);
+  const double invs = 1.0 / s;
+  Eigen::Quaterniond q;
+  q.vec() = axis * invs;
+  q.w() = s * 0.5;
+  return q.toRotationMatrix();
 }
 
 }  // namespace mechanist

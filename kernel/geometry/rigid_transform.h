@@ -61,4 +61,12 @@ class RigidTransform {
   Eigen::Vector3d p_;
 };
 
+/// The shortest rotation taking the direction of `u` to that of `v`: the quaternion
+/// (sqrt(2 + 2c) / 2, (u x v) / sqrt(2 + 2c)) of the unit vectors, c their cosine, as Eigen's
+/// Quaternion::FromTwoVectors computes it. Within 1e-12 of opposite directions (c < -1 + 1e-12),
+/// where u x v gives no axis, a half turn about a unit vector square to u (Eigen's
+/// unitOrthogonal) instead of Eigen's singular value decomposition, whose code takes seconds to
+/// compile in each source. Throws std::invalid_argument when u or v is zero or not finite.
+Eigen::Matrix3d ShortestRotation(const Eigen::Vector3d& u, const Eigen::Vector3d& v);
+
 }  // namespace mechanist

@@ -205,6 +205,38 @@ TEST(RigidTransform, FromZAxisRejectsAZeroOrNonFiniteAxis) {
       std::invalid_argument);
 }
 
+TEST(ShortestRotation, IsEigensFromTwoVectorsToTheLastBit) {
+  RandomPoses random;
+  for (int i = 0; i < 200; ++i) {
+    const Eigen::Vector3d u = random.Vector(), v = random.Vector(0.01);
+    const Eigen::Matrix3d eigen = Eigen::Quaterniond::FromTwoVectors(u, v).toRotationMatrix();
+    EXPECT_EQ(ShortestRotation(u, v), eigen) << u.transpose() << " to " << v.transpose();
+  }
+  const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+  EXPECT_EQ(ShortestRotation(z, z), Eigen::Matrix3d::Identity());
+}
+
+TEST(ShortestRotation, TurnsOppositeDirectionsHalfAroundASquareAxis) {
+  RandomPoses random;
+  for (int i = 0; i < 20; ++i) {
+    const Eigen::Vector3d u = random.Vector();
+    // Exactly opposite, and as near to it as the quaternion's formula is left for.
+    for (const Eigen::Vector3d& v :
+         {Eigen::Vector3d(-u), Eigen::Vector3d(-u + 1e-7 * u.norm() * u.unitOrthogonal())}) {
+      const Eigen::Matrix3d R = ShortestRotation(u, v);
+      EXPECT_TRUE(RigidTransform::IsProperRotation(R, 1e-12));
+      EXPECT_LT((R * u.normalized() - v.normalized()).norm(), 1e-6) << u.transpose();
+    }
+  }
+}
+
+TEST(ShortestRotation, RejectsAZeroOrNonFiniteDirection) {
+  const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+  EXPECT_THROW(ShortestRotation(Eigen::Vector3d::Zero(), z), std::invalid_argument);
+  EXPECT_THROW(ShortestRotation(z, Eigen::Vector3d(0, std::nan(""), 1)), std::invalid_argument);
+  EXPECT_THROW(ShortestRotation(z, Eigen::Vector3d(0, 0, INFINITY)), std::invalid_argument);
+}
+
 TEST(RigidTransform, IsNearlyEqualToUsesBothTolerances) {
   const RigidTransform X =
       RigidTransform::AxisAngleAbout(Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(0, 1, 1), 0.4);
