@@ -275,7 +275,7 @@ AnalyticFit FitSphere(const SurfaceSamples& s, double tolerance) {
     A.row(k) << q.x(), q.y(), q.z(), 1.0;
     b(k) = -q.squaredNorm();
   }
-  const Eigen::Vector4d c = SolveLeastSquares(A, b);
+  const Eigen::Vector4d c = LinearLeastSquares(A, b);
   const Eigen::Vector3d centre = -0.5 * c.head<3>();
   const double r2 = centre.squaredNorm() - c(3);
   if (!(r2 > 0)) return {};
@@ -342,7 +342,7 @@ AnalyticFit FitRevolution(const SurfaceSamples& s, double tolerance) {
     A.row(k) << 1.0, meridian[k].x();
     b(k) = meridian[k].y();
   }
-  const Eigen::Vector2d line = SolveLeastSquares(A, b);
+  const Eigen::Vector2d line = LinearLeastSquares(A, b);
   const Eigen::Vector2d tangent = Eigen::Vector2d(1, line(1)).normalized();
   const Eigen::Vector2d across(-tangent.y(), tangent.x());
   bool square = true;

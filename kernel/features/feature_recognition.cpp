@@ -629,7 +629,7 @@ std::optional<double> SpiralAngle(const std::vector<double>& ts, const std::vect
     a.row(static_cast<Eigen::Index>(i)) << 1.0, x, x * x, x * x * x;
     b[static_cast<Eigen::Index>(i)] = thetas[i];
   }
-  const Eigen::Vector4d c = SolveLeastSquares(a, b);
+  const Eigen::Vector4d c = LinearLeastSquares(a, b);
   if ((a * c - b).cwiseAbs().maxCoeff() > 0.1 * 2 * kPi / z) return std::nullopt;
   const double radius = slope * std::abs(middle - apex);
   const double psi = std::atan(radius * std::cos(d) * c[1]);

@@ -14,7 +14,7 @@ FittedCircle FitCircle(std::span<const Eigen::Vector2d> points) {
     A.row(static_cast<Eigen::Index>(i)) << points[i].x(), points[i].y(), 1.0;
     b[static_cast<Eigen::Index>(i)] = -points[i].squaredNorm();
   }
-  const Eigen::Vector3d s = SolveLeastSquares(A, b);
+  const Eigen::Vector3d s = LinearLeastSquares(A, b);
   FittedCircle c;
   c.center = Eigen::Vector2d(-s[0] / 2, -s[1] / 2);
   c.radius = std::sqrt(std::max(0.0, c.center.squaredNorm() - s[2]));

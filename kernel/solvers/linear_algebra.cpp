@@ -5,7 +5,7 @@
 
 namespace mechanist {
 
-Eigen::VectorXd SolveLeastSquares(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
+Eigen::VectorXd LinearLeastSquares(const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
   return A.colPivHouseholderQr().solve(b);
 }
 

@@ -9,7 +9,7 @@ namespace mechanist {
 
 /// The least-squares solution x of A x = b, minimising |A x - b| (Householder QR with column
 /// pivoting, Eigen's colPivHouseholderQr; a rank-deficient A gives one of the minimisers).
-Eigen::VectorXd SolveLeastSquares(const Eigen::MatrixXd& A, const Eigen::VectorXd& b);
+Eigen::VectorXd LinearLeastSquares(const Eigen::MatrixXd& A, const Eigen::VectorXd& b);
 
 /// The unit vector x that minimises |m x|: the right singular vector of m's smallest singular
 /// value (Eigen's JacobiSVD, thin V). m must have at least as many rows as columns.

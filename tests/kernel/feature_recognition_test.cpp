@@ -380,8 +380,7 @@ TEST(FeatureRecognition, CylindersAtAnyAngleAreFoundFromTheirOwnFacets) {
   rect.outer = {{-50, -30}, {50, -30}, {50, 30}, {-50, 30}};
   TriangleMesh mesh = ExtrudeRegion(rect, -20, 20);
   auto pose = [](const Eigen::Vector3d& axis, const Eigen::Vector3d& at) {
-    return RigidTransform(
-        Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), axis).toRotationMatrix(), at);
+    return RigidTransform(ShortestRotation(Eigen::Vector3d::UnitZ(), axis), at);
   };
   const RigidTransform X_bore = pose(Eigen::Vector3d(1, 2, 3).normalized(), {5, -3, 2});
   const RigidTransform X_boss = pose(Eigen::Vector3d(-2, 1, 0.5).normalized(), {-20, 10, -4});
