@@ -12,7 +12,8 @@ namespace mechanist {
 Eigen::VectorXd LinearLeastSquares(const Eigen::MatrixXd& A, const Eigen::VectorXd& b);
 
 /// The unit vector x that minimises |m x|: the right singular vector of m's smallest singular
-/// value (Eigen's JacobiSVD, thin V). m must have at least as many rows as columns.
+/// value (Eigen's JacobiSVD, thin V). Throws std::invalid_argument when m has fewer rows than
+/// columns.
 Eigen::VectorXd LeastSingularVector(const Eigen::MatrixXd& m);
 
 /// An orthonormal basis of m's null space, as columns: the right singular vectors whose
