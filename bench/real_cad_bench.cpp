@@ -4,7 +4,11 @@
 // 2 s in all on the 2-core machine. Then, not in that total, the clash check at rest
 // (`mechanist interference`: the collision model and FindContacts), with the contacts found,
 // and the assembly plan (`mechanist assemble` once the model is built: PlanAssembly), with
-// the steps it places and the parts it leaves unplaced. The
+// the steps it places and the parts it leaves unplaced. A second table splits the import at
+// the reader's progress reports (StepProgress): Open CASCADE's parsing of the file, its
+// transfer of the shapes, the solids' healing, triangulation and features from their faces (in
+// parallel: its processor time, all threads, beside), and what follows the reading (features
+// recognised on the tessellation, fastener and pin inference). The
 // heap is set as the command line sets it (KeepFreedHeapForReuse). The runs after a process's first
 // find the heap grown already: for a user's time, time `mechanist analyze FILE` as a whole process
 // (farm-bench).
@@ -13,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -36,6 +41,37 @@ double Median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// The import's phases in one run, s (see the file's comment).
+struct ImportPhases {
+  double parse = 0.0, transfer = 0.0, solids = 0.0, solids_cpu = 0.0, after = 0.0;
+};
+
+// LoadAssembly of `file`, its phases timed from the reader's progress reports: the first comes
+// once the file is parsed, the second once the shapes are transferred, the last once the
+// reading is done.
+mechanist::Assembly TimedLoad(const std::filesystem::path& file, ImportPhases* phases) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  std::vector<std::pair<Clock::time_point, std::clock_t>> reports;
+  mechanist::LoadOptions options;
+  options.reading = [&](const std::filesystem::path&, double) {
+    reports.emplace_back(Clock::now(), std::clock());
+  };
+  mechanist::Assembly assembly = mechanist::LoadAssembly(file, options);
+  const Clock::time_point end = Clock::now();
+  const auto seconds = [](Clock::time_point from, Clock::time_point to) {
+    return std::chrono::duration<double>(to - from).count();
+  };
+  if (reports.size() >= 3) {
+    phases->parse = seconds(start, reports[0].first);
+    phases->transfer = seconds(reports[0].first, reports[1].first);
+    phases->solids = seconds(reports[1].first, reports.back().first);
+    phases->solids_cpu = double(reports.back().second - reports[1].second) / CLOCKS_PER_SEC;
+    phases->after = seconds(reports.back().first, end);
+  }
+  return assembly;
+}
+
 }  // namespace
 
 int main() {
@@ -54,13 +90,16 @@ int main() {
   std::printf("%-40s %6s %6s %9s %9s %9s %9s %10s %9s %7s %9s %10s\n", "file", "parts", "pairs",
               "mobility", "import s", "analyse s", "total s", "contacts", "clash s", "placed",
               "unplaced", "assemble s");
+  std::vector<std::pair<std::string, std::vector<ImportPhases>>> phases_of;
   for (const std::filesystem::path& file : files) {
+    const std::string name = file.parent_path().filename().string().substr(0, 40);
+    std::vector<ImportPhases>& phases = phases_of.emplace_back(name, 3).second;
     std::vector<double> import, analyse, clash, assemble;
     std::size_t parts = 0, pairs = 0, contacts = 0, placed = 0, unplaced = 0;
     int mobility = 0;
     for (int run = 0; run < 3; ++run) {
       auto start = std::chrono::steady_clock::now();
-      const mechanist::Assembly a = mechanist::LoadAssembly(file);
+      const mechanist::Assembly a = TimedLoad(file, &phases[run]);
       import.push_back(Seconds(start));
       start = std::chrono::steady_clock::now();
       const mechanist::Analysis an = mechanist::Analyze(a);
@@ -80,9 +119,22 @@ int main() {
     }
     const double i = Median(import), n = Median(analyse);
     std::printf("%-40s %6zu %6zu %9d %9.2f %9.2f %9.2f %10zu %9.2f %7zu %9zu %10.2f\n",
-                file.parent_path().filename().string().substr(0, 40).c_str(), parts, pairs,
-                mobility, i, n, i + n, contacts, Median(clash), placed, unplaced, Median(assemble));
+                name.c_str(), parts, pairs, mobility, i, n, i + n, contacts, Median(clash), placed,
+                unplaced, Median(assemble));
     std::fflush(stdout);
+  }
+  std::printf("\nimport's phases, median s\n%-40s %9s %9s %9s %9s %9s\n", "file", "parse",
+              "transfer", "solids", "solids cpu", "after");
+  for (const auto& [name, phases] : phases_of) {
+    const auto median = [&phases = phases](double ImportPhases::*phase) {
+      std::vector<double> v;
+      for (const ImportPhases& p : phases) v.push_back(p.*phase);
+      return Median(v);
+    };
+    std::printf("%-40s %9.2f %9.2f %9.2f %10.2f %9.2f\n", name.c_str(),
+                median(&ImportPhases::parse), median(&ImportPhases::transfer),
+                median(&ImportPhases::solids), median(&ImportPhases::solids_cpu),
+                median(&ImportPhases::after));
   }
   return 0;
 }
