@@ -47,8 +47,9 @@ struct StepMessage {
 
 /// Receives the fraction of a STEP file's reading done, in [0, 1], never decreasing, 1 last
 /// when the reading succeeds: first when the file is parsed, then when its shapes are
-/// transferred, then after each solid is healed, triangulated and its features taken. Called
-/// from the reading threads, one call at a time.
+/// transferred, then after each distinct solid (a product's, once for all its instances) is
+/// healed, triangulated and its features taken. Called from the reading threads, one call at a
+/// time.
 using StepProgress = std::function<void(double fraction)>;
 
 /// As StepProgress, for the STEP file `step_file` among others (an assembly file's imports).
