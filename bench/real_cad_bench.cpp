@@ -32,8 +32,11 @@
 
 namespace {
 
-double Seconds(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+using Clock = std::chrono::steady_clock;
+
+// The seconds from `from` to `to`.
+double Seconds(Clock::time_point from, Clock::time_point to = Clock::now()) {
+  return std::chrono::duration<double>(to - from).count();
 }
 
 double Median(std::vector<double> v) {
@@ -41,16 +44,23 @@ double Median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-// The import's phases in one run, s (see the file's comment).
+// The import in one run, s: in all and by phase (see the file's comment).
 struct ImportPhases {
+  double total = 0.0;
   double parse = 0.0, transfer = 0.0, solids = 0.0, solids_cpu = 0.0, after = 0.0;
 };
+
+// The median of one of the runs' `phase`.
+double Median(const std::vector<ImportPhases>& runs, double ImportPhases::*phase) {
+  std::vector<double> v;
+  for (const ImportPhases& run : runs) v.push_back(run.*phase);
+  return Median(v);
+}
 
 // LoadAssembly of `file`, its phases timed from the reader's progress reports: the first comes
 // once the file is parsed, the second once the shapes are transferred, the last once the
 // reading is done.
 mechanist::Assembly TimedLoad(const std::filesystem::path& file, ImportPhases* phases) {
-  using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   std::vector<std::pair<Clock::time_point, std::clock_t>> reports;
   mechanist::LoadOptions options;
@@ -59,15 +69,13 @@ mechanist::Assembly TimedLoad(const std::filesystem::path& file, ImportPhases* p
   };
   mechanist::Assembly assembly = mechanist::LoadAssembly(file, options);
   const Clock::time_point end = Clock::now();
-  const auto seconds = [](Clock::time_point from, Clock::time_point to) {
-    return std::chrono::duration<double>(to - from).count();
-  };
+  phases->total = Seconds(start, end);
   if (reports.size() >= 3) {
-    phases->parse = seconds(start, reports[0].first);
-    phases->transfer = seconds(reports[0].first, reports[1].first);
-    phases->solids = seconds(reports[1].first, reports.back().first);
+    phases->parse = Seconds(start, reports[0].first);
+    phases->transfer = Seconds(reports[0].first, reports[1].first);
+    phases->solids = Seconds(reports[1].first, reports.back().first);
     phases->solids_cpu = double(reports.back().second - reports[1].second) / CLOCKS_PER_SEC;
-    phases->after = seconds(reports.back().first, end);
+    phases->after = Seconds(reports.back().first, end);
   }
   return assembly;
 }
@@ -94,30 +102,28 @@ int main() {
   for (const std::filesystem::path& file : files) {
     const std::string name = file.parent_path().filename().string().substr(0, 40);
     std::vector<ImportPhases>& phases = phases_of.emplace_back(name, 3).second;
-    std::vector<double> import, analyse, clash, assemble;
+    std::vector<double> analyse, clash, assemble;
     std::size_t parts = 0, pairs = 0, contacts = 0, placed = 0, unplaced = 0;
     int mobility = 0;
     for (int run = 0; run < 3; ++run) {
-      auto start = std::chrono::steady_clock::now();
       const mechanist::Assembly a = TimedLoad(file, &phases[run]);
-      import.push_back(Seconds(start));
-      start = std::chrono::steady_clock::now();
+      auto start = Clock::now();
       const mechanist::Analysis an = mechanist::Analyze(a);
       analyse.push_back(Seconds(start));
       parts = a.parts().size();
       pairs = an.pairs.size();
       mobility = an.motion.mobility.dof;
-      start = std::chrono::steady_clock::now();
+      start = Clock::now();
       const mechanist::CollisionModel model(a);
       contacts = mechanist::FindContacts(a, mechanist::InitialState(a), model, an.pairs).size();
       clash.push_back(Seconds(start));
-      start = std::chrono::steady_clock::now();
+      start = Clock::now();
       const mechanist::AssemblyPlan plan = mechanist::PlanAssembly(a, an, model);
       assemble.push_back(Seconds(start));
       placed = plan.steps.size();
       unplaced = plan.unplaced.size();
     }
-    const double i = Median(import), n = Median(analyse);
+    const double i = Median(phases, &ImportPhases::total), n = Median(analyse);
     std::printf("%-40s %6zu %6zu %9d %9.2f %9.2f %9.2f %10zu %9.2f %7zu %9zu %10.2f\n",
                 name.c_str(), parts, pairs, mobility, i, n, i + n, contacts, Median(clash), placed,
                 unplaced, Median(assemble));
@@ -126,15 +132,10 @@ int main() {
   std::printf("\nimport's phases, median s\n%-40s %9s %9s %9s %9s %9s\n", "file", "parse",
               "transfer", "solids", "solids cpu", "after");
   for (const auto& [name, phases] : phases_of) {
-    const auto median = [&phases = phases](double ImportPhases::*phase) {
-      std::vector<double> v;
-      for (const ImportPhases& p : phases) v.push_back(p.*phase);
-      return Median(v);
-    };
     std::printf("%-40s %9.2f %9.2f %9.2f %10.2f %9.2f\n", name.c_str(),
-                median(&ImportPhases::parse), median(&ImportPhases::transfer),
-                median(&ImportPhases::solids), median(&ImportPhases::solids_cpu),
-                median(&ImportPhases::after));
+                Median(phases, &ImportPhases::parse), Median(phases, &ImportPhases::transfer),
+                Median(phases, &ImportPhases::solids), Median(phases, &ImportPhases::solids_cpu),
+                Median(phases, &ImportPhases::after));
   }
   return 0;
 }
