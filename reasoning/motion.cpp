@@ -470,6 +470,80 @@ std::string FreedomWords(const Assembly& assembly, const std::vector<Pair>& pair
   return "";
 }
 
+// A free motion in words, with the pair that carries it: `child`'s motion relative to the
+// other body of the joint of `variable` (its freedom, of a pair), `twist` as
+// KinematicModel::BodyTwist gives it, `moved` (by body) the bodies the motion moves. A turn
+// is named by the axis of a pair between a moved and an unmoved body on the turn's line (the
+// freedom's own pair first), and by that line when none lies there; a slide by the freedom's
+// pair's axis when it runs along it, and by its direction otherwise. A planar pair's face
+// places no turn (a block on a table turns about any point of it) and no slide runs along its
+// normal: a turn on the face alone is about the face's normal, a slide on it along a
+// direction.
+std::pair<std::string, std::size_t> FreeMotionWords(const Assembly& assembly,
+                                                    const std::vector<Pair>& pairs,
+                                                    const KinematicModel& model,
+                                                    std::size_t variable, std::size_t child,
+                                                    const Eigen::Matrix<double, 6, 1>& twist,
+                                                    const std::vector<bool>& moved) {
+  const Freedom& f = model.freedoms()[variable];
+  const std::size_t own = *model.joints()[f.joint].pair;
+  const bool planar = pairs[own].type == PairType::kPlanar;
+  // The feature of `pair` that does not move with `child` (the one it moves about or along).
+  const auto still = [&](std::size_t pair) {
+    const Pair& p = pairs[pair];
+    return model.body_of_part(p.a.part) == child ? p.b : p.a;
+  };
+  const auto vector_words = [](const Eigen::Vector3d& v) {
+    return fmt::format("({}, {}, {})", FormatNumber(v.x()), FormatNumber(v.y()),
+                       FormatNumber(v.z()));
+  };
+  // A direction of either sense, said with its largest component positive.
+  const auto unsigned_words = [&](const Eigen::Vector3d& d) {
+    Eigen::Index i;
+    d.cwiseAbs().maxCoeff(&i);
+    return vector_words(d(i) < 0 ? Eigen::Vector3d(-d) : d);
+  };
+  const Eigen::Vector3d omega = twist.head<3>(), v_O = twist.tail<3>();
+  if (f.kind == Freedom::Kind::kScrew) {
+    return {FreedomWords(assembly, pairs, model, variable, child), own};
+  }
+  if (omega.norm() <= kTolerance) {
+    const Eigen::Vector3d d = v_O.normalized();
+    if (!planar && std::abs(std::abs(d.dot(f.direction_W)) - 1) <= 1e-9) {
+      return {FreedomWords(assembly, pairs, model, variable, child), own};
+    }
+    return {fmt::format("slides along {}{}", unsigned_words(d),
+                        planar ? fmt::format(" on {}", assembly.FeatureName(still(own))) : ""),
+            own};
+  }
+  // The turn's line: the point where the velocity runs along the axis (v = v_O + 2 pi w x p).
+  const Eigen::Vector3d d = omega.normalized();
+  const Eigen::Vector3d p_W = omega.cross(v_O) / (kTwoPi * omega.squaredNorm());
+  const double length = assembly.tolerance().length;
+  const auto on_line = [&](FeatureRef feature) {
+    if (assembly.feature(feature).kind == FeatureKind::kFace) return false;
+    const AxisSegment& axis = model.WorldAxis(feature);
+    const Eigen::Vector3d offset = axis.origin - p_W;
+    return std::abs(std::abs(axis.direction.dot(d)) - 1) <= 1e-9 &&
+           (offset - offset.dot(d) * d).norm() <= length;
+  };
+  if (on_line(still(own))) return {FreedomWords(assembly, pairs, model, variable, child), own};
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const bool a_moves = moved[model.body_of_part(pairs[i].a.part)];
+    if (a_moves == moved[model.body_of_part(pairs[i].b.part)]) continue;
+    const FeatureRef axis = a_moves ? pairs[i].b : pairs[i].a;
+    if (on_line(axis)) {
+      return {fmt::format("turns about {}'s axis", assembly.FeatureName(axis)), i};
+    }
+  }
+  if (planar) {
+    return {fmt::format("turns about {}'s normal", assembly.FeatureName(still(own))), own};
+  }
+  return {
+      fmt::format("turns about the line through {} along {}", vector_words(p_W), unsigned_words(d)),
+      own};
+}
+
 // Cylindrical fits placed as a lead screw in its nut with the thread left out of the file: in
 // every undriven motion the shaft's body turns about the fit's axis without sliding along it,
 // and the bore's body slides along it without turning. A screw pair there would tie the slide
@@ -851,6 +925,7 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   const auto by_id = [&](std::size_t x, std::size_t y) {
     return assembly.PartRank(x) < assembly.PartRank(y);
   };
+  std::vector<bool> moved(model.body_count(), false);  // by the basis motion at hand, cleared
   for (std::size_t k = 0; k < basis.size(); ++k) {
     const LinearSystem::Row& n = basis[k];
     if (n.empty()) continue;
@@ -863,13 +938,25 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     const std::size_t child =
         model.parent_joint(j.body_a) && *model.parent_joint(j.body_a) == f.joint ? j.body_a
                                                                                  : j.body_b;
-    free.freedom = j.pair ? FreedomWords(assembly, pairs, model, free_variables[k], child)
-                          : "floats: no pair holds it";
     const std::span<const std::size_t> own = motion_model.PartsOf(child);
     free.part = own.empty() ? 0 : *std::min_element(own.begin(), own.end(), by_id);
-    for (std::size_t body : MovedBodies(model, children, n)) {
+    const std::vector<std::size_t> moved_bodies = MovedBodies(model, children, n);
+    for (std::size_t body : moved_bodies) {
+      moved[body] = true;
       for (std::size_t p : motion_model.PartsOf(body)) free.parts.push_back(p);
     }
+    if (j.pair) {
+      for (const LinearSystem::Term& t : n) x[t.variable] = t.coefficient.value();
+      const auto rate = [&](std::size_t v) { return x[v]; };
+      const std::size_t other = child == j.body_a ? j.body_b : j.body_a;
+      std::tie(free.freedom, *free.pair) =
+          FreeMotionWords(assembly, pairs, model, free_variables[k], child,
+                          model.BodyTwist(child, rate) - model.BodyTwist(other, rate), moved);
+      for (const LinearSystem::Term& t : n) x[t.variable] = 0.0;
+    } else {
+      free.freedom = "floats: no pair holds it";
+    }
+    for (std::size_t body : moved_bodies) moved[body] = false;
     std::sort(free.parts.begin(), free.parts.end(), by_id);
     if (motion_model.HasPair(child)) {
       Unheld& u = unheld[assembly.PartRank(free.part)];

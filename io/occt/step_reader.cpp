@@ -57,6 +57,7 @@
 #include <map>
 #include <mutex>
 #include <numeric>
+#include <regex>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -78,6 +79,15 @@ std::string NameOf(const TDF_Label& label) {
   Handle(TDataStd_Name) name;
   if (!label.FindAttribute(TDataStd_Name::GetID(), name)) return "";
   return TCollection_AsciiString(name->Get()).ToCString();
+}
+
+// A product instance's name as read, or empty for one without a name of its own: unnamed
+// ("=>[0:1:1:2]", Open CASCADE's label entry), or a NEXT_ASSEMBLY_USAGE_OCCURRENCE's
+// identifier standing in for a blank name ("NAUO1", as SolidWorks writes them).
+std::string InstanceName(const std::string& name) {
+  static const std::regex kOccurrenceId("NAUO[0-9]+");
+  if (name.rfind("=>", 0) == 0 || std::regex_match(name, kOccurrenceId)) return "";
+  return name;
 }
 
 std::string Sanitised(const std::string& name) {
@@ -419,9 +429,13 @@ AnalyticFit FitAnalytic(const TopoDS_Face& face, const BRepAdaptor_Surface& surf
   return best;
 }
 
-// What a cone is beside the solid's cylinders: a countersink at a hole's mouth, a conical end
-// (a chamfer or a point) of a shaft, a flare widening out of a shaft, or a cone of its own.
-std::string DescribeCone(const Cone& c, const std::vector<Feature>& features) {
+// What a cone is beside the solid's cylinders (a countersink at a hole's mouth, a conical end
+// (a chamfer or a point) of a shaft, a flare widening out of a shaft, or a cone of its own),
+// and its size.
+struct ConeWords {
+  std::string what, size;
+};
+ConeWords DescribeCone(const Cone& c, const std::vector<Feature>& features) {
   const double included = 2 * c.semi_angle * 180 / kPi;
   const std::string size = fmt::format("{} deg, diameter {} to {}", FormatNumber(included),
                                        FormatNumber(2 * c.r_min), Mm(2 * c.r_max));
@@ -433,16 +447,16 @@ std::string DescribeCone(const Cone& c, const std::vector<Feature>& features) {
                          (d - d.dot(f.axis) * f.axis).norm() < tol;
     if (!coaxial) continue;
     if (!c.convex && std::abs(c.r_min - r) < tol) {
-      return fmt::format("countersink of {}: {}", f.id, size);
+      return {fmt::format("countersink of {}", f.id), size};
     }
     if (c.convex && std::abs(c.r_max - r) < tol) {
-      return fmt::format("conical end of {}: {}", f.id, size);
+      return {fmt::format("conical end of {}", f.id), size};
     }
     if (c.convex && std::abs(c.r_min - r) < tol) {
-      return fmt::format("conical flare of {} (a countersunk head's underside?): {}", f.id, size);
+      return {fmt::format("conical flare of {} (a countersunk head's underside?)", f.id), size};
     }
   }
-  return fmt::format("{} cone: {}", c.convex ? "convex" : "concave", size);
+  return {c.convex ? "convex cone" : "concave cone", size};
 }
 
 // A pin standing out of a wall: a convex cylinder face covering from half a turn to the 270
@@ -777,12 +791,26 @@ bool ConvertSolid(const TopoDS_Shape& solid, double size, TriangleMesh* mesh,
     features->push_back(f);
   }
   // The format has no cone or torus kind: these faces are named in notes.
+  // Alike cones (a bore countersunk at both ends) are one note, in the order first found.
+  std::vector<std::pair<ConeWords, int>> described;
   for (const Cone& c : cones) {
     if (c.coverage < 1.5 * kPi) {
       ++partial_cones;
       continue;
     }
-    notes->push_back(DescribeCone(c, *features));
+    const ConeWords words = DescribeCone(c, *features);
+    auto alike = std::find_if(described.begin(), described.end(), [&](const auto& d) {
+      return d.first.what == words.what && d.first.size == words.size;
+    });
+    if (alike == described.end()) {
+      described.emplace_back(words, 1);
+    } else {
+      ++alike->second;
+    }
+  }
+  for (const auto& [words, n] : described) {
+    notes->push_back(n == 1 ? fmt::format("{}: {}", words.what, words.size)
+                            : fmt::format("{} ({} alike): {}", words.what, n, words.size));
   }
   auto count = [&](int n, const std::string& what) {
     if (n > 0) {
@@ -1033,15 +1061,24 @@ class Walker {
     if (tool_->IsAssembly(label)) {
       TDF_LabelSequence components;
       tool_->GetComponents(label, components);
+      // An instance without a name of its own adds nothing to its assembly's path, unless
+      // other such instances of the assembly hold solids too: each is then named by what it
+      // refers to (two unnamed instances of the products body1 and body2, as Solid Edge writes
+      // them), not told apart by a number.
+      std::vector<TDF_Label> referred(components.Length());
+      int unnamed_solids = 0;
+      for (int i = 1; i <= components.Length(); ++i) {
+        tool_->GetReferredShape(components(i), referred[i - 1]);
+        unnamed_solids += InstanceName(NameOf(components(i))).empty() &&
+                          TopExp_Explorer(tool_->GetShape(referred[i - 1]), TopAbs_SOLID).More();
+      }
       std::map<std::string, int> seen;
       for (int i = 1; i <= components.Length(); ++i) {
-        TDF_Label referred;
-        tool_->GetReferredShape(components(i), referred);
-        std::string name = NameOf(components(i));
-        if (name.rfind("=>", 0) == 0) name.clear();  // an unnamed instance
+        std::string name = InstanceName(NameOf(components(i)));
+        if (name.empty() && unnamed_solids > 1) name = InstanceName(NameOf(referred[i - 1]));
         name = Sanitised(name);
         if (!name.empty() && ++seen[name] > 1) name += fmt::format("_{}", seen[name]);
-        Walk(referred,
+        Walk(referred[i - 1],
              name.empty()   ? path
              : path.empty() ? name
                             : fmt::format("{}.{}", path, name),

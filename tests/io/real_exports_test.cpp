@@ -52,8 +52,9 @@ struct Expected {
 
 std::vector<Expected> Cases() {
   return {
-      // Truth: the bracket is ground and the arm turns on its pin: mobility 1 (tested below).
-      {"revolute_pin_solidedge_chrono/assembly.stp", "Assem1", {}},
+      // Truth: the bracket (body1) is ground and the arm (body2) turns on its pin: mobility 1
+      // (tested below). The two instances are unnamed: named by their products.
+      {"revolute_pin_solidedge_chrono/assembly.stp", "Assem1.body1", {}},
       // Truth: the housing with its 7 integral ring pins. No warning: the input with its disc
       // and the output ring, and the placeholder ring, turn freely (the file has no driver).
       {"cycloid_7pin_6lobe_onshape/Full Assembly.step",

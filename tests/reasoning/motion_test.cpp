@@ -669,8 +669,10 @@ TEST(Motion, FreeMotionsAreSaidOncePerPartAndOnceForPartsAlike) {
     EXPECT_EQ(found[0]->severity, driven ? Severity::kWarning : Severity::kInfo);
     EXPECT_EQ(found[0]->parts, (std::vector<std::string>{"block_1", "block_2"}));
     const std::string& m = found[0]->message;
-    EXPECT_NE(m.find("2 parts, block_1 and block_2, each turns about frame/seat's axis (planar "
-                     "pair) and slides along frame/seat's axis (planar pair)"),
+    // On a face a block turns about its normal, wherever it is, and slides across it.
+    EXPECT_NE(m.find("2 parts, block_1 and block_2, each turns about frame/seat's normal (planar "
+                     "pair), slides along (0, 1, 0) on frame/seat (planar pair) and slides along "
+                     "(1, 0, 0) on frame/seat (planar pair)"),
               std::string::npos)
         << m;
     // Held by nothing but their faces: what fastens them is what the file leaves out.
@@ -746,6 +748,31 @@ std::vector<const Diagnostic*> WithCode(const Analysis& an, const std::string& c
     if (d.code == code) found.push_back(&d);
   }
   return found;
+}
+
+TEST(Motion, AFreeTurnIsNamedByTheAxisItTurnsAbout) {
+  // The hub resting on the seat and the shaft in its bore both let the gear turn; the face
+  // does not say where the turn's axis is (it would be the face's normal through the face's
+  // centre, 3 mm off), the bore does.
+  const Feature seat = MakeFeature("seat", K::kFace, {3, 0, -10}, kZ, [](Feature& f) {
+    f.width = 10;
+    f.height = 10;
+  });
+  Builder b;
+  b.Gear("g1", 0, 0, {{20, 0}}, 1, /*retained=*/false).FrameFeature(seat);
+  AssemblySpec spec = b.Build().spec();
+  spec.parts[1].features.push_back(MakeFeature("hub", K::kFace, {0, 0, -10}, -kZ, [](Feature& f) {
+    f.width = 10;
+    f.height = 10;
+  }));
+  const Analysis an = Analyze(Assembly(std::move(spec)));
+  ASSERT_EQ(an.motion.mobility.free_motions.size(), 1u);
+  EXPECT_EQ(an.motion.mobility.free_motions[0].freedom, "turns about frame/bearing_g1's axis");
+  const auto free = WithCode(an, "free_motion");
+  ASSERT_EQ(free.size(), 1u);
+  EXPECT_NE(free[0]->message.find("g1 turns about frame/bearing_g1's axis (cylindrical pair)"),
+            std::string::npos)
+      << free[0]->message;
 }
 
 TEST(Motion, RoundPartsTurningAloneAreIdleSpinsSaidOnce) {
