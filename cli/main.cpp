@@ -3,8 +3,11 @@
 // needs, writing its reports, and turning errors into exit codes.
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>  // fmt::join
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <map>
@@ -23,6 +26,22 @@ namespace {
 
 using namespace mechanist::cli;
 
+// A number option's bound, said as a user would (CLI11's own checks print the double's whole
+// range: "Value -1 not in range 0.000000 to 17976931348623157...").
+CLI::Validator BoundCheck(Bound bound) {
+  const bool positive = bound == Bound::kPositive;
+  return CLI::Validator(
+      [positive](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        const bool number = !text.empty() && end == text.c_str() + text.size();
+        if (number && (positive ? value > 0 : value >= 0)) return "";
+        return fmt::format("expected a number {}, found '{}'",
+                           positive ? "above 0" : "of 0 or more", text);
+      },
+      positive ? "NUMBER > 0" : "NUMBER >= 0");
+}
+
 // Declares `option` on `app`; `declared` holds the options declared on `app` before it.
 void Declare(const Option& option, CLI::App& app, std::map<std::string, CLI::Option*>& declared) {
   CLI::Option* declaration = std::visit(
@@ -35,8 +54,7 @@ void Declare(const Option& option, CLI::App& app, std::map<std::string, CLI::Opt
       },
       option.target);
   if (option.required) declaration->required();
-  if (option.bound == Bound::kNonNegative) declaration->check(CLI::NonNegativeNumber);
-  if (option.bound == Bound::kPositive) declaration->check(CLI::PositiveNumber);
+  if (option.bound != Bound::kNone) declaration->check(BoundCheck(option.bound));
   if (option.delimiter != '\0') declaration->delimiter(option.delimiter);
   if (!option.excludes.empty()) declaration->excludes(declared.at(option.excludes));
   declared[option.name] = declaration;
@@ -70,7 +88,10 @@ int main(int argc, char** argv) {
   app.add_option("--read-timeout", g_read_timeout,
                  "seconds reading one input file may take before mechanist gives up with exit "
                  "code 2 (default 300; 0: no bound); before the command")
-      ->check(CLI::NonNegativeNumber);
+      ->check(BoundCheck(Bound::kNonNegative));
+  app.footer(
+      "Exit codes: 0 done; 1 the check or the analysis found failures; 2 bad input or usage; 3 "
+      "internal error.");
 
   std::string file;
   const std::vector<Command> commands = Commands();
@@ -88,6 +109,21 @@ int main(int argc, char** argv) {
   } catch (const CLI::Success& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // A misspelt command reads as a missing one to CLI11 ("A subcommand is required").
+    for (int k = 1; k < argc; ++k) {
+      const std::string word = argv[k];
+      if (word == "--read-timeout") ++k;  // and its value
+      if (word.empty() || word[0] == '-' || word == "--read-timeout") continue;
+      if (std::none_of(commands.begin(), commands.end(),
+                       [&](const Command& c) { return c.name == word; })) {
+        std::vector<std::string> names;
+        for (const Command& c : commands) names.push_back(c.name);
+        std::cerr << fmt::format("mechanist: error: unknown command '{}'; the commands are: {}\n",
+                                 word, fmt::join(names, ", "));
+        return kExitUsage;
+      }
+      break;
+    }
     app.exit(e);
     return kExitUsage;
   }

@@ -106,8 +106,10 @@ void WriteAnalysisSummary(const Assembly& assembly, const Analysis& analysis, st
     out << "\n";
   }
   const Mobility& mobility = analysis.motion.mobility;
-  out << "mobility: " << mobility.dof << " (" << mobility.redundant << " redundant constraints, "
-      << mobility.free_motions.size() << " free motions";
+  out << "mobility: " << mobility.dof << " (" << mobility.redundant
+      << (mobility.redundant == 1 ? " redundant constraint, " : " redundant constraints, ")
+      << mobility.free_motions.size()
+      << (mobility.free_motions.size() == 1 ? " free motion" : " free motions");
   if (mobility.on_faces > 0) {
     out << ", " << mobility.on_faces << " of them of parts held by face contacts alone";
   }

@@ -21,7 +21,8 @@ Json Vec(const Eigen::Vector3d& v) { return Json::array({Num(v.x()), Num(v.y()),
 std::vector<FeatureReportEntry> RecogniseAssemblyFeatures(const Assembly& assembly) {
   std::vector<FeatureReportEntry> entries;
   for (const Part& part : assembly.parts()) {
-    if (part.mesh_source.rfind("library:", 0) == 0) continue;
+    // Library parts come with their features; features-only parts have no faces to read.
+    if (part.mesh_source.rfind("library:", 0) == 0 || !part.HasGeometry()) continue;
     if (part.mesh_source.find('#') != std::string::npos) {  // imported: from its exact faces
       FeatureReportEntry e{part.id, part.X_WP, MeshFeatures(), true};
       for (const Feature& f : part.features) {

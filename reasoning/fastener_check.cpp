@@ -37,9 +37,9 @@ std::vector<Diagnostic> CheckFasteners(const Assembly& assembly, const std::vect
   std::set<std::string> guessed_nuts;
   for (const Diagnostic& d : assembly.findings()) {
     if (d.code == "nut_on_bolt" && !d.features.empty()) guessed_nuts.insert(d.features.front());
-    if (d.code == "screw_in_plain_hole") {  // the screw's thread, then every hole it tapped
-      guessed_nuts.insert(std::next(d.features.begin()), d.features.end());
-    }
+    // Per screw its thread, then every hole it tapped: the threads are no nuts and never
+    // looked up.
+    if (d.code == "screw_in_plain_hole") guessed_nuts.insert(d.features.begin(), d.features.end());
   }
   auto too_short = [&](FeatureRef thread, FeatureRef nut, double shortfall,
                        const std::string& how) {

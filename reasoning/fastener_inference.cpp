@@ -1,6 +1,7 @@
 #include "reasoning/fastener_inference.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>  // fmt::join
 
 #include <algorithm>
 #include <array>
@@ -138,10 +139,38 @@ std::vector<Diagnostic> InferNutsOnBolts(
   return found;
 }
 
+namespace {
+
+// A screw taken as screwed into plain holes (InferScrewsInPlainHoles), for its finding.
+struct Tapped {
+  struct Hole {
+    std::string part, hole;
+    std::string diameter;  // as drawn, formatted
+  };
+  std::string screw;                  // its part's id
+  double diameter = 0, pitch = 0;     // its thread's, mm
+  bool through = false;               // its tip out past every hole
+  std::vector<Hole> holes;            // the tip's first
+  std::vector<std::string> features;  // its thread, then its holes
+
+  // Whether `other` reads as this one but for the names of the screw and its holes.
+  bool Alike(const Tapped& other) const {
+    return diameter == other.diameter && pitch == other.pitch && through == other.through &&
+           holes.size() == other.holes.size() &&
+           std::equal(holes.begin(), holes.end(), other.holes.begin(),
+                      [](const Hole& a, const Hole& b) {
+                        return a.part == b.part && a.diameter == b.diameter;
+                      });
+  }
+};
+
+}  // namespace
+
 std::vector<Diagnostic> InferScrewsInPlainHoles(
     std::vector<Part>* parts, double length_tolerance, double angle_tolerance,
     const std::function<bool(std::size_t part, std::size_t feature)>& inferred) {
   std::vector<Diagnostic> found;
+  std::vector<Tapped> screws;  // in the parts' order
   for (std::size_t s = 0; s < parts->size(); ++s) {
     Part& screw = (*parts)[s];
     if (!screw.HasGeometry()) continue;
@@ -276,28 +305,69 @@ std::vector<Diagnostic> InferScrewsInPlainHoles(
     // The tip's hole is tapped, and so is every hole the shank passes that is narrower than
     // the thread (it can only be threaded: a motor's long screws run through a tapped stator
     // into a tapped flange).
-    std::vector<std::string> holes;  // the tip's first
-    std::vector<std::string> part_ids = {screw.id}, feature_names = {screw.id + "/" + thread.id};
-    double pitch = 0.0;
+    Tapped tapped{screw.id, thread.diameter, 0.0, through, {}, {}};
+    tapped.features.push_back(screw.id + "/" + thread.id);
     for (const Along& x : along) {
       Feature& hole = (*parts)[x.part].features[x.feature];
       const bool tip = x.part == tip_hole.part && x.feature == tip_hole.feature;
       if (!tip && hole.diameter >= thread.diameter - length_tolerance) continue;
       const std::string& id = (*parts)[x.part].id;
-      holes.push_back(fmt::format("'{}/{}' ({} mm)", id, hole.id, FormatNumber(hole.diameter)));
-      if (std::find(part_ids.begin(), part_ids.end(), id) == part_ids.end()) part_ids.push_back(id);
-      feature_names.push_back(id + "/" + hole.id);
+      tapped.holes.push_back({id, hole.id, FormatNumber(hole.diameter)});
+      tapped.features.push_back(id + "/" + hole.id);
       hole.diameter = thread.diameter;
-      pitch = ScrewTight(&thread, &hole);
+      tapped.pitch = ScrewTight(&thread, &hole);
     }
+    screws.push_back(std::move(tapped));
+  }
+  // One finding for the screws that read alike but for their names: of one size, through the
+  // same parts' holes of the same sizes (the four screws of a motor's flange).
+  std::vector<std::vector<const Tapped*>> alike;
+  for (const Tapped& t : screws) {
+    auto group = std::find_if(alike.begin(), alike.end(),
+                              [&](const auto& g) { return g.front()->Alike(t); });
+    if (group == alike.end()) {
+      alike.push_back({&t});
+    } else {
+      group->push_back(&t);
+    }
+  }
+  for (const std::vector<const Tapped*>& group : alike) {
+    const Tapped& first = *group.front();
+    const bool several = group.size() > 1;
+    // The screws, then the parts whose holes they tapped; each screw's thread and holes.
+    std::vector<std::string> names, part_ids, feature_names;
+    for (const Tapped* t : group) {
+      names.push_back(fmt::format("'{}'", t->screw));
+      part_ids.push_back(t->screw);
+    }
+    for (const Tapped* t : group) {
+      for (const Tapped::Hole& h : t->holes) {
+        if (std::find(part_ids.begin(), part_ids.end(), h.part) == part_ids.end()) {
+          part_ids.push_back(h.part);
+        }
+      }
+      feature_names.insert(feature_names.end(), t->features.begin(), t->features.end());
+    }
+    // The holes at the k-th place along each screw, the tip's first: "'plate/hole_4' (2.459 mm)".
+    const auto holes_at = [&](std::size_t k) {
+      std::vector<std::string> named;
+      for (const Tapped* t : group) {
+        named.push_back(fmt::format("'{}/{}'", t->holes[k].part, t->holes[k].hole));
+      }
+      return fmt::format("{} ({} mm)", fmt::join(named, ", "), first.holes[k].diameter);
+    };
     std::string message = fmt::format(
-        "part '{}' (a head and a {} mm shank) {} {}: taken as screwed into it, a tight "
-        "thread of pitch {} mm (heuristic: the file models no thread)",
-        screw.id, FormatNumber(thread.diameter),
-        through ? "comes out through the narrower" : "ends in", holes.front(), FormatNumber(pitch));
-    if (holes.size() > 1) {
-      message += "; also threaded through";
-      for (std::size_t k = 1; k < holes.size(); ++k) message += (k > 1 ? ", " : " ") + holes[k];
+        "{} {} ({}a head and a {} mm shank) {} {}: taken as screwed into {}, {} of pitch {} mm "
+        "(heuristic: the file models no thread)",
+        several ? fmt::format("{} parts,", group.size()) : "part", fmt::join(names, ", "),
+        several ? "each " : "", FormatNumber(first.diameter),
+        first.through
+            ? (several ? "come out through the narrower" : "comes out through the narrower")
+            : (several ? "end, one each, in" : "ends in"),
+        holes_at(0), several ? "them" : "it", several ? "tight threads" : "a tight thread",
+        FormatNumber(first.pitch));
+    for (std::size_t k = 1; k < first.holes.size(); ++k) {
+      message += fmt::format("{} {}", k == 1 ? "; also threaded through" : ",", holes_at(k));
     }
     found.push_back({Severity::kInfo, "screw_in_plain_hole", message, part_ids, feature_names});
   }

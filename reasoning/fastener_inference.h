@@ -39,9 +39,11 @@ std::vector<Diagnostic> InferNutsOnBolts(
 /// the screw there and clamps the parts whose holes it passes (a cover and its spacers on a
 /// housing); so does every other hole along the shank narrower than it (threaded through).
 /// Returns one info `screw_in_plain_hole` per screw, naming the screw's thread and then every
-/// hole it tapped, the tip's first (its parts likewise). Only features for which `inferred(part,
-/// feature)` holds are reinterpreted, and a screw's part must have no written feature. Run after
-/// InferNutsOnBolts.
+/// hole it tapped, the tip's first (its parts likewise); screws that read alike but for their
+/// names (of one size, through holes of the same parts and sizes) share one, which names the
+/// screws, then the parts, and per screw its thread and holes. Only features for which
+/// `inferred(part, feature)` holds are reinterpreted, and a screw's part must have no written
+/// feature. Run after InferNutsOnBolts.
 std::vector<Diagnostic> InferScrewsInPlainHoles(
     std::vector<Part>* parts, double length_tolerance, double angle_tolerance,
     const std::function<bool(std::size_t part, std::size_t feature)>& inferred);

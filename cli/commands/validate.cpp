@@ -1,3 +1,5 @@
+#include <fmt/format.h>
+
 #include <iostream>
 
 #include "cli/commands.h"
@@ -15,8 +17,12 @@ Command ValidateCommand() {
     WriteDiagnostics(diagnostics, std::cout);
     std::size_t features = 0;
     for (const Part& part : s.assembly->parts()) features += part.features.size();
-    std::cout << s.file << ": valid (" << s.assembly->parts().size() << " parts, " << features
-              << " features, " << diagnostics.size() << " diagnostics)\n";
+    const auto counted = [](std::size_t n, const char* noun) {
+      return fmt::format("{} {}{}", n, noun, n == 1 ? "" : "s");
+    };
+    std::cout << s.file << ": valid (" << counted(s.assembly->parts().size(), "part") << ", "
+              << counted(features, "feature") << ", " << counted(diagnostics.size(), "diagnostic")
+              << ")\n";
     return kExitOk;
   };
   return c;

@@ -77,8 +77,21 @@ TEST(Cli, LongWorkShowsItsProgressOnATerminal) {
 
 TEST(Cli, UsageErrorsExitWithTwo) {
   EXPECT_EQ(Mechanist("").exit_code, 2);
-  EXPECT_EQ(Mechanist("frobnicate").exit_code, 2);
   EXPECT_EQ(Mechanist("validate").exit_code, 2);
+  // A misspelt command is named, with the commands there are.
+  const CommandResult misspelt = Mechanist("--read-timeout 5 analyse x.step");
+  EXPECT_EQ(misspelt.exit_code, 2);
+  EXPECT_NE(misspelt.out.find("unknown command 'analyse'; the commands are: validate, info, "
+                              "analyze,"),
+            std::string::npos)
+      << misspelt.out;
+  // A bound says what it expects, not the whole range of a double.
+  const CommandResult negative = Mechanist("--read-timeout -1 analyze x.step");
+  EXPECT_EQ(negative.exit_code, 2);
+  EXPECT_NE(negative.out.find("--read-timeout: expected a number of 0 or more, found '-1'"),
+            std::string::npos)
+      << negative.out;
+  EXPECT_NE(Mechanist("--help").out.find("Exit codes: 0 done; 1 "), std::string::npos);
 }
 
 TEST(Cli, ValidateAndInfoOnTheMainExample) {
@@ -117,6 +130,11 @@ TEST(Cli, FeaturesOnlyPartsAreAnalysedAndSkippedByTheGeometricCommands) {
     EXPECT_EQ(run.exit_code, 0) << command << ": " << run.out;
     EXPECT_NE(run.out.find(skipped), std::string::npos) << command << ": " << run.out;
   }
+  // features lists what it read from faces, and names the parts without any.
+  const CommandResult features = Mechanist("features " + sketch);
+  EXPECT_EQ(features.exit_code, 0) << features.out;
+  EXPECT_NE(features.out.find(skipped), std::string::npos) << features.out;
+  EXPECT_EQ(features.out.find("carrier:"), std::string::npos) << features.out;
   const CommandResult brake = Mechanist("sweep " + sketch + " --driver brake");
   EXPECT_NE(brake.out.find("driver brake is held (rate 0): nothing runs"), std::string::npos)
       << brake.out;
@@ -611,6 +629,13 @@ TEST(Cli, FeaturesRecognisesGearsInMeshesAndAssemblies) {
   EXPECT_NE(analyze.out.find("gear: a/teeth + b/teeth"), std::string::npos) << analyze.out;
   const CommandResult bad = Mechanist("features " + (dir / "missing.stl").string());
   EXPECT_EQ(bad.exit_code, 2) << bad.out;
+  // A file of no kind it reads: what it reads, all of it.
+  const CommandResult text = Mechanist("features " + (dir / "notes.txt").string());
+  EXPECT_EQ(text.exit_code, 2) << text.out;
+  EXPECT_NE(text.out.find("notes.txt: expected a mesh (.stl, .obj, .ply, .off), an assembly "
+                          "(.json) or a STEP file (.step, .stp); found the extension '.txt'"),
+            std::string::npos)
+      << text.out;
   std::filesystem::remove_all(dir);
 }
 
@@ -624,6 +649,8 @@ TEST(Cli, StepAssembliesAreAnalysedWithoutWrittenFeatures) {
   EXPECT_NE(features.out.find("AS1_PE_ASM.ROD.ROD: "), std::string::npos) << features.out;
   EXPECT_NE(features.out.find("info nut_on_bolt: part 'AS1_PE_ASM.ROD.NUT_2'"), std::string::npos)
       << features.out;
+  // The ground is the analysis' choice, not the features'.
+  EXPECT_EQ(features.out.find("ground_chosen"), std::string::npos) << features.out;
   const std::filesystem::path bad = std::filesystem::temp_directory_path() / "mechanist_bad.stp";
   {
     std::ofstream out(bad);

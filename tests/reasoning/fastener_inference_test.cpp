@@ -77,6 +77,40 @@ TEST(ScrewsInPlainHoles, AScrewEndingInAHousingsHoleIsScrewedThereAndClampsTheCo
   EXPECT_EQ(an.motion.mobility.dof, 0);
 }
 
+TEST(ScrewsInPlainHoles, ScrewsThatReadAlikeAreOneFinding) {
+  // Two screws through the cover's clearance holes into the housing's plain holes, 20 mm
+  // apart, and a third into a wider hole of the housing: one finding for the two alike.
+  std::vector<Part> parts = Parts(16, 15);
+  Part second = parts[0], third = parts[0];
+  second.id = "screw_2";
+  second.X_WP = RigidTransform::Translation({20, 0, 0});
+  third.id = "screw_3";
+  third.X_WP = RigidTransform::Translation({40, 0, 0});
+  parts[1].features.push_back(Cylinder("bore_2", FeatureKind::kHole, 10, 4.4, 5));
+  parts[1].features.back().origin.x() = 20;
+  for (auto [id, x, diameter] : {std::tuple{"hole_2", 20.0, 4.2}, {"hole_3", 40.0, 4.4}}) {
+    parts[2].features.push_back(Cylinder(id, FeatureKind::kHole, 5, diameter, 15));
+    parts[2].features.back().origin.x() = x;
+  }
+  parts.push_back(second);
+  parts.push_back(third);
+  const std::vector<Diagnostic> found = Infer(&parts);
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[0].message,
+            "2 parts, 'screw', 'screw_2' (each a head and a 4 mm shank) end, one each, in "
+            "'housing/hole', 'housing/hole_2' (4.2 mm): taken as screwed into them, tight threads "
+            "of pitch 0.7 mm (heuristic: the file models no thread)");
+  EXPECT_EQ(found[0].parts, (std::vector<std::string>{"screw", "screw_2", "housing"}));
+  EXPECT_EQ(found[0].features, (std::vector<std::string>{"screw/shank", "housing/hole",
+                                                         "screw_2/shank", "housing/hole_2"}));
+  EXPECT_EQ(found[1].message.rfind("part 'screw_3' (a head and a 4 mm shank) ends in "
+                                   "'housing/hole_3' (4.4 mm): taken as screwed into it, a tight "
+                                   "thread",
+                                   0),
+            0u)
+      << found[1].message;
+}
+
 TEST(ScrewsInPlainHoles, AHeadThatIsNoCylinderAndHolesDrilledAtTheTapSize) {
   // A domed or cross-recessed head gives no cylinder: only the mesh shows it (8 wide over 3 at
   // one end, the tip 4 wide). The shank runs through a stator into a housing, both drilled at
