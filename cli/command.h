@@ -73,6 +73,13 @@ struct Option {
     delimiter = d;
     return std::move(*this);
   }
+  /// A file the command writes into an existing folder: main checks, before anything is read,
+  /// that the folder exists and that the file is not the input (CheckOutputPath). (Outputs
+  /// whose folders the command creates, animate's and export's, are not marked.)
+  Option&& Output() && {
+    output = true;
+    return std::move(*this);
+  }
   /// May not be given with `other`, an option declared before this one.
   Option&& Excludes(std::string other) && {
     excludes = std::move(other);
@@ -86,6 +93,7 @@ struct Option {
   Bound bound = Bound::kNone;
   char delimiter = '\0';
   std::string excludes;
+  bool output = false;
 };
 
 /// One command of the table.

@@ -62,6 +62,10 @@ void Declare(const Option& option, CLI::App& app, std::map<std::string, CLI::Opt
 
 // Reads what `command` needs, runs it, and writes its reports once it has run.
 int Run(const Command& command, const std::string& file) {
+  for (const Option& option : command.options) {
+    const auto* path = std::get_if<std::string*>(&option.target);
+    if (option.output && path && !(*path)->empty()) mechanist::CheckOutputPath(**path, file);
+  }
   if (command.check) command.check(file);
   Session session;
   session.file = file;

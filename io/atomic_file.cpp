@@ -20,14 +20,26 @@ void WriteFileAtomically(const std::filesystem::path& path, std::string_view con
       protect);
 }
 
-AtomicOutput::AtomicOutput(const std::filesystem::path& path, const std::filesystem::path& protect)
-    : path_(path),
-      temporary_(fmt::format("{}.tmp{}", path.string(), static_cast<long>(::getpid()))) {
+void CheckOutputPath(const std::filesystem::path& path, const std::filesystem::path& protect) {
   std::error_code ec;
   if (!protect.empty() && std::filesystem::exists(path, ec) &&
       std::filesystem::equivalent(path, protect, ec)) {
     throw InputError(path.string(), "", 0, 0, "refusing to write over the input file");
   }
+  const std::filesystem::path folder = path.parent_path();
+  if (!folder.empty() && !std::filesystem::is_directory(folder, ec)) {
+    throw InputError(
+        path.string(), "", 0, 0,
+        fmt::format("cannot create the output file: expected a folder at '{}', "
+                    "found {}",
+                    folder.string(), std::filesystem::exists(folder, ec) ? "a file" : "nothing"));
+  }
+}
+
+AtomicOutput::AtomicOutput(const std::filesystem::path& path, const std::filesystem::path& protect)
+    : path_(path),
+      temporary_(fmt::format("{}.tmp{}", path.string(), static_cast<long>(::getpid()))) {
+  CheckOutputPath(path, protect);
 }
 
 AtomicOutput::~AtomicOutput() {

@@ -7,6 +7,11 @@
 
 namespace mechanist {
 
+/// Throws InputError naming `path` when an output file could not be written there: its folder
+/// does not exist (or is no folder), or it is `protect`, the input. Commands check their
+/// outputs so before any work, and AtomicOutput again when it writes.
+void CheckOutputPath(const std::filesystem::path& path, const std::filesystem::path& protect = {});
+
 /// An output file written under a temporary name in its folder and renamed into place by
 /// Commit, for writers that need a file name (video encoders): a reader never sees a partial
 /// file, and the temporary file is removed when the object dies uncommitted. Refuses (throws

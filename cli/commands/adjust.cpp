@@ -19,8 +19,8 @@ Command AdjustCommand() {
   c.name = "adjust";
   c.help = "Solve the adjustments for the goals; exit 1 if a goal cannot be met";
   c.options = {
-      Option("--json", &o->json, "write the JSON report to this file"),
-      Option("--write", &o->write, "write the adjusted assembly to this new file"),
+      Option("--json", &o->json, "write the JSON report to this file").Output(),
+      Option("--write", &o->write, "write the adjusted assembly to this new file").Output(),
   };
   c.run = [o](Session& s) {
     const Assembly& assembly = *s.assembly;

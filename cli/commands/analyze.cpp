@@ -17,8 +17,8 @@ Command AnalyzeCommand() {
   c.input = Input::kAdjusted;
   c.analysis = true;
   c.options = {
-      Option("--json", &o->json, "write the JSON report to this file"),
-      Option("--dot", &o->dot, "write the pair graph as Graphviz DOT to this file"),
+      Option("--json", &o->json, "write the JSON report to this file").Output(),
+      Option("--dot", &o->dot, "write the pair graph as Graphviz DOT to this file").Output(),
   };
   c.run = [o](Session& s) {
     WriteAnalysisSummary(*s.assembly, *s.analysis, std::cout);

@@ -16,7 +16,7 @@ Command AssembleCommand() {
   c.analysis = true;
   c.collision = true;
   c.options = {
-      Option("--json", json.get(), "write the JSON report to this file"),
+      Option("--json", json.get(), "write the JSON report to this file").Output(),
   };
   c.run = [json](Session& s) {
     const AssemblyPlan plan =

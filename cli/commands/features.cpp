@@ -27,7 +27,7 @@ Command FeaturesCommand() {
   c.file_help = kInputs;
   c.input = Input::kNone;
   c.options = {
-      Option("--json", json.get(), "write the JSON report to this file"),
+      Option("--json", json.get(), "write the JSON report to this file").Output(),
   };
   c.run = [json](Session& s) {
     std::string extension = std::filesystem::path(s.file).extension().string();

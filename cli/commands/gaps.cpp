@@ -24,8 +24,8 @@ Command GapsCommand() {
   c.help = "Find the empty spaces enclosed between parts, with their volumes";
   c.options = {
       Option("--voxel", &o->voxel, "voxel edge, in the file's length units").Required(),
-      Option("--json", &o->json, "write the JSON report to this file"),
-      Option("--vtk", &o->vtk, "write the voxels as a VTK image (.vti) to this file"),
+      Option("--json", &o->json, "write the JSON report to this file").Output(),
+      Option("--vtk", &o->vtk, "write the voxels as a VTK image (.vti) to this file").Output(),
   };
   c.run = [o](Session& s) {
     const Assembly& assembly = *s.assembly;

@@ -18,7 +18,7 @@ Command InterferenceCommand() {
   c.analysis = true;
   c.collision = true;
   c.options = {
-      Option("--json", json.get(), "write the JSON report to this file"),
+      Option("--json", json.get(), "write the JSON report to this file").Output(),
   };
   c.run = [json](Session& s) {
     const auto contacts =

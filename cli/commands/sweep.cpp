@@ -24,7 +24,7 @@ Command SweepCommand() {
       Option("--amount", &o->amount,
              "how far: driver revolutions or length units (default: the driver's amount)")
           .Bounded(Bound::kNonNegative),
-      Option("--json", &o->json, "write the JSON report to this file"),
+      Option("--json", &o->json, "write the JSON report to this file").Output(),
   };
   c.run = [o](Session& s) {
     const std::optional<std::size_t> driver = DriverIndex(s.file, *s.assembly, o->driver);

@@ -26,7 +26,7 @@ Command ViewCommand() {
   c.input = Input::kAdjusted;
   c.analysis = true;
   c.options = {
-      Option("--out", &o->out, "the HTML file (default: FILE's name with .html, here)"),
+      Option("--out", &o->out, "the HTML file (default: FILE's name with .html, here)").Output(),
       Option("--ranges", &o->ranges,
              "search where each drag stops even above 100,000 triangles (slow)"),
       Option("--no-ranges", &o->no_ranges, "do not search where each drag stops")

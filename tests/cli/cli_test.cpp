@@ -275,6 +275,14 @@ TEST(Cli, AnalyzeNeverWritesOverItsInput) {
   EXPECT_EQ(run.exit_code, 2) << run.out;
   EXPECT_NE(run.out.find("refusing to write over the input"), std::string::npos) << run.out;
   EXPECT_EQ(std::filesystem::file_size(file), size);
+  // Before any work: no report on stdout when an output has no folder to go to.
+  const std::filesystem::path nowhere =
+      std::filesystem::temp_directory_path() / "mechanist_no_such_folder" / "o.json";
+  const CommandResult lost = Mechanist("analyze " + file.string() + " --json " + nowhere.string());
+  EXPECT_EQ(lost.exit_code, 2) << lost.out;
+  EXPECT_EQ(lost.out, "mechanist: error: " + nowhere.string() +
+                          ": cannot create the output file: expected a folder at '" +
+                          nowhere.parent_path().string() + "', found nothing\n");
   std::filesystem::remove(file);
 }
 
