@@ -56,9 +56,9 @@ using StepProgress = std::function<void(double fraction)>;
 using StepFileProgress =
     std::function<void(const std::filesystem::path& step_file, double fraction)>;
 
-/// Reads a STEP file (AP203/AP214) with its product structure through Open CASCADE's XCAF
-/// reader, triangulates each solid (0.01 mm or 0.1% of its size, whichever is coarser, and
-/// 0.3 rad) and takes features from its analytic faces. Open CASCADE's messages go to
+/// Reads a STEP file (AP203, AP214 or AP242) with its product structure through Open
+/// CASCADE's XCAF reader, triangulates each solid (0.01 mm or 0.1% of its size, whichever is
+/// coarser, and 0.3 rad) and takes features from its analytic faces. Open CASCADE's messages go to
 /// `messages` (when given), never to stdout; `progress` (when given) follows the reading, the
 /// solids weighed by their faces. Throws std::runtime_error when it cannot be read or holds no
 /// solid.

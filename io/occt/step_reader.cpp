@@ -52,8 +52,10 @@
 #include <cctype>
 #include <cmath>
 #include <csignal>
+#include <fstream>
 #include <gp_Cone.hxx>
 #include <gp_Sphere.hxx>
+#include <iterator>
 #include <map>
 #include <mutex>
 #include <numeric>
@@ -1201,8 +1203,29 @@ std::string FirstError(const std::vector<StepMessage>& messages) {
   return "";
 }
 
-// What a status of the reader's ReadFile says about the file.
-std::string ReadFailure(IFSelect_ReturnStatus status) {
+// What a status of the reader's ReadFile says about `file`: first what its text shows (no
+// STEP file at all, or one cut short), which the parser's report does not say in so many
+// words ("Line 2: Incorrect syntax: unexpected TYPE, expecting STEP").
+std::string ReadFailure(IFSelect_ReturnStatus status, const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  constexpr std::string_view kStart = "ISO-10303-21;", kEnd = "END-ISO-10303-21;";
+  const std::size_t start = text.find_first_not_of(" \t\r\n");
+  if (start == std::string::npos || text.compare(start, kStart.size(), kStart) != 0) {
+    std::string found = text.substr(start == std::string::npos ? 0 : start, 24);
+    found = found.substr(0, found.find_first_of("\r\n"));
+    const bool printable = std::all_of(found.begin(), found.end(), [](char c) {
+      return std::isprint(static_cast<unsigned char>(c));
+    });
+    return fmt::format(
+        "expected a STEP file, beginning \"{}\", found {}", kStart,
+        printable ? fmt::format("one beginning \"{}\"", found) : "bytes that are no text");
+  }
+  if (text.find(kEnd) == std::string::npos) {
+    const auto lines = std::count(text.begin(), text.end(), '\n') + (text.back() != '\n');
+    return fmt::format("it stops after {} lines without \"{}\": the file is cut short", lines,
+                       kEnd);
+  }
   switch (status) {
     case IFSelect_RetVoid:
       return "it holds no STEP data";
@@ -1268,14 +1291,14 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
   const IFSelect_ReturnStatus status = reader.ReadFile(file.string().c_str());
   if (status != IFSelect_RetDone) {
     app->Close(document);
-    throw std::runtime_error(fmt::format("cannot read it as STEP (AP203/AP214): {}{}",
-                                         ReadFailure(status), FirstError(*messages)));
+    throw std::runtime_error(fmt::format("cannot read it as STEP (AP203, AP214 or AP242): {}{}",
+                                         ReadFailure(status, file), FirstError(*messages)));
   }
   report(kParsed);
   if (!reader.Transfer(document)) {
     app->Close(document);
     throw std::runtime_error(
-        fmt::format("cannot read it as STEP (AP203/AP214): its entities give no shape{}",
+        fmt::format("cannot read it as STEP (AP203, AP214 or AP242): its entities give no shape{}",
                     FirstError(*messages)));
   }
   // Parts left out would change the answer unseen (free bolts where the nuts went missing).
