@@ -243,8 +243,8 @@ void Recognizer::Near(const char* code, const WorldFeature& a, const WorldFeatur
   diagnostics_.push_back(
       {Severity::kWarning,
        code,
-       fmt::format("{} {} and {} {}: {}", ToString(a.f.kind), Name(a), ToString(b.f.kind), Name(b),
-                   message),
+       fmt::format("{} {} and {} {}: {}; so no pair joins them", ToString(a.f.kind), Name(a),
+                   ToString(b.f.kind), Name(b), message),
        {std::string(assembly_.PartId(a.ref.part)), std::string(assembly_.PartId(b.ref.part))},
        {Name(a), Name(b)}});
 }

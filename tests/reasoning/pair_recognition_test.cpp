@@ -120,6 +120,8 @@ TEST(PairRecognition, ShaftNearMissesNameTheQuantity) {
   ASSERT_NE(larger, nullptr);
   EXPECT_EQ(larger->features, (std::vector<std::string>{"pin/s", "block/h"}));
   EXPECT_EQ(larger->parts, (std::vector<std::string>{"pin", "block"}));
+  // What follows for the designer: the two are not joined.
+  EXPECT_NE(larger->message.find("; so no pair joins them"), std::string::npos) << larger->message;
   const Recognition offset = Recognize(ShaftInHole(5.0, 5.0, false, V(0.3, 0, 0)));
   EXPECT_TRUE(HasDiagnostic(offset, "axes_not_collinear", "offset 0.3 mm"));
   const Recognition tilt = Recognize(ShaftInHole(5.0, 5.0, false, V::Zero(), 1.0 * kPi / 180));
