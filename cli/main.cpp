@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
@@ -34,7 +35,8 @@ CLI::Validator BoundCheck(Bound bound) {
       [positive](std::string& text) -> std::string {
         char* end = nullptr;
         const double value = std::strtod(text.c_str(), &end);
-        const bool number = !text.empty() && end == text.c_str() + text.size();
+        const bool number =
+            !text.empty() && end == text.c_str() + text.size() && std::isfinite(value);
         if (number && (positive ? value > 0 : value >= 0)) return "";
         return fmt::format("expected a number {}, found '{}'",
                            positive ? "above 0" : "of 0 or more", text);

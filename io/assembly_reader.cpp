@@ -551,15 +551,21 @@ class Reader {
     static const std::regex kUnresolved(
         R"(ERR StepReaderData Entite (#\d+) Type:(\S+) Param\.n0 \d+: (#\d+) Not found)");
     std::vector<std::string> unresolved;
-    std::vector<std::pair<const StepMessage*, std::size_t>> unique;  // first of a text, count
     for (const StepMessage& m : messages) {
       std::smatch match;
       if (std::regex_match(m.text, match, kUnresolved)) {
         unresolved.push_back(
             fmt::format("{} {} refers to {}", match[1].str(), match[2].str(), match[3].str()));
+      }
+    }
+    std::vector<std::pair<const StepMessage*, std::size_t>> unique;  // first of a text, count
+    for (const StepMessage& m : messages) {
+      // The references, and their count ("Unresolved Reference : Fails Count : 127"), go
+      // into the one warning below.
+      if (!unresolved.empty() && (std::regex_match(m.text, kUnresolved) ||
+                                  m.text.find("Unresolved Reference") != std::string::npos)) {
         continue;
       }
-      if (m.text.find("ERR StepReaderData : Unresolved Reference") != std::string::npos) continue;
       auto same = std::find_if(unique.begin(), unique.end(),
                                [&](const auto& u) { return u.first->text == m.text; });
       if (same == unique.end()) {

@@ -504,7 +504,9 @@ std::pair<std::string, std::size_t> FreeMotionWords(const Assembly& assembly,
     return vector_words(d(i) < 0 ? Eigen::Vector3d(-d) : d);
   };
   const Eigen::Vector3d omega = twist.head<3>(), v_O = twist.tail<3>();
-  if (f.kind == Freedom::Kind::kScrew) {
+  // The freedom's own rate is 1 in its basis motion, so `child` moves; should it not, the
+  // freedom alone names the motion.
+  if (f.kind == Freedom::Kind::kScrew || twist.norm() <= kTolerance) {
     return {FreedomWords(assembly, pairs, model, variable, child), own};
   }
   if (omega.norm() <= kTolerance) {
