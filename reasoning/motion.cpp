@@ -474,11 +474,11 @@ std::string FreedomWords(const Assembly& assembly, const std::vector<Pair>& pair
 // other body of the joint of `variable` (its freedom, of a pair), `twist` as
 // KinematicModel::BodyTwist gives it, `moved` (by body) the bodies the motion moves. A turn
 // is named by the axis of a pair between a moved and an unmoved body on the turn's line (the
-// freedom's own pair first), and by that line when none lies there; a slide by the freedom's
-// pair's axis when it runs along it, and by its direction otherwise. A planar pair's face
-// places no turn (a block on a table turns about any point of it) and no slide runs along its
-// normal: a turn on the face alone is about the face's normal, a slide on it along a
-// direction.
+// freedom's own pair first, then `child`'s), and by that line when none lies there; a slide
+// by the freedom's pair's axis when it runs along it, and by its direction otherwise. A
+// planar pair's face places no turn (a block on a table turns about any point of it) and no
+// slide runs along its normal: a turn on the face alone is about the face's normal, a slide
+// on it along a direction.
 std::pair<std::string, std::size_t> FreeMotionWords(const Assembly& assembly,
                                                     const std::vector<Pair>& pairs,
                                                     const KinematicModel& model,
@@ -530,12 +530,16 @@ std::pair<std::string, std::size_t> FreeMotionWords(const Assembly& assembly,
            (offset - offset.dot(d) * d).norm() <= length;
   };
   if (on_line(still(own))) return {FreedomWords(assembly, pairs, model, variable, child), own};
-  for (std::size_t i = 0; i < pairs.size(); ++i) {
-    const bool a_moves = moved[model.body_of_part(pairs[i].a.part)];
-    if (a_moves == moved[model.body_of_part(pairs[i].b.part)]) continue;
-    const FeatureRef axis = a_moves ? pairs[i].b : pairs[i].a;
-    if (on_line(axis)) {
-      return {fmt::format("turns about {}'s axis", assembly.FeatureName(axis)), i};
+  // `child`'s own pairs first, then any between a moved and an unmoved body.
+  for (const bool of_child : {true, false}) {
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      const std::size_t a = model.body_of_part(pairs[i].a.part);
+      const std::size_t b = model.body_of_part(pairs[i].b.part);
+      if (moved[a] == moved[b] || (of_child && a != child && b != child)) continue;
+      const FeatureRef axis = moved[a] ? pairs[i].b : pairs[i].a;
+      if (on_line(axis)) {
+        return {fmt::format("turns about {}'s axis", assembly.FeatureName(axis)), i};
+      }
     }
   }
   if (planar) {
