@@ -509,9 +509,15 @@ std::pair<std::string, std::size_t> FreeMotionWords(const Assembly& assembly,
   if (f.kind == Freedom::Kind::kScrew || twist.norm() <= kTolerance) {
     return {FreedomWords(assembly, pairs, model, variable, child), own};
   }
+  // Lines are the same within the file's tolerances, as pairs are recognised.
+  const double length = assembly.tolerance().length;
+  const double cosine = std::cos(assembly.tolerance().angle);
+  const auto parallel = [&](const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+    return std::abs(u.dot(v)) >= cosine;
+  };
   if (omega.norm() <= kTolerance) {
     const Eigen::Vector3d d = v_O.normalized();
-    if (!planar && std::abs(std::abs(d.dot(f.direction_W)) - 1) <= 1e-9) {
+    if (!planar && parallel(d, f.direction_W)) {
       return {FreedomWords(assembly, pairs, model, variable, child), own};
     }
     return {fmt::format("slides along {}{}", unsigned_words(d),
@@ -521,13 +527,11 @@ std::pair<std::string, std::size_t> FreeMotionWords(const Assembly& assembly,
   // The turn's line: the point where the velocity runs along the axis (v = v_O + 2 pi w x p).
   const Eigen::Vector3d d = omega.normalized();
   const Eigen::Vector3d p_W = omega.cross(v_O) / (kTwoPi * omega.squaredNorm());
-  const double length = assembly.tolerance().length;
   const auto on_line = [&](FeatureRef feature) {
     if (assembly.feature(feature).kind == FeatureKind::kFace) return false;
     const AxisSegment& axis = model.WorldAxis(feature);
     const Eigen::Vector3d offset = axis.origin - p_W;
-    return std::abs(std::abs(axis.direction.dot(d)) - 1) <= 1e-9 &&
-           (offset - offset.dot(d) * d).norm() <= length;
+    return parallel(axis.direction, d) && (offset - offset.dot(d) * d).norm() <= length;
   };
   if (on_line(still(own))) return {FreedomWords(assembly, pairs, model, variable, child), own};
   // `child`'s own pairs first, then any between a moved and an unmoved body.
