@@ -170,7 +170,7 @@ std::vector<Diagnostic> InferScrewsInPlainHoles(
     std::vector<Part>* parts, double length_tolerance, double angle_tolerance,
     const std::function<bool(std::size_t part, std::size_t feature)>& inferred) {
   std::vector<Diagnostic> found;
-  std::vector<Tapped> screws;  // in the parts' order
+  std::vector<Tapped> screws;
   for (std::size_t s = 0; s < parts->size(); ++s) {
     Part& screw = (*parts)[s];
     if (!screw.HasGeometry()) continue;
@@ -320,7 +320,10 @@ std::vector<Diagnostic> InferScrewsInPlainHoles(
     screws.push_back(std::move(tapped));
   }
   // One finding for the screws that read alike but for their names: of one size, through the
-  // same parts' holes of the same sizes (the four screws of a motor's flange).
+  // same parts' holes of the same sizes (the four screws of a motor's flange), listed by id so
+  // that the file's order of parts changes nothing.
+  std::sort(screws.begin(), screws.end(),
+            [](const Tapped& a, const Tapped& b) { return a.screw < b.screw; });
   std::vector<std::vector<const Tapped*>> alike;
   for (const Tapped& t : screws) {
     auto group = std::find_if(alike.begin(), alike.end(),

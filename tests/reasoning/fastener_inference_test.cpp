@@ -80,21 +80,33 @@ TEST(ScrewsInPlainHoles, AScrewEndingInAHousingsHoleIsScrewedThereAndClampsTheCo
 TEST(ScrewsInPlainHoles, ScrewsThatReadAlikeAreOneFinding) {
   // Two screws through the cover's clearance holes into the housing's plain holes, 20 mm
   // apart, and a third into a wider hole of the housing: one finding for the two alike.
-  std::vector<Part> parts = Parts(16, 15);
-  Part second = parts[0], third = parts[0];
-  second.id = "screw_2";
-  second.X_WP = RigidTransform::Translation({20, 0, 0});
-  third.id = "screw_3";
-  third.X_WP = RigidTransform::Translation({40, 0, 0});
-  parts[1].features.push_back(Cylinder("bore_2", FeatureKind::kHole, 10, 4.4, 5));
-  parts[1].features.back().origin.x() = 20;
-  for (auto [id, x, diameter] : {std::tuple{"hole_2", 20.0, 4.2}, {"hole_3", 40.0, 4.4}}) {
-    parts[2].features.push_back(Cylinder(id, FeatureKind::kHole, 5, diameter, 15));
-    parts[2].features.back().origin.x() = x;
-  }
-  parts.push_back(second);
-  parts.push_back(third);
+  const auto build = [] {
+    std::vector<Part> parts = Parts(16, 15);
+    Part second = parts[0], third = parts[0];
+    second.id = "screw_2";
+    second.X_WP = RigidTransform::Translation({20, 0, 0});
+    third.id = "screw_3";
+    third.X_WP = RigidTransform::Translation({40, 0, 0});
+    parts[1].features.push_back(Cylinder("bore_2", FeatureKind::kHole, 10, 4.4, 5));
+    parts[1].features.back().origin.x() = 20;
+    for (auto [id, x, diameter] : {std::tuple{"hole_2", 20.0, 4.2}, {"hole_3", 40.0, 4.4}}) {
+      parts[2].features.push_back(Cylinder(id, FeatureKind::kHole, 5, diameter, 15));
+      parts[2].features.back().origin.x() = x;
+    }
+    parts.push_back(second);
+    parts.push_back(third);
+    return parts;
+  };
+  std::vector<Part> parts = build();
   const std::vector<Diagnostic> found = Infer(&parts);
+  // The file's order of parts changes nothing.
+  std::vector<Part> reversed = build();
+  std::reverse(reversed.begin(), reversed.end());
+  const std::vector<Diagnostic> found_reversed = Infer(&reversed);
+  ASSERT_EQ(found_reversed.size(), found.size());
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    EXPECT_EQ(found_reversed[k].message, found[k].message);
+  }
   ASSERT_EQ(found.size(), 2u);
   EXPECT_EQ(found[0].message,
             "2 parts, 'screw', 'screw_2' (each a head and a 4 mm shank) end, one each, in "
