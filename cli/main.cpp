@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
     for (int k = 1; k < argc; ++k) {
       const std::string word = argv[k];
       if (word == "--read-timeout") ++k;  // and its value
-      if (word.empty() || word[0] == '-' || word == "--read-timeout") continue;
+      if (word.empty() || word[0] == '-') continue;
       if (std::none_of(commands.begin(), commands.end(),
                        [&](const Command& c) { return c.name == word; })) {
         std::vector<std::string> names;
