@@ -935,6 +935,13 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   const auto by_id = [&](std::size_t x, std::size_t y) {
     return assembly.PartRank(x) < assembly.PartRank(y);
   };
+  // A body's motion is said of its main part (MainPart, the first by id among equals).
+  const auto main_part = [&](std::size_t body) {
+    std::vector<std::size_t> parts(motion_model.PartsOf(body).begin(),
+                                   motion_model.PartsOf(body).end());
+    std::sort(parts.begin(), parts.end(), by_id);
+    return parts.empty() ? 0 : MainPart(assembly, parts);
+  };
   std::vector<bool> moved(model.body_count(), false);  // by the basis motion at hand, cleared
   for (std::size_t k = 0; k < basis.size(); ++k) {
     const LinearSystem::Row& n = basis[k];
@@ -948,8 +955,7 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     const std::size_t child =
         model.parent_joint(j.body_a) && *model.parent_joint(j.body_a) == f.joint ? j.body_a
                                                                                  : j.body_b;
-    const std::span<const std::size_t> own = motion_model.PartsOf(child);
-    free.part = own.empty() ? 0 : *std::min_element(own.begin(), own.end(), by_id);
+    std::size_t maker = child;  // the body said to make the motion
     const std::vector<std::size_t> moved_bodies = MovedBodies(model, children, n);
     for (std::size_t body : moved_bodies) {
       moved[body] = true;
@@ -962,16 +968,26 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
       std::tie(free.freedom, *free.pair) =
           FreeMotionWords(assembly, pairs, model, free_variables[k], child,
                           model.BodyTwist(child, rate) - model.BodyTwist(other, rate), moved);
+      // Named by another moved body's pair (a lead screw's turn that carries its washer
+      // along): that body makes the motion.
+      if (*free.pair != *j.pair) {
+        const Pair& naming = pairs[*free.pair];
+        for (const std::size_t part : {naming.a.part, naming.b.part}) {
+          const std::size_t body = model.body_of_part(part);
+          if (body != child && moved[body]) maker = body;
+        }
+      }
       for (const LinearSystem::Term& t : n) x[t.variable] = 0.0;
     } else {
       free.freedom = "floats: no pair holds it";
     }
     for (std::size_t body : moved_bodies) moved[body] = false;
     std::sort(free.parts.begin(), free.parts.end(), by_id);
-    if (motion_model.HasPair(child)) {
+    free.part = main_part(maker);
+    if (motion_model.HasPair(maker)) {
       Unheld& u = unheld[assembly.PartRank(free.part)];
       u.part = free.part;
-      u.on_faces = motion_model.OnFacesAlone(child);
+      u.on_faces = motion_model.OnFacesAlone(maker);
       mobility.on_faces += u.on_faces ? 1 : 0;
       u.moved.insert(u.moved.end(), free.parts.begin(), free.parts.end());
       const std::string motion =
@@ -1035,7 +1051,7 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
     const std::span<const std::size_t> own = motion_model.PartsOf(spin.body);
     free.parts.assign(own.begin(), own.end());
     std::sort(free.parts.begin(), free.parts.end(), by_id);
-    free.part = free.parts.front();
+    free.part = MainPart(assembly, free.parts);
     free.pair = spin.pair;
     const Pair& pair = pairs[spin.pair];
     const FeatureRef& axis = model.body_of_part(pair.a.part) == spin.body ? pair.b : pair.a;

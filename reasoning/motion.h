@@ -73,7 +73,7 @@ struct RedundantConstraint {
 
 /// A freedom that nothing drives or holds: one basis motion of the undriven mechanism.
 struct FreeMotion {
-  std::size_t part = 0;             ///< the part that makes the motion (first by id)
+  std::size_t part = 0;             ///< the part that makes the motion (MainPart of its body)
   std::optional<std::size_t> pair;  ///< the pair that allows it; empty: the part floats
   std::string freedom;              ///< "turns about shaft/axis", "slides along ..."
   std::vector<std::size_t> parts;   ///< parts that move with it, by part id

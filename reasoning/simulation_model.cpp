@@ -35,21 +35,6 @@ std::vector<std::size_t> ByFreedoms(const std::vector<Pair>& pairs) {
   return order;
 }
 
-// The part a link is named after: the largest by mesh volume, the first by id among equals.
-std::size_t MainPart(const Assembly& assembly, const std::vector<std::size_t>& parts) {
-  std::size_t best = parts.front();
-  double best_volume = -1.0;
-  for (const std::size_t p : parts) {
-    const Part& part = assembly.part(p);
-    const double volume = part.HasGeometry() ? std::abs(part.mesh->SignedVolume()) : 0.0;
-    if (volume > best_volume) {
-      best = p;
-      best_volume = volume;
-    }
-  }
-  return best;
-}
-
 class Builder {
  public:
   Builder(const Assembly& assembly, const Analysis& analysis, const SimulationOptions& options)

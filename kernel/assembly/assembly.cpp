@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <stdexcept>
 #include <string_view>
@@ -184,6 +185,21 @@ Assembly::NameSpan Assembly::AppendName(std::initializer_list<std::string_view> 
   const NameSpan span{static_cast<std::uint32_t>(names_.size()), static_cast<std::uint32_t>(size)};
   for (std::string_view piece : pieces) names_.append(piece);
   return span;
+}
+
+std::size_t MainPart(const Assembly& assembly, std::span<const std::size_t> parts) {
+  if (parts.empty()) throw std::logic_error("MainPart: no parts");
+  std::size_t main = parts.front();
+  double largest = -1.0;
+  for (const std::size_t p : parts) {
+    const Part& part = assembly.part(p);
+    const double volume = part.HasGeometry() ? std::abs(part.mesh->SignedVolume()) : 0.0;
+    if (volume > largest) {
+      main = p;
+      largest = volume;
+    }
+  }
+  return main;
 }
 
 }  // namespace mechanist

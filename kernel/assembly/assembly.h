@@ -6,6 +6,7 @@
 #include <initializer_list>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -257,5 +258,11 @@ class Assembly {
   std::vector<NameSpan> part_id_;       ///< per part: its id in names_
   std::vector<NameSpan> feature_name_;  ///< per feature: its "part_id/feature_id" in names_
 };
+
+/// The part that a group of parts moving as one (a subassembly) is named after: the largest by
+/// mesh volume (a part without a mesh counts as none), the first in `parts` among equals, so
+/// that a pendulum's turn is the rod's and not its bearing ring's. `parts` are indices into
+/// `assembly.parts()` and must not be empty.
+std::size_t MainPart(const Assembly& assembly, std::span<const std::size_t> parts);
 
 }  // namespace mechanist

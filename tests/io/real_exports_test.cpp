@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -162,6 +163,67 @@ std::vector<Expected> Cases() {
 
 void PrintTo(const Expected& e, std::ostream* os) { *os << e.file; }
 
+// Per file (as Expected::file): its free motions other than idle spins, sorted, each as the
+// part that makes it (the largest of the parts moving together) and the motion, in the
+// report's words.
+const std::map<std::string, std::vector<std::string>>& FreeMotions() {
+  static const auto* motions = new std::map<std::string, std::vector<std::string>>{
+      // The truth's revolute of the arm on the bracket's pin.
+      {"revolute_pin_solidedge_chrono/assembly.stp",
+       {"Assem1.body2 turns about Assem1.body1/hole_3's axis"}},
+      // The input with its disc and the output ring; the placeholder's spin is idle.
+      {"cycloid_7pin_6lobe_onshape/Full Assembly.step",
+       {"Full_Assembly.Output_Ring turns about Full_Assembly.Outer_Pin_Shell/hole_5's axis"}},
+      // The lid (solid 1, which the file names COMPOUND) on the base's printed pins.
+      {"hinge_clamshell_build123d/clamshell_full.step",
+       {"COMPOUND turns about COMPOUND_solid2/shaft_10's axis"}},
+      // The carriage's slide, and the lead screw's turn (its washers turn with it; before, the
+      // turn was said of one of them).
+      {"lead_screw_linear_actuator_onshape/Assembly.step",
+       {"Assembly_1.0__V slides along (0, 1, 0) on Assembly_1._C_V/face_115",
+        "Assembly_1.p____V turns about Assembly_1.P___V/hole_3's axis"}},
+      // The sixteen finger hinges, the thumb's slide on its pivot screw and the servos' slides
+      // in their pockets.
+      {"robot_hand_finger_hinges_onshape/Assembly 1.step",
+       {"Assembly_1.Index1 turns about Assembly_1.Palm/hole_6's axis",
+        "Assembly_1.Index2 turns about Assembly_1.Index1/hole_3's axis",
+        "Assembly_1.Index3 turns about Assembly_1.Index2/hole_2's axis",
+        "Assembly_1.Middle1 turns about Assembly_1.Palm/hole_7's axis",
+        "Assembly_1.Middle2 turns about Assembly_1.Middle1/hole_3's axis",
+        "Assembly_1.Middle3 turns about Assembly_1.Middle2/hole_2's axis",
+        "Assembly_1.Pinky1 turns about Assembly_1.Palm/hole_2's axis",
+        "Assembly_1.Pinky2 turns about Assembly_1.Pinky1/hole_1's axis",
+        "Assembly_1.Pinky3 turns about Assembly_1.Pinky2/hole_3's axis",
+        "Assembly_1.Ring1 turns about Assembly_1.Palm/hole_1's axis",
+        "Assembly_1.Ring2 turns about Assembly_1.Ring1/hole_3's axis",
+        "Assembly_1.Ring3 turns about Assembly_1.Ring2/hole_3's axis",
+        "Assembly_1.Ring4 turns about Assembly_1.Ring3/hole_2's axis",
+        "Assembly_1.Servo_MG996R slides along (1, 0, 0) on Assembly_1.FOREARM/face_12",
+        "Assembly_1.Servo_MG996R_2 slides along (1, 0, 0) on Assembly_1.FOREARM/face_12",
+        "Assembly_1.Servo_MG996R_3 slides along (1, 0, 0) on Assembly_1.FOREARM/face_12",
+        "Assembly_1.Servo_MG996R_4 slides along (1, 0, 0) on Assembly_1.FOREARM/face_12",
+        "Assembly_1.Servo_MG996R_5 slides along (1, 0, 0) on Assembly_1.FOREARM/face_12",
+        "Assembly_1.Thumb1 slides along "
+        "Assembly_1.Hex_socket_head_cap_screw_M4x0_70_x_45/shaft_2's axis",
+        "Assembly_1.Thumb1 turns about Assembly_1.Hex_socket_head_cap_screw_M4x0_70_x_45/shaft_2's "
+        "axis",
+        "Assembly_1.Thumb2 turns about Assembly_1.Thumb1/hole_3's axis",
+        "Assembly_1.Thumb3 turns about Assembly_1.Thumb2/hole_1's axis"}},
+      // The truth's two revolutes: the arm (BarLink) on the stepper's bearings, and the
+      // pendulum's rod in the SKF 6002 (before, said of the bearing's inner ring).
+      {"rotary_pendulum_ball_bearing_fusion/Assembly.step",
+       {"Assembly_v14.BarLink_v9_1_solid2 turns about "
+        "Assembly_v14.base_link_v4_1.NEMA_v6_1.Bearing_1/hole_1's axis",
+        "Assembly_v14.PendulumRod_v6_1_solid2 turns about "
+        "Assembly_v14.BarLink_v9_1.SKF_6002_v4_1.SKF_6002_or_1_solid11/hole_1's axis"}},
+      // The gear pair on the implied frame's axles.
+      {"spur_pair_20T_40T_solidworks/ISO standard Spur Gear Drive (2-1 ratio).STEP",
+       {"ISO_standard_Spur_Gear_Drive__2-1_ratio_.spur_gear_iso_ISO_-_Spur_gear_2M_40T_20PA_"
+        "15FW_---S40A75H50L20_0N turns about implied_frame/axle_1's axis"}},
+  };
+  return *motions;
+}
+
 // The screws that `screw_in_plain_hole` findings take as screwed into plain holes (a finding
 // names several alike): their shanks, threads now.
 int PlainHoleScrews(const Assembly& a) {
@@ -194,6 +256,12 @@ TEST_P(RealExports, GroundAndWarningsAreTheOnesADesignerActsOn) {
   }
   std::sort(warnings.begin(), warnings.end());
   EXPECT_EQ(warnings, e.warnings);
+  std::vector<std::string> motions;
+  for (const FreeMotion& f : an.motion.mobility.free_motions) {
+    if (!f.idle) motions.push_back(a.part(f.part).id + " " + f.freedom);
+  }
+  std::sort(motions.begin(), motions.end());
+  EXPECT_EQ(motions, FreeMotions().at(e.file));
   int cycloid_features = 0, loose_fits = 0;
   for (const Part& p : a.parts()) {
     EXPECT_FALSE(p.compliant) << p.id;

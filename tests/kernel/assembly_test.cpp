@@ -168,6 +168,29 @@ TEST(Assembly, ListsFeaturesByKind) {
   EXPECT_TRUE(assembly.FeaturesOfKind(FeatureKind::kThread).empty());
 }
 
+TEST(Assembly, PartsMovingAsOneAreNamedAfterTheLargest) {
+  // Cubes of 1, 3 and 1 mm^3 and a part without a mesh (a features-only pin).
+  AssemblySpec spec;
+  auto rod = std::make_shared<TriangleMesh>(*UnitCube());
+  for (Eigen::Vector3d& v : rod->vertices) v.x() *= 3;
+  const std::vector<std::shared_ptr<const TriangleMesh>> meshes = {UnitCube(), rod, nullptr,
+                                                                   UnitCube()};
+  for (std::size_t p = 0; p < meshes.size(); ++p) {
+    Part part;
+    part.id = "part" + std::to_string(p);
+    part.mesh = meshes[p];
+    part.features.push_back(MakeFeature("f", FeatureKind::kFace));
+    spec.parts.push_back(part);
+  }
+  const Assembly assembly(std::move(spec));
+  using Parts = std::vector<std::size_t>;
+  EXPECT_EQ(MainPart(assembly, Parts{0, 1, 2, 3}), 1u);
+  EXPECT_EQ(MainPart(assembly, Parts{3, 2, 0}), 3u);  // the first of equals, as given
+  EXPECT_EQ(MainPart(assembly, Parts{2, 0}), 0u);     // a part without a mesh counts as none
+  EXPECT_EQ(MainPart(assembly, Parts{2}), 2u);
+  EXPECT_THROW(MainPart(assembly, Parts{}), std::logic_error);
+}
+
 TEST(Assembly, CompactTablesAgreeWithTheParts) {
   // Parts of 0, 3 and 1 features, the middle one ground, the last with a mesh of its own
   // (the first two share one) and each at its own pose: the per-feature kinds and origins,
