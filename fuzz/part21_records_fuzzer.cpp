@@ -2,7 +2,7 @@
 // give records or nothing, without reading outside them (AddressSanitizer), and the records it
 // gives hold together: every text inside the input and apart from the others, with a character
 // of no text after it (where Part21WorkLibrary writes its NUL), every record's parameters inside
-// the list, every `$n` named by max_sub.
+// the list, every `$n` named by max_sub; every undefined reference is held by an entity.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -47,6 +47,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (std::size_t k = 0; k < texts.size(); ++k) {
     const std::size_t end = std::size_t{texts[k].begin} + texts[k].size;
     Require(end < (k + 1 < texts.size() ? std::size_t{texts[k + 1].begin} : size));
+  }
+  // Each undefined reference is a reference, held by an entity.
+  for (const mechanist::Part21UndefinedReference& u :
+       mechanist::UndefinedReferences(*records, text)) {
+    Require(u.entity.size() > 1 && u.entity[0] == '#' && u.missing.size() > 1 &&
+            u.missing[0] == '#');
   }
   return 0;
 }

@@ -543,29 +543,12 @@ class Reader {
   }
 
   // Open CASCADE's messages on reading `relative` as findings `step_reader` (an error as a
-  // warning, since the file was still read; a warning as info), repeats counted once. Its
-  // reports of references to entities the file does not define (one per reference, and their
-  // count) are one warning, naming the first three.
+  // warning, since the file was still read; a warning as info), repeats counted once. The
+  // references to entities the file does not define are one warning, naming the first three.
   void AddStepMessages(const std::string& relative, const std::vector<StepMessage>& messages) {
-    // "ERR StepReaderData Entite #1394 Type:LINE Param.n0 3: #1512 Not found"
-    static const std::regex kUnresolved(
-        R"(ERR StepReaderData Entite (#\d+) Type:(\S+) Param\.n0 \d+: (#\d+) Not found)");
-    std::vector<std::string> unresolved;
-    for (const StepMessage& m : messages) {
-      std::smatch match;
-      if (std::regex_match(m.text, match, kUnresolved)) {
-        unresolved.push_back(
-            fmt::format("{} {} refers to {}", match[1].str(), match[2].str(), match[3].str()));
-      }
-    }
     std::vector<std::pair<const StepMessage*, std::size_t>> unique;  // first of a text, count
     for (const StepMessage& m : messages) {
-      // The references, and their count ("Unresolved Reference : Fails Count : 127"), go
-      // into the one warning below.
-      if (!unresolved.empty() && (std::regex_match(m.text, kUnresolved) ||
-                                  m.text.find("Unresolved Reference") != std::string::npos)) {
-        continue;
-      }
+      if (m.undefined_reference) continue;
       auto same = std::find_if(unique.begin(), unique.end(),
                                [&](const auto& u) { return u.first->text == m.text; });
       if (same == unique.end()) {
@@ -574,17 +557,12 @@ class Reader {
         ++same->second;
       }
     }
-    if (!unresolved.empty()) {
-      const std::size_t shown = std::min<std::size_t>(3, unresolved.size());
+    if (const std::string undefined = UndefinedReferenceWords(messages); !undefined.empty()) {
       spec_.findings.push_back(
           {Severity::kWarning,
            "step_reader",
-           fmt::format("{}: {} {} to entities the file does not define ({}{}): it is damaged or "
-                       "cut short, and what uses them is missing from the parts read",
-                       relative, unresolved.size(),
-                       unresolved.size() == 1 ? "reference" : "references",
-                       fmt::join(unresolved.begin(), unresolved.begin() + shown, "; "),
-                       unresolved.size() > shown ? "; ..." : ""),
+           fmt::format("{}: {}, and what uses them is missing from the parts read", relative,
+                       undefined),
            {},
            {}});
     }

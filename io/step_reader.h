@@ -38,11 +38,15 @@ struct StepSolid {
 };
 
 /// A message of Open CASCADE's reader about the file: of warning gravity or above, or one of
-/// its error reports, e.g. "ERR StepReaderData Entite #2878 Type:PRODUCT_CATEGORY_RELATIONSHIP
-/// Param.n0 3: #999998 Not found".
+/// its error reports, e.g. "ERR StepFile : Incorrect Syntax : Fails Count : 1"; or a reference
+/// to an entity the file does not define (in place of the reader's reports of them).
 struct StepMessage {
   bool error = false;  ///< an error report or fail gravity; otherwise a warning
   std::string text;    ///< one line: blank runs and "***" as single spaces
+  /// The text is a reference to an entity the file does not define (an error), the entity
+  /// that holds it with its type, and the missing one: "#2878 PRODUCT_CATEGORY_RELATIONSHIP
+  /// refers to #999998".
+  bool undefined_reference = false;
 };
 
 /// Receives the fraction of a STEP file's reading done, in [0, 1], never decreasing, 1 last
@@ -55,6 +59,12 @@ using StepProgress = std::function<void(double fraction)>;
 /// As StepProgress, for the STEP file `step_file` among others (an assembly file's imports).
 using StepFileProgress =
     std::function<void(const std::filesystem::path& step_file, double fraction)>;
+
+/// The references to entities the file does not define among `messages` (ReadStep's), in
+/// words for a report: "2 references to entities the file does not define (#10 LINE refers to
+/// #13; #12 FACE_BOUND refers to #14): it is damaged or cut short", the first three named;
+/// empty when there is none.
+std::string UndefinedReferenceWords(const std::vector<StepMessage>& messages);
 
 /// Reads a STEP file (AP203, AP214 or AP242) with its product structure through Open
 /// CASCADE's XCAF reader, triangulates each solid (0.01 mm or 0.1% of its size, whichever is

@@ -2,6 +2,8 @@
 
 #include <cstdint>
 #include <limits>
+#include <string>
+#include <unordered_set>
 #include <utility>
 
 namespace mechanist {
@@ -298,6 +300,41 @@ class Scanner {
 
 std::optional<Part21Records> ReadPart21Records(std::string_view text) {
   return Scanner(text).Read();
+}
+
+std::vector<Part21UndefinedReference> UndefinedReferences(const Part21Records& records,
+                                                          std::string_view text) {
+  const auto of = [&](Part21Records::Span s) { return text.substr(s.begin, s.size); };
+  const auto number = [&](Part21Records::Span s) {  // of `#123`, which the scanner checked
+    std::uint64_t n = 0;
+    for (const char c : of(s).substr(1)) n = 10 * n + static_cast<std::uint64_t>(c - '0');
+    return n;
+  };
+  std::unordered_set<std::uint64_t> defined;
+  for (std::size_t r = records.header_records; r < records.records.size(); ++r) {
+    if (records.records[r].ident.size > 0) defined.insert(number(records.records[r].ident));
+  }
+  // A record's nested lists come before it, and a complex entity's further parts after its
+  // first, without an ident: the references met are held until the record they belong to.
+  std::vector<Part21UndefinedReference> undefined;
+  std::size_t pending = 0;  // undefined[pending, end) await their entity
+  const Part21Records::Record* entity = nullptr;
+  for (std::size_t r = records.header_records; r < records.records.size(); ++r) {
+    const Part21Records::Record& record = records.records[r];
+    for (std::uint32_t k = record.first; k < record.first + record.count; ++k) {
+      const Part21Records::Param& p = records.params[k];
+      if (p.kind == Part21Records::Kind::kIdent && !defined.count(number(p.text))) {
+        undefined.push_back({"", "", std::string(of(p.text))});
+      }
+    }
+    if (record.sub > 0) continue;
+    if (record.ident.size > 0) entity = &record;
+    for (; entity && pending < undefined.size(); ++pending) {
+      undefined[pending].entity = of(entity->ident);
+      undefined[pending].type = of(entity->type);
+    }
+  }
+  return undefined;
 }
 
 }  // namespace mechanist

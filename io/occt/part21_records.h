@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -69,5 +70,18 @@ struct Part21Records {
 /// and more. For every text it reads, Open CASCADE's scanner ends each token where this one does
 /// (checked by tests against StepFile_Read on real exports).
 std::optional<Part21Records> ReadPart21Records(std::string_view text);
+
+/// A reference in a data section to an entity that it does not define.
+struct Part21UndefinedReference {
+  std::string entity;   ///< `#10`: the entity whose parameters hold it (also in a nested list or a
+                        ///< further part of a complex entity)
+  std::string type;     ///< the entity's type (a complex entity's first part's)
+  std::string missing;  ///< `#13912`
+};
+
+/// The references of `records` (ReadPart21Records of `text`) to entities that its data section
+/// does not define, in file order: what a file cut short, or damaged, lacks.
+std::vector<Part21UndefinedReference> UndefinedReferences(const Part21Records& records,
+                                                          std::string_view text);
 
 }  // namespace mechanist

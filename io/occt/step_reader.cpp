@@ -65,6 +65,7 @@
 #include <string_view>
 #include <tuple>
 
+#include "io/occt/part21_records.h"
 #include "io/occt/part21_work_library.h"
 #include "kernel/geometry/circle_fit.h"
 #include "kernel/mesh/mesh_check.h"
@@ -1203,12 +1204,63 @@ std::string FirstError(const std::vector<StepMessage>& messages) {
   return "";
 }
 
+std::string FileText(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// Open CASCADE's reports of references to entities the file does not define ("ERR
+// StepReaderData Entite #-4 Type:/* (SUB) */ Param.n0 2: #46449 Not found", one per reference,
+// a nested list numbered as an entity of its own; then "Unresolved Reference : Fails Count :
+// N") replaced, where the first of them stood, by one message per reference that names the
+// entity holding it (UndefinedReferences on `file`'s text), or by the reports' own words when
+// the scanner does not read the file.
+void NameUndefinedReferences(const std::filesystem::path& file,
+                             std::vector<StepMessage>* messages) {
+  static const std::regex kNotFound(
+      R"(ERR StepReaderData Entite (#-?\d+) Type:(.*) Param\.n0 \d+: (#\d+) Not found)");
+  const auto is_report = [](const StepMessage& m) {
+    return std::regex_match(m.text, kNotFound) ||
+           m.text.find("Unresolved Reference") != std::string::npos;
+  };
+  const auto first = std::find_if(messages->begin(), messages->end(), is_report);
+  if (first == messages->end()) return;
+  const auto reference = [](std::string_view entity, std::string_view type,
+                            std::string_view missing) {
+    return StepMessage{true, fmt::format("{} {} refers to {}", entity, type, missing), true};
+  };
+  std::vector<StepMessage> named;
+  const std::string text = FileText(file);
+  if (const std::optional<Part21Records> records = ReadPart21Records(text)) {
+    for (const Part21UndefinedReference& r : UndefinedReferences(*records, text)) {
+      named.push_back(reference(r.entity, r.type, r.missing));
+    }
+  }
+  if (named.empty()) {
+    for (const StepMessage& m : *messages) {
+      std::smatch match;
+      if (std::regex_match(m.text, match, kNotFound)) {
+        named.push_back(reference(match[1].str(), match[2].str(), match[3].str()));
+      }
+    }
+  }
+  const std::ptrdiff_t at = first - messages->begin();
+  std::erase_if(*messages, is_report);
+  messages->insert(messages->begin() + at, named.begin(), named.end());
+}
+
+// What the reader's `messages` say went wrong, for an error's end: the references to
+// entities the file does not define (UndefinedReferenceWords), or else its first error report.
+std::string Fault(const std::vector<StepMessage>& messages) {
+  const std::string undefined = UndefinedReferenceWords(messages);
+  return undefined.empty() ? FirstError(messages) : "; it has " + undefined;
+}
+
 // What a status of the reader's ReadFile says about `file`: first what its text shows (no
 // STEP file at all, or one cut short), which the parser's report does not say in so many
 // words ("Line 2: Incorrect syntax: unexpected TYPE, expecting STEP").
 std::string ReadFailure(IFSelect_ReturnStatus status, const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = FileText(file);
   constexpr std::string_view kStart = "ISO-10303-21;", kEnd = "END-ISO-10303-21;";
   const std::size_t start = text.find_first_not_of(" \t\r\n");
   if (start == std::string::npos || text.compare(start, kStart.size(), kStart) != 0) {
@@ -1289,6 +1341,7 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
   const Handle(DeferredHealing) healing = new DeferredHealing();
   const HealingDeferred deferred(healing);
   const IFSelect_ReturnStatus status = reader.ReadFile(file.string().c_str());
+  NameUndefinedReferences(file, messages);
   if (status != IFSelect_RetDone) {
     app->Close(document);
     throw std::runtime_error(fmt::format("cannot read it as STEP (AP203, AP214 or AP242): {}{}",
@@ -1299,7 +1352,7 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
     app->Close(document);
     throw std::runtime_error(
         fmt::format("cannot read it as STEP (AP203, AP214 or AP242): its entities give no shape{}",
-                    FirstError(*messages)));
+                    Fault(*messages)));
   }
   // Parts left out would change the answer unseen (free bolts where the nuts went missing).
   if (const std::vector<std::string> unread = UnreadPartFiles(reader, file); !unread.empty()) {
@@ -1341,6 +1394,20 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
 
 }  // namespace
 
+std::string UndefinedReferenceWords(const std::vector<StepMessage>& messages) {
+  std::vector<std::string> references;
+  for (const StepMessage& m : messages) {
+    if (m.undefined_reference) references.push_back(m.text);
+  }
+  if (references.empty()) return "";
+  const std::size_t shown = std::min<std::size_t>(3, references.size());
+  return fmt::format(
+      "{} {} to entities the file does not define ({}{}): it is damaged or cut short",
+      references.size(), references.size() == 1 ? "reference" : "references",
+      fmt::join(references.begin(), references.begin() + shown, "; "),
+      references.size() > shown ? "; ..." : "");
+}
+
 std::vector<StepSolid> ReadStep(const std::filesystem::path& file,
                                 std::vector<StepMessage>* messages, const StepProgress& progress) {
   if (!std::filesystem::exists(file)) throw std::runtime_error("no such file");
@@ -1360,7 +1427,7 @@ std::vector<StepSolid> ReadStep(const std::filesystem::path& file,
     const char* what = failure.GetMessageString();
     throw std::runtime_error(
         fmt::format("Open CASCADE failed reading it ({}{}){}", failure.DynamicType()->Name(),
-                    what && *what ? fmt::format(": {}", what) : std::string(), FirstError(kept)));
+                    what && *what ? fmt::format(": {}", what) : std::string(), Fault(kept)));
   }
 }
 

@@ -105,6 +105,28 @@ TEST(Part21Records, NestedListsAndComplexEntitiesAreRecordsAsOpenCascadeEncodesT
   EXPECT_EQ(Lines(*records, text), expected);
 }
 
+TEST(Part21Records, UndefinedReferencesAreNamedByTheEntityThatHoldsThem) {
+  // #2 refers to #1 (defined) and to #9 in a nested list; the complex #3 to #8 in its second
+  // part's list; #5, after them, to #7 directly. The header's reference is not the data's.
+  const std::string text =
+      "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((#4),'2;1');\nENDSEC;\nDATA;\n"
+      "#1=CARTESIAN_POINT('',(0.,0.,0.));\n#2=POLYLINE('',(#1,#9));\n"
+      "#3=(A(1) B((#8,#1)));\n#5=VERTEX_POINT('',#7);\nENDSEC;\nEND-ISO-10303-21;\n";
+  const std::optional<Part21Records> records = ReadPart21Records(text);
+  ASSERT_TRUE(records.has_value());
+  std::vector<std::string> found;
+  for (const Part21UndefinedReference& r : UndefinedReferences(*records, text)) {
+    found.push_back(r.entity + " " + r.type + " -> " + r.missing);
+  }
+  EXPECT_EQ(found,
+            (std::vector<std::string>{"#2 POLYLINE -> #9", "#3 A -> #8", "#5 VERTEX_POINT -> #7"}));
+  // A whole file refers only to what it defines.
+  const std::string whole = Slurp(kShared / "real/hinge_clamshell_build123d/clamshell_full.step");
+  const std::optional<Part21Records> real = ReadPart21Records(whole);
+  ASSERT_TRUE(real.has_value());
+  EXPECT_TRUE(UndefinedReferences(*real, whole).empty());
+}
+
 TEST(Part21Records, NumbersAreSplitAsOpenCascadesScannerSplitsThem) {
   const std::string text = Wrapped("#1=A(-1E5,.5,1.,12,+3,-2.5E+07,1.2.3);");
   const std::optional<Part21Records> records = ReadPart21Records(text);
