@@ -937,8 +937,8 @@ MotionAnalysis AnalyzeMotion(const Assembly& assembly, const std::vector<Pair>& 
   };
   // A body's motion is said of its main part (MainPart, the first by id among equals).
   const auto main_part = [&](std::size_t body) {
-    std::vector<std::size_t> parts(motion_model.PartsOf(body).begin(),
-                                   motion_model.PartsOf(body).end());
+    const std::span<const std::size_t> own = motion_model.PartsOf(body);
+    std::vector<std::size_t> parts(own.begin(), own.end());
     std::sort(parts.begin(), parts.end(), by_id);
     return parts.empty() ? 0 : MainPart(assembly, parts);
   };

@@ -1204,6 +1204,7 @@ std::string FirstError(const std::vector<StepMessage>& messages) {
   return "";
 }
 
+// The whole text of `file`; empty when it cannot be read.
 std::string FileText(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

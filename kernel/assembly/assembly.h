@@ -262,7 +262,7 @@ class Assembly {
 /// The part that a group of parts moving as one (a subassembly) is named after: the largest by
 /// mesh volume (a part without a mesh counts as none), the first in `parts` among equals, so
 /// that a pendulum's turn is the rod's and not its bearing ring's. `parts` are indices into
-/// `assembly.parts()` and must not be empty.
+/// `assembly.parts()`; throws std::logic_error when there is none.
 std::size_t MainPart(const Assembly& assembly, std::span<const std::size_t> parts);
 
 }  // namespace mechanist

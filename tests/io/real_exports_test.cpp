@@ -182,8 +182,9 @@ const std::map<std::string, std::vector<std::string>>& FreeMotions() {
       {"lead_screw_linear_actuator_onshape/Assembly.step",
        {"Assembly_1.0__V slides along (0, 1, 0) on Assembly_1._C_V/face_115",
         "Assembly_1.p____V turns about Assembly_1.P___V/hole_3's axis"}},
-      // The sixteen finger hinges, the thumb's slide on its pivot screw and the servos' slides
-      // in their pockets.
+      // Sixteen turns (the truth's 15 joints with Ring1 and Pinky1 apart, the thumb's base on
+      // its pivot screw among them), the thumb base's slide along that screw, and the servos'
+      // slides in their pockets.
       {"robot_hand_finger_hinges_onshape/Assembly 1.step",
        {"Assembly_1.Index1 turns about Assembly_1.Palm/hole_6's axis",
         "Assembly_1.Index2 turns about Assembly_1.Index1/hole_3's axis",

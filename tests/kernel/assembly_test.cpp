@@ -169,7 +169,7 @@ TEST(Assembly, ListsFeaturesByKind) {
 }
 
 TEST(Assembly, PartsMovingAsOneAreNamedAfterTheLargest) {
-  // Cubes of 1, 3 and 1 mm^3 and a part without a mesh (a features-only pin).
+  // Boxes of 1, 3 and 1 mm^3 and a part without a mesh (a features-only pin).
   AssemblySpec spec;
   auto rod = std::make_shared<TriangleMesh>(*UnitCube());
   for (Eigen::Vector3d& v : rod->vertices) v.x() *= 3;
