@@ -1,5 +1,6 @@
 #include "io/occt/part21_records.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -305,12 +306,12 @@ std::optional<Part21Records> ReadPart21Records(std::string_view text) {
 std::vector<Part21UndefinedReference> UndefinedReferences(const Part21Records& records,
                                                           std::string_view text) {
   const auto of = [&](Part21Records::Span s) { return text.substr(s.begin, s.size); };
-  const auto number = [&](Part21Records::Span s) {  // of `#123`, which the scanner checked
-    std::uint64_t n = 0;
-    for (const char c : of(s).substr(1)) n = 10 * n + static_cast<std::uint64_t>(c - '0');
-    return n;
+  // The digits of `#0123` that name the entity (`123`), of any length, as keys.
+  const auto number = [&](Part21Records::Span s) {
+    const std::string_view digits = of(s).substr(1);
+    return digits.substr(std::min(digits.find_first_not_of('0'), digits.size() - 1));
   };
-  std::unordered_set<std::uint64_t> defined;
+  std::unordered_set<std::string_view> defined;
   for (std::size_t r = records.header_records; r < records.records.size(); ++r) {
     if (records.records[r].ident.size > 0) defined.insert(number(records.records[r].ident));
   }

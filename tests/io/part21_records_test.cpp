@@ -106,11 +106,11 @@ TEST(Part21Records, NestedListsAndComplexEntitiesAreRecordsAsOpenCascadeEncodesT
 }
 
 TEST(Part21Records, UndefinedReferencesAreNamedByTheEntityThatHoldsThem) {
-  // #2 refers to #1 (defined) and to #9 in a nested list; the complex #3 to #8 in its second
-  // part's list; #5, after them, to #7 directly. The header's reference is not the data's.
+  // #2 refers to #1 (defined, written #01) and to #9 in a nested list; the complex #3 to #8 in its
+  // second part's list; #5, after them, to #7 directly. The header's reference is not the data's.
   const std::string text =
       "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((#4),'2;1');\nENDSEC;\nDATA;\n"
-      "#1=CARTESIAN_POINT('',(0.,0.,0.));\n#2=POLYLINE('',(#1,#9));\n"
+      "#1=CARTESIAN_POINT('',(0.,0.,0.));\n#2=POLYLINE('',(#01,#9));\n"
       "#3=(A(1) B((#8,#1)));\n#5=VERTEX_POINT('',#7);\nENDSEC;\nEND-ISO-10303-21;\n";
   const std::optional<Part21Records> records = ReadPart21Records(text);
   ASSERT_TRUE(records.has_value());
