@@ -83,10 +83,23 @@ std::string ContactText(const Assembly& assembly, const Analysis& analysis, cons
   return s;
 }
 
+// The holes a pin goes through, "A/hole_1, B/hole_1".
+std::string HolesText(const Assembly& assembly, const std::vector<FeatureRef>& holes) {
+  std::string t;
+  for (const FeatureRef& h : holes) t += (t.empty() ? "" : ", ") + assembly.FeatureName(h);
+  return t;
+}
+
 Json BlockedJson(const Assembly& assembly, const std::vector<InsertionObstacle>& blocked_by) {
   Json blocked = Json::array();
   for (const InsertionObstacle& o : blocked_by) {
-    blocked.push_back({{"part", assembly.part(o.part).id},
+    Json pin = nullptr;
+    if (!o.pin.empty()) {
+      pin = Json::array();
+      for (const FeatureRef& h : o.pin) pin.push_back(assembly.FeatureName(h));
+    }
+    blocked.push_back({{"part", o.pin.empty() ? Json(assembly.part(o.part).id) : Json(nullptr)},
+                       {"pin", pin},
                        {"travel", Num(o.travel)},
                        {"short_by", Num(o.short_by)},
                        {"location", Point(o.p_W)}});
@@ -101,9 +114,11 @@ std::string BlockedText(const Assembly& assembly, bool clear,
   auto out = std::back_inserter(t);
   for (std::size_t k = 0; k < blocked_by.size(); ++k) {
     const InsertionObstacle& o = blocked_by[k];
-    fmt::format_to(out, "{}{} after {} mm ({} mm short of its place) at {}", k ? "; " : "",
-                   assembly.part(o.part).id, FormatNumber(o.travel), FormatNumber(o.short_by),
-                   Text(o.p_W));
+    const std::string what =
+        o.pin.empty() ? assembly.part(o.part).id
+                      : "the pin the file leaves out through " + HolesText(assembly, o.pin);
+    fmt::format_to(out, "{}{} after {} mm ({} mm short of its place) at {}", k ? "; " : "", what,
+                   FormatNumber(o.travel), FormatNumber(o.short_by), Text(o.p_W));
   }
   return t;
 }
@@ -132,13 +147,9 @@ std::string PinsText(const Assembly& assembly, const std::vector<PinInsertion>& 
   std::string t;
   auto out = std::back_inserter(t);
   for (const PinInsertion& p : pins) {
-    std::string holes;
-    for (const FeatureRef& h : p.holes) {
-      holes += (holes.empty() ? "" : ", ") + assembly.FeatureName(h);
-    }
     fmt::format_to(out, "{}{} pin the file leaves out, {} mm, through {} along {}, {} mm: {}\n",
-                   indent, then ? "then the" : "its", FormatNumber(p.diameter), holes,
-                   Text(p.direction_W), FormatNumber(p.travel),
+                   indent, then ? "then the" : "its", FormatNumber(p.diameter),
+                   HolesText(assembly, p.holes), Text(p.direction_W), FormatNumber(p.travel),
                    BlockedText(assembly, p.clear, p.blocked_by));
   }
   return t;

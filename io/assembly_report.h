@@ -35,8 +35,9 @@ void WriteAssemblySummary(const Assembly& assembly, const Analysis& analysis,
 
 /// The assembly JSON report: {"assembly", "skipped", "assemblable", "source": "steps"|"search",
 /// "base", "steps": [{"part", "carried", "feature", "into", "direction", "travel", "clear",
-/// "blocked_by": [{"part", "travel", "short_by", "location"}], "pair"}], "unplaced" (same
-/// shape), "clashes": [...]}.
+/// "blocked_by": [{"part", "pin", "travel", "short_by", "location"}], "pair"}], "unplaced"
+/// (same shape), "clashes": [...]}. An obstacle is a part ("part" its id, "pin" null) or a pin
+/// the file leaves out ("part" null, "pin" the holes it goes through).
 std::string AssemblyPlanJson(const Assembly& assembly, const Analysis& analysis,
                              const AssemblyPlan& plan);
 

@@ -6,6 +6,8 @@
 #include <limits>
 #include <mutex>
 #include <numeric>
+#include <string_view>
+#include <tuple>
 
 #include "kernel/assembly/assembly_state.h"
 #include "kernel/collision/translational_sweep.h"
@@ -44,6 +46,12 @@ std::optional<double> TravelToMeet(const Aabb& moving, const Aabb& fixed, const 
   }
   return lo;
 }
+
+// Something in place that can stop a motion: a part, or a pin the file leaves out.
+struct Obstacle {
+  std::size_t part = 0;
+  const HingePin* pin = nullptr;  // the pin, when the obstacle is one (else a part)
+};
 
 class Planner {
  public:
@@ -102,26 +110,78 @@ class Planner {
     return through;
   }
 
-  // The pins whose parts are all among `parts` (sorted), pushed in with the parts `present`.
+  // The pins whose parts are all among `parts` (sorted), pushed in one after another, in
+  // order, with the parts `present` and the pins `pin_in` (by index into pins_) in place; each
+  // is in place after it.
   std::vector<PinInsertion> PinsAmong(const std::vector<std::size_t>& parts,
-                                      const std::vector<bool>& present) const {
+                                      const std::vector<bool>& present,
+                                      std::vector<bool>* pin_in) const {
     std::vector<PinInsertion> among;
     for (const HingePin& pin : pins_) {
       if (std::includes(parts.begin(), parts.end(), pin.parts.begin(), pin.parts.end())) {
-        among.push_back(InsertPin(pin, present));
+        among.push_back(InsertPin(pin, present, *pin_in));
+        (*pin_in)[Index(pin)] = true;
       }
     }
     return among;
   }
 
-  // `pin` pushed into its place along its axis from outside the parts `present`, from the end
-  // its first hole's axis points away from first, then from the other; the first clear attempt,
-  // else the one whose first stop is nearest its place (the first of equals).
-  PinInsertion InsertPin(const HingePin& pin, const std::vector<bool>& present) const {
-    std::vector<std::size_t> obstacles;
-    for (std::size_t p = 0; p < present.size(); ++p) {
-      if (present[p]) obstacles.push_back(p);
+  std::size_t Index(const HingePin& pin) const { return &pin - pins_.data(); }
+
+  // The pins in place while `unit` is placed or leaves with the parts `present`: those whose
+  // parts are all present, none of them in `unit` (the pins through it go in after it).
+  std::vector<bool> PinsInPlace(const std::vector<std::size_t>& unit,
+                                const std::vector<bool>& present) const {
+    std::vector<bool> in(pins_.size(), false);
+    for (const HingePin& pin : pins_) {
+      in[Index(pin)] = std::all_of(pin.parts.begin(), pin.parts.end(), [&](std::size_t p) {
+        return present[p] && std::find(unit.begin(), unit.end(), p) == unit.end();
+      });
     }
+    return in;
+  }
+
+  // The parts `present` other than those of `unit`, then the pins `pin_in` (by index into
+  // pins_), in order.
+  std::vector<Obstacle> Obstacles(const std::vector<std::size_t>& unit,
+                                  const std::vector<bool>& present,
+                                  const std::vector<bool>& pin_in) const {
+    std::vector<Obstacle> obstacles;
+    for (std::size_t p = 0; p < present.size(); ++p) {
+      if (present[p] && std::find(unit.begin(), unit.end(), p) == unit.end()) {
+        obstacles.push_back({p, nullptr});
+      }
+    }
+    for (const HingePin& pin : pins_) {
+      if (pin_in[Index(pin)]) obstacles.push_back({pin.holes.front().part, &pin});
+    }
+    return obstacles;
+  }
+
+  const CollisionMesh& MeshOf(const Obstacle& o) const {
+    return o.pin ? *o.pin->mesh : model_.part_mesh(o.part);
+  }
+  const RigidTransform& PoseOf(const Obstacle& o) const {
+    return o.pin ? o.pin->X_WPin : state_.X_WP[o.part];
+  }
+  const Aabb& BoxOf(const Obstacle& o) const { return o.pin ? o.pin->box : boxes_[o.part]; }
+
+  // What InsertionObstacle says of `o`.
+  static InsertionObstacle Stop(const Obstacle& o, double travel, double short_by,
+                                const Eigen::Vector3d& p_W) {
+    InsertionObstacle stop{o.part, {}, travel, short_by, p_W};
+    if (o.pin) stop.pin = o.pin->holes;
+    return stop;
+  }
+
+  // `pin` pushed into its place along its axis from outside the parts `present` and the other
+  // pins `pin_in` (by index into pins_), from the end its first hole's axis points away from
+  // first, then from the other; the first clear attempt, else the one whose first stop is
+  // nearest its place (the first of equals).
+  PinInsertion InsertPin(const HingePin& pin, const std::vector<bool>& present,
+                         std::vector<bool> pin_in) const {
+    pin_in[Index(pin)] = false;
+    const std::vector<Obstacle> obstacles = Obstacles({}, present, pin_in);
     std::optional<PinInsertion> best;
     for (const double sense : {1.0, -1.0}) {
       PinInsertion attempt;
@@ -145,17 +205,17 @@ class Planner {
   // (swept as Sweep sweeps a part, its place the seat), sorted by travel. Contacts inside the
   // pin's holes are its fit: they do not block.
   std::vector<InsertionObstacle> PinStops(const HingePin& pin,
-                                          const std::vector<std::size_t>& obstacles,
+                                          const std::vector<Obstacle>& obstacles,
                                           const Eigen::Vector3d& d, double travel) const {
     Aabb swept = pin.box;
     swept.Extend(Aabb{pin.box.min - travel * d, pin.box.max - travel * d});
     const RigidTransform X_WStart = RigidTransform::Translation(-travel * d) * pin.X_WPin;
     std::vector<InsertionObstacle> blocked;
-    for (const std::size_t o : obstacles) {
-      if (!Grown(boxes_[o]).Intersects(swept)) continue;
+    for (const Obstacle& o : obstacles) {
+      if (!Grown(BoxOf(o)).Intersects(swept)) continue;
       std::vector<FeatureRef> fits;
       for (const FeatureRef h : pin.holes) {
-        if (h.part == o) fits.push_back(h);
+        if (!o.pin && h.part == o.part) fits.push_back(h);
       }
       SweepOptions options;
       options.max_travel = travel;
@@ -167,22 +227,24 @@ class Planner {
           });
         };
       }
-      const auto contact = FirstBlockingContact(*pin.mesh, X_WStart, model_.part_mesh(o),
-                                                state_.X_WP[o], d, options);
+      const auto contact =
+          FirstBlockingContact(*pin.mesh, X_WStart, MeshOf(o), PoseOf(o), d, options);
       if (!contact || contact->travel >= travel - tolerance_) continue;
-      blocked.push_back({o, contact->travel, travel - contact->travel, contact->p_W});
+      blocked.push_back(Stop(o, contact->travel, travel - contact->travel, contact->p_W));
     }
     SortByTravel(&blocked);
     return blocked;
   }
 
+  // By travel, then by the part's id (a pin's first hole's part), parts before pins; in the
+  // order found among equals.
   void SortByTravel(std::vector<InsertionObstacle>* blocked) const {
-    std::sort(
-        blocked->begin(), blocked->end(),
-        [&](const InsertionObstacle& x, const InsertionObstacle& y) {
-          return x.travel < y.travel ||
-                 (x.travel == y.travel && assembly_.part(x.part).id < assembly_.part(y.part).id);
-        });
+    std::stable_sort(blocked->begin(), blocked->end(),
+                     [&](const InsertionObstacle& x, const InsertionObstacle& y) {
+                       const std::string_view x_id = assembly_.part(x.part).id;
+                       const std::string_view y_id = assembly_.part(y.part).id;
+                       return std::tie(x.travel, x_id, x.pin) < std::tie(y.travel, y_id, y.pin);
+                     });
   }
 
   // The parts carried along with `part`: reachable through carrying pairs, among `eligible`.
@@ -301,34 +363,34 @@ class Planner {
   }
 
   // Where `obstacle` first stops `group` sweeping as Sweep says (`swept`: SweptBox), if it
-  // does.
+  // does. A pin the file leaves out has no pairs: every contact with it counts.
   std::optional<InsertionObstacle> FirstStop(const std::vector<std::size_t>& group,
-                                             std::size_t obstacle, const Aabb& swept,
+                                             const Obstacle& obstacle, const Aabb& swept,
                                              const Eigen::Vector3d& d, double start_shift,
                                              double travel, double seat_travel) const {
-    if (!Grown(boxes_[obstacle]).Intersects(swept)) return std::nullopt;
+    if (!Grown(BoxOf(obstacle)).Intersects(swept)) return std::nullopt;
     std::optional<InsertionObstacle> first;
     for (const std::size_t m : group) {
-      if (const auto held = HeldAcross(m, obstacle, d)) {
+      const auto held = obstacle.pin ? std::nullopt : HeldAcross(m, obstacle.part, d);
+      if (held) {
         // Held from the start of a removal, or at the very end of an insertion.
         const double at = std::isfinite(seat_travel) ? seat_travel : 0.0;
         if (!first || at < first->travel) {
           const Eigen::Vector3d p_W = state_.X_WP[held->part] * assembly_.feature(*held).origin;
-          first = InsertionObstacle{obstacle, at, 0.0, p_W};
+          first = Stop(obstacle, at, 0.0, p_W);
         }
         continue;
       }
       SweepOptions options;
       options.max_travel = travel;
       options.min_approach = min_approach_;
-      options.ignore = IgnoreFor(m, obstacle, d);
+      if (!obstacle.pin) options.ignore = IgnoreFor(m, obstacle.part, d);
       const RigidTransform X_WM = RigidTransform::Translation(start_shift * d) * state_.X_WP[m];
-      const auto contact = FirstBlockingContact(
-          model_.part_mesh(m), X_WM, model_.part_mesh(obstacle), state_.X_WP[obstacle], d, options);
+      const auto contact = FirstBlockingContact(model_.part_mesh(m), X_WM, MeshOf(obstacle),
+                                                PoseOf(obstacle), d, options);
       if (!contact || contact->travel >= seat_travel - tolerance_) continue;
       if (!first || contact->travel < first->travel) {
-        first = InsertionObstacle{obstacle, contact->travel, seat_travel - contact->travel,
-                                  contact->p_W};
+        first = Stop(obstacle, contact->travel, seat_travel - contact->travel, contact->p_W);
       }
     }
     return first;
@@ -339,12 +401,12 @@ class Planner {
   // travel. Contacts within the tolerance of `seat_travel` or beyond are the seat and do not
   // count.
   std::vector<InsertionObstacle> Sweep(const std::vector<std::size_t>& group,
-                                       const std::vector<std::size_t>& obstacles,
+                                       const std::vector<Obstacle>& obstacles,
                                        const Eigen::Vector3d& d, double start_shift, double travel,
                                        double seat_travel) const {
     const Aabb swept = SweptBox(group, d, start_shift, travel);
     std::vector<InsertionObstacle> blocked;
-    for (const std::size_t o : obstacles) {
+    for (const Obstacle& o : obstacles) {
       if (auto stop = FirstStop(group, o, swept, d, start_shift, travel, seat_travel)) {
         blocked.push_back(*stop);
       }
@@ -356,11 +418,11 @@ class Planner {
   // Whether any of `obstacles` stops `group` leaving along d by `travel` (swept as Sweep
   // sweeps it, from its final poses, with no seat): the first stop found ends the search (a
   // removal only asks whether its way is clear).
-  bool Stopped(const std::vector<std::size_t>& group, const std::vector<std::size_t>& obstacles,
+  bool Stopped(const std::vector<std::size_t>& group, const std::vector<Obstacle>& obstacles,
                const Eigen::Vector3d& d, double travel) const {
     const double no_seat = std::numeric_limits<double>::infinity();
     const Aabb swept = SweptBox(group, d, 0.0, travel);
-    return std::any_of(obstacles.begin(), obstacles.end(), [&](std::size_t o) {
+    return std::any_of(obstacles.begin(), obstacles.end(), [&](const Obstacle& o) {
       return FirstStop(group, o, swept, d, 0.0, travel, no_seat).has_value();
     });
   }
@@ -373,27 +435,28 @@ class Planner {
   // stop found yet, and the first met no sooner than that ends the search. (The sweeps of
   // parts sliding past each other are long and find nothing: on the Onshape robot hand a best
   // attempt took a minute.)
-  double FreeTravel(const std::vector<std::size_t>& group,
-                    const std::vector<std::size_t>& obstacles, const Eigen::Vector3d& d,
-                    double travel, double enough) const {
+  double FreeTravel(const std::vector<std::size_t>& group, const std::vector<Obstacle>& obstacles,
+                    const Eigen::Vector3d& d, double travel, double enough) const {
     const double no_seat = std::numeric_limits<double>::infinity();
     const Aabb swept = SweptBox(group, d, 0.0, travel);
     const Aabb start = SweptBox(group, d, 0.0, 0.0);  // the group's box where it stands
     std::vector<std::pair<double, std::size_t>> met;  // travel at which the boxes meet, obstacle
-    for (const std::size_t o : obstacles) {
-      const Aabb grown = Grown(boxes_[o]);
+    for (std::size_t k = 0; k < obstacles.size(); ++k) {
+      const Obstacle& o = obstacles[k];
+      const Aabb grown = Grown(BoxOf(o));
       if (!grown.Intersects(swept)) continue;
       // A fit across d holds the group from the start, wherever the boxes meet (FirstStop).
       for (const std::size_t m : group) {
-        if (HeldAcross(m, o, d)) return 0.0;
+        if (!o.pin && HeldAcross(m, o.part, d)) return 0.0;
       }
-      if (const auto at = TravelToMeet(start, grown, d, travel)) met.emplace_back(*at, o);
+      if (const auto at = TravelToMeet(start, grown, d, travel)) met.emplace_back(*at, k);
     }
     std::sort(met.begin(), met.end());
     double free = travel;
-    for (const auto& [at, o] : met) {
+    for (const auto& [at, k] : met) {
       if (at >= free || free <= enough) break;
-      const auto stop = FirstStop(group, o, SweptBox(group, d, 0.0, free), d, 0.0, free, no_seat);
+      const auto stop =
+          FirstStop(group, obstacles[k], SweptBox(group, d, 0.0, free), d, 0.0, free, no_seat);
       if (stop) free = std::min(free, stop->travel);
     }
     return free;
@@ -414,7 +477,7 @@ class Planner {
 
   // Distance along d that takes `group`'s boxes clear of `others`' boxes (plus a margin).
   double ClearingDistance(const std::vector<std::size_t>& group,
-                          const std::vector<std::size_t>& others, const Eigen::Vector3d& d) const {
+                          const std::vector<Obstacle>& others, const Eigen::Vector3d& d) const {
     double group_min = std::numeric_limits<double>::infinity();
     for (const std::size_t m : group) group_min = std::min(group_min, Extent(boxes_[m], d, false));
     return ClearingDistance(group_min, others, d);
@@ -422,11 +485,11 @@ class Planner {
 
   // Distance along d that takes what reaches down to `lowest` along d clear of `others`' boxes
   // (plus a margin).
-  double ClearingDistance(double lowest, const std::vector<std::size_t>& others,
+  double ClearingDistance(double lowest, const std::vector<Obstacle>& others,
                           const Eigen::Vector3d& d) const {
     double others_max = -std::numeric_limits<double>::infinity();
-    for (const std::size_t o : others) {
-      others_max = std::max(others_max, Extent(boxes_[o], d, true));
+    for (const Obstacle& o : others) {
+      others_max = std::max(others_max, Extent(BoxOf(o), d, true));
     }
     if (!std::isfinite(others_max)) return 0.0;
     return std::max(0.0, others_max - lowest) + 1.0 + tolerance_;
@@ -452,7 +515,8 @@ class Planner {
     for (std::size_t p = 0; p < n; ++p) {
       if (placed[p]) plan->base.push_back(p);
     }
-    plan->base_pins = PinsAmong(plan->base, placed);
+    std::vector<bool> pin_in(pins_.size(), false);
+    plan->base_pins = PinsAmong(plan->base, placed, &pin_in);
     for (std::size_t k = 0; k < assembly_.steps().size(); ++k) {
       Report(static_cast<double>(k) / assembly_.steps().size());
       const AssemblyStep& s = assembly_.steps()[k];
@@ -468,19 +532,15 @@ class Planner {
       step.pair = PairOf(s.insert, s.into);
       std::vector<std::size_t> group = {step.part};
       group.insert(group.end(), step.carried.begin(), step.carried.end());
-      std::vector<std::size_t> obstacles;
-      for (std::size_t p = 0; p < n; ++p) {
-        if (placed[p] && std::find(group.begin(), group.end(), p) == group.end()) {
-          obstacles.push_back(p);
-        }
-      }
+      const std::vector<Obstacle> obstacles = Obstacles(group, placed, pin_in);
       step.travel = ClearingDistance(group, obstacles, -step.direction_W);
       step.blocked_by =
           Sweep(group, obstacles, step.direction_W, -step.travel, step.travel, step.travel);
       step.clear = step.blocked_by.empty();
       for (const std::size_t m : group) placed[m] = true;
       for (const HingePin* pin : PinsThrough(group, placed)) {
-        step.pins.push_back(InsertPin(*pin, placed));
+        step.pins.push_back(InsertPin(*pin, placed, pin_in));
+        pin_in[Index(*pin)] = true;
       }
       plan->steps.push_back(step);
     }
@@ -619,7 +679,8 @@ class Planner {
     // The base's pins go in before anything else is there.
     std::vector<bool> base_only(n, false);
     for (const std::size_t p : plan->base) base_only[p] = true;
-    plan->base_pins = PinsAmong(plan->base, base_only);
+    std::vector<bool> pin_in(pins_.size(), false);
+    plan->base_pins = PinsAmong(plan->base, base_only, &pin_in);
     plan->steps.assign(removed.rbegin(), removed.rend());
   }
 
@@ -646,20 +707,10 @@ class Planner {
     return step;
   }
 
-  std::vector<std::size_t> Others(const std::vector<std::size_t>& unit,
-                                  const std::vector<bool>& present) const {
-    std::vector<std::size_t> others;
-    for (std::size_t p = 0; p < present.size(); ++p) {
-      if (present[p] && std::find(unit.begin(), unit.end(), p) == unit.end()) {
-        others.push_back(p);
-      }
-    }
-    return others;
-  }
-
   std::optional<InsertionStep> TryRemove(const std::vector<std::size_t>& unit,
                                          const std::vector<bool>& present) const {
-    const std::vector<std::size_t> others = Others(unit, present);
+    const std::vector<bool> pin_in = PinsInPlace(unit, present);
+    const std::vector<Obstacle> others = Obstacles(unit, present, pin_in);
     for (const auto& [r, feature] : RemovalDirections(unit)) {
       const double travel = ClearingDistance(unit, others, r);
       // Leaving: no seat at the far end, so every contact counts.
@@ -670,7 +721,7 @@ class Planner {
       // is known, since most units tried cannot leave yet whatever their pins do.
       InsertionStep step = MakeStep(unit, r, feature, present);
       for (const HingePin* pin : PinsThrough(unit, present)) {
-        step.pins.push_back(InsertPin(*pin, present));
+        step.pins.push_back(InsertPin(*pin, present, pin_in));
         if (!step.pins.back().clear) return std::nullopt;
       }
       step.travel = travel;
@@ -705,7 +756,8 @@ class Planner {
   // reported as the insertion it would be.
   InsertionStep BestAttempt(const std::vector<std::size_t>& unit,
                             const std::vector<bool>& present) const {
-    const std::vector<std::size_t> others = Others(unit, present);
+    const std::vector<bool> pin_in = PinsInPlace(unit, present);
+    const std::vector<Obstacle> others = Obstacles(unit, present, pin_in);
     std::optional<std::pair<Eigen::Vector3d, std::optional<FeatureRef>>> best;
     double best_free = -1.0, best_travel = 0.0;
     for (const auto& [r, feature] : RemovalDirections(unit)) {
@@ -729,8 +781,9 @@ class Planner {
     std::reverse(blocked.begin(), blocked.end());  // by insertion travel again
     step.blocked_by = std::move(blocked);
     step.clear = step.blocked_by.empty();  // held by a pin that cannot come out
-    for (const HingePin* pin : PinsThrough(unit, present))
-      step.pins.push_back(InsertPin(*pin, present));
+    for (const HingePin* pin : PinsThrough(unit, present)) {
+      step.pins.push_back(InsertPin(*pin, present, pin_in));
+    }
     return step;
   }
 

@@ -17,9 +17,12 @@
 
 namespace mechanist {
 
-/// A part already in place that stops an insertion.
+/// A part already in place that stops an insertion, or a pin the file leaves out that is in
+/// place by then (PinInsertion).
 struct InsertionObstacle {
-  std::size_t part = 0;
+  std::size_t part = 0;  ///< the part; for a pin, the part of its first hole
+  /// For a pin, the holes it goes through (PinInsertion::holes); empty for a part.
+  std::vector<FeatureRef> pin;
   /// mm travelled from the start of the insertion (outside every part in place) to the
   /// first blocking contact.
   double travel = 0.0;
@@ -93,9 +96,9 @@ struct AssemblyPlan {
 /// the step that places the last of its parts (`pins`; the base's before the first step,
 /// `base_pins`), from whichever end of its axis is clear (its first hole's, by name, axis'
 /// sense first; else the attempt whose first stop is nearest its place is reported, with what
-/// stops it). Dowels are not listed (see FindHingePins). A pin in place is no obstacle to the
-/// parts placed after it (not modelled: a part that would pass through a pin's span between its
-/// holes is reported clear).
+/// stops it). Dowels are not listed (see FindHingePins). A pin in place is an obstacle like a
+/// part, to the parts and the pins that go in after it (every contact with it counts: it has
+/// no pairs).
 ///
 /// Search: ground parts (or, without any, the part with the largest box) form the base; the
 /// other parts are removed one at a time, in passes over the parts in the order of the file
@@ -104,7 +107,8 @@ struct AssemblyPlan {
 /// each axis it pivots on (a revolute or cylindrical pair with a part outside it), the way from
 /// the axis to the middle of its box and the principal directions, each turned square to the
 /// axis; a part leaves only when the pins the file leaves out through it can come out first
-/// (with the parts present then); the sequence is the reverse. Parts that cannot leave are
+/// (with the parts present then), and the pins whose parts are all present, none of them
+/// leaving, stand in its way; the sequence is the reverse. Parts that cannot leave are
 /// `unplaced`, each with its best attempt: the direction in which it gets furthest (the first
 /// of those that get equally far), with every part on its way, and its pins. The search runs
 /// on all cores and gives the one-at-a-time search's answer whatever the threads' timing.

@@ -139,10 +139,16 @@ json QuantisedMesh(const TriangleMesh& mesh) {
 // The assembly sequence for the stepper: the insertions in order, then the parts no insertion
 // places (with the attempt that got furthest), each with the pins the file leaves out that go
 // in after it.
-json Blocked(const std::vector<InsertionObstacle>& blocked_by) {
+json Blocked(const Assembly& assembly, const std::vector<InsertionObstacle>& blocked_by) {
   json blocked = json::array();
   for (const InsertionObstacle& o : blocked_by) {
-    blocked.push_back({{"part", o.part},
+    json pin = nullptr;
+    if (!o.pin.empty()) {
+      pin = json::array();
+      for (const FeatureRef& h : o.pin) pin.push_back(assembly.FeatureName(h));
+    }
+    blocked.push_back({{"part", o.pin.empty() ? json(o.part) : json(nullptr)},
+                       {"pin", pin},
                        {"travel", o.travel},
                        {"short_by", o.short_by},
                        {"point", Vector(o.p_W)}});
@@ -161,7 +167,7 @@ json Pins(const Assembly& assembly, const std::vector<PinInsertion>& pins) {
                     {"direction", Vector(pin.direction_W)},
                     {"travel", pin.travel},
                     {"clear", pin.clear},
-                    {"blocked_by", Blocked(pin.blocked_by)}});
+                    {"blocked_by", Blocked(assembly, pin.blocked_by)}});
   }
   return list;
 }
@@ -173,7 +179,7 @@ json Insertion(const Assembly& assembly, const InsertionStep& step, bool placed)
           {"travel", step.travel},
           {"clear", step.clear},
           {"placed", placed},
-          {"blocked_by", Blocked(step.blocked_by)},
+          {"blocked_by", Blocked(assembly, step.blocked_by)},
           {"pins", Pins(assembly, step.pins)}};
 }
 

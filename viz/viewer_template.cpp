@@ -678,9 +678,12 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     }
   };
   const stepClear = (st) => st.clear && st.pins.every((pin) => pin.clear);
+  // An obstacle is a part or a pin the file leaves out (its holes).
+  const obstacleWords = (o) =>
+    o.pin ? "the pin through " + o.pin.join(", ") : data.parts[o.part].id;
   const blockedWords = (blocked_by) => {
     const first = blocked_by[0];
-    return "blocked by " + (first ? data.parts[first.part].id + " after " +
+    return "blocked by " + (first ? obstacleWords(first) + " after " +
       (first.travel / data.mm_per_length).toFixed(2) + " " + data.length_unit : "?");
   };
   const stepWords = (st) => {
@@ -715,6 +718,17 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     obstacleShown = obstacle;
     if (differs) changed();
   };
+  // A pin that stops a step (its holes; null for none) is drawn in red.
+  const markPin = (holes) => {
+    const key = holes ? holes.join(",") : null;
+    for (const m of pinMeshes) {
+      const glow = m.pin.holes.join(",") === key ? 0xaa0000 : 0;
+      if (m.mesh.material.emissive.getHex() === glow) continue;
+      m.mesh.material.emissive.setHex(glow);
+      m.mesh.material.emissiveIntensity = glow ? 0.5 : 0;
+      changed();
+    }
+  };
   const stepTo = (k, u) => {
     clearRun();
     const st = plan.steps[k];
@@ -739,13 +753,16 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       stepMarker.position.set(first.point[0], first.point[1], first.point[2]);
     }
     highlight([st.part]);
-    seeThrough(reached ? first.part : null);
+    seeThrough(reached && !first.pin ? first.part : null);
+    markPin(reached && first.pin ? first.pin : null);
     document.querySelectorAll("#assembly-steps .row").forEach((row, j) => {
       row.classList.toggle("on", j === k);
     });
     return { part: data.parts[st.part].id, clear: st.clear, placed: st.placed,
              pins: pinMeshes.filter((m) => m.mesh.visible).length,
-             obstacle: reached ? data.parts[first.part].id : null,
+             red_pins: pinMeshes.filter((m) => m.mesh.visible &&
+                                             m.mesh.material.emissive.getHex() !== 0).length,
+             obstacle: reached ? obstacleWords(first) : null,
              at: reached ? first.travel / data.mm_per_length : null,
              hidden: [...later].map((p) => data.parts[p].id) };
   };
@@ -774,6 +791,7 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     stepMarker.visible = false;
     showPins(null, 0);
     seeThrough(null);
+    markPin(null);
     showAll();
   }
   if (!plan) {

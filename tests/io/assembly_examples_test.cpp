@@ -69,7 +69,7 @@ TEST(AssemblyExamples, EveryExampleIsFreeOfClashesAssemblableAndRunsClear) {
       EXPECT_EQ(run.pairs_swept > 0, PartsWithoutGeometry(a).size() < a.parts().size()) << file;
     }
   }
-  EXPECT_EQ(examples, 13);
+  EXPECT_EQ(examples, 14);
 }
 
 TEST(AssemblyExamples, BoltLargerThanThePlateHoleIsAClashAndBlocksItsStep) {
@@ -112,6 +112,39 @@ TEST(AssemblyExamples, StepIntoAPartNotYetPlacedHitsWhatIsInTheWay) {
   ASSERT_FALSE(plan.steps[1].blocked_by.empty());
   EXPECT_EQ(a.part(plan.steps[1].blocked_by[0].part).id, "bolt_left");
   EXPECT_FALSE(plan.assemblable);
+}
+
+// The clevis latch: the file's only step drops the latch onto the base after everything
+// else, the pin the file leaves out included, which lies across its way: its top (z 33)
+// meets the latch's underside (z 5 in place) 28 mm short. Its holes name it.
+TEST(AssemblyExamples, APinTheFileLeavesOutStopsAPartPutInAfterIt) {
+  const Assembly a = LoadAssembly(std::string(MECHANIST_SOURCE_DIR) +
+                                  "/examples/clevis_latch_blocked_by_pin/assembly.json");
+  const AssemblyPlan plan = PlanAssembly(a, Analyze(a), CollisionModel(a));
+  EXPECT_FALSE(plan.assemblable);
+  ASSERT_EQ(plan.base_pins.size(), 1u);
+  EXPECT_TRUE(plan.base_pins[0].clear);
+  ASSERT_EQ(plan.steps.size(), 1u);
+  EXPECT_EQ(a.part(plan.steps[0].part).id, "latch");
+  ASSERT_EQ(plan.steps[0].blocked_by.size(), 1u);
+  const InsertionObstacle& o = plan.steps[0].blocked_by[0];
+  std::vector<std::string> holes;
+  for (const FeatureRef& h : o.pin) holes.push_back(a.FeatureName(h));
+  EXPECT_EQ(holes, (std::vector<std::string>{"cheek_a/pivot", "cheek_b/pivot", "lever/pivot"}));
+  EXPECT_EQ(o.pin, plan.base_pins[0].holes);
+  EXPECT_NEAR(o.short_by, 28.0, 1e-9);
+  EXPECT_NEAR(o.p_W.z(), 33.0, 1e-9);
+  // Without the pin (implied pins off), nothing stops it.
+  const std::string file =
+      std::string(MECHANIST_SOURCE_DIR) + "/examples/clevis_latch_blocked_by_pin/assembly.json";
+  const Assembly no_pin =
+      LoadAssemblyText(Replace(ReadText(file), R"("steps": [)", R"("infer": {"implied_pins": false},
+  "steps": [)"),
+                       file);
+  const AssemblyPlan clear = PlanAssembly(no_pin, Analyze(no_pin), CollisionModel(no_pin));
+  EXPECT_TRUE(clear.base_pins.empty());
+  ASSERT_EQ(clear.steps.size(), 1u);
+  EXPECT_TRUE(clear.steps[0].clear);
 }
 
 TEST(FastenerChecks, BoltTooShortForItsNutIsReportedWithTheShortfall) {

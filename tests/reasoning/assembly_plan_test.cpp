@@ -372,6 +372,49 @@ TEST(AssemblyPlan, APartOnAPivotLeavesAcrossItsAxis) {
   }
 }
 
+// A block behind the pin of a hinge: the fork closed on +-y, its cheeks' holes 10 mm apart
+// (z -5..0 and 10..15), the lever's knuckle only 7 mm thick (z 0..7), and a block in the 3 mm
+// between the knuckle and cheek_b, between the fork's back wall and the pin (x 0..3; the pin,
+// 3.2 mm, stands at x 3.4..6.6). The block's only way out is along +x, across the pin's line: it
+// leaves after the pin, so it goes in before the lever and the pin, though it comes first in
+// the file. Without the pin in its way (the lever's hole moved off the cheeks' axis, so that
+// no pin joins them) it goes in last, the pass over the parts in order taking it out first.
+TEST(AssemblyPlan, APinInPlaceIsInTheWayOfThePartsAfterIt) {
+  using V = Eigen::Vector3d;
+  const auto plan_for = [](const V& knuckle_at) {
+    const auto hole = [](const char* id, const V& at, double d, double length) {
+      return testing::MakeFeature(id, FeatureKind::kHole, at, V::UnitZ(), [&](Feature& f) {
+        f.diameter = d, f.length = length, f.through = true;
+      });
+    };
+    Part fork = MakePart(
+        "fork", {hole("cheek_a", V(5, 5, -5), 3.45, 5), hole("cheek_b", V(5, 5, 10), 3.45, 5)},
+        RigidTransform(), true);
+    fork.mesh = Boxes({{V(0, 0, -5), V(10, 10, 0)},
+                       {V(0, 0, 10), V(10, 10, 15)},
+                       {V(-5, -5, -5), V(0, 15, 15)},
+                       {V(0, -5, -5), V(20, 0, 15)},
+                       {V(0, 10, -5), V(20, 15, 15)}});
+    Part block = MakePart("block", {}, RigidTransform());
+    block.mesh = Boxes({{V(0, 0, 7), V(3, 10, 10)}});
+    Part lever = MakePart("lever", {hole("knuckle", knuckle_at, 3.2, 7)}, RigidTransform());
+    lever.mesh = Boxes({{V(0, 0, 0), V(10, 10, 7)}});
+    const Assembly a = MakeAssembly({fork, block, lever});
+    const AssemblyPlan plan = PlanAssembly(a, Analyze(a), CollisionModel(a));
+    std::vector<std::string> order;
+    for (const InsertionStep& s : plan.steps) {
+      order.push_back(a.part(s.part).id + (s.pins.empty() ? "" : " then its pin"));
+
+      EXPECT_TRUE(s.clear) << a.part(s.part).id;
+    }
+    EXPECT_TRUE(plan.assemblable);
+    EXPECT_TRUE(plan.unplaced.empty());
+    return order;
+  };
+  EXPECT_EQ(plan_for(V(5, 5, 0)), (std::vector<std::string>{"block", "lever then its pin"}));
+  EXPECT_EQ(plan_for(V(5, 8, 0)), (std::vector<std::string>{"lever", "block"}));
+}
+
 TEST(AssemblyPlan, OverlappingCubesAreAClash) {
   const Assembly a =
       MakeAssembly({MakePart("base", {}, RigidTransform(), true),

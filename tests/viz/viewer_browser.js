@@ -6,7 +6,8 @@
 //                        "meets": [ID, ID]}, "mouse": {"part": ID, "pixels": P,
 //                        "follower": ID, "axis": [x,y,z], "degrees": D},
 //               "graph": {"nodes": N, "edges": E},
-//               "step": {"part": ID, "obstacle": ID},
+//               "step": {"part": ID, "obstacle": ID or "the pin through HOLES",
+//                        "red_pins": N (0 if absent), "shot": FILE (viewer_step.png)},
 //               "cache": {"part": ID, "turns": T},
 //               "run": {"driver": 0, "s": S, "meets": [ID, ID]}}, every entry optional
 // Prints one line per check and exits 1 at the first failure.
@@ -199,6 +200,11 @@ function fail(message) {
       fail("the step of " + t.part + " shows " + JSON.stringify(result.end) + ", not the obstacle " +
            t.obstacle);
     }
+    // A pin the file leaves out that stops the step shows in place, drawn in red.
+    if (result.end.red_pins !== (t.red_pins || 0)) {
+      fail("the step of " + t.part + " draws " + result.end.red_pins + " pins in red, not " +
+           (t.red_pins || 0));
+    }
     const moved = Math.hypot(...[12, 13, 14].map((k) => result.outside[k] - result.inside[k]));
     if (!(moved > 1)) fail("the step of " + t.part + " does not move it in (" + moved + ")");
     for (const id of result.later) {
@@ -207,7 +213,7 @@ function fail(message) {
     console.log("ok the assembly step of " + t.part + " moves it " + moved.toFixed(2) +
                 " and stops where it meets " + result.end.obstacle + " after " +
                 result.end.at.toFixed(2) + ", " + result.end.hidden.length + " later parts hidden");
-    await shot("viewer_step.png");
+    await shot(t.shot || "viewer_step.png");
   }
   if (checks.pins) {
     // The pins the file leaves out: a step's pins show in place at its end, not before, and

@@ -489,6 +489,18 @@ TEST(ViewerPage, WorksInABrowser) {
   const json step = {{"step", {{"part", "c"}, {"obstacle", "top"}}}};
   EXPECT_EQ(RunBrowser(dir, "steps.html", step), "") << "a blocked insertion";
 
+  // A pin the file leaves out in the way: the latch's step stops on it, and the pin, in place
+  // since before the first step, is drawn in red.
+  const Assembly latch = LoadAssembly(std::string(MECHANIST_SOURCE_DIR) +
+                                      "/examples/clevis_latch_blocked_by_pin/assembly.json");
+  std::ofstream(dir / "latch.html") << ViewerHtml(latch, Analyze(latch));
+  const json on_pin = {{"step",
+                        {{"part", "latch"},
+                         {"obstacle", "the pin through cheek_a/pivot, cheek_b/pivot, lever/pivot"},
+                         {"red_pins", 1},
+                         {"shot", "viewer_step_pin.png"}}}};
+  EXPECT_EQ(RunBrowser(dir, "latch.html", on_pin), "") << "a step blocked by a pin";
+
   // A real export (build123d's print-in-place hinge, ../shared/data/real): printed in place,
   // its lid cannot go in; the stepper shows where it meets the base.
   const Assembly hinge = LoadAssembly(std::string(MECHANIST_SHARED_DATA) +
