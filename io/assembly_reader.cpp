@@ -25,6 +25,7 @@
 #include "io/mesh_reader.h"
 #include "io/step_reader.h"
 #include "kernel/features/part_library.h"
+#include "kernel/support/few_names.h"
 #include "kernel/support/number_format.h"
 
 namespace mechanist {
@@ -463,6 +464,24 @@ class Reader {
       Fail(p, fmt::format("cannot import \"{}\": {}", relative, e.what()));
     }
     AddStepMessages(relative, messages);
+    std::vector<std::string> faceless;
+    for (const StepSolid& s : solids) {
+      if (s.mesh->faces.empty()) faceless.push_back(s.path);
+    }
+    if (!faceless.empty()) {
+      spec_.findings.push_back(
+          {Severity::kWarning,
+           "step_reader",
+           fmt::format("{}: the {} no face that could be read, so the geometric commands skip "
+                       "{}: {}",
+                       relative,
+                       faceless.size() == 1
+                           ? "solid of a part has"
+                           : fmt::format("solids of {} parts have", faceless.size()),
+                       faceless.size() == 1 ? "it" : "them", FewNames(faceless)),
+           {},
+           {}});
+    }
     for (StepSolid& s : solids) {
       PartOrigin origin;
       origin.features_written = false;
@@ -544,11 +563,14 @@ class Reader {
 
   // Open CASCADE's messages on reading `relative` as findings `step_reader` (an error as a
   // warning, since the file was still read; a warning as info), repeats counted once. The
-  // references to entities the file does not define are one warning, naming the first three.
+  // references to entities the file does not define are one warning, naming the first three;
+  // in such a damaged file, the product instances that hold no solid are another.
   void AddStepMessages(const std::string& relative, const std::vector<StepMessage>& messages) {
     std::vector<std::pair<const StepMessage*, std::size_t>> unique;  // first of a text, count
+    std::vector<std::string> no_solid;
     for (const StepMessage& m : messages) {
-      if (m.undefined_reference) continue;
+      if (m.no_solid) no_solid.push_back(m.text);
+      if (m.undefined_reference || m.no_solid) continue;
       auto same = std::find_if(unique.begin(), unique.end(),
                                [&](const auto& u) { return u.first->text == m.text; });
       if (same == unique.end()) {
@@ -557,12 +579,30 @@ class Reader {
         ++same->second;
       }
     }
-    if (const std::string undefined = UndefinedReferenceWords(messages); !undefined.empty()) {
+    const std::string undefined = UndefinedReferenceWords(messages);
+    if (!undefined.empty()) {
       spec_.findings.push_back(
           {Severity::kWarning,
            "step_reader",
            fmt::format("{}: {}, and what uses them is missing from the parts read", relative,
                        undefined),
+           {},
+           {}});
+    }
+    // In a damaged file, products without a solid are likely among what it lacks (a sound
+    // file has them too: Fusion 360 writes a bearing's balls into its outer ring's product).
+    if (!undefined.empty() && !no_solid.empty()) {
+      spec_.findings.push_back(
+          {Severity::kWarning,
+           "step_reader",
+           fmt::format("{}: {} no solid, so no part stands for {} may be among what "
+                       "the file lacks): {}",
+                       relative,
+                       no_solid.size() == 1
+                           ? "a product instance holds"
+                           : fmt::format("{} product instances hold", no_solid.size()),
+                       no_solid.size() == 1 ? "it (its shape" : "them (their shapes",
+                       FewNames(no_solid)),
            {},
            {}});
     }

@@ -47,6 +47,10 @@ struct StepMessage {
   /// that holds it with its type, and the missing one: "#2878 PRODUCT_CATEGORY_RELATIONSHIP
   /// refers to #999998".
   bool undefined_reference = false;
+  /// The text is the path of a product instance (as StepSolid::path) that holds no solid, so
+  /// that no part stands for it: a product of surfaces, curves or sketches only, or one whose
+  /// solid a damaged file lacks (not an error).
+  bool no_solid = false;
 };
 
 /// Receives the fraction of a STEP file's reading done, in [0, 1], never decreasing, 1 last
@@ -69,7 +73,9 @@ std::string UndefinedReferenceWords(const std::vector<StepMessage>& messages);
 /// Reads a STEP file (AP203, AP214 or AP242) with its product structure through Open
 /// CASCADE's XCAF reader, triangulates each solid (0.01 mm or 0.1% of its size, whichever is
 /// coarser, and 0.3 rad) and takes features from its analytic faces. Open CASCADE's messages go to
-/// `messages` (when given), never to stdout; `progress` (when given) follows the reading, the
+/// `messages` (when given), never to stdout, followed by one for each product instance that
+/// holds no solid, none of its path's solids either (StepMessage::no_solid), in the order of
+/// the product structure; `progress` (when given) follows the reading, the
 /// solids weighed by their faces. Throws std::runtime_error when it cannot be read or holds no
 /// solid.
 std::vector<StepSolid> ReadStep(const std::filesystem::path& file,

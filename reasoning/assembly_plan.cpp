@@ -720,9 +720,11 @@ class Planner {
       // The pins through the unit come out first; they are tried once the unit's own way out
       // is known, since most units tried cannot leave yet whatever their pins do.
       InsertionStep step = MakeStep(unit, r, feature, present);
+      std::vector<bool> pins_after = pin_in;  // as the pins go in after the unit, in order
       for (const HingePin* pin : PinsThrough(unit, present)) {
-        step.pins.push_back(InsertPin(*pin, present, pin_in));
+        step.pins.push_back(InsertPin(*pin, present, pins_after));
         if (!step.pins.back().clear) return std::nullopt;
+        pins_after[Index(*pin)] = true;
       }
       step.travel = travel;
       step.clear = true;
@@ -781,8 +783,10 @@ class Planner {
     std::reverse(blocked.begin(), blocked.end());  // by insertion travel again
     step.blocked_by = std::move(blocked);
     step.clear = step.blocked_by.empty();  // held by a pin that cannot come out
+    std::vector<bool> pins_after = pin_in;
     for (const HingePin* pin : PinsThrough(unit, present)) {
-      step.pins.push_back(InsertPin(*pin, present, pin_in));
+      step.pins.push_back(InsertPin(*pin, present, pins_after));
+      pins_after[Index(*pin)] = true;
     }
     return step;
   }

@@ -98,7 +98,7 @@ struct AssemblyPlan {
 /// sense first; else the attempt whose first stop is nearest its place is reported, with what
 /// stops it). Dowels are not listed (see FindHingePins). A pin in place is an obstacle like a
 /// part, to the parts and the pins that go in after it (every contact with it counts: it has
-/// no pairs).
+/// no pairs); a pin that cannot go in counts as in place, as a blocked part does.
 ///
 /// Search: ground parts (or, without any, the part with the largest box) form the base; the
 /// other parts are removed one at a time, in passes over the parts in the order of the file

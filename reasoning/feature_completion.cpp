@@ -9,6 +9,7 @@
 
 #include "kernel/features/feature_recognition.h"
 #include "kernel/features/spring_recognition.h"
+#include "kernel/support/few_names.h"
 #include "kernel/support/number_format.h"
 #include "kernel/support/parallel_for.h"
 
@@ -38,19 +39,6 @@ TessellationGears FindTessellationGears(const TriangleMesh& mesh) {
 }
 
 std::string Mm(double x) { return fmt::format("{} mm", FormatNumber(x, 4)); }
-
-/// "a, b and 3 more": the first few names of a list for a one-line message.
-std::string FewNames(const std::vector<std::string>& names) {
-  constexpr std::size_t kShown = 8;
-  std::string text;
-  for (std::size_t i = 0; i < names.size() && i < kShown; ++i) {
-    text += (i ? ", " : "") + names[i];
-  }
-  if (names.size() > kShown) {
-    fmt::format_to(std::back_inserter(text), " and {} more", names.size() - kShown);
-  }
-  return text;
-}
 
 }  // namespace
 

@@ -1092,6 +1092,9 @@ class Walker {
     const TopoDS_Shape shape = tool_->GetShape(label);
     const std::size_t first = out_->size();
     int index = 0;
+    if (!TopExp_Explorer(shape, TopAbs_SOLID).More()) {
+      no_solid_.push_back(path.empty() ? Sanitised(NameOf(label)) : path);
+    }
     for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next(), ++index) {
       const auto [cached, added] =
           definition_of_.emplace(std::make_pair(label.Tag(), index), definitions_.size());
@@ -1115,6 +1118,9 @@ class Walker {
       }
     }
   }
+
+  // The paths of the product instances walked that hold no solid, in walking order.
+  const std::vector<std::string>& no_solid() const { return no_solid_; }
 
   // Heals (as `healing` says) and converts each product's solid walked (once for all its
   // instances), in parallel, and gives
@@ -1189,6 +1195,7 @@ class Walker {
   std::vector<Definition> definitions_;
   std::map<std::pair<int, int>, std::size_t> definition_of_;  // by label tag and solid index
   std::vector<std::size_t> definition_of_solid_;              // of each solid in out_
+  std::vector<std::string> no_solid_;  // the paths of the instances without a solid
 };
 
 // The first error report of Open CASCADE's reader, which usually names the entity at fault.
@@ -1379,6 +1386,19 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
                              : StepProgress());
   app->Close(document);
   if (solids.empty()) throw std::runtime_error("the STEP file holds no solid");
+  // An instance without a solid whose path holds solids (a product's auxiliary component,
+  // as in AS1) is no product left without one.
+  for (const std::string& path : walker.no_solid()) {
+    const bool holds_solids = std::any_of(solids.begin(), solids.end(), [&](const StepSolid& s) {
+      return s.path == path || s.path.rfind(path + ".", 0) == 0 ||
+             s.path.rfind(path + "_solid", 0) == 0;
+    });
+    if (holds_solids) continue;
+    StepMessage m;
+    m.text = path;
+    m.no_solid = true;
+    messages->push_back(std::move(m));
+  }
   // Unique paths (two solids named alike at the top level).
   std::map<std::string, int> count;
   for (StepSolid& s : solids) {

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -866,7 +867,7 @@ std::filesystem::path WriteDamagedStep(const std::filesystem::path& dir, const s
 
 TEST(StepImport, AFileCutShortIsOneWarningNamingTheFirstMissingEntities) {
   // The Solid Edge export's first 1500 lines, closed again: the second body's geometry is
-  // gone, and 127 references of the rest point at nothing.
+  // gone, and 127 references of the rest point at nothing; its product is named.
   std::ifstream in(std::filesystem::path(MECHANIST_SHARED_DATA) / "real" /
                    "revolute_pin_solidedge_chrono" / "assembly.stp");
   std::string step;
@@ -881,7 +882,7 @@ TEST(StepImport, AFileCutShortIsOneWarningNamingTheFirstMissingEntities) {
   for (const Diagnostic& d : a.findings()) {
     if (d.code == "step_reader") found.push_back(&d);
   }
-  ASSERT_EQ(found.size(), 1u);
+  ASSERT_EQ(found.size(), 2u);
   const std::string& m = found[0]->message;
   EXPECT_EQ(found[0]->severity, Severity::kWarning);
   EXPECT_EQ(m.rfind("cut.stp: 127 references to entities the file does not define (#1394 LINE "
@@ -890,6 +891,45 @@ TEST(StepImport, AFileCutShortIsOneWarningNamingTheFirstMissingEntities) {
             0u)
       << m;
   EXPECT_NE(m.find("; ...): it is damaged or cut short"), std::string::npos) << m;
+  EXPECT_EQ(found[1]->severity, Severity::kWarning);
+  EXPECT_EQ(found[1]->message,
+            "cut.stp: a product instance holds no solid, so no part stands for it (its shape may "
+            "be among what the file lacks): body2");
+  std::filesystem::remove_all(dir);
+}
+
+// The Solid Edge export without the 30 faces of its second body's shell: that solid is read
+// with no face, so its part has no geometry, and a warning names it.
+TEST(StepImport, ASolidWhoseFacesAreAllMissingIsNamed) {
+  std::ifstream in(std::filesystem::path(MECHANIST_SHARED_DATA) / "real" /
+                   "revolute_pin_solidedge_chrono" / "assembly.stp");
+  std::string step;
+  std::string line;
+  const std::regex body2_face(R"(^#(29[89]|3[01][0-9]|32[0-7]) = ADVANCED_FACE)");
+  int dropped = 0;
+  while (std::getline(in, line)) {
+    if (std::regex_search(line, body2_face)) {
+      ++dropped;
+      continue;
+    }
+    step += line + "\n";
+  }
+  ASSERT_EQ(dropped, 30);
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "mechanist_faceless";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "faceless.stp", std::ios::binary) << step;
+  const Assembly a = LoadAssembly(dir / "faceless.stp");
+  ASSERT_EQ(a.parts().size(), 2u);
+  EXPECT_EQ(a.part(1).id, "Assem1.body2");
+  EXPECT_FALSE(a.part(1).HasGeometry());
+  std::vector<std::string> found;
+  for (const Diagnostic& d : a.findings()) {
+    if (d.code == "step_reader") found.push_back(d.message);
+  }
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(found[1],
+            "faceless.stp: the solid of a part has no face that could be read, so the geometric "
+            "commands skip it: Assem1.body2");
   std::filesystem::remove_all(dir);
 }
 

@@ -3,7 +3,8 @@
 // order of the disassembly against an oracle for cubes on a grid, a part walled in by
 // ground parts reported as unplaced with its blockers, and a lever in a fork whose pin the
 // file leaves out, which goes in across the pin's axis, also when the fork stands at an angle
-// to the world's axes, and that pin, which goes in after them from an end that no part covers.
+// to the world's axes, and that pin, which goes in after them from an end that no part covers
+// and, in place, stands in the way of a part and a pin put in after it.
 #include "reasoning/assembly_plan.h"
 
 #include <gtest/gtest.h>
@@ -413,6 +414,42 @@ TEST(AssemblyPlan, APinInPlaceIsInTheWayOfThePartsAfterIt) {
   };
   EXPECT_EQ(plan_for(V(5, 5, 0)), (std::vector<std::string>{"block", "lever then its pin"}));
   EXPECT_EQ(plan_for(V(5, 8, 0)), (std::vector<std::string>{"lever", "block"}));
+}
+
+// Two pins the file leaves out that cross: the hinge's pin on z, and one on x through a hole
+// across the lever's knuckle and a ground link beside it (x 10..15), whose line runs through
+// the first pin. Both go in after the lever, in the order of their first holes' names: the
+// hinge's pin first, clear, then the cross pin, which no end lets in: from -x the fork's back
+// wall stops it, from +x the hinge's pin, nearer its place (its leading end meets the pin's
+// side at x 6.6 over the 24-sided pin's flats and corners). The lever cannot be placed.
+TEST(AssemblyPlan, APinInPlaceStopsAPinThatCrossesIt) {
+  using V = Eigen::Vector3d;
+  std::vector<Part> parts = Hinge(RigidTransform(), false);
+  const auto hole = [](const char* id, const V& at, double d, double length) {
+    return testing::MakeFeature(id, FeatureKind::kHole, at, V::UnitX(), [&](Feature& f) {
+      f.diameter = d, f.length = length, f.through = true;
+    });
+  };
+  parts[1].features.push_back(hole("cross", V(0, 5, 5), 3.2, 10));
+  Part link = MakePart("link", {hole("eye", V(10, 5, 5), 3.45, 5)}, RigidTransform(), true);
+  link.mesh = Boxes({{V(10, 0, 0), V(15, 10, 10)}});
+  parts.push_back(link);
+  const Assembly a = MakeAssembly(parts);
+  const AssemblyPlan plan = PlanAssembly(a, Analyze(a), CollisionModel(a));
+  EXPECT_FALSE(plan.assemblable);
+  EXPECT_TRUE(plan.steps.empty());
+  ASSERT_EQ(plan.unplaced.size(), 1u);
+  const InsertionStep& lever = plan.unplaced[0];
+  EXPECT_EQ(a.part(lever.part).id, "lever");
+  ASSERT_EQ(lever.pins.size(), 2u);
+  EXPECT_TRUE(lever.pins[0].clear);
+  EXPECT_EQ(a.FeatureName(lever.pins[1].holes.front()), "lever/cross");
+  ASSERT_FALSE(lever.pins[1].clear);
+  EXPECT_TRUE(lever.pins[1].direction_W.isApprox(V(-1, 0, 0), 1e-12));
+  const InsertionObstacle& stop = lever.pins[1].blocked_by.front();
+  EXPECT_EQ(stop.pin, lever.pins[0].holes);
+  EXPECT_GE(stop.short_by, 5 + 1.6 * std::cos(std::acos(-1.0) / 24) - 1e-9);
+  EXPECT_LE(stop.short_by, 6.6 + 1e-9);
 }
 
 TEST(AssemblyPlan, OverlappingCubesAreAClash) {
