@@ -469,18 +469,11 @@ class Reader {
       if (s.mesh->faces.empty()) faceless.push_back(s.path);
     }
     if (!faceless.empty()) {
-      spec_.findings.push_back(
-          {Severity::kWarning,
-           "step_reader",
-           fmt::format("{}: the {} no face that could be read, so the geometric commands skip "
-                       "{}: {}",
-                       relative,
-                       faceless.size() == 1
-                           ? "solid of a part has"
-                           : fmt::format("solids of {} parts have", faceless.size()),
-                       faceless.size() == 1 ? "it" : "them", FewNames(faceless)),
-           {},
-           {}});
+      const bool one = faceless.size() == 1;
+      WarnAboutStep(fmt::format(
+          "{}: the {} no face that could be read, so the geometric commands skip {}: {}", relative,
+          one ? "solid of a part has" : fmt::format("solids of {} parts have", faceless.size()),
+          one ? "it" : "them", FewNames(faceless)));
     }
     for (StepSolid& s : solids) {
       PartOrigin origin;
@@ -561,6 +554,11 @@ class Reader {
     }
   }
 
+  // A warning `step_reader` about a STEP file read.
+  void WarnAboutStep(std::string message) {
+    spec_.findings.push_back({Severity::kWarning, "step_reader", std::move(message), {}, {}});
+  }
+
   // Open CASCADE's messages on reading `relative` as findings `step_reader` (an error as a
   // warning, since the file was still read; a warning as info), repeats counted once. The
   // references to entities the file does not define are one warning, naming the first three;
@@ -581,30 +579,19 @@ class Reader {
     }
     const std::string undefined = UndefinedReferenceWords(messages);
     if (!undefined.empty()) {
-      spec_.findings.push_back(
-          {Severity::kWarning,
-           "step_reader",
-           fmt::format("{}: {}, and what uses them is missing from the parts read", relative,
-                       undefined),
-           {},
-           {}});
+      WarnAboutStep(fmt::format("{}: {}, and what uses them is missing from the parts read",
+                                relative, undefined));
     }
     // In a damaged file, products without a solid are likely among what it lacks (a sound
     // file has them too: Fusion 360 writes a bearing's balls into its outer ring's product).
     if (!undefined.empty() && !no_solid.empty()) {
-      spec_.findings.push_back(
-          {Severity::kWarning,
-           "step_reader",
-           fmt::format("{}: {} no solid, so no part stands for {} may be among what "
-                       "the file lacks): {}",
-                       relative,
-                       no_solid.size() == 1
-                           ? "a product instance holds"
-                           : fmt::format("{} product instances hold", no_solid.size()),
-                       no_solid.size() == 1 ? "it (its shape" : "them (their shapes",
-                       FewNames(no_solid)),
-           {},
-           {}});
+      const bool one = no_solid.size() == 1;
+      WarnAboutStep(fmt::format(
+          "{}: {} no solid, so no part stands for {} may be among what the file lacks): {}",
+          relative,
+          one ? "a product instance holds"
+              : fmt::format("{} product instances hold", no_solid.size()),
+          one ? "it (its shape" : "them (their shapes", FewNames(no_solid)));
     }
     for (const auto& [m, count] : unique) {
       spec_.findings.push_back(

@@ -202,6 +202,14 @@ TEST(AssemblyPlan, BestAttemptGoesWhereTheGapIsWidest) {
   EXPECT_NEAR(u.blocked_by[0].short_by, 4.5, 1e-9);
 }
 
+// A through hole `id` of diameter d (mm) from `at` along the unit `axis` for `length` mm.
+Feature ThroughHole(const char* id, const Eigen::Vector3d& at, const Eigen::Vector3d& axis,
+                    double d, double length) {
+  return testing::MakeFeature(id, FeatureKind::kHole, at, axis, [&](Feature& f) {
+    f.diameter = d, f.length = length, f.through = true;
+  });
+}
+
 // A hinge whose pin the file leaves out (the Onshape robot hand's finger joints), at X_WF: a
 // lever whose 10 mm knuckle sits between the two cheeks of a ground fork, reaching `length`
 // along +x out of it, the fork also closed behind (-x) and, when `closed_sides`, on +-y; the
@@ -209,9 +217,7 @@ TEST(AssemblyPlan, BestAttemptGoesWhereTheGapIsWidest) {
 std::vector<Part> Hinge(const RigidTransform& X_WF, bool closed_sides, double length = 10) {
   using V = Eigen::Vector3d;
   const auto hole = [](const char* id, double d, double z0, double z1) {
-    return testing::MakeFeature(id, FeatureKind::kHole, V(5, 5, z0), V::UnitZ(), [&](Feature& f) {
-      f.diameter = d, f.length = z1 - z0, f.through = true;
-    });
+    return ThroughHole(id, V(5, 5, z0), V::UnitZ(), d, z1 - z0);
   };
   Part fork =
       MakePart("fork", {hole("cheek_a", 3.45, -5, 0), hole("cheek_b", 3.45, 10, 15)}, X_WF, true);
@@ -384,9 +390,7 @@ TEST(AssemblyPlan, APinInPlaceIsInTheWayOfThePartsAfterIt) {
   using V = Eigen::Vector3d;
   const auto plan_for = [](const V& knuckle_at) {
     const auto hole = [](const char* id, const V& at, double d, double length) {
-      return testing::MakeFeature(id, FeatureKind::kHole, at, V::UnitZ(), [&](Feature& f) {
-        f.diameter = d, f.length = length, f.through = true;
-      });
+      return ThroughHole(id, at, V::UnitZ(), d, length);
     };
     Part fork = MakePart(
         "fork", {hole("cheek_a", V(5, 5, -5), 3.45, 5), hole("cheek_b", V(5, 5, 10), 3.45, 5)},
@@ -426,9 +430,7 @@ TEST(AssemblyPlan, APinInPlaceStopsAPinThatCrossesIt) {
   using V = Eigen::Vector3d;
   std::vector<Part> parts = Hinge(RigidTransform(), false);
   const auto hole = [](const char* id, const V& at, double d, double length) {
-    return testing::MakeFeature(id, FeatureKind::kHole, at, V::UnitX(), [&](Feature& f) {
-      f.diameter = d, f.length = length, f.through = true;
-    });
+    return ThroughHole(id, at, V::UnitX(), d, length);
   };
   parts[1].features.push_back(hole("cross", V(0, 5, 5), 3.2, 10));
   Part link = MakePart("link", {hole("eye", V(10, 5, 5), 3.45, 5)}, RigidTransform(), true);
