@@ -463,18 +463,7 @@ class Reader {
     } catch (const std::exception& e) {
       Fail(p, fmt::format("cannot import \"{}\": {}", relative, e.what()));
     }
-    AddStepMessages(relative, messages);
-    std::vector<std::string> faceless;
-    for (const StepSolid& s : solids) {
-      if (s.mesh->faces.empty()) faceless.push_back(s.path);
-    }
-    if (!faceless.empty()) {
-      const bool one = faceless.size() == 1;
-      WarnAboutStep(fmt::format(
-          "{}: the {} no face that could be read, so the geometric commands skip {}: {}", relative,
-          one ? "solid of a part has" : fmt::format("solids of {} parts have", faceless.size()),
-          one ? "it" : "them", FewNames(faceless)));
-    }
+    AddStepMessages(relative, messages, solids);
     for (StepSolid& s : solids) {
       PartOrigin origin;
       origin.features_written = false;
@@ -562,8 +551,10 @@ class Reader {
   // Open CASCADE's messages on reading `relative` as findings `step_reader` (an error as a
   // warning, since the file was still read; a warning as info), repeats counted once. The
   // references to entities the file does not define are one warning, naming the first three;
-  // in such a damaged file, the product instances that hold no solid are another.
-  void AddStepMessages(const std::string& relative, const std::vector<StepMessage>& messages) {
+  // in such a damaged file, the product instances that hold no solid are another; and the
+  // `solids` read with no face (in any file) a third.
+  void AddStepMessages(const std::string& relative, const std::vector<StepMessage>& messages,
+                       const std::vector<StepSolid>& solids) {
     std::vector<std::pair<const StepMessage*, std::size_t>> unique;  // first of a text, count
     std::vector<std::string> no_solid;
     for (const StepMessage& m : messages) {
@@ -582,16 +573,26 @@ class Reader {
       WarnAboutStep(fmt::format("{}: {}, and what uses them is missing from the parts read",
                                 relative, undefined));
     }
-    // In a damaged file, products without a solid are likely among what it lacks (a sound
-    // file has them too: Fusion 360 writes a bearing's balls into its outer ring's product).
+    // In a damaged file, products without a solid are likely among what it lacks (a sound file
+    // has them too: Fusion 360 writes a bearing's balls and inner ring into its outer ring).
     if (!undefined.empty() && !no_solid.empty()) {
       const bool one = no_solid.size() == 1;
+      WarnAboutStep(fmt::format("{}: {} no solid ({} may be among what the file lacks): {}",
+                                relative,
+                                one ? "a product instance holds"
+                                    : fmt::format("{} product instances hold", no_solid.size()),
+                                one ? "its shape" : "their shapes", FewNames(no_solid)));
+    }
+    std::vector<std::string> faceless;
+    for (const StepSolid& s : solids) {
+      if (s.mesh->faces.empty()) faceless.push_back(s.path);
+    }
+    if (!faceless.empty()) {
+      const bool one = faceless.size() == 1;
       WarnAboutStep(fmt::format(
-          "{}: {} no solid, so no part stands for {} may be among what the file lacks): {}",
-          relative,
-          one ? "a product instance holds"
-              : fmt::format("{} product instances hold", no_solid.size()),
-          one ? "it (its shape" : "them (their shapes", FewNames(no_solid)));
+          "{}: {} no face that could be read, so {} left without geometry: {}", relative,
+          one ? "a solid has" : fmt::format("{} solids have", faceless.size()),
+          one ? "it is" : "they are", FewNames(faceless)));
     }
     for (const auto& [m, count] : unique) {
       spec_.findings.push_back(
@@ -618,7 +619,7 @@ class Reader {
     } catch (const std::exception& e) {
       Fail(pointer, fmt::format("cannot use mesh \"{}\": {}", relative, e.what()));
     }
-    AddStepMessages(relative, messages);
+    AddStepMessages(relative, messages, solids);
     auto mesh = std::make_shared<TriangleMesh>();
     for (std::size_t k = 0; k < solids.size(); ++k) {
       const std::string prefix = solids.size() > 1 ? fmt::format("solid{}", k + 1) : "";

@@ -37,9 +37,10 @@ struct StepSolid {
   std::vector<std::string> notes;
 };
 
-/// A message of Open CASCADE's reader about the file: of warning gravity or above, or one of
-/// its error reports, e.g. "ERR StepFile : Incorrect Syntax : Fails Count : 1"; or a reference
-/// to an entity the file does not define (in place of the reader's reports of them).
+/// A message about the file: one of Open CASCADE's reader, of warning gravity or above, or one
+/// of its error reports, e.g. "ERR StepFile : Incorrect Syntax : Fails Count : 1"; or a
+/// reference to an entity the file does not define (in place of the reader's reports of them);
+/// or a product instance that holds no solid.
 struct StepMessage {
   bool error = false;  ///< an error report or fail gravity; otherwise a warning
   std::string text;    ///< one line: blank runs and "***" as single spaces
@@ -48,8 +49,8 @@ struct StepMessage {
   /// refers to #999998".
   bool undefined_reference = false;
   /// The text is the path of a product instance (as StepSolid::path) that holds no solid, so
-  /// that no part stands for it: a product of surfaces, curves or sketches only, or one whose
-  /// solid a damaged file lacks (not an error).
+  /// that no solid read stands for it: a product of surfaces, curves or sketches only, or one
+  /// whose solid a damaged file lacks (not an error).
   bool no_solid = false;
 };
 

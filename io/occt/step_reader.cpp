@@ -1092,8 +1092,10 @@ class Walker {
     const TopoDS_Shape shape = tool_->GetShape(label);
     const std::size_t first = out_->size();
     int index = 0;
-    if (!TopExp_Explorer(shape, TopAbs_SOLID).More()) {
-      no_solid_.push_back(path.empty() ? Sanitised(NameOf(label)) : path);
+    const std::string named = path.empty() ? Sanitised(NameOf(label)) : path;
+    if (!TopExp_Explorer(shape, TopAbs_SOLID).More() && !named.empty() &&
+        std::find(no_solid_.begin(), no_solid_.end(), named) == no_solid_.end()) {
+      no_solid_.push_back(named);
     }
     for (TopExp_Explorer e(shape, TopAbs_SOLID); e.More(); e.Next(), ++index) {
       const auto [cached, added] =
@@ -1386,12 +1388,15 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
                              : StepProgress());
   app->Close(document);
   if (solids.empty()) throw std::runtime_error("the STEP file holds no solid");
-  // An instance without a solid whose path holds solids (a product's auxiliary component,
-  // as in AS1) is no product left without one.
+  // An instance without a solid whose path holds solids is no product left without one: an
+  // unnamed component beside a solid takes its parent's path (AS1 gives each part such a
+  // component, an empty compound). An unnamed product instance that lost its solid beside
+  // others that hold theirs is not told from it.
+  static const std::regex kBodyOf("_solid[0-9]+");
   for (const std::string& path : walker.no_solid()) {
     const bool holds_solids = std::any_of(solids.begin(), solids.end(), [&](const StepSolid& s) {
       return s.path == path || s.path.rfind(path + ".", 0) == 0 ||
-             s.path.rfind(path + "_solid", 0) == 0;
+             (s.path.rfind(path, 0) == 0 && std::regex_match(s.path.substr(path.size()), kBodyOf));
     });
     if (holds_solids) continue;
     StepMessage m;
