@@ -90,16 +90,19 @@ std::string HolesText(const Assembly& assembly, const std::vector<FeatureRef>& h
   return t;
 }
 
+// The holes a pin goes through, by name.
+Json HolesJson(const Assembly& assembly, const std::vector<FeatureRef>& holes) {
+  Json names = Json::array();
+  for (const FeatureRef& h : holes) names.push_back(assembly.FeatureName(h));
+  return names;
+}
+
 Json BlockedJson(const Assembly& assembly, const std::vector<InsertionObstacle>& blocked_by) {
   Json blocked = Json::array();
   for (const InsertionObstacle& o : blocked_by) {
-    Json pin = nullptr;
-    if (!o.pin.empty()) {
-      pin = Json::array();
-      for (const FeatureRef& h : o.pin) pin.push_back(assembly.FeatureName(h));
-    }
-    blocked.push_back({{"part", o.pin.empty() ? Json(assembly.part(o.part).id) : Json(nullptr)},
-                       {"pin", pin},
+    const bool part = o.pin.empty();
+    blocked.push_back({{"part", part ? Json(assembly.part(o.part).id) : Json(nullptr)},
+                       {"pin", part ? Json(nullptr) : HolesJson(assembly, o.pin)},
                        {"travel", Num(o.travel)},
                        {"short_by", Num(o.short_by)},
                        {"location", Point(o.p_W)}});
@@ -126,9 +129,7 @@ std::string BlockedText(const Assembly& assembly, bool clear,
 Json PinsJson(const Assembly& assembly, const std::vector<PinInsertion>& pins) {
   Json list = Json::array();
   for (const PinInsertion& p : pins) {
-    Json holes = Json::array();
-    for (const FeatureRef& h : p.holes) holes.push_back(assembly.FeatureName(h));
-    list.push_back({{"holes", holes},
+    list.push_back({{"holes", HolesJson(assembly, p.holes)},
                     {"diameter", Num(p.diameter)},
                     {"ends", Json::array({Point(p.ends_W[0]), Point(p.ends_W[1])})},
                     {"direction", Point(p.direction_W)},

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -179,8 +180,8 @@ class Planner {
   // first, then from the other; the first clear attempt, else the one whose first stop is
   // nearest its place (the first of equals).
   PinInsertion InsertPin(const HingePin& pin, const std::vector<bool>& present,
-                         std::vector<bool> pin_in) const {
-    pin_in[Index(pin)] = false;
+                         const std::vector<bool>& pin_in) const {
+    assert(!pin_in[Index(pin)]);  // a pin goes in once
     const std::vector<Obstacle> obstacles = Obstacles({}, present, pin_in);
     std::optional<PinInsertion> best;
     for (const double sense : {1.0, -1.0}) {

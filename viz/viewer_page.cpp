@@ -139,16 +139,20 @@ json QuantisedMesh(const TriangleMesh& mesh) {
 // The assembly sequence for the stepper: the insertions in order, then the parts no insertion
 // places (with the attempt that got furthest), each with the pins the file leaves out that go
 // in after it.
+
+// The holes a pin goes through, by name.
+json HoleNames(const Assembly& assembly, const std::vector<FeatureRef>& holes) {
+  json names = json::array();
+  for (const FeatureRef& h : holes) names.push_back(assembly.FeatureName(h));
+  return names;
+}
+
 json Blocked(const Assembly& assembly, const std::vector<InsertionObstacle>& blocked_by) {
   json blocked = json::array();
   for (const InsertionObstacle& o : blocked_by) {
-    json pin = nullptr;
-    if (!o.pin.empty()) {
-      pin = json::array();
-      for (const FeatureRef& h : o.pin) pin.push_back(assembly.FeatureName(h));
-    }
-    blocked.push_back({{"part", o.pin.empty() ? json(o.part) : json(nullptr)},
-                       {"pin", pin},
+    const bool part = o.pin.empty();
+    blocked.push_back({{"part", part ? json(o.part) : json(nullptr)},
+                       {"pin", part ? json(nullptr) : HoleNames(assembly, o.pin)},
                        {"travel", o.travel},
                        {"short_by", o.short_by},
                        {"point", Vector(o.p_W)}});
@@ -159,9 +163,7 @@ json Blocked(const Assembly& assembly, const std::vector<InsertionObstacle>& blo
 json Pins(const Assembly& assembly, const std::vector<PinInsertion>& pins) {
   json list = json::array();
   for (const PinInsertion& pin : pins) {
-    json holes = json::array();
-    for (const FeatureRef& h : pin.holes) holes.push_back(assembly.FeatureName(h));
-    list.push_back({{"holes", holes},
+    list.push_back({{"holes", HoleNames(assembly, pin.holes)},
                     {"diameter", pin.diameter},
                     {"ends", json::array({Vector(pin.ends_W[0]), Vector(pin.ends_W[1])})},
                     {"direction", Vector(pin.direction_W)},
