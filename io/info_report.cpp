@@ -142,10 +142,13 @@ void WriteInfo(const Assembly& assembly, std::ostream& out) {
       << " triangles, " << features << " features\n";
   for (std::size_t i = 0; i < assembly.parts().size(); ++i) {
     const Part& part = assembly.part(i);
-    const Aabb box_W = WorldBox(assembly, state, i);
     out << "  " << part.id << (part.ground ? " [ground]" : "")
         << (part.placement.empty() ? "" : " [placed by features]") << ": ";
     if (part.HasGeometry()) {
+      // The mesh's own extent in the world, not its part-frame box turned (larger when the
+      // part is turned: a gear's box at 45 degrees reached 1.4 times its radius).
+      Aabb box_W;
+      for (const Eigen::Vector3d& p_P : part.mesh->vertices) box_W.Extend(state.X_WP[i] * p_P);
       out << part.mesh_source << ", " << part.mesh->faces.size() << " triangles, box "
           << Vec(box_W.min) << " .. " << Vec(box_W.max) << " mm";
     } else {

@@ -2,31 +2,57 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
+#include <vector>
 
 namespace mechanist {
 
 DragResult Drag(const Assembly& assembly, const Analysis& analysis, const DragRequest& request) {
-  const Part& part = assembly.part(request.part);
-  if (part.features.empty()) {
-    throw std::invalid_argument(
-        fmt::format("part {} has no feature to take an axis from", part.id));
-  }
   const std::size_t body = analysis.subassembly_of[request.part];
   auto other_body = [&](const Pair& p) {
     const std::size_t a = analysis.subassembly_of[p.a.part];
     const std::size_t b = analysis.subassembly_of[p.b.part];
     return a != b && (a == body || b == body);
   };
-  DragResult result;
-  result.axis = {request.part, request.feature.value_or(0)};
-  for (std::size_t i = 0; !request.feature && i < analysis.pairs.size(); ++i) {
-    const Pair& p = analysis.pairs[i];
-    if (!other_body(p) || (p.a.part != request.part && p.b.part != request.part)) continue;
-    result.axis = p.a.part == request.part ? p.a : p.b;
-    break;
+  // The axes to try: the requested one; by default the part's sides of its pairs with other
+  // subassemblies, then those of the other parts of its subassembly (a pendulum's rod, fixed
+  // to the hub that turns in the bearing, moves on the hub's pairs), in pair order. The first
+  // that moves is taken (a part's first pair may join it to a part that it carries, about an
+  // axis on which it cannot turn itself); when none does, the first says what holds the part.
+  std::vector<FeatureRef> axes;
+  if (request.feature) {
+    axes.push_back({request.part, *request.feature});
+  } else {
+    std::vector<FeatureRef> others;
+    for (const Pair& p : analysis.pairs) {
+      if (!other_body(p)) continue;
+      const FeatureRef& side = analysis.subassembly_of[p.a.part] == body ? p.a : p.b;
+      std::vector<FeatureRef>& list = side.part == request.part ? axes : others;
+      if (std::find(list.begin(), list.end(), side) == list.end()) list.push_back(side);
+    }
+    axes.insert(axes.end(), others.begin(), others.end());
+    if (axes.empty()) {
+      if (assembly.part(request.part).features.empty()) {
+        throw std::invalid_argument(fmt::format("part {} has no feature to take an axis from",
+                                                assembly.PartId(request.part)));
+      }
+      axes.push_back({request.part, 0});
+    }
   }
-  result.motion = SolveImposed(analysis.motion, {{result.axis, request.rotate, 1.0, {}}});
+  DragResult result;
+  for (const FeatureRef& axis : axes) {
+    ImposedMotion hand;
+    hand.feature = axis;
+    hand.rotation = request.rotate;
+    hand.about_line = true;
+    DrivenMotion motion = SolveImposed(analysis.motion, {hand});
+    if (motion.possible || &axis == &axes.front()) {
+      result.axis = axis;
+      result.motion = std::move(motion);
+    }
+    if (result.motion.possible) break;
+  }
   result.part_freedoms = analysis.motion.mobility.part_freedoms[request.part];
   // A part of the ground subassembly is held by the fixed pairs that join it to the ground
   // (a motor's tight bolts), not by the pairs of the ground with moving parts.

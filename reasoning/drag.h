@@ -15,7 +15,8 @@ namespace mechanist {
 struct DragRequest {
   std::size_t part = 0;
   /// The feature whose axis is used; empty: the part's first feature in a pair with another
-  /// subassembly, else its first feature.
+  /// subassembly, else the first such pair's feature on the part's subassembly (another part
+  /// of it), else the part's first feature.
   std::optional<std::size_t> feature;
   bool rotate = true;
 };
@@ -34,7 +35,8 @@ struct DragResult {
   int part_freedoms = 0;  ///< dimension of the dragged part's allowable motion
 };
 
-/// Drags a part (at unit rate) with every other freedom held still. Throws
+/// Drags a part (at unit rate) about (along) the axis' line where the pairs allow it
+/// (ImposedMotion::about_line), with every other freedom held still. Throws
 /// std::invalid_argument when the part has no feature to take the axis from.
 DragResult Drag(const Assembly& assembly, const Analysis& analysis, const DragRequest& request);
 

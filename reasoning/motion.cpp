@@ -119,6 +119,12 @@ class MotionModel {
                                     i == 1 ? labels[0] : "the other drivers");
       }
     }
+    for (std::size_t i = 0; i < imposed.size() && motion.possible; ++i) {
+      if (!imposed[i].about_line) continue;
+      // Each condition of the line kept only where the pairs allow it: a row that contradicts
+      // them is not kept (LinearSystem::AddRow).
+      for (const LinearSystem::Row& row : LineRows(imposed[i])) s.AddRow(row);
+    }
     x = motion.possible ? s.Solve() : std::vector<ExactReal>(model_.freedoms().size());
     if (system) *system = std::move(s);
     return motion;
@@ -182,6 +188,23 @@ class MotionModel {
     const AxisSegment axis = model_.WorldAxis(m.feature);
     return m.rotation ? model_.Angular(body, reference, axis.direction)
                       : model_.Linear(body, reference, axis.origin, axis.direction);
+  }
+
+  /// What holds `m`'s motion to its axis' line (ImposedMotion::about_line): for a rotation, no
+  /// velocity at the axis' origin across the axis or along it; for a translation, no turn.
+  std::vector<LinearSystem::Row> LineRows(const ImposedMotion& m) const {
+    const std::size_t body = model_.body_of_part(m.feature.part);
+    const std::size_t reference =
+        m.relative_to ? model_.body_of_part(*m.relative_to) : model_.ground();
+    const AxisSegment axis = model_.WorldAxis(m.feature);
+    const Eigen::Vector3d d = axis.direction.normalized();
+    const Eigen::Vector3d u = d.unitOrthogonal(), v = d.cross(u);
+    std::vector<LinearSystem::Row> rows;
+    for (const Eigen::Vector3d& e : {u, v, d}) {
+      rows.push_back(m.rotation ? model_.Linear(body, reference, axis.origin, e)
+                                : model_.Angular(body, reference, e));
+    }
+    return rows;
   }
 
   /// The worm's rotation relative to the body carrying both axes, held at zero.

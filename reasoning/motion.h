@@ -127,6 +127,13 @@ struct ImposedMotion {
   bool rotation = true;
   double rate = 1.0;                       ///< rev/s or mm/s
   std::optional<std::size_t> relative_to;  ///< part; empty: the ground
+  /// Imposes the rate about (along) the axis' direction alone, as a driver does. When true, as
+  /// a hand on the part means it: where the pairs leave a choice, the part also turns about
+  /// the axis' own line, not a parallel one (a finger's middle segment about its own hinge,
+  /// not with the whole finger about the knuckle), and slides without turning; each of those
+  /// conditions holds only where the pairs allow it (a planet spun about its own axis still
+  /// orbits with its carrier).
+  bool about_line = false;
 };
 
 /// Velocity analysis (joint space, see KinematicModel) of the recognised `pairs`: mobility,

@@ -134,6 +134,18 @@ Aabb Recognizer::ReachBox(const WorldFeature& w, const Aabb& part_box_W) const {
   box.Extend(w.axis.end());
   box.min.array() -= radius + margin;
   box.max.array() += radius + margin;
+  if (f.kind != FeatureKind::kFace) return box;
+  // A face's extents do not say which way they lie in its plane, so its circle around them is
+  // far larger than the face (a disc's face reached the spacers beside it); a face on its
+  // part's geometry cannot reach beyond the part.
+  Aabb part_reach = part_box_W;  // empty for a part without a mesh
+  part_reach.min.array() -= margin;
+  part_reach.max.array() += margin;
+  const Eigen::Array3d p = w.axis.origin.array();
+  if ((p >= part_reach.min.array()).all() && (p <= part_reach.max.array()).all()) {
+    box.min = box.min.cwiseMax(part_reach.min);
+    box.max = box.max.cwiseMin(part_reach.max);
+  }
   return box;
 }
 

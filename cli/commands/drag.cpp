@@ -2,14 +2,41 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "cli/commands.h"
 #include "io/analysis_report.h"
 #include "io/input_error.h"
+#include "kernel/support/few_names.h"
 
 namespace mechanist::cli {
+namespace {
+
+std::string Lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// What a user who typed `text` may have meant, for an error message: the `ids` that contain
+// it (in any case), else all of them, shortened (FewNames).
+std::string Candidates(const std::vector<std::string>& ids, const std::string& text,
+                       const std::string& what) {
+  std::vector<std::string> containing;
+  for (const std::string& id : ids) {
+    if (Lower(id).find(Lower(text)) != std::string::npos) containing.push_back(id);
+  }
+  if (!containing.empty()) {
+    return fmt::format("; {} whose id contains it: {}", what, FewNames(containing));
+  }
+  return ids.empty() ? fmt::format("; there are no {}", what)
+                     : fmt::format("; the {} are: {}", what, FewNames(ids));
+}
+
+}  // namespace
 
 Command DragCommand() {
   struct Options {
@@ -25,7 +52,9 @@ Command DragCommand() {
   c.options = {
       Option("--part", &o->part, "the part to drag").Required(),
       Option("--feature", &o->feature,
-             "the feature whose axis to use (default: its first in a pair)"),
+             "the feature whose axis to use (default: its first in a pair with another "
+             "subassembly, else its "
+             "subassembly's, the first that can move)"),
       Option("--rotate", &o->rotate, "turn about the axis (default)"),
       Option("--translate", &o->translate, "push along the axis").Excludes("--rotate"),
   };
@@ -33,8 +62,11 @@ Command DragCommand() {
     const Assembly& assembly = *s.assembly;
     const auto index = assembly.FindPart(o->part);
     if (!index) {
+      std::vector<std::string> ids;
+      for (const Part& p : assembly.parts()) ids.push_back(p.id);
       throw InputError(s.file, "", 0, 0,
-                       fmt::format("--part: expected a part id, found \"{}\"", o->part));
+                       fmt::format("--part: expected a part id, found \"{}\"{}", o->part,
+                                   Candidates(ids, o->part, "parts")));
     }
     DragRequest request;
     request.part = *index;
@@ -42,9 +74,11 @@ Command DragCommand() {
     if (!o->feature.empty()) {
       const auto f = assembly.FindFeature(fmt::format("{}/{}", o->part, o->feature));
       if (!f) {
+        std::vector<std::string> ids;
+        for (const Feature& feature : assembly.part(*index).features) ids.push_back(feature.id);
         throw InputError(s.file, "", 0, 0,
-                         fmt::format("--feature: expected a feature of part {}, found \"{}\"",
-                                     o->part, o->feature));
+                         fmt::format("--feature: expected a feature of part {}, found \"{}\"{}",
+                                     o->part, o->feature, Candidates(ids, o->feature, "features")));
       }
       request.feature = f->feature;
     }

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -108,6 +109,23 @@ TEST(Cli, ValidateAndInfoOnTheMainExample) {
       << info.out;
   // Deterministic output.
   EXPECT_EQ(Mechanist("info " + Example("robot_hand_worm")).out, info.out);
+}
+
+TEST(Cli, InfoGivesATurnedPartsBoxFromItsMesh) {
+  // The SolidWorks pair's 40-tooth gear (module 2, tip radius 42 mm) is turned in the file:
+  // its box is its mesh's extent, not its part-frame box turned (59 mm from its axis).
+  const CommandResult info = Mechanist("info \"" + std::string(MECHANIST_SHARED_DATA) +
+                                       "/real/spur_pair_20T_40T_solidworks/ISO standard Spur Gear "
+                                       "Drive (2-1 ratio).STEP\"");
+  ASSERT_EQ(info.exit_code, 0) << info.out;
+  const std::regex box(
+      R"(2M_40T[^\n]*box \(([-0-9.e]+), ([-0-9.e]+), [-0-9.e]+\) \.\. \(([-0-9.e]+), ([-0-9.e]+), )");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(info.out, m, box)) << info.out;
+  for (int i = 1; i <= 4; ++i) {
+    EXPECT_GT(std::abs(std::stod(m[i].str())), 41.5) << m[0];
+    EXPECT_LT(std::abs(std::stod(m[i].str())), 42.01) << m[0];
+  }
 }
 
 TEST(Cli, FeaturesOnlyPartsAreAnalysedAndSkippedByTheGeometricCommands) {
@@ -411,6 +429,30 @@ TEST(Cli, SweepFindsAnArmHittingAPostWhileTurning) {
   const CommandResult round = Mechanist("sweep " + file.string() + " --amount 0.8");
   EXPECT_NE(round.out.find("clash: arm and post meet at 0.7"), std::string::npos) << round.out;
   std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, DragSaysWhatMovesAndNamesThePartsItMayMean) {
+  const std::string file = Example("planetary_gear_set");
+  const CommandResult run = Mechanist("drag " + file + " --part planet_1");
+  EXPECT_EQ(run.exit_code, 0) << run.out;
+  EXPECT_NE(run.out.find("drag planet_1 about planet_1/"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("moves:"), std::string::npos) << run.out;
+  // A part id typed in part: the ids that contain it; none: the parts there are.
+  const CommandResult part = Mechanist("drag " + file + " --part PLANET");
+  EXPECT_EQ(part.exit_code, 2);
+  EXPECT_NE(part.out.find("--part: expected a part id, found \"PLANET\"; parts whose id contains "
+                          "it: planet_1, planet_2, planet_3"),
+            std::string::npos)
+      << part.out;
+  const CommandResult none = Mechanist("drag " + file + " --part gearbox");
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_NE(none.out.find("found \"gearbox\"; the parts are: "), std::string::npos) << none.out;
+  const CommandResult feature = Mechanist("drag " + file + " --part planet_1 --feature nothing");
+  EXPECT_EQ(feature.exit_code, 2);
+  EXPECT_NE(feature.out.find("--feature: expected a feature of part planet_1, found \"nothing\"; "
+                             "the features are: "),
+            std::string::npos)
+      << feature.out;
 }
 
 TEST(Cli, GapsReportsTheEnclosedCavityAndWritesItsVolume) {

@@ -171,9 +171,10 @@ const std::map<std::string, std::vector<std::string>>& FreeMotions() {
       // The truth's revolute of the arm on the bracket's pin.
       {"revolute_pin_solidedge_chrono/assembly.stp",
        {"Assem1.body2 turns about Assem1.body1/hole_3's axis"}},
-      // The input with its disc and the output ring; the placeholder's spin is idle.
+      // The input with its disc and the output ring; the placeholder's spin is idle. (Said of
+      // the output ring before the disc's face stopped reaching the cover's spacers beside it.)
       {"cycloid_7pin_6lobe_onshape/Full Assembly.step",
-       {"Full_Assembly.Output_Ring turns about Full_Assembly.Outer_Pin_Shell/hole_5's axis"}},
+       {"Full_Assembly.Input_Shaft turns about Full_Assembly.Top_centering_cover/hole_2's axis"}},
       // The lid (solid 1, which the file names COMPOUND) on the base's printed pins.
       {"hinge_clamshell_build123d/clamshell_full.step",
        {"COMPOUND turns about COMPOUND_solid2/shaft_10's axis"}},

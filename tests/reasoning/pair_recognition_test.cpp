@@ -296,6 +296,29 @@ TEST(PairRecognition, BodiesOfOneCadPartTouchingFaceToFaceAreOnePiece) {
   EXPECT_EQ(Only(Recognize(parts("other"))).type, PairType::kPlanar);
 }
 
+TEST(PairRecognition, AFaceReachesNoFurtherThanItsPart) {
+  // A 40 mm square plate's top face and a spacer's underside in its plane, the spacer 2 mm
+  // beyond the plate's edge: the circles around the faces' extents (which do not say which
+  // way the faces lie) overlap, the parts do not touch, and no planar pair joins them (the
+  // Onshape reducer's disc and its cover's spacers). Over the plate's edge, they do.
+  auto parts = [](double spacer_x) {
+    Part plate = MakePart("plate",
+                          {MakeFeature("top", K::kFace, V(0, 0, 5), V::UnitZ(),
+                                       [](Feature& f) { f.width = f.height = 40; })},
+                          RigidTransform(), true);
+    plate.mesh = testing::Boxes({{V(-20, -20, 0), V(20, 20, 5)}});
+    Part spacer = MakePart("spacer", {MakeFeature("under", K::kFace, V(spacer_x, 0, 5), -V::UnitZ(),
+                                                  [](Feature& f) { f.width = f.height = 8; })});
+    spacer.mesh = testing::Boxes({{V(spacer_x - 4, -4, 5), V(spacer_x + 4, 4, 10)}});
+    return MakeAssembly({plate, spacer});
+  };
+  const Assembly apart = parts(26);
+  EXPECT_LT((apart.part(1).features[0].origin - apart.part(0).features[0].origin).norm(),
+            (std::hypot(40, 40) + std::hypot(8, 8)) / 2);
+  EXPECT_TRUE(Recognize(apart).pairs.empty());
+  EXPECT_EQ(Only(Recognize(parts(22))).type, PairType::kPlanar);
+}
+
 TEST(PairRecognition, SetscrewFixesTheShaftItBearsOn) {
   // A hub on a shaft along x; a setscrew down the hub's radial tapped hole to the shaft.
   Feature shaft = Shaft(6, 40, V(-20, 0, 0), V::UnitX());
