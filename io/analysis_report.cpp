@@ -306,6 +306,10 @@ void WriteCheckResults(const std::vector<ExpectationResult>& results, std::ostre
     out << (r.passed ? "PASS " : "FAIL ") << r.pointer << ": " << r.what << " (" << r.detail
         << ")\n";
   }
+  if (results.empty()) {
+    out << "no expectations: the file has no `expect` entries (for a STEP file, write them in an "
+           "assembly file that imports it)\n";
+  }
   out << passed << " passed, " << results.size() - passed << " failed\n";
 }
 

@@ -43,7 +43,8 @@ std::string AnalysisDot(const Assembly& assembly, const Analysis& analysis);
 void WriteDragReport(const Assembly& assembly, const Analysis& analysis, const DragResult& drag,
                      bool rotate, std::ostream& out);
 
-/// `mechanist check` lines: "PASS|FAIL pointer: what (detail)", then "N passed, M failed".
+/// `mechanist check` lines: "PASS|FAIL pointer: what (detail)" (or a line saying there are
+/// none), then "N passed, M failed".
 void WriteCheckResults(const std::vector<ExpectationResult>& results, std::ostream& out);
 
 }  // namespace mechanist

@@ -345,6 +345,12 @@ void WriteAssemblySummary(const Assembly& assembly, const Analysis& analysis,
   WriteSkippedParts(assembly, out);
   out << "in place first:";
   for (const std::size_t p : plan.base) out << " " << assembly.part(p).id;
+  // The search leaves them where they are: every step finds them in place.
+  if (!plan.from_steps && !plan.unplaced.empty()) {
+    out << fmt::format(
+        ", and the {} that cannot be placed (below), which the steps find in place",
+        plan.unplaced.size() == 1 ? "part" : fmt::format("{} parts", plan.unplaced.size()));
+  }
   out << "\n" << PinsText(assembly, plan.base_pins, "  ", true);
   for (std::size_t k = 0; k < plan.steps.size(); ++k) {
     out << "  " << k + 1 << ". " << StepText(assembly, analysis, plan.steps[k]) << "\n"

@@ -337,6 +337,13 @@ TEST(Cli, CheckReportsEachExpectationAndExitsOneOnFailure) {
   const CommandResult failing = Mechanist("check " + file.string());
   EXPECT_EQ(failing.exit_code, 1) << failing.out;
   EXPECT_NE(failing.out.find("0 passed, 1 failed"), std::string::npos) << failing.out;
+  // No expectations at all: said, not only counted.
+  std::ofstream(file) << R"({"mechanist": 1, "parts": [
+    {"id": "g1", "library": {"kind": "spur_gear", "teeth": 20, "module": 1, "face_width": 5}}]})";
+  const CommandResult none = Mechanist("check " + file.string());
+  EXPECT_EQ(none.exit_code, 0) << none.out;
+  EXPECT_NE(none.out.find("no expectations: the file has no `expect` entries"), std::string::npos)
+      << none.out;
   std::filesystem::remove(file);
 }
 
