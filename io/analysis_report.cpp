@@ -280,12 +280,12 @@ void WriteDragReport(const Assembly& assembly, const Analysis& analysis, const D
     return fmt::format("P{} {}: {} + {}", i + 1, ToString(p.type), assembly.FeatureName(p.a),
                        assembly.FeatureName(p.b));
   };
-  out << "drag " << assembly.part(drag.axis.part).id << (rotate ? " about " : " along ")
+  out << "drag " << assembly.part(drag.part).id << (rotate ? " about " : " along ")
       << assembly.FeatureName(drag.axis) << ": allowable motion " << drag.part_freedoms
       << (drag.part_freedoms == 1 ? " freedom" : " freedoms") << "\n";
   if (!drag.motion.possible) {
     out << "blocked: " << drag.motion.reason << "\n";
-    if (assembly.part(drag.axis.part).ground) out << "held by: the ground (a ground part)\n";
+    if (assembly.part(drag.part).ground) out << "held by: the ground (a ground part)\n";
     if (!drag.holding_pairs.empty()) out << "held by:\n";
     for (std::size_t i : drag.holding_pairs) out << "  " << pair_line(i) << "\n";
     return;

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
+#include <set>
 #include <stdexcept>
 #include <vector>
 
@@ -25,13 +25,15 @@ DragResult Drag(const Assembly& assembly, const Analysis& analysis, const DragRe
     axes.push_back({request.part, *request.feature});
   } else {
     std::vector<FeatureRef> others;
+    std::set<FeatureRef> seen;
     for (const Pair& p : analysis.pairs) {
       if (!other_body(p)) continue;
       const FeatureRef& side = analysis.subassembly_of[p.a.part] == body ? p.a : p.b;
-      std::vector<FeatureRef>& list = side.part == request.part ? axes : others;
-      if (std::find(list.begin(), list.end(), side) == list.end()) list.push_back(side);
+      if (seen.insert(side).second) (side.part == request.part ? axes : others).push_back(side);
     }
     axes.insert(axes.end(), others.begin(), others.end());
+    // The ground subassembly moves about no axis: its first says what holds the part.
+    if (analysis.subassemblies[body].ground && axes.size() > 1) axes.resize(1);
     if (axes.empty()) {
       if (assembly.part(request.part).features.empty()) {
         throw std::invalid_argument(fmt::format("part {} has no feature to take an axis from",
@@ -41,6 +43,7 @@ DragResult Drag(const Assembly& assembly, const Analysis& analysis, const DragRe
     }
   }
   DragResult result;
+  result.part = request.part;
   for (const FeatureRef& axis : axes) {
     ImposedMotion hand;
     hand.feature = axis;

@@ -14,17 +14,19 @@ namespace mechanist {
 /// push it along, one of its feature axes.
 struct DragRequest {
   std::size_t part = 0;
-  /// The feature whose axis is used; empty: the part's first feature in a pair with another
-  /// subassembly, else the first such pair's feature on the part's subassembly (another part
-  /// of it), else the part's first feature.
+  /// The feature whose axis is used; empty: of the part's sides of its pairs with other
+  /// subassemblies, then of the other parts of its subassembly, in pair order, the first
+  /// about (along) which it can move, else the first of them (for a part of the ground
+  /// subassembly, which cannot move, that one alone); with none, the part's first feature.
   std::optional<std::size_t> feature;
   bool rotate = true;
 };
 
 /// What a drag moves.
 struct DragResult {
-  FeatureRef axis;      ///< the feature whose axis the part was dragged about or along
-  DrivenMotion motion;  ///< per part; `possible` false when the pairs forbid the motion
+  std::size_t part = 0;  ///< the part dragged
+  FeatureRef axis;       ///< the feature whose axis the part was dragged about or along
+  DrivenMotion motion;   ///< per part; `possible` false when the pairs forbid the motion
   /// Pairs across which the motion stops: one side moves, the other stays (the pair that
   /// absorbs the motion), ascending.
   std::vector<std::size_t> absorbing_pairs;

@@ -121,9 +121,10 @@ class MotionModel {
     }
     for (std::size_t i = 0; i < imposed.size() && motion.possible; ++i) {
       if (!imposed[i].about_line) continue;
-      // Each condition of the line kept only where the pairs allow it: a row that contradicts
-      // them is not kept (LinearSystem::AddRow).
-      for (const LinearSystem::Row& row : LineRows(imposed[i])) s.AddRow(row);
+      // Each freedom that would move the axis' line held still where the pairs allow it, in
+      // the model's order: one exact row each (the rates stay exact), not kept when it
+      // contradicts the others (LinearSystem::AddRow).
+      for (const std::size_t f : LineFreedoms(imposed[i])) s.AddRow({{f, Rational(1)}});
     }
     x = motion.possible ? s.Solve() : std::vector<ExactReal>(model_.freedoms().size());
     if (system) *system = std::move(s);
@@ -190,21 +191,33 @@ class MotionModel {
                       : model_.Linear(body, reference, axis.origin, axis.direction);
   }
 
-  /// What holds `m`'s motion to its axis' line (ImposedMotion::about_line): for a rotation, no
-  /// velocity at the axis' origin across the axis or along it; for a translation, no turn.
-  std::vector<LinearSystem::Row> LineRows(const ImposedMotion& m) const {
+  /// The freedoms whose motion would move `m`'s axis' line (ImposedMotion::about_line): for
+  /// a rotation, those that move the axis' origin (across the axis or along it); for a
+  /// translation, those that turn the part. Ascending.
+  std::vector<std::size_t> LineFreedoms(const ImposedMotion& m) const {
     const std::size_t body = model_.body_of_part(m.feature.part);
     const std::size_t reference =
         m.relative_to ? model_.body_of_part(*m.relative_to) : model_.ground();
     const AxisSegment axis = model_.WorldAxis(m.feature);
     const Eigen::Vector3d d = axis.direction.normalized();
     const Eigen::Vector3d u = d.unitOrthogonal(), v = d.cross(u);
-    std::vector<LinearSystem::Row> rows;
+    std::vector<std::map<std::size_t, double>> rates;  // per direction, by freedom
+    double largest = 0.0;
     for (const Eigen::Vector3d& e : {u, v, d}) {
-      rows.push_back(m.rotation ? model_.Linear(body, reference, axis.origin, e)
-                                : model_.Angular(body, reference, e));
+      std::map<std::size_t, double>& rate = rates.emplace_back();
+      for (const LinearSystem::Term& t : m.rotation ? model_.Linear(body, reference, axis.origin, e)
+                                                    : model_.Angular(body, reference, e)) {
+        rate[t.variable] += t.coefficient.value();
+      }
+      for (const auto& [f, r] : rate) largest = std::max(largest, std::abs(r));
     }
-    return rows;
+    std::set<std::size_t> moving;
+    for (const auto& rate : rates) {
+      for (const auto& [f, r] : rate) {
+        if (std::abs(r) > kTolerance * (1 + largest)) moving.insert(f);
+      }
+    }
+    return {moving.begin(), moving.end()};
   }
 
   /// The worm's rotation relative to the body carrying both axes, held at zero.

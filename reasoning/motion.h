@@ -127,12 +127,13 @@ struct ImposedMotion {
   bool rotation = true;
   double rate = 1.0;                       ///< rev/s or mm/s
   std::optional<std::size_t> relative_to;  ///< part; empty: the ground
-  /// Imposes the rate about (along) the axis' direction alone, as a driver does. When true, as
-  /// a hand on the part means it: where the pairs leave a choice, the part also turns about
-  /// the axis' own line, not a parallel one (a finger's middle segment about its own hinge,
-  /// not with the whole finger about the knuckle), and slides without turning; each of those
-  /// conditions holds only where the pairs allow it (a planet spun about its own axis still
-  /// orbits with its carrier).
+  /// False: the rate about (along) the axis' direction alone, as a driver imposes it. True, as
+  /// a hand on the part means it: where the pairs leave a choice, the part turns about the
+  /// axis' own line, not a parallel one (a finger's middle segment about its own hinge, not
+  /// with the whole finger about the knuckle), and slides without turning. Each freedom that
+  /// would move the line (turn the part) is held still, in the model's order, where the pairs
+  /// allow it (a planet spun about its own axis still orbits with its carrier); the rates stay
+  /// exact.
   bool about_line = false;
 };
 

@@ -454,6 +454,28 @@ TEST(Cli, DragSaysWhatMovesAndNamesThePartsItMayMean) {
   const CommandResult none = Mechanist("drag " + file + " --part gearbox");
   EXPECT_EQ(none.exit_code, 2);
   EXPECT_NE(none.out.find("found \"gearbox\"; the parts are: "), std::string::npos) << none.out;
+  // A rod fixed in a hub that turns in the frame: the rod has no pair of its own with another
+  // subassembly, so it turns on the hub's bearing, and the report names the rod.
+  const std::filesystem::path rod =
+      std::filesystem::temp_directory_path() / "mechanist_cli_drag_rod.json";
+  std::ofstream(rod) << R"({"mechanist": 1, "parts": [
+    {"id": "frame", "ground": true, "features": [{"id": "bearing", "kind": "hole",
+      "origin": [0, 0, -10], "axis": [0, 0, 1], "diameter": 4, "length": 10, "through": true}]},
+    {"id": "hub", "features": [
+      {"id": "journal", "kind": "shaft", "origin": [0, 0, -10], "axis": [0, 0, 1],
+       "diameter": 4, "length": 10, "retained": true},
+      {"id": "socket", "kind": "hole", "origin": [5, 0, 0], "axis": [1, 0, 0],
+       "diameter": 4, "length": 10, "through": true}]},
+    {"id": "rod", "features": [{"id": "spigot", "kind": "shaft", "origin": [5, 0, 0],
+      "axis": [1, 0, 0], "diameter": 4, "length": 10}]}],
+    "overrides": [{"pair": ["hub/socket", "rod/spigot"], "type": "fixed"}]})";
+  const CommandResult turned = Mechanist("drag " + rod.string() + " --part rod");
+  std::filesystem::remove(rod);
+  EXPECT_EQ(turned.exit_code, 0) << turned.out;
+  EXPECT_NE(turned.out.find("drag rod about hub/journal: allowable motion 1 freedom"),
+            std::string::npos)
+      << turned.out;
+  EXPECT_NE(turned.out.find("  rod turns 1 rev about"), std::string::npos) << turned.out;
   const CommandResult feature = Mechanist("drag " + file + " --part planet_1 --feature nothing");
   EXPECT_EQ(feature.exit_code, 2);
   EXPECT_NE(feature.out.find("--feature: expected a feature of part planet_1, found \"nothing\"; "

@@ -71,6 +71,7 @@ TEST(Drag, TurnsAPartAboutItsOwnHingeNotAParallelOne) {
   const PartMotion& m = r.motion.parts[middle];
   EXPECT_EQ(m.kind, MotionKind::kRotation);
   EXPECT_NEAR(FromLine(m.point_W, {0, 20, 0}, kX), 0.0, 1e-9);
+  EXPECT_TRUE(m.rotation.is_exact()) << m.rotation.ToString();
   EXPECT_EQ(m.rotation.ToString(), "1");
   ASSERT_EQ(r.absorbing_pairs.size(), 1u);
   const Pair& hinge = an.pairs[r.absorbing_pairs[0]];
@@ -91,6 +92,7 @@ TEST(Drag, APartWithoutAPairOfItsOwnMovesOnItsSubassemblysJoint) {
   ASSERT_EQ(an.subassembly_of[rod], an.subassembly_of[PartIndex(a, "hub")]);
   const DragResult r = Drag(a, an, {rod, std::nullopt, true});
   ASSERT_TRUE(r.motion.possible) << r.motion.reason;
+  EXPECT_EQ(r.part, rod);
   EXPECT_EQ(a.FeatureName(r.axis), "hub/journal");
   const PartMotion& m = r.motion.parts[rod];
   EXPECT_EQ(m.kind, MotionKind::kRotation);
