@@ -53,8 +53,7 @@ Command DragCommand() {
       Option("--part", &o->part, "the part to drag").Required(),
       Option("--feature", &o->feature,
              "the feature whose axis to use (default: its first in a pair with another "
-             "subassembly, else its "
-             "subassembly's, the first that can move)"),
+             "subassembly, else its subassembly's, the first that can move)"),
       Option("--rotate", &o->rotate, "turn about the axis (default)"),
       Option("--translate", &o->translate, "push along the axis").Excludes("--rotate"),
   };
