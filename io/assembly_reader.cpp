@@ -25,6 +25,7 @@
 #include "io/mesh_reader.h"
 #include "io/step_reader.h"
 #include "kernel/features/part_library.h"
+#include "kernel/support/ascii_lower.h"
 #include "kernel/support/few_names.h"
 #include "kernel/support/number_format.h"
 
@@ -414,9 +415,8 @@ class Reader {
       PartOrigin origin;
       if (mesh) {
         part.mesh_source = String(*mesh, p + "/mesh");
-        std::string extension = std::filesystem::path(part.mesh_source).extension().string();
-        for (char& c : extension)
-          c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        const std::string extension =
+            AsciiLower(std::filesystem::path(part.mesh_source).extension().string());
         if (extension == ".step" || extension == ".stp") {
           part.tessellated = true;
           part.mesh = LoadStepPart(part.mesh_source, p + "/mesh", &step_features, &part.notes,
@@ -1527,8 +1527,7 @@ std::optional<ExpectedRatio> ParseRatio(const std::string& text) {
 namespace {
 
 bool IsStepFile(const std::filesystem::path& file) {
-  std::string extension = file.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string extension = AsciiLower(file.extension().string());
   return extension == ".step" || extension == ".stp";
 }
 

@@ -22,6 +22,7 @@
 
 #include "io/input_error.h"
 #include "io/internal/memory_budget.h"
+#include "kernel/support/ascii_lower.h"
 
 namespace mechanist {
 namespace {
@@ -51,12 +52,6 @@ std::string Quote(std::string_view text) {
   }
   if (text.size() > kMaxShown) quoted += "...";
   return quoted + "'";
-}
-
-std::string Lower(std::string_view text) {
-  std::string lower(text);
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return lower;
 }
 
 bool IsSpace(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f' || c == '\r'; }
@@ -308,7 +303,7 @@ TriangleMesh ReadAsciiStl(std::string_view data, const Source& source) {
     LineTokens tokens(lines.line(), lines.number());
     const Token keyword = tokens.Next();
     if (keyword.text.empty()) continue;
-    const std::string word = Lower(keyword.text);
+    const std::string word = AsciiLower(keyword.text);
     if (state == kOutside && word == "solid") {
       state = kSolid;  // the rest of the line is the solid's name
     } else if (state == kSolid && word == "facet") {
@@ -317,7 +312,7 @@ TriangleMesh ReadAsciiStl(std::string_view data, const Source& source) {
       state = kOutside;
     } else if (state == kFacet && word == "outer") {
       const Token loop = tokens.Next();
-      if (Lower(loop.text) != "loop") {
+      if (AsciiLower(loop.text) != "loop") {
         source.Fail(loop.line, loop.column,
                     fmt::format("expected 'loop' after 'outer', found {}", Found(loop)));
       }
@@ -977,7 +972,7 @@ std::string ReadFile(const std::filesystem::path& path, const Source& source) {
 
 TriangleMesh ReadMesh(const std::filesystem::path& path) {
   const Source source(path.string());
-  const std::string extension = Lower(path.extension().string());
+  const std::string extension = AsciiLower(path.extension().string());
   TriangleMesh (*reader)(std::string_view, const Source&) = nullptr;
   if (extension == ".stl") {
     reader = ReadStl;

@@ -44,17 +44,16 @@ DragResult Drag(const Assembly& assembly, const Analysis& analysis, const DragRe
   }
   DragResult result;
   result.part = request.part;
-  for (const FeatureRef& axis : axes) {
+  for (std::size_t k = 0; k < axes.size() && (k == 0 || !result.motion.possible); ++k) {
     ImposedMotion hand;
-    hand.feature = axis;
+    hand.feature = axes[k];
     hand.rotation = request.rotate;
     hand.about_line = true;
     DrivenMotion motion = SolveImposed(analysis.motion, {hand});
-    if (motion.possible || &axis == &axes.front()) {
-      result.axis = axis;
+    if (k == 0 || motion.possible) {
+      result.axis = axes[k];
       result.motion = std::move(motion);
     }
-    if (result.motion.possible) break;
   }
   result.part_freedoms = analysis.motion.mobility.part_freedoms[request.part];
   // A part of the ground subassembly is held by the fixed pairs that join it to the ground

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <cctype>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -11,15 +10,11 @@
 #include "cli/commands.h"
 #include "io/analysis_report.h"
 #include "io/input_error.h"
+#include "kernel/support/ascii_lower.h"
 #include "kernel/support/few_names.h"
 
 namespace mechanist::cli {
 namespace {
-
-std::string Lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
 
 // What a user who typed `text` may have meant, for an error message: the `ids` that contain
 // it (in any case), else all of them, shortened (FewNames).
@@ -27,7 +22,7 @@ std::string Candidates(const std::vector<std::string>& ids, const std::string& t
                        const std::string& what) {
   std::vector<std::string> containing;
   for (const std::string& id : ids) {
-    if (Lower(id).find(Lower(text)) != std::string::npos) containing.push_back(id);
+    if (AsciiLower(id).find(AsciiLower(text)) != std::string::npos) containing.push_back(id);
   }
   if (!containing.empty()) {
     return fmt::format("; {} whose id contains it: {}", what, FewNames(containing));

@@ -13,6 +13,7 @@
 #include "io/input_error.h"
 #include "io/mesh_reader.h"
 #include "kernel/features/feature_recognition.h"
+#include "kernel/support/ascii_lower.h"
 
 namespace mechanist::cli {
 
@@ -30,8 +31,7 @@ Command FeaturesCommand() {
       Option("--json", json.get(), "write the JSON report to this file").Output(),
   };
   c.run = [json](Session& s) {
-    std::string extension = std::filesystem::path(s.file).extension().string();
-    for (char& ch : extension) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    const std::string extension = AsciiLower(std::filesystem::path(s.file).extension().string());
     std::vector<FeatureReportEntry> entries;
     if (extension == ".json" || extension == ".step" || extension == ".stp") {
       const Assembly assembly = ReadInput(s.file);
