@@ -420,7 +420,7 @@ class Reader {
         if (extension == ".step" || extension == ".stp") {
           part.tessellated = true;
           part.mesh = LoadStepPart(part.mesh_source, p + "/mesh", &step_features, &part.notes,
-                                   &origin.step_solids);
+                                   &origin.step_solids, &part.mesh_deviation);
         } else {
           part.mesh = LoadMesh(part.mesh_source, p + "/mesh");
         }
@@ -476,6 +476,7 @@ class Reader {
       part.mesh_source = fmt::format("{}#{}", relative, s.product);
       part.mesh = s.mesh;
       part.tessellated = true;
+      part.mesh_deviation = s.mesh_deviation;
       part.X_WP = s.X_WP;
       part.group = s.path;
       part.body_of = s.body_of;
@@ -606,12 +607,14 @@ class Reader {
   }
 
   // A STEP file as one rigid part: its solids' meshes and features at their placements (ids
-  // prefixed "solidN_" when it holds several solids), each solid in `solids`.
+  // prefixed "solidN_" when it holds several solids), each solid in `in_part`, and the largest
+  // of their meshes' deviations in `deviation`.
   std::shared_ptr<const TriangleMesh> LoadStepPart(const std::string& relative,
                                                    const std::string& pointer,
                                                    std::vector<Feature>* features,
                                                    std::vector<std::string>* notes,
-                                                   std::vector<PartOrigin::StepSolid>* in_part) {
+                                                   std::vector<PartOrigin::StepSolid>* in_part,
+                                                   double* deviation) {
     std::vector<StepSolid> solids;
     std::vector<StepMessage> messages;
     try {
@@ -626,6 +629,7 @@ class Reader {
       TriangleMesh placed = *solids[k].mesh;
       for (Eigen::Vector3d& v : placed.vertices) v = solids[k].X_WP * v;
       mesh->Append(placed);
+      *deviation = std::max(*deviation, solids[k].mesh_deviation);
       for (Feature f : solids[k].features) {
         if (!prefix.empty()) f.id = fmt::format("{}_{}", prefix, f.id);
         f.origin = solids[k].X_WP * f.origin;

@@ -20,6 +20,7 @@ Analysis Analyze(const Assembly& assembly, const std::vector<Pair>& extra) {
   Analysis analysis;
   Recognition recognition = RecognizePairs(assembly);
   analysis.pairs = std::move(recognition.pairs);
+  analysis.bearings = std::move(recognition.bearings);
   analysis.pairs.insert(analysis.pairs.end(), extra.begin(), extra.end());
   analysis.graph = std::make_shared<const PairGraph>(assembly, analysis.pairs);
   analysis.subassemblies = analysis.graph->Subassemblies();

@@ -24,6 +24,8 @@ struct Analysis {
   /// Description checks (meshes, features), recognition's near misses and the motion
   /// analysis' findings, in DiagnosticLess order.
   std::vector<Diagnostic> diagnostics;
+  /// The parts of each rolling bearing recognised (Recognition::bearings).
+  std::vector<std::vector<std::size_t>> bearings;
 };
 
 /// Recognises the pairs at the file's poses, groups the parts into subassemblies and analyses

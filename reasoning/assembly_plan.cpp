@@ -22,6 +22,7 @@ bool HasDirection(FeatureKind kind) {
 }
 
 // Pairs that hold parts together so that they travel as one: press fits and forced fixes.
+// (The parts of a rolling bearing travel together too: Planner::Carried.)
 bool Carries(const Pair& pair) {
   return pair.type == PairType::kFixed &&
          (pair.fastening == PairFastening::kPressFit || pair.source == PairSource::kOverride);
@@ -222,9 +223,11 @@ class Planner {
       options.max_travel = travel;
       options.min_approach = min_approach_;
       if (!fits.empty()) {
-        options.ignore = [this, fits](const Eigen::Vector3d& p_W) {
+        // The pin's mesh is built on its holes' circle; the hole's facets lie inside it.
+        const double region = tolerance_ + assembly_.part(o.part).mesh_deviation;
+        options.ignore = [this, fits, region](const Eigen::Vector3d& p_W) {
           return std::any_of(fits.begin(), fits.end(), [&](FeatureRef h) {
-            return InEngagementRegion(assembly_.feature(h), state_.X_WP[h.part], p_W, tolerance_);
+            return InEngagementRegion(assembly_.feature(h), state_.X_WP[h.part], p_W, region);
           });
         };
       }
@@ -248,20 +251,27 @@ class Planner {
                      });
   }
 
-  // The parts carried along with `part`: reachable through carrying pairs, among `eligible`.
+  // The parts carried along with `part`, among `eligible`: reachable through carrying pairs
+  // and through the parts of rolling bearings (rings, elements and cages: bought as one).
   std::vector<std::size_t> Carried(std::size_t part, const std::vector<bool>& eligible) const {
     std::vector<std::size_t> found = {part};
     std::vector<bool> seen(assembly_.parts().size(), false);
     seen[part] = true;
+    const auto reach = [&](std::size_t y) {
+      if (!seen[y] && eligible[y]) {
+        seen[y] = true;
+        found.push_back(y);
+      }
+    };
     for (std::size_t k = 0; k < found.size(); ++k) {
       for (const Pair& pair : analysis_.pairs) {
         if (!Carries(pair)) continue;
-        for (const auto& [x, y] :
-             {std::pair{pair.a.part, pair.b.part}, std::pair{pair.b.part, pair.a.part}}) {
-          if (x == found[k] && !seen[y] && eligible[y]) {
-            seen[y] = true;
-            found.push_back(y);
-          }
+        if (pair.a.part == found[k]) reach(pair.b.part);
+        if (pair.b.part == found[k]) reach(pair.a.part);
+      }
+      for (const std::vector<std::size_t>& bearing : analysis_.bearings) {
+        if (std::binary_search(bearing.begin(), bearing.end(), found[k])) {
+          for (const std::size_t member : bearing) reach(member);
         }
       }
     }
@@ -295,6 +305,9 @@ class Planner {
   // are the designed engagement: for meshing teeth always (the meshes only approximate the
   // tooth flanks), for axial fits when the motion runs along the pair's axis (a thread
   // entering its nut); across the axis they are real obstacles (a bolt in a sliding part's way).
+  // The region reaches as far beyond the features as the two meshes may lie off their surfaces
+  // (MeshDeviation): a pin line-on-line in its bore meets the facets of the bore's chamfer
+  // just outside it.
   std::function<bool(const Eigen::Vector3d&)> IgnoreFor(std::size_t moving, std::size_t obstacle,
                                                         const Eigen::Vector3d& d) const {
     std::vector<FeatureRef> regions;
@@ -308,9 +321,10 @@ class Planner {
       regions.push_back(theirs);
     }
     if (regions.empty()) return {};
-    return [this, regions](const Eigen::Vector3d& p_W) {
+    const double region = tolerance_ + MeshDeviation(assembly_, moving, obstacle);
+    return [this, regions, region](const Eigen::Vector3d& p_W) {
       for (const FeatureRef& r : regions) {
-        if (InEngagementRegion(assembly_.feature(r), state_.X_WP[r.part], p_W, tolerance_)) {
+        if (InEngagementRegion(assembly_.feature(r), state_.X_WP[r.part], p_W, region)) {
           return true;
         }
       }

@@ -47,7 +47,9 @@ struct PinInsertion {
 /// One insertion: a part (and what travels with it) moving in a straight line into its pose.
 struct InsertionStep {
   std::size_t part = 0;
-  std::vector<std::size_t> carried;   ///< parts press-fitted or forced fixed to it, moving along
+  /// Parts moving along: press-fitted or forced fixed to it, or of the rolling bearing it is
+  /// a part of (Analysis::bearings: rings, elements and cages, bought as one).
+  std::vector<std::size_t> carried;
   std::optional<FeatureRef> feature;  ///< the inserted feature, when the direction comes from one
   std::optional<FeatureRef> into;     ///< the feature it goes into
   Eigen::Vector3d direction_W = Eigen::Vector3d::UnitZ();  ///< unit direction of travel
@@ -82,13 +84,15 @@ struct AssemblyPlan {
 /// none.
 ///
 /// Steps: parts that no step inserts are in place first (the base). Each step moves its part,
-/// with the parts press-fitted or forced fixed to it that no step inserts, along the inserted
+/// with the parts press-fitted or forced fixed to it and the other parts of its rolling
+/// bearing (Analysis::bearings) that no step inserts, along the inserted
 /// feature's axis (a convex feature or a face leads along its axis, which for a convex
 /// feature going into a concave one is the concave feature's axis; a concave feature going
 /// onto its partner travels against its own axis) from where it is clear of every part in place to
 /// its pose in the file; the exact translational sweep (FirstBlockingContact) finds what
 /// stops it. Contacts in the engagement region of a pair between the moving part and the
-/// obstacle (a thread entering its nut) and contacts within the length tolerance of the final
+/// obstacle (a thread entering its nut; the region grown by the two meshes' deviations,
+/// MeshDeviation) and contacts within the length tolerance of the final
 /// pose (the seat) do not block; nor do contacts that approach slower than the sine of the
 /// angular tolerance (sliding). An axial fit holds the part against travel across its axis,
 /// unless it is an implied pin or a fixed pair of implied pins (PairSource::kImpliedPin): the

@@ -86,6 +86,22 @@ bool IsAxialFit(FeatureKind kind) {
          kind == FeatureKind::kThread || kind == FeatureKind::kTappedHole;
 }
 
+// Whether `pair` is a shaft in a hole whose diameters leave room (the hole at least as wide):
+// its features do not overlap, whatever their meshes do.
+bool IsFitWithRoom(const Assembly& assembly, const Pair& pair) {
+  const Feature& a = assembly.feature(pair.a);
+  const Feature& b = assembly.feature(pair.b);
+  const auto inner = [](FeatureKind k) {
+    return k == FeatureKind::kShaft || k == FeatureKind::kThread;
+  };
+  const auto outer = [](FeatureKind k) {
+    return k == FeatureKind::kHole || k == FeatureKind::kTappedHole;
+  };
+  if (inner(a.kind) && outer(b.kind)) return b.diameter >= a.diameter;
+  if (outer(a.kind) && inner(b.kind)) return a.diameter >= b.diameter;
+  return false;
+}
+
 }  // namespace
 
 bool InEngagementRegion(const Feature& f, const RigidTransform& X_WP, const Eigen::Vector3d& p_W,
@@ -109,6 +125,10 @@ bool OverlapIsDesigned(const Pair& pair) {
     default:
       return false;
   }
+}
+
+double MeshDeviation(const Assembly& assembly, std::size_t part_a, std::size_t part_b) {
+  return assembly.part(part_a).mesh_deviation + assembly.part(part_b).mesh_deviation;
 }
 
 bool InPairRegion(const Assembly& assembly, const AssemblyState& state, const Pair& pair,
@@ -155,6 +175,20 @@ std::vector<PartContact> FindContacts(const Assembly& assembly, const AssemblySt
             InPairRegion(assembly, state, pair, contact.measure.p_W, tolerance)) {
           contact.verdict = ContactVerdict::kDesignedFit;
           contact.pair = k;
+          break;
+        }
+      }
+    }
+    if (contact.verdict == ContactVerdict::kClash) {
+      // In a fit with room, no deeper than the meshes may lie off their surfaces: the
+      // tessellations of a line-on-line fit, touching.
+      const double allowance = tolerance + MeshDeviation(assembly, i, j);
+      for (const Pair& pair : pairs) {
+        const bool between =
+            (pair.a.part == i && pair.b.part == j) || (pair.a.part == j && pair.b.part == i);
+        if (between && contact.measure.depth <= allowance && IsFitWithRoom(assembly, pair) &&
+            InPairRegion(assembly, state, pair, contact.measure.p_W, allowance)) {
+          contact.verdict = ContactVerdict::kTouching;
           break;
         }
       }

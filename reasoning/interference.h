@@ -15,7 +15,8 @@ namespace mechanist {
 
 /// How two parts meet in the assembled state.
 enum class ContactVerdict {
-  kTouching,     ///< surfaces meet, penetration within the length tolerance (a mate)
+  kTouching,     ///< surfaces meet, penetration within the length tolerance (a mate), or within
+                 ///< the meshes' deviations in a fit with room (FindContacts)
   kDesignedFit,  ///< penetration inside the features of a recognised pair (press fit, thread
                  ///< in its nut, meshing teeth): intended, not a clash
   kClash         ///< penetration the pairs do not explain: an interference to fix
@@ -44,6 +45,10 @@ bool InEngagementRegion(const Feature& feature, const RigidTransform& X_WP,
 /// one: material there is a clash (often a mesh that does not model the hole).
 bool OverlapIsDesigned(const Pair& pair);
 
+/// How far the meshes of parts `part_a` and `part_b` may overlap where their surfaces only
+/// touch, mm: the sum of their Part::mesh_deviation.
+double MeshDeviation(const Assembly& assembly, std::size_t part_a, std::size_t part_b);
+
 /// True when p_W is in the engagement regions of both features of `pair` (parts at `state`);
 /// for a shaft, hole or thread fit both cylinders are taken at the larger diameter, since the
 /// designed overlap lies between the two.
@@ -54,7 +59,9 @@ bool InPairRegion(const Assembly& assembly, const AssemblyState& state, const Pa
 /// on world boxes, then MeasureContact (on every core). Penetrations deeper than the file's length
 /// tolerance are designed fits when the deepest point lies in the engagement region of a pair
 /// between the two parts that overlaps by design (OverlapIsDesigned) (`pairs`, as recognised at
-/// this state), clashes otherwise. Sorted by part ids. Deterministic.
+/// this state); touching when it lies in that of a shaft in a hole at least as wide and the
+/// depth is within the tolerance plus the two meshes' deviations (MeshDeviation: a
+/// line-on-line fit's tessellations); clashes otherwise. Sorted by part ids. Deterministic.
 std::vector<PartContact> FindContacts(const Assembly& assembly, const AssemblyState& state,
                                       const CollisionModel& model, const std::vector<Pair>& pairs);
 

@@ -77,7 +77,7 @@ Recognition Recognizer::Run() {
   ClampSandwichedParts();
   FixEmbeddedParts();
   ReportUnconnected();
-  Recognition out{Sorted(), std::move(diagnostics_), {}};
+  Recognition out{Sorted(), std::move(diagnostics_), {}, std::move(bearings_)};
   std::sort(out.diagnostics.begin(), out.diagnostics.end(), DiagnosticLess);
   return out;
 }

@@ -17,6 +17,10 @@ struct Recognition {
   /// Every feature's axis in world coordinates at the recognised poses (mm), per
   /// Assembly::FeatureIndex: for the motion analysis, which would otherwise compute them again.
   std::vector<AxisSegment> axes_W;
+  /// The parts of each rolling bearing recognised (info `bearing`): its rings, rolling
+  /// elements and cages, ascending part indices. A bearing is bought as one: the assembly
+  /// plan moves them together.
+  std::vector<std::vector<std::size_t>> bearings;
 };
 
 /// Recognises the pairs of spec/assembly-format.md ("Recognition") between features of

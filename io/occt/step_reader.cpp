@@ -540,11 +540,15 @@ double SizeOf(const TopoDS_Shape& solid) {
   return box.IsVoid() ? 1.0 : std::sqrt(box.SquareExtent());
 }
 
-// Meshes the faces of `solid` (within 1/1000 of its `size`, SizeOf) and tells whether the
-// mesher found none of the defects healing repairs: open, self-intersecting or misoriented
+// The mesher's linear deflection for a solid of `size` (SizeOf), mm: 1/1000 of its size, and
+// at least 0.01 mm. The mesh lies within it of the solid's faces.
+double MeshDeflection(double size) { return std::max(0.01, 1e-3 * size); }
+
+// Meshes the faces of `solid` (within MeshDeflection of its `size`, SizeOf) and tells whether
+// the mesher found none of the defects healing repairs: open, self-intersecting or misoriented
 // wires, faces it could not mesh.
 bool MeshedCleanly(const TopoDS_Shape& solid, double size) {
-  const BRepMesh_IncrementalMesh mesher(solid, std::max(0.01, 1e-3 * size), false, 0.3, false);
+  const BRepMesh_IncrementalMesh mesher(solid, MeshDeflection(size), false, 0.3, false);
   constexpr int kDefects = IMeshData_OpenWire | IMeshData_SelfIntersectingWire | IMeshData_Failure |
                            IMeshData_UnorientedWire | IMeshData_TooFewPoints;
   return (mesher.GetStatusFlags() & kDefects) == 0;
@@ -1101,7 +1105,7 @@ class Walker {
       const auto [cached, added] =
           definition_of_.emplace(std::make_pair(label.Tag(), index), definitions_.size());
       if (added) {
-        definitions_.push_back({e.Current(), std::make_shared<TriangleMesh>(), {}, {}, {}});
+        definitions_.push_back({e.Current(), std::make_shared<TriangleMesh>(), {}, {}, {}, 0.0});
       }
       StepSolid s;
       s.path = index == 0 ? path : fmt::format("{}_solid{}", path, index + 1);
@@ -1156,6 +1160,7 @@ class Walker {
         const TopoDS_Shape healed =
             HealedSolid(definition.solid, healing.Of(definition.solid), thorough);
         const double size = SizeOf(healed);
+        definition.deviation = MeshDeflection(size);
         const bool clean = MeshedCleanly(healed, size);
         const bool bounds_turned_over = ConvertSolid(healed, size, definition.mesh.get(),
                                                      &definition.features, &definition.notes);
@@ -1179,6 +1184,7 @@ class Walker {
       const Definition& definition = definitions_[definition_of_solid_[k]];
       (*out_)[k].features = definition.features;
       (*out_)[k].notes = definition.notes;
+      (*out_)[k].mesh_deviation = definition.deviation;
     }
   }
 
@@ -1193,6 +1199,7 @@ class Walker {
     std::vector<Feature> features;
     std::vector<std::string> notes;
     std::vector<StepMessage> messages;  // Open CASCADE's, while converting it
+    double deviation = 0.0;             // of the mesh from the faces, mm (MeshDeflection)
   };
   std::vector<Definition> definitions_;
   std::map<std::pair<int, int>, std::size_t> definition_of_;  // by label tag and solid index

@@ -37,6 +37,12 @@ struct Part {
   /// The mesh is Open CASCADE's tessellation of a STEP solid: a gap in it is the mesher's, not
   /// the designer's (the mesh checks say so as info).
   bool tessellated = false;
+  /// How far the mesh may lie from the part's true surface, mm: for a tessellated STEP solid
+  /// the mesher's deflection (StepSolid::mesh_deviation), 0 for a mesh file (the mesh is the
+  /// part's geometry). Where the features leave room, the meshes may still overlap by the two
+  /// parts' deviations (a pin line-on-line in its bore, its vertices on the circle, the bore's
+  /// facets inside it).
+  double mesh_deviation = 0.0;
   /// X_WP, the pose in the file (identity when the file gives none or places the part).
   RigidTransform X_WP;
   /// Placement by features instead of a pose (resolved by the placement solver); empty when

@@ -691,6 +691,10 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
     pairs_.back().source = PairSource::kBearing;
     cage_ids.emplace_back(assembly_.PartId(cage));
   }
+  std::set<std::size_t> members(held.begin(), held.end());
+  members.insert({inner->ref.part, outer->ref.part});
+  members.insert(cages.begin(), cages.end());
+  bearings_.emplace_back(members.begin(), members.end());
   const std::string size = bore > 0 && outside > 0
                                ? fmt::format(", {} x {} x {} mm", FormatNumber(bore),
                                              FormatNumber(outside), FormatNumber(width))

@@ -411,6 +411,9 @@ class Recognizer {
     bool clamped = false;
   };
   std::vector<SolidBearing> solid_bearings_;
+  /// Per rolling bearing recognised (AddBearings): its rings', elements' and cages' parts,
+  /// ascending (Recognition::bearings).
+  std::vector<std::vector<std::size_t>> bearings_;
   std::vector<Diagnostic> diagnostics_;
   /// (thread, shaft) feature pairs whose reach boxes overlap: possible setscrew contacts.
   std::vector<std::pair<const WorldFeature*, const WorldFeature*>> setscrew_candidates_;

@@ -14,7 +14,9 @@
 #include <vector>
 
 #include "io/load_assembly.h"
+#include "kernel/collision/collision_model.h"
 #include "reasoning/analysis.h"
+#include "reasoning/assembly_plan.h"
 #include "reasoning/expectation_check.h"
 
 namespace mechanist {
@@ -383,6 +385,49 @@ TEST(RealExports, TheSolidEdgePinGivesItsTruthsMobility) {
   const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) /
                                   "real/revolute_pin_solidedge_chrono/assembly.stp");
   EXPECT_EQ(Analyze(a).motion.mobility.dof, 1);
+}
+
+TEST(RealExports, TheSolidEdgePinTouchesItsBoreAndGoesIn) {
+  // Truth: a r 20 mm pin in a r 20 mm bore (zero clearance), chamfered at both ends. The
+  // bracket's mesh (241 mm across) lies within 0.24 mm of its faces: the pin's vertices, on
+  // its circle, overlap the bore's facets and meet its chamfer's just beyond the bore.
+  const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) /
+                                  "real/revolute_pin_solidedge_chrono/assembly.stp");
+  const Analysis an = Analyze(a);
+  const CollisionModel model(a);
+  const std::vector<PartContact> contacts = FindContacts(a, InitialState(a), model, an.pairs);
+  ASSERT_EQ(contacts.size(), 1u);
+  EXPECT_EQ(contacts.front().verdict, ContactVerdict::kTouching);
+  const AssemblyPlan plan = PlanAssembly(a, an, model);
+  EXPECT_TRUE(plan.assemblable);
+  ASSERT_EQ(plan.steps.size(), 1u);
+  EXPECT_EQ(a.part(plan.steps.front().part).id, "Assem1.body2");
+}
+
+TEST(RealExports, ThePendulumsBallBearingGoesInAsOne) {
+  // Truth: an SKF 6002 modelled with its two rings and nine balls (11 solids).
+  const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) /
+                                  "real/rotary_pendulum_ball_bearing_fusion/Assembly.step");
+  const Analysis an = Analyze(a);
+  const AssemblyPlan plan = PlanAssembly(a, an, CollisionModel(a));
+  const auto in_bearing = [&](std::size_t part) {
+    return a.part(part).id.find(".SKF_6002_v4_1.") != std::string::npos;
+  };
+  std::vector<std::vector<std::string>> moved;  // per step or unplaced part: the bearing's parts
+  for (const std::vector<InsertionStep>* steps : {&plan.steps, &plan.unplaced}) {
+    for (const InsertionStep& s : *steps) {
+      std::vector<std::string> ids;
+      if (in_bearing(s.part)) ids.push_back(a.part(s.part).id);
+      for (const std::size_t c : s.carried) {
+        if (in_bearing(c)) ids.push_back(a.part(c).id);
+      }
+      if (!ids.empty()) moved.push_back(ids);
+    }
+  }
+  ASSERT_EQ(moved.size(), 1u);
+  EXPECT_EQ(moved.front().size(), 11u);
+  ASSERT_EQ(an.bearings.size(), 1u);
+  EXPECT_EQ(an.bearings.front().size(), 11u);
 }
 
 TEST(RealExports, TheClamshellsLidTurnsOnItsPrintedPins) {
