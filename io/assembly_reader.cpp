@@ -35,13 +35,15 @@ namespace {
 // ReadStep, once the memory it takes is known to be there.
 std::vector<StepSolid> ImportStep(const std::filesystem::path& file,
                                   std::vector<StepMessage>* messages,
-                                  const StepFileProgress& progress) {
+                                  const StepFileProgress& progress,
+                                  std::vector<std::string>* length_units) {
   if (const auto shortfall = internal::MemoryShortfall(
           internal::ReadingNeed(file, internal::kStepBytesPerFileByte), "a STEP file")) {
     throw std::runtime_error(*shortfall);
   }
-  if (!progress) return ReadStep(file, messages);
-  return ReadStep(file, messages, [&](double fraction) { progress(file, fraction); });
+  if (!progress) return ReadStep(file, messages, {}, length_units);
+  return ReadStep(
+      file, messages, [&](double fraction) { progress(file, fraction); }, length_units);
 }
 
 using Json = nlohmann::ordered_json;
@@ -459,7 +461,8 @@ class Reader {
     std::vector<StepSolid> solids;
     std::vector<StepMessage> messages;
     try {
-      solids = ImportStep((dir_ / relative).lexically_normal(), &messages, progress_);
+      solids = ImportStep((dir_ / relative).lexically_normal(), &messages, progress_,
+                          &AddStepUnits(relative));
     } catch (const std::exception& e) {
       Fail(p, fmt::format("cannot import \"{}\": {}", relative, e.what()));
     }
@@ -549,6 +552,19 @@ class Reader {
     spec_.findings.push_back({Severity::kWarning, "step_reader", std::move(message), {}, {}});
   }
 
+  // The length units of the STEP file `relative` (as written), to be filled as it is read: a
+  // file read twice is listed once.
+  std::vector<std::string>& AddStepUnits(const std::string& relative) {
+    for (StepFileUnits& u : spec_.step_units) {
+      if (u.file == relative) {
+        u.length.clear();
+        return u.length;
+      }
+    }
+    spec_.step_units.push_back({relative, {}});
+    return spec_.step_units.back().length;
+  }
+
   // Open CASCADE's messages on reading `relative` as findings `step_reader` (an error as a
   // warning, since the file was still read; a warning as info), repeats counted once. The
   // references to entities the file does not define are one warning, naming the first three;
@@ -618,7 +634,8 @@ class Reader {
     std::vector<StepSolid> solids;
     std::vector<StepMessage> messages;
     try {
-      solids = ImportStep((dir_ / relative).lexically_normal(), &messages, progress_);
+      solids = ImportStep((dir_ / relative).lexically_normal(), &messages, progress_,
+                          &AddStepUnits(relative));
     } catch (const std::exception& e) {
       Fail(pointer, fmt::format("cannot use mesh \"{}\": {}", relative, e.what()));
     }

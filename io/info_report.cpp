@@ -1,12 +1,15 @@
 #include "io/info_report.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <filesystem>
 #include <iterator>
 #include <string>
 #include <utility>
 
 #include "kernel/assembly/assembly_state.h"
+#include "kernel/support/ascii_lower.h"
 #include "kernel/support/number_format.h"
 
 namespace mechanist {
@@ -127,8 +130,24 @@ void WriteInfo(const Assembly& assembly, std::ostream& out) {
   const AssemblyState state = InitialState(assembly);
   out << "assembly: " << (assembly.name().empty() ? "(unnamed)" : assembly.name()) << "\n";
   if (!assembly.source().empty()) out << "file: " << assembly.source() << "\n";
-  out << "units in file: length " << assembly.units().length << ", angle " << assembly.units().angle
-      << " (reported: mm, degrees)\n";
+  // A STEP file's own units say what its values were (read in mm whatever they are): what a
+  // designer compares with the CAD system's. Read alone, the file's units are the STEP file's.
+  const std::vector<StepFileUnits>& steps = assembly.step_units();
+  const std::string extension =
+      AsciiLower(std::filesystem::path(assembly.source()).extension().string());
+  const bool step_alone = (extension == ".step" || extension == ".stp") && steps.size() == 1;
+  if (step_alone && !steps.front().length.empty()) {
+    out << "units in file: length " << fmt::format("{}", fmt::join(steps.front().length, ", "))
+        << " (read in mm; reported: mm, degrees)\n";
+  } else {
+    out << "units in file: length " << assembly.units().length << ", angle "
+        << assembly.units().angle << " (reported: mm, degrees)\n";
+    for (const StepFileUnits& step : steps) {
+      if (step.length.empty()) continue;
+      out << "  STEP file " << step.file << ": length "
+          << fmt::format("{}", fmt::join(step.length, ", ")) << " (read in mm)\n";
+    }
+  }
   out << "tolerance: " << FormatNumber(assembly.tolerance().length) << " mm, "
       << FormatNumber(assembly.tolerance().angle * kDegPerRad) << " deg; friction "
       << FormatNumber(assembly.friction()) << "\n";

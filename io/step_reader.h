@@ -80,10 +80,12 @@ std::string UndefinedReferenceWords(const std::vector<StepMessage>& messages);
 /// `messages` (when given), never to stdout, followed by one for each product instance that
 /// holds no solid, none of its path's solids either (StepMessage::no_solid), in the order of
 /// the product structure; `progress` (when given) follows the reading, the
-/// solids weighed by their faces. Throws std::runtime_error when it cannot be read or holds no
-/// solid.
+/// solids weighed by their faces; `length_units` (when given) receives the length units the
+/// file declares, lower case ("metre", "inch"; values are read in mm whatever they are).
+/// Throws std::runtime_error when it cannot be read or holds no solid.
 std::vector<StepSolid> ReadStep(const std::filesystem::path& file,
                                 std::vector<StepMessage>* messages = nullptr,
-                                const StepProgress& progress = {});
+                                const StepProgress& progress = {},
+                                std::vector<std::string>* length_units = nullptr);
 
 }  // namespace mechanist

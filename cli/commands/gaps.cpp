@@ -23,7 +23,8 @@ Command GapsCommand() {
   c.name = "gaps";
   c.help = "Find the empty spaces enclosed between parts, with their volumes";
   c.options = {
-      Option("--voxel", &o->voxel, "voxel edge, in the file's length units").Required(),
+      Option("--voxel", &o->voxel, "voxel edge, in the file's length units (mm for a STEP file)")
+          .Required(),
       Option("--json", &o->json, "write the JSON report to this file").Output(),
       Option("--vtk", &o->vtk, "write the voxels as a VTK image (.vti) to this file").Output(),
   };

@@ -34,7 +34,13 @@
 #include <ShapeFix_Wire.hxx>
 #include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
+#include <StepBasic_ConversionBasedUnitAndLengthUnit.hxx>
 #include <StepBasic_DocumentFile.hxx>
+#include <StepBasic_SiUnitAndLengthUnit.hxx>
+#include <StepGeom_GeomRepContextAndGlobUnitAssCtxAndGlobUncertaintyAssCtx.hxx>
+#include <StepGeom_GeometricRepresentationContextAndGlobalUnitAssignedContext.hxx>
+#include <StepRepr_GlobalUnitAssignedContext.hxx>
+#include <TCollection_HAsciiString.hxx>
 #include <TDF_LabelSequence.hxx>
 #include <TDataStd_Name.hxx>
 #include <TDocStd_Document.hxx>
@@ -70,6 +76,7 @@
 #include "kernel/geometry/circle_fit.h"
 #include "kernel/mesh/mesh_check.h"
 #include "kernel/solvers/linear_algebra.h"
+#include "kernel/support/ascii_lower.h"
 #include "kernel/support/number_format.h"
 #include "kernel/support/parallel_for.h"
 
@@ -1341,11 +1348,57 @@ std::vector<std::string> UnreadPartFiles(const STEPCAFControl_Reader& reader,
 constexpr double kParsed = 0.12;
 constexpr double kTransferred = 0.18;
 
+// The name of the length unit `unit`, lower case ("inch", "millimetre"), or empty when it is
+// none.
+std::string LengthUnitName(const Handle(StepBasic_NamedUnit) & unit) {
+  if (const auto converted = Handle(StepBasic_ConversionBasedUnitAndLengthUnit)::DownCast(unit);
+      !converted.IsNull() && !converted->Name().IsNull()) {
+    return AsciiLower(converted->Name()->ToCString());
+  }
+  const auto si = Handle(StepBasic_SiUnitAndLengthUnit)::DownCast(unit);
+  if (si.IsNull() || si->Name() != StepBasic_sunMetre) return "";
+  static const char* const kPrefixes[] = {"exa",   "peta", "tera",  "giga",  "mega",  "kilo",
+                                          "hecto", "deca", "deci",  "centi", "milli", "micro",
+                                          "nano",  "pico", "femto", "atto"};
+  const int prefix = static_cast<int>(si->Prefix());
+  return std::string(si->HasPrefix() && prefix >= 0 && prefix < 16 ? kPrefixes[prefix] : "") +
+         "metre";
+}
+
+// The length units of every representation context in `model`, in the order of the file,
+// each once: the top product's and those of parts that carry their own (Open CASCADE's
+// FileUnits reads the top products' only).
+std::vector<std::string> LengthUnits(const Interface_InterfaceModel& model) {
+  std::vector<std::string> units;
+  for (int i = 1; i <= model.NbEntities(); ++i) {
+    const Handle(Standard_Transient)& entity = model.Value(i);
+    Handle(StepRepr_GlobalUnitAssignedContext) context;
+    if (const auto geometric = Handle(
+            StepGeom_GeometricRepresentationContextAndGlobalUnitAssignedContext)::DownCast(entity);
+        !geometric.IsNull()) {
+      context = geometric->GlobalUnitAssignedContext();
+    } else if (const auto with_uncertainty =
+                   Handle(StepGeom_GeomRepContextAndGlobUnitAssCtxAndGlobUncertaintyAssCtx)::
+                       DownCast(entity);
+               !with_uncertainty.IsNull()) {
+      context = with_uncertainty->GlobalUnitAssignedContext();
+    }
+    if (context.IsNull()) continue;
+    for (int u = 1; u <= context->NbUnits(); ++u) {
+      std::string name = LengthUnitName(context->UnitsValue(u));
+      if (!name.empty() && std::find(units.begin(), units.end(), name) == units.end()) {
+        units.push_back(std::move(name));
+      }
+    }
+  }
+  return units;
+}
+
 // The solids of `file`; `messages` (Open CASCADE's, collected while reading) name the entity
-// at fault when it cannot be read. `progress` as ReadStep's.
+// at fault when it cannot be read. `progress` and `length_units` as ReadStep's.
 std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
-                                  std::vector<StepMessage>* messages,
-                                  const StepProgress& progress) {
+                                  std::vector<StepMessage>* messages, const StepProgress& progress,
+                                  std::vector<std::string>* length_units) {
   const auto report = [&progress](double fraction) {
     if (progress) progress(fraction);
   };
@@ -1365,6 +1418,7 @@ std::vector<StepSolid> ReadSolids(const std::filesystem::path& file,
                                          ReadFailure(status, file), FirstError(*messages)));
   }
   report(kParsed);
+  if (length_units) *length_units = LengthUnits(*reader.ChangeReader().WS()->Model());
   if (!reader.Transfer(document)) {
     app->Close(document);
     throw std::runtime_error(
@@ -1442,7 +1496,8 @@ std::string UndefinedReferenceWords(const std::vector<StepMessage>& messages) {
 }
 
 std::vector<StepSolid> ReadStep(const std::filesystem::path& file,
-                                std::vector<StepMessage>* messages, const StepProgress& progress) {
+                                std::vector<StepMessage>* messages, const StepProgress& progress,
+                                std::vector<std::string>* length_units) {
   if (!std::filesystem::exists(file)) throw std::runtime_error("no such file");
   if (std::filesystem::is_regular_file(file) && std::filesystem::file_size(file) == 0) {
     throw std::runtime_error("the file is empty");
@@ -1453,7 +1508,7 @@ std::vector<StepSolid> ReadStep(const std::filesystem::path& file,
   const SignalsAsExceptions signals;
   try {
     OCC_CATCH_SIGNALS
-    return ReadSolids(file, &kept, progress);
+    return ReadSolids(file, &kept, progress, length_units);
   } catch (const Standard_Failure& failure) {
     // A crash inside Open CASCADE (a null entity of a damaged file dereferenced) or one of its
     // exceptions: the file cannot be read, and the process goes on.

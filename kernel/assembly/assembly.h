@@ -121,6 +121,14 @@ struct Inference {
   bool centred_parts = true;
 };
 
+/// A STEP file an assembly reads (alone, imported or as a part's mesh) and the length units it
+/// declares: lower case, as the file names them ("metre", "millimetre", "inch"), several when
+/// its parts carry their own. Informational: its values are read in mm.
+struct StepFileUnits {
+  std::string file;  ///< as the assembly file writes it (the STEP file's name when alone)
+  std::vector<std::string> length;
+};
+
 /// Everything an assembly file describes, as plain data; Assembly checks and indexes it.
 struct AssemblySpec {
   std::string name;
@@ -140,6 +148,7 @@ struct AssemblySpec {
   /// the nut-on-bolt heuristic, adjustments locked, the STEP reader's messages; see
   /// LoadAssembly), reported with the description checks.
   std::vector<Diagnostic> findings;
+  std::vector<StepFileUnits> step_units;  ///< of each STEP file read, in reading order
 };
 
 /// The immutable description of an assembly (Pinocchio's Model): parts, features and the
@@ -158,6 +167,7 @@ class Assembly {
   const std::string& name() const { return spec_.name; }
   const std::string& source() const { return spec_.source; }
   const Units& units() const { return spec_.units; }
+  const std::vector<StepFileUnits>& step_units() const { return spec_.step_units; }
   const Tolerance& tolerance() const { return spec_.tolerance; }
   const Inference& inference() const { return spec_.inference; }
   double friction() const { return spec_.friction; }

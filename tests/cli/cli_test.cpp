@@ -128,6 +128,30 @@ TEST(Cli, InfoGivesATurnedPartsBoxFromItsMesh) {
   }
 }
 
+TEST(Cli, InfoSaysWhichLengthUnitAStepFileDeclares) {
+  // The Solid Edge export declares metres (0.12 for 120 mm); its values are read in mm.
+  const std::string step =
+      std::string(MECHANIST_SHARED_DATA) + "/real/revolute_pin_solidedge_chrono/assembly.stp";
+  const CommandResult alone = Mechanist("info " + step);
+  ASSERT_EQ(alone.exit_code, 0) << alone.out;
+  EXPECT_NE(alone.out.find("units in file: length metre (read in mm; reported: mm, degrees)"),
+            std::string::npos)
+      << alone.out;
+  // Imported by an assembly file in inches: the file's units, then the STEP file's.
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "mechanist_cli_step_units.json";
+  std::ofstream(file) << R"({"mechanist": 1, "units": {"length": "in"}, "import": ")" << step
+                      << "\"}";
+  const CommandResult imported = Mechanist("info " + file.string());
+  std::filesystem::remove(file);
+  ASSERT_EQ(imported.exit_code, 0) << imported.out;
+  EXPECT_NE(imported.out.find("units in file: length in, angle deg"), std::string::npos)
+      << imported.out;
+  EXPECT_NE(imported.out.find("  STEP file " + step + ": length metre (read in mm)"),
+            std::string::npos)
+      << imported.out;
+}
+
 TEST(Cli, FeaturesOnlyPartsAreAnalysedAndSkippedByTheGeometricCommands) {
   const std::string sketch = Example("planetary_differential_sketch");
   const CommandResult validate = Mechanist("validate " + sketch);

@@ -395,6 +395,27 @@ std::vector<std::string> PartIds(const Assembly& a) {
   return ids;
 }
 
+TEST(StepImport, TheLengthUnitsAFileDeclaresAreNamed) {
+  const std::filesystem::path real = std::filesystem::path(MECHANIST_SHARED_DATA) / "real";
+  for (const auto& [file, unit] :
+       {std::pair{kAs1, "inch"},
+        std::pair{real / "revolute_pin_solidedge_chrono/assembly.stp", "metre"},
+        std::pair{real / "hinge_clamshell_build123d/clamshell_full.step", "millimetre"}}) {
+    std::vector<std::string> units;
+    ReadStep(file, nullptr, {}, &units);
+    EXPECT_EQ(units, std::vector<std::string>{unit}) << file;
+  }
+  // Some solids' representations in inches, the rest in millimetres: both.
+  const std::filesystem::path mixed =
+      std::filesystem::temp_directory_path() / "mechanist_mixed_units.stp";
+  testing::WriteStepVariant(kAs1, mixed, testing::StepVariant::kMixedUnits);
+  std::vector<std::string> units;
+  ReadStep(mixed, nullptr, {}, &units);
+  std::filesystem::remove(mixed);
+  std::sort(units.begin(), units.end());
+  EXPECT_EQ(units, (std::vector<std::string>{"inch", "millimetre"}));
+}
+
 TEST(StepImport, As1InInchesFlatNestedInPartFilesOrMixedUnitsGivesTheSamePairsUpToNames) {
   // The same product as other exporters write it: lengths in inches, a flat compound of
   // unnamed solids, the assembly inside three more levels of unnamed assemblies, one file per
