@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "io/assembly_report.h"
 #include "kernel/assembly/assembly_check.h"
@@ -24,9 +26,9 @@ std::string Text(const Eigen::Vector3d& p) {
   return fmt::format("({}, {}, {})", FormatNumber(p.x()), FormatNumber(p.y()), FormatNumber(p.z()));
 }
 
-std::string PartList(const Assembly& assembly, const Gap& gap) {
+std::string PartList(const Assembly& assembly, const std::vector<std::size_t>& parts) {
   std::string s;
-  for (const std::size_t p : gap.parts) s += (s.empty() ? "" : ", ") + assembly.part(p).id;
+  for (const std::size_t p : parts) s += (s.empty() ? "" : ", ") + assembly.part(p).id;
   return s.empty() ? "none" : s;
 }
 
@@ -39,11 +41,24 @@ void WriteGapSummary(const Assembly& assembly, const GapSearch& search, std::ost
       << " at voxel " << FormatNumber(search.voxel) << " mm (grid " << n[0] << " x " << n[1]
       << " x " << n[2] << ", " << tree.leaf_count() << " octree cells)\n";
   WriteSkippedParts(assembly, out);
+  // Thin gaps (free octants only) enclosed by the same parts are often one narrow space that
+  // the grid cuts where it is thinner than a voxel: a finer voxel tells.
+  std::map<std::vector<std::size_t>, int> thin;
+  for (const Gap& gap : search.gaps) {
+    if (gap.voxels == 0) ++thin[gap.parts];
+  }
+  for (const auto& [parts, count] : thin) {
+    if (count < 2) continue;
+    out << "  note: " << count << " gaps 1 to 2 voxels thick enclosed by "
+        << PartList(assembly, parts)
+        << ": one narrow space may be cut into pieces where it is thinner than a voxel; --voxel "
+        << FormatNumber(search.voxel / 2) << " tells\n";
+  }
   for (std::size_t g = 0; g < search.gaps.size(); ++g) {
     const Gap& gap = search.gaps[g];
     out << "  gap " << g + 1 << ": " << FormatNumber(gap.volume) << " +/- "
         << FormatNumber(gap.volume_error) << " mm^3 in " << Text(gap.box_W.min) << " - "
-        << Text(gap.box_W.max) << ", enclosed by " << PartList(assembly, gap)
+        << Text(gap.box_W.max) << ", enclosed by " << PartList(assembly, gap.parts)
         << "; closest to the outside at " << Text(gap.p_gap_W) << ", " << FormatNumber(gap.wall)
         << " mm from " << Text(gap.p_outside_W) << "\n";
   }

@@ -8,7 +8,9 @@
 
 namespace mechanist {
 
-/// `mechanist gaps` summary: the voxel and decomposition size, then one line per gap (largest
+/// `mechanist gaps` summary: the voxel and decomposition size; a note for each set of parts
+/// that encloses two or more thin gaps (1 to 2 voxels thick: often one narrow space cut where
+/// it is thinner than a voxel), suggesting half the voxel; then one line per gap (largest
 /// first) with its volume and error bound (mm^3), bounds, enclosing parts and where it comes
 /// closest to the outside.
 void WriteGapSummary(const Assembly& assembly, const GapSearch& search, std::ostream& out);

@@ -152,6 +152,25 @@ TEST(Cli, InfoSaysWhichLengthUnitAStepFileDeclares) {
       << imported.out;
 }
 
+TEST(Cli, GapsSaysWhenThinGapsMayBePiecesOfOne) {
+  // The Solid Edge pin's countersunk bore leaves a 1 mm thick ring beside the arm's collar:
+  // at a 1 mm voxel the grid cuts it into pieces, at 0.5 mm it is one gap.
+  const std::string step =
+      std::string(MECHANIST_SHARED_DATA) + "/real/revolute_pin_solidedge_chrono/assembly.stp";
+  const CommandResult coarse = Mechanist("gaps " + step + " --voxel 1");
+  ASSERT_EQ(coarse.exit_code, 0) << coarse.out;
+  const std::regex note(
+      R"(note: ([0-9]+) gaps 1 to 2 voxels thick enclosed by Assem1.body1, Assem1.body2: one )"
+      R"(narrow space may be cut into pieces where it is thinner than a voxel; --voxel 0.5 tells)");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(coarse.out, m, note)) << coarse.out;
+  EXPECT_GE(std::stoi(m[1].str()), 2);
+  const CommandResult fine = Mechanist("gaps " + step + " --voxel 0.5");
+  ASSERT_EQ(fine.exit_code, 0) << fine.out;
+  EXPECT_NE(fine.out.find("gaps: 1 enclosed gap at voxel 0.5 mm"), std::string::npos) << fine.out;
+  EXPECT_EQ(fine.out.find("note:"), std::string::npos) << fine.out;
+}
+
 TEST(Cli, FeaturesOnlyPartsAreAnalysedAndSkippedByTheGeometricCommands) {
   const std::string sketch = Example("planetary_differential_sketch");
   const CommandResult validate = Mechanist("validate " + sketch);
