@@ -101,11 +101,14 @@ Json BlockedJson(const Assembly& assembly, const std::vector<InsertionObstacle>&
   Json blocked = Json::array();
   for (const InsertionObstacle& o : blocked_by) {
     const bool part = o.pin.empty();
-    blocked.push_back({{"part", part ? Json(assembly.part(o.part).id) : Json(nullptr)},
-                       {"pin", part ? Json(nullptr) : HolesJson(assembly, o.pin)},
-                       {"travel", Num(o.travel)},
-                       {"short_by", Num(o.short_by)},
-                       {"location", Point(o.p_W)}});
+    blocked.push_back(
+        {{"part", part ? Json(assembly.part(o.part).id) : Json(nullptr)},
+         {"pin", part ? Json(nullptr) : HolesJson(assembly, o.pin)},
+         {"travel", Num(o.travel)},
+         {"short_by", Num(o.short_by)},
+         {"location", Point(o.p_W)},
+         {"held_by", o.held_by ? Json(assembly.FeatureName(*o.held_by)) : Json(nullptr)},
+         {"clash_at_rest", o.clash_at_rest}});
   }
   return blocked;
 }
@@ -120,8 +123,17 @@ std::string BlockedText(const Assembly& assembly, bool clear,
     const std::string what =
         o.pin.empty() ? assembly.part(o.part).id
                       : "the pin the file leaves out through " + HolesText(assembly, o.pin);
-    fmt::format_to(out, "{}{} after {} mm ({} mm short of its place) at {}", k ? "; " : "", what,
-                   FormatNumber(o.travel), FormatNumber(o.short_by), Text(o.p_W));
+    if (o.held_by) {
+      // Its fit, not a contact: the part cannot travel across the fit's axis.
+      fmt::format_to(out, "{}{}, whose {} holds it across its travel (an axial fit)", k ? "; " : "",
+                     what, assembly.FeatureName(*o.held_by));
+    } else if (o.clash_at_rest) {
+      fmt::format_to(out, "{}{} where it is (they clash there: below) at {}", k ? "; " : "", what,
+                     Text(o.p_W));
+    } else {
+      fmt::format_to(out, "{}{} after {} mm ({} mm short of its place) at {}", k ? "; " : "", what,
+                     FormatNumber(o.travel), FormatNumber(o.short_by), Text(o.p_W));
+    }
   }
   return t;
 }

@@ -85,6 +85,7 @@ class Planner {
       CheckSteps(&plan);
     }
     Report(1);
+    MarkClashesAtRest(&plan);
     const auto pins_clear = [](const std::vector<PinInsertion>& pins) {
       return std::all_of(pins.begin(), pins.end(), [](const PinInsertion& p) { return p.clear; });
     };
@@ -97,6 +98,27 @@ class Planner {
   }
 
  private:
+  // Marks the stops of the plan's insertions at their places (within the length tolerance) by
+  // an obstacle that the moving part, or one it carries, clashes with at rest
+  // (InsertionObstacle::clash_at_rest).
+  void MarkClashesAtRest(AssemblyPlan* plan) const {
+    for (std::vector<InsertionStep>* steps : {&plan->steps, &plan->unplaced}) {
+      for (InsertionStep& s : *steps) {
+        const auto moves = [&s](std::size_t part) {
+          return part == s.part || std::count(s.carried.begin(), s.carried.end(), part) > 0;
+        };
+        for (InsertionObstacle& o : s.blocked_by) {
+          if (!o.pin.empty() || o.short_by > tolerance_) continue;
+          o.clash_at_rest =
+              std::any_of(plan->clashes.begin(), plan->clashes.end(), [&](const PartContact& c) {
+                return (moves(c.part_a) && c.part_b == o.part) ||
+                       (moves(c.part_b) && c.part_a == o.part);
+              });
+        }
+      }
+    }
+  }
+
   // The pins through a part of `unit` whose parts are all `present`.
   std::vector<const HingePin*> PinsThrough(const std::vector<std::size_t>& unit,
                                            const std::vector<bool>& present) const {
@@ -171,7 +193,11 @@ class Planner {
   // What InsertionObstacle says of `o`.
   static InsertionObstacle Stop(const Obstacle& o, double travel, double short_by,
                                 const Eigen::Vector3d& p_W) {
-    InsertionObstacle stop{o.part, {}, travel, short_by, p_W};
+    InsertionObstacle stop;
+    stop.part = o.part;
+    stop.travel = travel;
+    stop.short_by = short_by;
+    stop.p_W = p_W;
     if (o.pin) stop.pin = o.pin->holes;
     return stop;
   }
@@ -393,6 +419,7 @@ class Planner {
         if (!first || at < first->travel) {
           const Eigen::Vector3d p_W = state_.X_WP[held->part] * assembly_.feature(*held).origin;
           first = Stop(obstacle, at, 0.0, p_W);
+          first->held_by = held;
         }
         continue;
       }

@@ -28,6 +28,13 @@ struct InsertionObstacle {
   double travel = 0.0;
   double short_by = 0.0;                          ///< mm still to go to the final pose
   Eigen::Vector3d p_W = Eigen::Vector3d::Zero();  ///< contact point at that travel
+  /// The obstacle's feature of an axial fit with the moving part whose axis runs across the
+  /// travel: the fit, not a contact, holds the part (at its place: short_by 0).
+  std::optional<FeatureRef> held_by;
+  /// The moving part (or one it carries) and the obstacle clash at rest
+  /// (AssemblyPlan::clashes), and the stop is at its place (within the length tolerance): it
+  /// cannot move from there.
+  bool clash_at_rest = false;
 };
 
 /// A hinge pin that the file leaves out (HingePin, FindHingePins), pushed along its axis

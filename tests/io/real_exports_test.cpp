@@ -404,6 +404,26 @@ TEST(RealExports, TheSolidEdgePinTouchesItsBoreAndGoesIn) {
   EXPECT_EQ(a.part(plan.steps.front().part).id, "Assem1.body2");
 }
 
+TEST(RealExports, TheReducersSpacersAreStuckWhereTheyClash) {
+  // The Onshape reducer's two tiny spacers lie 0.55 mm deep in the top cover (as exported):
+  // neither can leave, and their attempts say the clash at rest holds them, not a contact
+  // on the way.
+  const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) /
+                                  "real/cycloid_7pin_6lobe_onshape/Full Assembly.step");
+  const AssemblyPlan plan = PlanAssembly(a, Analyze(a), CollisionModel(a));
+  int stuck = 0;
+  for (const InsertionStep& u : plan.unplaced) {
+    if (a.part(u.part).id.find("Tiny_spacer") == std::string::npos) continue;
+    for (const InsertionObstacle& o : u.blocked_by) {
+      if (a.part(o.part).id != "Full_Assembly.Top_centering_cover") continue;
+      EXPECT_TRUE(o.clash_at_rest);
+      EXPECT_NEAR(o.short_by, 0.0, a.tolerance().length);
+      ++stuck;
+    }
+  }
+  EXPECT_EQ(stuck, 2);
+}
+
 TEST(RealExports, ThePendulumsBallBearingGoesInAsOne) {
   // Truth: an SKF 6002 modelled with its two rings and nine balls (11 solids).
   const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) /

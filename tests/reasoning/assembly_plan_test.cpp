@@ -286,6 +286,41 @@ TEST(AssemblyPlan, AnImpliedPinGoesInAfterThePartsItJoins) {
   EXPECT_EQ(pinned.part(held.unplaced[0].part).id, "lever");
 }
 
+// The hinge with its pin modelled, and a blind hole along x in the lever's end its first
+// feature, so that its first way out is across the pin (-x, then +x): the pin's fit holds it
+// there (HeldAcross), as the cheeks do along the pin, and its attempt names the fit.
+TEST(AssemblyPlan, AnAttemptAcrossAModelledPinNamesItsFit) {
+  std::vector<Part> parts = Hinge(RigidTransform(), false);
+  parts[1].features.insert(
+      parts[1].features.begin(),
+      testing::MakeFeature("end", FeatureKind::kHole, Eigen::Vector3d(10, 5, 5),
+                           -Eigen::Vector3d::UnitX(),
+                           [](Feature& f) { f.diameter = 2, f.length = 3; }));
+  Part pin = MakePart("pin",
+                      {testing::MakeFeature("shaft", FeatureKind::kShaft, Eigen::Vector3d(5, 5, -5),
+                                            Eigen::Vector3d::UnitZ(),
+                                            [](Feature& f) { f.diameter = 3.2, f.length = 20; })},
+                      RigidTransform(), true);
+  pin.mesh = Boxes({{Eigen::Vector3d(4, 4, -5), Eigen::Vector3d(6, 6, 0)},
+                    {Eigen::Vector3d(4, 4, 10), Eigen::Vector3d(6, 6, 15)}});
+  parts.push_back(pin);
+  const Assembly a = MakeAssembly(parts);
+  const AssemblyPlan plan = PlanAssembly(a, Analyze(a), CollisionModel(a));
+  ASSERT_EQ(plan.unplaced.size(), 1u);
+  const InsertionStep& u = plan.unplaced.front();
+  EXPECT_EQ(a.part(u.part).id, "lever");
+  EXPECT_EQ(std::abs(u.direction_W.x()), 1.0);  // across the pin
+  bool held = false;
+  for (const InsertionObstacle& o : u.blocked_by) {
+    if (a.part(o.part).id != "pin") continue;
+    ASSERT_TRUE(o.held_by.has_value());
+    EXPECT_EQ(a.FeatureName(*o.held_by), "pin/shaft");
+    EXPECT_EQ(o.short_by, 0.0);
+    held = true;
+  }
+  EXPECT_TRUE(held);
+}
+
 // Ground caps over the pin's ends. One cap: the pin goes in from the other end. Both: it
 // cannot go in, so the lever cannot be placed either (the pin would have to come out before
 // it), though its own way in is clear; the attempt shows the pin stopped by the cap nearest
