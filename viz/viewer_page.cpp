@@ -151,11 +151,14 @@ json Blocked(const Assembly& assembly, const std::vector<InsertionObstacle>& blo
   json blocked = json::array();
   for (const InsertionObstacle& o : blocked_by) {
     const bool part = o.pin.empty();
-    blocked.push_back({{"part", part ? json(o.part) : json(nullptr)},
-                       {"pin", part ? json(nullptr) : HoleNames(assembly, o.pin)},
-                       {"travel", o.travel},
-                       {"short_by", o.short_by},
-                       {"point", Vector(o.p_W)}});
+    blocked.push_back(
+        {{"part", part ? json(o.part) : json(nullptr)},
+         {"pin", part ? json(nullptr) : HoleNames(assembly, o.pin)},
+         {"travel", o.travel},
+         {"short_by", o.short_by},
+         {"point", Vector(o.p_W)},
+         {"held_by", o.held_by ? json(assembly.FeatureName(*o.held_by)) : json(nullptr)},
+         {"clash_at_rest", o.clash_at_rest}});
   }
   return blocked;
 }

@@ -681,10 +681,17 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
   // An obstacle is a part or a pin the file leaves out (its holes).
   const obstacleWords = (o) =>
     o.pin ? "the pin through " + o.pin.join(", ") : data.parts[o.part].id;
+  // Why the first obstacle stops it: an axial fit across the travel, a clash where it stands,
+  // or a contact on the way.
   const blockedWords = (blocked_by) => {
     const first = blocked_by[0];
-    return "blocked by " + (first ? obstacleWords(first) + " after " +
-      (first.travel / data.mm_per_length).toFixed(2) + " " + data.length_unit : "?");
+    if (!first) return "blocked by ?";
+    if (first.held_by) return "held across its travel by " + first.held_by;
+    if (first.clash_at_rest) {
+      return "blocked by " + obstacleWords(first) + " where it is (they clash there)";
+    }
+    return "blocked by " + obstacleWords(first) + " after " +
+      (first.travel / data.mm_per_length).toFixed(2) + " " + data.length_unit;
   };
   const stepWords = (st) => {
     const moving = [st.part].concat(st.carried).map((p) => data.parts[p].id).join(" + ");

@@ -322,6 +322,8 @@ TEST(ViewerPage, CarriesTheAssemblySequence) {
     for (std::size_t o = 0; o < expected.blocked_by.size(); ++o) {
       EXPECT_EQ(step["blocked_by"][o]["part"], expected.blocked_by[o].part);
       EXPECT_EQ(step["blocked_by"][o]["travel"], expected.blocked_by[o].travel);
+      EXPECT_EQ(step["blocked_by"][o]["clash_at_rest"], expected.blocked_by[o].clash_at_rest);
+      EXPECT_EQ(step["blocked_by"][o]["held_by"].is_null(), !expected.blocked_by[o].held_by);
     }
   }
   // Not planned when not asked for: the stepper says so.
@@ -508,6 +510,20 @@ TEST(ViewerPage, WorksInABrowser) {
   std::ofstream(dir / "hinge.html") << ViewerHtml(hinge, Analyze(hinge));
   const json printed = {{"step", {{"part", "COMPOUND"}, {"obstacle", "COMPOUND_solid2"}}}};
   EXPECT_EQ(RunBrowser(dir, "hinge.html", printed), "") << "a real STEP export";
+
+  // The Onshape reducer's spacers lie 0.55 mm deep in its cover as exported: a spacer's row
+  // says the clash holds it where it is.
+  const Assembly reducer = LoadAssembly(std::string(MECHANIST_SHARED_DATA) +
+                                        "/real/cycloid_7pin_6lobe_onshape/Full Assembly.step");
+  std::ofstream(dir / "reducer.html") << ViewerHtml(reducer, Analyze(reducer));
+  const json stuck = {
+      {"pins",
+       {{"part", "Full_Assembly.Tiny_spacer"},
+        {"before", 0},
+        {"after", 0},
+        {"error", true},
+        {"words", {"blocked by", "where it is (they clash there)", "(cannot be placed)"}}}}};
+  EXPECT_EQ(RunBrowser(dir, "reducer.html", stuck), "") << "a part stuck by a clash at rest";
 
   // A lever in a clevis whose pin the file leaves out: the pin shows in place once the lever
   // is in, entering from cheek_a's side (the guard covers cheek_b's).
