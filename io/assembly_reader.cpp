@@ -422,7 +422,7 @@ class Reader {
         if (extension == ".step" || extension == ".stp") {
           part.tessellated = true;
           part.mesh = LoadStepPart(part.mesh_source, p + "/mesh", &step_features, &part.notes,
-                                   &origin.step_solids, &part.mesh_deviation);
+                                   &origin.step_solids, &part.mesh_deviation, &part.mesh_angle);
         } else {
           part.mesh = LoadMesh(part.mesh_source, p + "/mesh");
         }
@@ -480,6 +480,7 @@ class Reader {
       part.mesh = s.mesh;
       part.tessellated = true;
       part.mesh_deviation = s.mesh_deviation;
+      part.mesh_angle = s.mesh_angle;
       part.X_WP = s.X_WP;
       part.group = s.path;
       part.body_of = s.body_of;
@@ -624,13 +625,13 @@ class Reader {
 
   // A STEP file as one rigid part: its solids' meshes and features at their placements (ids
   // prefixed "solidN_" when it holds several solids), each solid in `in_part`, and the largest
-  // of their meshes' deviations in `deviation`.
+  // of their meshes' deviations and angles in `deviation` and `angle`.
   std::shared_ptr<const TriangleMesh> LoadStepPart(const std::string& relative,
                                                    const std::string& pointer,
                                                    std::vector<Feature>* features,
                                                    std::vector<std::string>* notes,
                                                    std::vector<PartOrigin::StepSolid>* in_part,
-                                                   double* deviation) {
+                                                   double* deviation, double* angle) {
     std::vector<StepSolid> solids;
     std::vector<StepMessage> messages;
     try {
@@ -647,6 +648,7 @@ class Reader {
       for (Eigen::Vector3d& v : placed.vertices) v = solids[k].X_WP * v;
       mesh->Append(placed);
       *deviation = std::max(*deviation, solids[k].mesh_deviation);
+      *angle = std::max(*angle, solids[k].mesh_angle);
       for (Feature f : solids[k].features) {
         if (!prefix.empty()) f.id = fmt::format("{}_{}", prefix, f.id);
         f.origin = solids[k].X_WP * f.origin;

@@ -359,7 +359,7 @@ void WriteAssemblySummary(const Assembly& assembly, const Analysis& analysis,
   for (const std::size_t p : plan.base) out << " " << assembly.part(p).id;
   // The search leaves them where they are: every step finds them in place.
   if (!plan.from_steps && !plan.unplaced.empty()) {
-    std::size_t parts = 0;  // each unplaced part with what is fixed to it
+    std::size_t parts = 0;  // each unplaced part with what travels with it
     for (const InsertionStep& s : plan.unplaced) parts += 1 + s.carried.size();
     out << fmt::format(", and the {} that cannot be placed (below), which the steps find in place",
                        parts == 1 ? "part" : fmt::format("{} parts", parts));

@@ -28,6 +28,8 @@ struct StepSolid {
   /// How far the mesh may lie from the solid's faces, mm: the mesher's linear deflection,
   /// 1/1000 of the solid's box diagonal and at least 0.01 mm.
   double mesh_deviation = 0.0;
+  /// The mesher's angular deflection, rad (Part::mesh_angle).
+  double mesh_angle = 0.0;
   /// From the exact faces: cylinders covering 270 degrees or more (faces of one cylinder
   /// merged) are shafts when convex and through holes when concave, with the extent of their
   /// faces along the axis; planes are faces with their outward normal and extent.

@@ -250,10 +250,11 @@ class Planner {
       options.min_approach = min_approach_;
       if (!fits.empty()) {
         // The pin's mesh is built on its holes' circle; the hole's facets lie inside it.
-        const double region = tolerance_ + assembly_.part(o.part).mesh_deviation;
-        options.ignore = [this, fits, region](const Eigen::Vector3d& p_W) {
+        options.ignore = [this, fits](const Eigen::Vector3d& p_W) {
           return std::any_of(fits.begin(), fits.end(), [&](FeatureRef h) {
-            return InEngagementRegion(assembly_.feature(h), state_.X_WP[h.part], p_W, region);
+            const Feature& f = assembly_.feature(h);
+            const double region = tolerance_ + MeshDeviation(assembly_, h.part, 0.5 * f.diameter);
+            return InEngagementRegion(f, state_.X_WP[h.part], p_W, region);
           });
         };
       }
@@ -347,10 +348,18 @@ class Planner {
       regions.push_back(theirs);
     }
     if (regions.empty()) return {};
-    const double region = tolerance_ + MeshDeviation(assembly_, moving, obstacle);
-    return [this, regions, region](const Eigen::Vector3d& p_W) {
-      for (const FeatureRef& r : regions) {
-        if (InEngagementRegion(assembly_.feature(r), state_.X_WP[r.part], p_W, region)) {
+    std::vector<double> grown;  // per region: how far beyond its feature it reaches
+    for (const FeatureRef& r : regions) {
+      const Feature& f = assembly_.feature(r);
+      const double radius =
+          IsAxialFit(f.kind) ? 0.5 * f.diameter : std::numeric_limits<double>::infinity();
+      grown.push_back(tolerance_ + MeshDeviation(assembly_, moving, radius) +
+                      MeshDeviation(assembly_, obstacle, radius));
+    }
+    return [this, regions, grown](const Eigen::Vector3d& p_W) {
+      for (std::size_t k = 0; k < regions.size(); ++k) {
+        const FeatureRef& r = regions[k];
+        if (InEngagementRegion(assembly_.feature(r), state_.X_WP[r.part], p_W, grown[k])) {
           return true;
         }
       }
@@ -365,12 +374,9 @@ class Planner {
                                        const Eigen::Vector3d& d) const {
     for (const Pair& p : analysis_.pairs) {
       if (!Engages(p, moving, obstacle)) continue;
-      const FeatureKind ka = assembly_.feature(p.a).kind, kb = assembly_.feature(p.b).kind;
-      auto axial = [](FeatureKind k) {
-        return k == FeatureKind::kShaft || k == FeatureKind::kHole || k == FeatureKind::kThread ||
-               k == FeatureKind::kTappedHole;
-      };
-      if (!axial(ka) || !axial(kb)) continue;
+      if (!IsAxialFit(assembly_.feature(p.a).kind) || !IsAxialFit(assembly_.feature(p.b).kind)) {
+        continue;
+      }
       const FeatureRef theirs = p.a.part == obstacle ? p.a : p.b;
       if (std::abs(WorldAxis(theirs).dot(d)) < std::cos(assembly_.tolerance().angle)) {
         return theirs;

@@ -81,13 +81,9 @@ bool InRegion(const Feature& f, const RigidTransform& X_WP, const Eigen::Vector3
   return false;
 }
 
-bool IsAxialFit(FeatureKind kind) {
-  return kind == FeatureKind::kShaft || kind == FeatureKind::kHole ||
-         kind == FeatureKind::kThread || kind == FeatureKind::kTappedHole;
-}
-
-// Whether `pair` is a shaft in a hole whose diameters leave room (the hole at least as wide):
-// its features do not overlap, whatever their meshes do.
+// Whether `pair` is a shaft in a hole whose diameters leave room (the hole at least as wide,
+// within the length tolerance, as recognition takes sizes): its features do not overlap,
+// whatever their meshes do.
 bool IsFitWithRoom(const Assembly& assembly, const Pair& pair) {
   const Feature& a = assembly.feature(pair.a);
   const Feature& b = assembly.feature(pair.b);
@@ -97,12 +93,18 @@ bool IsFitWithRoom(const Assembly& assembly, const Pair& pair) {
   const auto outer = [](FeatureKind k) {
     return k == FeatureKind::kHole || k == FeatureKind::kTappedHole;
   };
-  if (inner(a.kind) && outer(b.kind)) return b.diameter >= a.diameter;
-  if (outer(a.kind) && inner(b.kind)) return a.diameter >= b.diameter;
+  const double tolerance = assembly.tolerance().length;
+  if (inner(a.kind) && outer(b.kind)) return b.diameter >= a.diameter - tolerance;
+  if (outer(a.kind) && inner(b.kind)) return a.diameter >= b.diameter - tolerance;
   return false;
 }
 
 }  // namespace
+
+bool IsAxialFit(FeatureKind kind) {
+  return kind == FeatureKind::kShaft || kind == FeatureKind::kHole ||
+         kind == FeatureKind::kThread || kind == FeatureKind::kTappedHole;
+}
 
 bool InEngagementRegion(const Feature& f, const RigidTransform& X_WP, const Eigen::Vector3d& p_W,
                         double tolerance) {
@@ -127,8 +129,10 @@ bool OverlapIsDesigned(const Pair& pair) {
   }
 }
 
-double MeshDeviation(const Assembly& assembly, std::size_t part_a, std::size_t part_b) {
-  return assembly.part(part_a).mesh_deviation + assembly.part(part_b).mesh_deviation;
+double MeshDeviation(const Assembly& assembly, std::size_t part, double radius) {
+  const Part& p = assembly.part(part);
+  if (p.mesh_angle <= 0.0 || !std::isfinite(radius)) return p.mesh_deviation;
+  return std::min(p.mesh_deviation, radius * (1 - std::cos(p.mesh_angle / 2)));
 }
 
 bool InPairRegion(const Assembly& assembly, const AssemblyState& state, const Pair& pair,
@@ -182,11 +186,15 @@ std::vector<PartContact> FindContacts(const Assembly& assembly, const AssemblySt
     if (contact.verdict == ContactVerdict::kClash) {
       // In a fit with room, no deeper than the meshes may lie off their surfaces: the
       // tessellations of a line-on-line fit, touching.
-      const double allowance = tolerance + MeshDeviation(assembly, i, j);
       for (const Pair& pair : pairs) {
         const bool between =
             (pair.a.part == i && pair.b.part == j) || (pair.a.part == j && pair.b.part == i);
-        if (between && contact.measure.depth <= allowance && IsFitWithRoom(assembly, pair) &&
+        if (!between || !IsFitWithRoom(assembly, pair)) continue;
+        const double radius =
+            0.5 * std::max(assembly.feature(pair.a).diameter, assembly.feature(pair.b).diameter);
+        const double allowance =
+            tolerance + MeshDeviation(assembly, i, radius) + MeshDeviation(assembly, j, radius);
+        if (contact.measure.depth <= allowance &&
             InPairRegion(assembly, state, pair, contact.measure.p_W, allowance)) {
           contact.verdict = ContactVerdict::kTouching;
           break;

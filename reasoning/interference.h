@@ -45,9 +45,14 @@ bool InEngagementRegion(const Feature& feature, const RigidTransform& X_WP,
 /// one: material there is a clash (often a mesh that does not model the hole).
 bool OverlapIsDesigned(const Pair& pair);
 
-/// How far the meshes of parts `part_a` and `part_b` may overlap where their surfaces only
-/// touch, mm: the sum of their Part::mesh_deviation.
-double MeshDeviation(const Assembly& assembly, std::size_t part_a, std::size_t part_b);
+/// True for the features of axial fits: shafts, holes, threads and tapped holes.
+bool IsAxialFit(FeatureKind kind);
+
+/// How far the mesh of `part` may lie off a circle of `radius` mm on its surface, mm: its
+/// Part::mesh_deviation, and at most radius (1 - cos(mesh_angle / 2)) when the mesher's angle
+/// is known (Part::mesh_angle). An infinite radius (a surface that is no circle) gives the
+/// deviation. Two meshes that only touch there may overlap by the sum of theirs.
+double MeshDeviation(const Assembly& assembly, std::size_t part, double radius);
 
 /// True when p_W is in the engagement regions of both features of `pair` (parts at `state`);
 /// for a shaft, hole or thread fit both cylinders are taken at the larger diameter, since the
@@ -59,9 +64,10 @@ bool InPairRegion(const Assembly& assembly, const AssemblyState& state, const Pa
 /// on world boxes, then MeasureContact (on every core). Penetrations deeper than the file's length
 /// tolerance are designed fits when the deepest point lies in the engagement region of a pair
 /// between the two parts that overlaps by design (OverlapIsDesigned) (`pairs`, as recognised at
-/// this state); touching when it lies in that of a shaft in a hole at least as wide and the
-/// depth is within the tolerance plus the two meshes' deviations (MeshDeviation: a
-/// line-on-line fit's tessellations); clashes otherwise. Sorted by part ids. Deterministic.
+/// this state); touching when it lies in that of a shaft in a hole at least as wide (within
+/// the tolerance) and the depth is within the tolerance plus the two meshes' deviations at the
+/// fit's radius (MeshDeviation: a line-on-line fit's tessellations); clashes otherwise. Sorted by
+/// part ids. Deterministic.
 std::vector<PartContact> FindContacts(const Assembly& assembly, const AssemblyState& state,
                                       const CollisionModel& model, const std::vector<Pair>& pairs);
 

@@ -551,11 +551,14 @@ double SizeOf(const TopoDS_Shape& solid) {
 // at least 0.01 mm. The mesh lies within it of the solid's faces.
 double MeshDeflection(double size) { return std::max(0.01, 1e-3 * size); }
 
+// The mesher's angular deflection, rad: no two neighbouring segments of an edge turn by more.
+constexpr double kMeshAngle = 0.3;
+
 // Meshes the faces of `solid` (within MeshDeflection of its `size`, SizeOf) and tells whether
 // the mesher found none of the defects healing repairs: open, self-intersecting or misoriented
 // wires, faces it could not mesh.
 bool MeshedCleanly(const TopoDS_Shape& solid, double size) {
-  const BRepMesh_IncrementalMesh mesher(solid, MeshDeflection(size), false, 0.3, false);
+  const BRepMesh_IncrementalMesh mesher(solid, MeshDeflection(size), false, kMeshAngle, false);
   constexpr int kDefects = IMeshData_OpenWire | IMeshData_SelfIntersectingWire | IMeshData_Failure |
                            IMeshData_UnorientedWire | IMeshData_TooFewPoints;
   return (mesher.GetStatusFlags() & kDefects) == 0;
@@ -1192,6 +1195,7 @@ class Walker {
       (*out_)[k].features = definition.features;
       (*out_)[k].notes = definition.notes;
       (*out_)[k].mesh_deviation = definition.deviation;
+      (*out_)[k].mesh_angle = kMeshAngle;
     }
   }
 
@@ -1360,8 +1364,8 @@ std::string LengthUnitName(const Handle(StepBasic_NamedUnit) & unit) {
   static const char* const kPrefixes[] = {"exa",   "peta", "tera",  "giga",  "mega",  "kilo",
                                           "hecto", "deca", "deci",  "centi", "milli", "micro",
                                           "nano",  "pico", "femto", "atto"};
-  const int prefix = static_cast<int>(si->Prefix());
-  return std::string(si->HasPrefix() && prefix >= 0 && prefix < 16 ? kPrefixes[prefix] : "") +
+  const auto prefix = static_cast<std::size_t>(si->Prefix());
+  return std::string(si->HasPrefix() && prefix < std::size(kPrefixes) ? kPrefixes[prefix] : "") +
          "metre";
 }
 
@@ -1372,7 +1376,8 @@ std::vector<std::string> LengthUnits(const Interface_InterfaceModel& model) {
   std::vector<std::string> units;
   for (int i = 1; i <= model.NbEntities(); ++i) {
     const Handle(Standard_Transient)& entity = model.Value(i);
-    Handle(StepRepr_GlobalUnitAssignedContext) context;
+    Handle(StepRepr_GlobalUnitAssignedContext) context =
+        Handle(StepRepr_GlobalUnitAssignedContext)::DownCast(entity);
     if (const auto geometric = Handle(
             StepGeom_GeometricRepresentationContextAndGlobalUnitAssignedContext)::DownCast(entity);
         !geometric.IsNull()) {

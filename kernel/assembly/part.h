@@ -38,11 +38,15 @@ struct Part {
   /// the designer's (the mesh checks say so as info).
   bool tessellated = false;
   /// How far the mesh may lie from the part's true surface, mm: for a tessellated STEP solid
-  /// the mesher's deflection (StepSolid::mesh_deviation), 0 for a mesh file (the mesh is the
-  /// part's geometry). Where the features leave room, the meshes may still overlap by the two
-  /// parts' deviations (a pin line-on-line in its bore, its vertices on the circle, the bore's
-  /// facets inside it).
+  /// the mesher's deflection (StepSolid::mesh_deviation), 0 for a mesh file or a library part
+  /// (the mesh is the part's geometry). Where the features leave room, the meshes may still overlap
+  /// by the two parts' deviations (a pin line-on-line in its bore, its vertices on the circle, the
+  /// bore's facets inside it).
   double mesh_deviation = 0.0;
+  /// The mesher's angular deflection, rad (0 when none is known): a circle of radius r on the
+  /// part's surface lies within r (1 - cos(mesh_angle / 2)) of its facets, however large
+  /// mesh_deviation is (a 4 mm bore in a 1 m frame is meshed finer than the frame).
+  double mesh_angle = 0.0;
   /// X_WP, the pose in the file (identity when the file gives none or places the part).
   RigidTransform X_WP;
   /// Placement by features instead of a pose (resolved by the placement solver); empty when

@@ -691,8 +691,10 @@ void Recognizer::AddBearing(std::span<const BearingRow> rows) {
     pairs_.back().source = PairSource::kBearing;
     cage_ids.emplace_back(assembly_.PartId(cage));
   }
+  // A raceway cut into a shaft makes the shaft no part of the bearing.
   std::set<std::size_t> members(held.begin(), held.end());
-  members.insert({inner->ref.part, outer->ref.part});
+  members.insert(outer->ref.part);
+  if (inner_ring) members.insert(inner->ref.part);
   members.insert(cages.begin(), cages.end());
   bearings_.emplace_back(members.begin(), members.end());
   const std::string size = bore > 0 && outside > 0
