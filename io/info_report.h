@@ -9,7 +9,8 @@
 
 namespace mechanist {
 
-/// Writes the `mechanist info` summary: units and tolerances, then per part its mesh source,
+/// Writes the `mechanist info` summary: units (the length units a STEP file declares, for one
+/// read alone or each one an assembly file reads) and tolerances, then per part its mesh source,
 /// triangle count, world box (mm), ground flag and features with their world axes, then
 /// drivers, adjustments, goals, steps, overrides and expectations. Lengths in mm, angles in
 /// degrees. Deterministic: the same assembly always gives the same text.
