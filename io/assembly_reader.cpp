@@ -25,7 +25,6 @@
 #include "io/mesh_reader.h"
 #include "io/step_reader.h"
 #include "kernel/features/part_library.h"
-#include "kernel/support/ascii_lower.h"
 #include "kernel/support/few_names.h"
 #include "kernel/support/number_format.h"
 
@@ -417,9 +416,7 @@ class Reader {
       PartOrigin origin;
       if (mesh) {
         part.mesh_source = String(*mesh, p + "/mesh");
-        const std::string extension =
-            AsciiLower(std::filesystem::path(part.mesh_source).extension().string());
-        if (extension == ".step" || extension == ".stp") {
+        if (IsStepFile(part.mesh_source)) {
           part.tessellated = true;
           part.mesh = LoadStepPart(part.mesh_source, p + "/mesh", &step_features, &part.notes,
                                    &origin.step_solids, &part.mesh_deviation, &part.mesh_angle);
@@ -1546,15 +1543,6 @@ std::optional<ExpectedRatio> ParseRatio(const std::string& text) {
   }
   return r;
 }
-
-namespace {
-
-bool IsStepFile(const std::filesystem::path& file) {
-  const std::string extension = AsciiLower(file.extension().string());
-  return extension == ".step" || extension == ".stp";
-}
-
-}  // namespace
 
 struct AssemblyFileReader::Impl {
   Reader reader;

@@ -3,13 +3,12 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <filesystem>
 #include <iterator>
 #include <string>
 #include <utility>
 
+#include "io/step_reader.h"
 #include "kernel/assembly/assembly_state.h"
-#include "kernel/support/ascii_lower.h"
 #include "kernel/support/number_format.h"
 
 namespace mechanist {
@@ -133,9 +132,7 @@ void WriteInfo(const Assembly& assembly, std::ostream& out) {
   // A STEP file's own units say what its values were (read in mm whatever they are): what a
   // designer compares with the CAD system's. Read alone, the file's units are the STEP file's.
   const std::vector<StepFileUnits>& steps = assembly.step_units();
-  const std::string extension =
-      AsciiLower(std::filesystem::path(assembly.source()).extension().string());
-  const bool step_alone = (extension == ".step" || extension == ".stp") && steps.size() == 1;
+  const bool step_alone = IsStepFile(assembly.source()) && steps.size() == 1;
   if (step_alone && !steps.front().length.empty()) {
     out << "units in file: length " << fmt::format("{}", fmt::join(steps.front().length, ", "))
         << " (read in mm; reported: mm, degrees)\n";

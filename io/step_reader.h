@@ -9,8 +9,15 @@
 #include "kernel/features/feature.h"
 #include "kernel/geometry/rigid_transform.h"
 #include "kernel/mesh/triangle_mesh.h"
+#include "kernel/support/ascii_lower.h"
 
 namespace mechanist {
+
+/// Whether `file` is named as a STEP file: its extension .step or .stp, in any case.
+inline bool IsStepFile(const std::filesystem::path& file) {
+  const std::string extension = AsciiLower(file.extension().string());
+  return extension == ".step" || extension == ".stp";
+}
 
 /// One solid instance of a STEP assembly.
 struct StepSolid {

@@ -12,6 +12,7 @@
 #include "io/info_report.h"
 #include "io/input_error.h"
 #include "io/mesh_reader.h"
+#include "io/step_reader.h"
 #include "kernel/features/feature_recognition.h"
 #include "kernel/support/ascii_lower.h"
 
@@ -33,7 +34,7 @@ Command FeaturesCommand() {
   c.run = [json](Session& s) {
     const std::string extension = AsciiLower(std::filesystem::path(s.file).extension().string());
     std::vector<FeatureReportEntry> entries;
-    if (extension == ".json" || extension == ".step" || extension == ".stp") {
+    if (extension == ".json" || IsStepFile(s.file)) {
       const Assembly assembly = ReadInput(s.file);
       entries = RecogniseAssemblyFeatures(assembly);
       WriteFeatureReport(entries, std::cout);
