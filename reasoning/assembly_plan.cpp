@@ -78,6 +78,7 @@ class Planner {
     for (PartContact& c : FindContacts(assembly_, state_, model_, analysis_.pairs)) {
       if (c.verdict == ContactVerdict::kClash) plan.clashes.push_back(c);
     }
+    clashes_ = plan.clashes;
     if (assembly_.steps().empty()) {
       Search(&plan);
     } else {
@@ -117,6 +118,29 @@ class Planner {
         }
       }
     }
+  }
+
+  // Adds to `blocked` (the stops of `unit`'s insertion of `travel`) a stop at the place for
+  // each part `present` outside the unit that a part of it clashes with at rest (FindContacts)
+  // and that stops it nowhere else (MarkClashesAtRest then says they clash there). The unit
+  // cannot reach its place, whatever its way, which a sweep may find free: a sweep only sees
+  // the contacts that it enters, not those it starts inside.
+  void AddClashesAtRest(const std::vector<std::size_t>& unit, const std::vector<bool>& present,
+                        double travel, std::vector<InsertionObstacle>* blocked) const {
+    const auto moves = [&unit](std::size_t p) {
+      return std::find(unit.begin(), unit.end(), p) != unit.end();
+    };
+    for (const PartContact& c : clashes_) {
+      if (moves(c.part_a) == moves(c.part_b)) continue;
+      const std::size_t other = moves(c.part_a) ? c.part_b : c.part_a;
+      const bool stopped = std::any_of(
+          blocked->begin(), blocked->end(),
+          [other](const InsertionObstacle& o) { return o.part == other && o.pin.empty(); });
+      if (present[other] && !stopped) {
+        blocked->push_back(Stop({other, nullptr}, travel, 0.0, c.measure.p_W));
+      }
+    }
+    SortByTravel(blocked);
   }
 
   // The pins through a part of `unit` whose parts are all `present`.
@@ -584,6 +608,7 @@ class Planner {
       step.travel = ClearingDistance(group, obstacles, -step.direction_W);
       step.blocked_by =
           Sweep(group, obstacles, step.direction_W, -step.travel, step.travel, step.travel);
+      AddClashesAtRest(group, placed, step.travel, &step.blocked_by);
       step.clear = step.blocked_by.empty();
       for (const std::size_t m : group) placed[m] = true;
       for (const HingePin* pin : PinsThrough(group, placed)) {
@@ -775,7 +800,10 @@ class Planner {
         pins_after[Index(*pin)] = true;
       }
       step.travel = travel;
-      step.clear = true;
+      // A way out that starts in a clash is taken (the clash is the model's, reported as
+      // such), but the insertion does not reach its place clear.
+      AddClashesAtRest(unit, present, travel, &step.blocked_by);
+      step.clear = step.blocked_by.empty();
       return step;
     }
     return std::nullopt;
@@ -830,6 +858,7 @@ class Planner {
     }
     std::reverse(blocked.begin(), blocked.end());  // by insertion travel again
     step.blocked_by = std::move(blocked);
+    AddClashesAtRest(unit, present, best_travel, &step.blocked_by);
     step.clear = step.blocked_by.empty();  // held by a pin that cannot come out
     std::vector<bool> pins_after = pin_in;
     for (const HingePin* pin : PinsThrough(unit, present)) {
@@ -852,6 +881,7 @@ class Planner {
   double min_approach_;
   std::vector<Aabb> boxes_;
   std::vector<HingePin> pins_;
+  std::vector<PartContact> clashes_;  // the clashes at rest, once Plan has found them
 };
 
 }  // namespace

@@ -109,7 +109,10 @@ struct AssemblyPlan {
 /// sense first; else the attempt whose first stop is nearest its place is reported, with what
 /// stops it). Dowels are not listed (see FindHingePins). A pin in place is an obstacle like a
 /// part, to the parts and the pins that go in after it (every contact with it counts: it has
-/// no pairs); a pin that cannot go in counts as in place, as a blocked part does.
+/// no pairs); a pin that cannot go in counts as in place, as a blocked part does. A part in
+/// place that the moving parts clash with at rest (`clashes`) stops them at their place
+/// (InsertionObstacle::clash_at_rest) when nothing stops them on the way: the sweep does not
+/// see contacts that start inside each other.
 ///
 /// Search: ground parts (or, without any, the part with the largest box) form the base; the
 /// other parts are removed one at a time, in passes over the parts in the order of the file
@@ -119,7 +122,9 @@ struct AssemblyPlan {
 /// the axis to the middle of its box and the principal directions, each turned square to the
 /// axis; a part leaves only when the pins the file leaves out through it can come out first
 /// (with the parts present then), and the pins whose parts are all present, none of them
-/// leaving, stand in its way; the sequence is the reverse. Parts that cannot leave are
+/// leaving, stand in its way; a part that clashes at rest with a part present leaves all the
+/// same (the clash is the model's, in `clashes`), and its step is not clear; the sequence is
+/// the reverse. Parts that cannot leave are
 /// `unplaced`, each with its best attempt: the direction in which it gets furthest (the first
 /// of those that get equally far), with every part on its way, and its pins. The search runs
 /// on all cores and gives the one-at-a-time search's answer whatever the threads' timing.

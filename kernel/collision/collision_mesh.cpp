@@ -177,7 +177,7 @@ CollisionMesh::CollisionMesh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(s
     }
     BuildEdges(canonical);
   }
-  if (closed_ && mesh_->SignedVolume() < 0.0) {
+  if (oriented_ && mesh_->SignedVolume() < 0.0) {
     for (Eigen::Vector3d& n : normals_) n = -n;
   }
   solid_ = closed_ || WindingNumberIsIntegral();
@@ -300,6 +300,7 @@ void CollisionMesh::BuildEdges(const std::vector<std::int32_t>& canonical) {
   std::vector<int> forward_uses;  // per edge: uses as (low -> high) minus uses as (high -> low)
   std::vector<int> uses;
   closed_ = n > 0;
+  oriented_ = n > 0;
   face_edges_.assign(F.size(), {-1, -1, -1});
   for (std::int32_t f = 0; f < n; ++f) {
     for (int k = 0; k < 3; ++k) {
@@ -321,6 +322,7 @@ void CollisionMesh::BuildEdges(const std::vector<std::int32_t>& canonical) {
   }
   for (std::size_t e = 0; e < edges_.size(); ++e) {
     if (uses[e] != 2 || forward_uses[e] != 0) closed_ = false;
+    if (forward_uses[e] != 0) oriented_ = false;
   }
 }
 

@@ -49,7 +49,7 @@ class CollisionMesh {
   /// Bounding box of each face in frame M.
   const std::vector<Aabb>& face_boxes() const { return face_boxes_; }
   /// Unit outward normal of each face (zero for a face whose corners are exactly collinear).
-  /// For a closed mesh wound inside out (negative volume) the normals are flipped, so that
+  /// For an oriented() mesh wound inside out (negative volume) the normals are flipped, so that
   /// they point out of the solid whatever the winding.
   const std::vector<Eigen::Vector3d>& face_normals() const { return normals_; }
   const std::vector<Edge>& edges() const { return edges_; }
@@ -68,6 +68,12 @@ class CollisionMesh {
   /// (multi-body parts exported as one STL). False for open sheets, whose winding number is
   /// near a half beside them: they have no inside, and contact depths against them are unknown.
   bool solid() const { return solid_; }
+  /// True when every edge is run as often one way as the other by its faces: closed(), or a
+  /// closed surface that also meets itself along some edges (four faces on one edge, as where
+  /// a CAD tessellation's faces touch at a hex socket's corner). The surface then bounds a
+  /// solid and face_normals() point out of it everywhere; sweeps tell entering from leaving by
+  /// them (FirstBlockingContact).
+  bool oriented() const { return oriented_; }
   /// Bounds of the mesh in its own frame.
   const Aabb& bounds() const { return nodes_.front().box_M; }
 
@@ -110,7 +116,7 @@ class CollisionMesh {
  private:
   // True when the winding number is near an integer just off most of the sampled faces.
   bool WindingNumberIsIntegral() const;
-  // Fills edges_, face_edges_ and closed_ with vertices identified by `canonical`.
+  // Fills edges_, face_edges_, closed_ and oriented_ with vertices identified by `canonical`.
   void BuildEdges(const std::vector<std::int32_t>& canonical);
   // Fills clusters_, one per node (WindingNumberAt).
   void BuildClusters();
@@ -136,6 +142,7 @@ class CollisionMesh {
   std::vector<std::array<std::int32_t, 3>> face_edges_;
   std::vector<Cluster> clusters_;  // per node; empty unless solid() and not closed()
   bool closed_ = false;
+  bool oriented_ = false;
   bool solid_ = false;
 };
 

@@ -187,9 +187,10 @@ std::optional<SweepContact> FirstBlockingContact(
   const auto& vo = mesh_o.vertices;
   const double margin = 1e-9 * (1.0 + L + obstacle.bounds().size().norm() +
                                 moving.bounds().size().norm() + X_OM.translation().norm());
-  // Orientation tells entering from leaving only for solids; an open mesh (a surface, a soup)
-  // is two-sided and every contact with it counts.
-  const bool solids = moving.closed() && obstacle.closed();
+  // Orientation tells entering from leaving only for solids (CollisionMesh::oriented: closed
+  // meshes, and closed surfaces that meet themselves along an edge); any other mesh (a
+  // surface, a soup, a cracked tessellation) is two-sided and every contact with it counts.
+  const bool solids = moving.oriented() && obstacle.oriented();
   auto ignored = [&](const Eigen::Vector3d& p_O) {
     return options.ignore && options.ignore(X_WO * p_O);
   };
@@ -231,12 +232,12 @@ std::optional<SweepContact> FirstBlockingContact(
     const SweptSegment path(v, Eigen::Vector3d::Zero(), d, limit, across_o, margin);
     ForEachFaceNear(obstacle, path, [&](std::int32_t f) {
       const Eigen::Vector3d& n = obstacle.face_normals()[f];
-      const double approach = obstacle.closed() ? -n.dot(d) : std::abs(n.dot(d));
+      const double approach = obstacle.oriented() ? -n.dot(d) : std::abs(n.dot(d));
       if (approach <= options.min_approach) return;
       const auto corners = obstacle.Triangle(f);
       const auto& [a, b, c] = corners;
       if (!SegmentIntersectsTriangle(v, end, a, b, c)) return;
-      if (obstacle.closed() &&
+      if (obstacle.oriented() &&
           !EntersAcrossBoundary(obstacle, f, corners, v, end, d, options.min_approach)) {
         return;
       }
@@ -258,13 +259,13 @@ std::optional<SweepContact> FirstBlockingContact(
     const SweptSegment path(w_M, Eigen::Vector3d::Zero(), -d_M, best.limit(L), across_m, margin);
     ForEachFaceNear(moving, path, [&](std::int32_t g) {
       const Eigen::Vector3d n = X_OM.RotateDirection(moving.face_normals()[g]);
-      const double approach = moving.closed() ? n.dot(d) : std::abs(n.dot(d));
+      const double approach = moving.oriented() ? n.dot(d) : std::abs(n.dot(d));
       if (approach <= options.min_approach) return;
       const auto& face = mesh_m.faces[g];
       const Eigen::Vector3d &a = vm[face[0]], &b = vm[face[1]], &c = vm[face[2]];
       if (!SegmentIntersectsTriangle(w, w - sweep, a, b, c)) return;
       // Relative to the moving mesh the obstacle's vertex travels along -d.
-      if (moving.closed() &&
+      if (moving.oriented() &&
           !EntersAcrossBoundary(moving, g, {a, b, c}, w, w - sweep, -d_M, options.min_approach)) {
         return;
       }

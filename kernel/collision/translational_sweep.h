@@ -48,14 +48,15 @@ struct SweepContact {
 /// entering a face from outside, a face reaching a vertex, or two convex edges crossing with
 /// their solids on opposite sides; contacts that separate or slide (approach at or below
 /// `min_approach`) do not block, so a part resting on a face can leave it. Edges between
-/// coplanar faces are not edges of the solid and take no part. The faces of a mesh that is
-/// not closed (a surface or a triangle soup, no inside) are two-sided: every contact with
-/// them that approaches blocks; when either mesh is open, every edge pair is tested and an
-/// edge crossing that approaches blocks. Throws std::invalid_argument for a negative or
-/// non-finite max_travel, a negative min_approach, or a direction that is not a unit vector.
-/// The meshes' hierarchies are searched with the parallelograms that the edges sweep (and the
-/// segments the points travel), not their boxes, so a long oblique travel costs about what it
-/// passes near.
+/// coplanar faces are not edges of the solid and take no part. Entering is told by the faces'
+/// outward normals for every mesh that bounds a solid by its edges (CollisionMesh::oriented:
+/// closed, or closed but meeting itself along some edges, as CAD tessellations may); the faces
+/// of any other mesh (a surface, a triangle soup, a cracked tessellation) are two-sided: every
+/// contact with them that approaches blocks; when either mesh is such, every edge pair is
+/// tested and an edge crossing that approaches blocks. Throws std::invalid_argument for a negative
+/// or non-finite max_travel, a negative min_approach, or a direction that is not a unit vector. The
+/// meshes' hierarchies are searched with the parallelograms that the edges sweep (and the segments
+/// the points travel), not their boxes, so a long oblique travel costs about what it passes near.
 std::optional<SweepContact> FirstBlockingContact(
     const CollisionMesh& moving, const RigidTransform& X_WM, const CollisionMesh& obstacle,
     const RigidTransform& X_WO, const Eigen::Vector3d& d_W, const SweepOptions& options);

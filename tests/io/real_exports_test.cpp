@@ -424,6 +424,29 @@ TEST(RealExports, TheReducersSpacersAreStuckWhereTheyClash) {
   EXPECT_EQ(stuck, 2);
 }
 
+TEST(RealExports, TheReducersCapScrewsLeaveTheCoverTheirHeadsRestOn) {
+  // The Onshape reducer's two 10-32 button head screws: each mesh is closed but for edges where
+  // four of its faces meet. Taken for two-sided sheets, their heads' touch on the top cover
+  // blocked them in every direction ("cannot be placed"); as solids they leave it. Nothing
+  // stops them on the way; only their clashes at rest (0.07 mm into a spacer, as exported).
+  const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) /
+                                  "real/cycloid_7pin_6lobe_onshape/Full Assembly.step");
+  const CollisionModel model(a);
+  const AssemblyPlan plan = PlanAssembly(a, Analyze(a), model);
+  int placed = 0;
+  for (const InsertionStep& s : plan.steps) {
+    if (a.part(s.part).id.find("Socket_button_head_cap_screw") == std::string::npos) continue;
+    EXPECT_FALSE(model.part_mesh(s.part).closed());
+    EXPECT_TRUE(model.part_mesh(s.part).oriented());
+    for (const InsertionObstacle& o : s.blocked_by) {
+      EXPECT_TRUE(o.clash_at_rest) << a.part(o.part).id;
+      EXPECT_EQ(o.short_by, 0.0);
+    }
+    ++placed;
+  }
+  EXPECT_EQ(placed, 2);
+}
+
 TEST(RealExports, ThePendulumsBallBearingGoesInAsOne) {
   // Truth: an SKF 6002 modelled with its two rings and nine balls (11 solids).
   const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) /

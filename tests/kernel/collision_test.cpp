@@ -386,6 +386,30 @@ TEST(TranslationalSweep, FirstContactOfBoxesIsTheGap) {
                                     Eigen::Vector3d::UnitX(), options));
 }
 
+TEST(TranslationalSweep, APartLeavesASolidThatMeetsItselfAlongAnEdge) {
+  // Two boxes on one corner edge, welded there: four faces on that edge, so the mesh is not
+  // closed, but every edge is run once each way (as where a CAD tessellation's faces touch).
+  const auto solid = Boxes({{0, 1, 0, 1, 0, 1}, {1, 2, 1, 2, 0, 1}}, true);
+  EXPECT_FALSE(solid->closed());
+  EXPECT_TRUE(solid->oriented());
+  const auto lid = Boxes({{0.2, 0.8, 0.2, 0.8, 1, 2}}, false);
+  SweepOptions options;
+  options.max_travel = 5;
+  // Resting on its top face, the lid leaves upward freely (before: blocked where it stood, as
+  // by a two-sided sheet) and is stopped at once downward.
+  EXPECT_FALSE(FirstBlockingContact(*lid, {}, *solid, {}, Eigen::Vector3d::UnitZ(), options));
+  const auto down =
+      FirstBlockingContact(*lid, {}, *solid, {}, -Eigen::Vector3d::UnitZ(), options);
+  ASSERT_TRUE(down);
+  EXPECT_EQ(down->travel, 0.0);
+  // With one face turned over it is not oriented: two-sided, the touch where it stands blocks.
+  auto mesh = std::make_shared<TriangleMesh>(solid->mesh());
+  std::swap(mesh->faces.front()[1], mesh->faces.front()[2]);
+  const CollisionMesh turned(mesh);
+  EXPECT_FALSE(turned.oriented());
+  EXPECT_TRUE(FirstBlockingContact(*lid, {}, turned, {}, Eigen::Vector3d::UnitZ(), options));
+}
+
 TEST(TranslationalSweep, EdgeMeetsEdgeWhereTheGeometrySays) {
   // A box turned 45 degrees about z moves along x toward a box turned 45 degrees about x... the
   // first contact is edge on edge: the moving box's vertical edge at x = sqrt(2) meets the

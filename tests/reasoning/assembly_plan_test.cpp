@@ -498,6 +498,16 @@ TEST(AssemblyPlan, OverlappingCubesAreAClash) {
   ASSERT_EQ(plan.clashes.size(), 1u);
   EXPECT_EQ(plan.clashes.front().verdict, ContactVerdict::kClash);
   EXPECT_NEAR(plan.clashes.front().measure.depth, 0.5, 1e-9);
+  // Its way out is free (a sweep sees only the contacts it enters), but the insertion ends in
+  // the clash: not clear, stopped at its place by the base, where they clash.
+  ASSERT_EQ(plan.steps.size(), 1u);
+  const InsertionStep& step = plan.steps.front();
+  EXPECT_FALSE(step.clear);
+  ASSERT_EQ(step.blocked_by.size(), 1u);
+  EXPECT_EQ(a.part(step.blocked_by.front().part).id, "base");
+  EXPECT_TRUE(step.blocked_by.front().clash_at_rest);
+  EXPECT_EQ(step.blocked_by.front().short_by, 0.0);
+  EXPECT_EQ(step.blocked_by.front().travel, step.travel);
 }
 
 }  // namespace
