@@ -130,6 +130,7 @@ class Planner {
     const auto moves = [&unit](std::size_t p) {
       return std::find(unit.begin(), unit.end(), p) != unit.end();
     };
+    bool added = false;
     for (const PartContact& c : clashes_) {
       if (moves(c.part_a) == moves(c.part_b)) continue;
       const std::size_t other = moves(c.part_a) ? c.part_b : c.part_a;
@@ -138,9 +139,10 @@ class Planner {
           [other](const InsertionObstacle& o) { return o.part == other && o.pin.empty(); });
       if (present[other] && !stopped) {
         blocked->push_back(Stop({other, nullptr}, travel, 0.0, c.measure.p_W));
+        added = true;
       }
     }
-    SortByTravel(blocked);
+    if (added) SortByTravel(blocked);
   }
 
   // The pins through a part of `unit` whose parts are all `present`.

@@ -110,9 +110,9 @@ struct AssemblyPlan {
 /// stops it). Dowels are not listed (see FindHingePins). A pin in place is an obstacle like a
 /// part, to the parts and the pins that go in after it (every contact with it counts: it has
 /// no pairs); a pin that cannot go in counts as in place, as a blocked part does. A part in
-/// place that the moving parts clash with at rest (`clashes`) stops them at their place
-/// (InsertionObstacle::clash_at_rest) when nothing stops them on the way: the sweep does not
-/// see contacts that start inside each other.
+/// place that the moving parts clash with at rest (`clashes`) and that stops them nowhere on
+/// the way stops them at their place (InsertionObstacle::clash_at_rest): a removal's sweep
+/// does not see contacts that start inside each other.
 ///
 /// Search: ground parts (or, without any, the part with the largest box) form the base; the
 /// other parts are removed one at a time, in passes over the parts in the order of the file

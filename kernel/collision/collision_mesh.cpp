@@ -177,10 +177,12 @@ CollisionMesh::CollisionMesh(std::shared_ptr<const TriangleMesh> mesh) : mesh_(s
     }
     BuildEdges(canonical);
   }
-  if (oriented_ && mesh_->SignedVolume() < 0.0) {
+  if (closed_ && mesh_->SignedVolume() < 0.0) {
     for (Eigen::Vector3d& n : normals_) n = -n;
   }
-  solid_ = closed_ || WindingNumberIsIntegral();
+  bool faces_out = true;
+  solid_ = closed_ || WindingNumberIsIntegral(&faces_out);
+  oriented_ = oriented_ && solid_ && faces_out;
   if (solid_ && !closed_) BuildClusters();
 }
 
@@ -272,22 +274,31 @@ CollisionMesh::WindingEstimate CollisionMesh::WindingNumberAt(const Eigen::Vecto
   return {solid_angle / (4.0 * std::numbers::pi), bound / (4.0 * std::numbers::pi)};
 }
 
-bool CollisionMesh::WindingNumberIsIntegral() const {
+bool CollisionMesh::WindingNumberIsIntegral(bool* faces_out) const {
   // Points a little off both sides of up to 32 faces spread over the mesh: beside a solid's
-  // face the winding number is an integer on either side; beside an open sheet, near a half.
+  // face the winding number is an integer on either side, one more behind it than in front
+  // when the face is wound outward (equal on both sides of a face inside the solid, as where
+  // two of its faces lie on each other), one less when inward, and negative in front of a
+  // shell wound inside out; beside an open sheet, near a half.
   const auto& F = mesh_->faces;
   const double offset = 1e-4 * std::max(bounds().size().norm(), 1e-9);
   const std::size_t step = std::max<std::size_t>(1, F.size() / 32);
   int near = 0, tested = 0;
+  *faces_out = true;
   for (std::size_t f = 0; f < F.size(); f += step) {
     if (normals_[f].isZero()) continue;
     const auto [a, b, c] = Triangle(static_cast<std::int32_t>(f));
     const Eigen::Vector3d centroid = (a + b + c) / 3.0;
+    double behind = 0.0, in_front = 0.0;
     for (const double side : {-1.0, 1.0}) {
       const double w = WindingNumber(*mesh_, centroid + side * offset * normals_[f]);
       near += std::abs(w - std::round(w)) <= 0.2;
       ++tested;
+      (side < 0 ? behind : in_front) = w;
     }
+    // A sliver's normal is rounding noise: it tells nothing of the winding.
+    const bool sliver = 0.5 * (b - a).cross(c - a).norm() < offset * offset;
+    if (!sliver && (behind - in_front < -0.5 || in_front < -0.5)) *faces_out = false;
   }
   return tested > 0 && 2 * near >= tested;
 }
@@ -309,11 +320,13 @@ void CollisionMesh::BuildEdges(const std::vector<std::int32_t>& canonical) {
       const auto key = std::minmax(u, v);
       const auto [it, inserted] = edge_of.try_emplace({key.first, key.second}, edges_.size());
       if (inserted) {
-        edges_.push_back({{key.first, key.second}, {f, -1}});
+        edges_.push_back({{key.first, key.second}, {f, -1}, false});
         forward_uses.push_back(0);
         uses.push_back(0);
       } else if (edges_[it->second].faces[1] < 0) {
         edges_[it->second].faces[1] = f;
+      } else {
+        edges_[it->second].more_faces = true;
       }
       face_edges_[f][k] = static_cast<std::int32_t>(it->second);
       ++uses[it->second];
@@ -328,7 +341,7 @@ void CollisionMesh::BuildEdges(const std::vector<std::int32_t>& canonical) {
 
 int CollisionMesh::EdgeConvexity(std::int32_t edge) const {
   const Edge& e = edges_[edge];
-  if (e.faces[1] < 0) return 0;
+  if (e.faces[1] < 0 || e.more_faces) return 0;
   const Eigen::Vector3d& n0 = normals_[e.faces[0]];
   const Eigen::Vector3d& n1 = normals_[e.faces[1]];
   if (n0.isZero() || n1.isZero()) return 0;

@@ -34,7 +34,8 @@ class CollisionMesh {
   /// An edge of the mesh and the faces on either side (-1 when the edge is a boundary).
   struct Edge {
     std::array<std::int32_t, 2> vertices;
-    std::array<std::int32_t, 2> faces;
+    std::array<std::int32_t, 2> faces;  ///< the first two faces on it; -1 when it has one
+    bool more_faces = false;            ///< more than two faces share it
   };
 
   /// Builds the hierarchy. The mesh must not be null; degenerate triangles are kept (they
@@ -49,7 +50,7 @@ class CollisionMesh {
   /// Bounding box of each face in frame M.
   const std::vector<Aabb>& face_boxes() const { return face_boxes_; }
   /// Unit outward normal of each face (zero for a face whose corners are exactly collinear).
-  /// For an oriented() mesh wound inside out (negative volume) the normals are flipped, so that
+  /// For a closed mesh wound inside out (negative volume) the normals are flipped, so that
   /// they point out of the solid whatever the winding.
   const std::vector<Eigen::Vector3d>& face_normals() const { return normals_; }
   const std::vector<Edge>& edges() const { return edges_; }
@@ -57,7 +58,8 @@ class CollisionMesh {
   /// of zero length.
   const std::vector<std::array<std::int32_t, 3>>& face_edges() const { return face_edges_; }
   /// +1 when the edge is convex (the solid's interior angle below 180 degrees), -1 when
-  /// concave, 0 when its faces are coplanar within 1e-9 or it is a boundary edge.
+  /// concave, 0 when its faces are coplanar within 1e-9 or it is a boundary edge or one that
+  /// more than two faces share (no single angle).
   int EdgeConvexity(std::int32_t edge) const;
   /// True when every edge has exactly two faces with opposite orientation (a closed, oriented
   /// surface): inside tests are then meaningful.
@@ -68,11 +70,13 @@ class CollisionMesh {
   /// (multi-body parts exported as one STL). False for open sheets, whose winding number is
   /// near a half beside them: they have no inside, and contact depths against them are unknown.
   bool solid() const { return solid_; }
-  /// True when every edge is run as often one way as the other by its faces: closed(), or a
-  /// closed surface that also meets itself along some edges (four faces on one edge, as where
-  /// a CAD tessellation's faces touch at a hex socket's corner). The surface then bounds a
-  /// solid and face_normals() point out of it everywhere; sweeps tell entering from leaving by
-  /// them (FirstBlockingContact).
+  /// True when face_normals() point out of the solid the mesh bounds: closed(), or every edge
+  /// run as often one way as the other by its faces (a closed surface that also meets itself
+  /// along some edges, four faces on one, as where a CAD tessellation's faces touch at a hex
+  /// socket's corner; or closed shells welded where they touch) with none of the faces sampled
+  /// by solid()'s test wound inward (the winding number larger in front of it than behind, or
+  /// negative in front: a shell wound inside out among them is found when a sampled face is on
+  /// it). Sweeps tell entering from leaving by such normals (FirstBlockingContact).
   bool oriented() const { return oriented_; }
   /// Bounds of the mesh in its own frame.
   const Aabb& bounds() const { return nodes_.front().box_M; }
@@ -114,8 +118,10 @@ class CollisionMesh {
   Closest ClosestPoint(const Eigen::Vector3d& p_M) const;
 
  private:
-  // True when the winding number is near an integer just off most of the sampled faces.
-  bool WindingNumberIsIntegral() const;
+  // True when the winding number is near an integer just off most of the sampled faces;
+  // `faces_out` tells whether none of them is wound inward (the winding number larger in
+  // front of it than behind, or negative in front: a shell wound inside out).
+  bool WindingNumberIsIntegral(bool* faces_out) const;
   // Fills edges_, face_edges_, closed_ and oriented_ with vertices identified by `canonical`.
   void BuildEdges(const std::vector<std::int32_t>& canonical);
   // Fills clusters_, one per node (WindingNumberAt).

@@ -277,7 +277,7 @@ std::optional<SweepContact> FirstBlockingContact(
   }
 
   // Convex edges of the moving mesh crossing convex edges of the obstacle (any edges when a
-  // mesh is open).
+  // mesh is two-sided).
   std::vector<int> convex_o(obstacle.edges().size(), 2);  // 2: not computed yet
   for (std::size_t e = 0; e < moving.edges().size(); ++e) {
     const auto ei = static_cast<std::int32_t>(e);

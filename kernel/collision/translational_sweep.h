@@ -53,10 +53,13 @@ struct SweepContact {
 /// closed, or closed but meeting itself along some edges, as CAD tessellations may); the faces
 /// of any other mesh (a surface, a triangle soup, a cracked tessellation) are two-sided: every
 /// contact with them that approaches blocks; when either mesh is such, every edge pair is
-/// tested and an edge crossing that approaches blocks. Throws std::invalid_argument for a negative
-/// or non-finite max_travel, a negative min_approach, or a direction that is not a unit vector. The
-/// meshes' hierarchies are searched with the parallelograms that the edges sweep (and the segments
-/// the points travel), not their boxes, so a long oblique travel costs about what it passes near.
+/// tested and an edge crossing that approaches blocks. An edge that more than two faces share
+/// has no single angle (CollisionMesh::EdgeConvexity 0): a point that reaches a face across it
+/// enters, and it takes no part in the crossings of convex edges. Throws std::invalid_argument for
+/// a negative or non-finite max_travel, a negative min_approach, or a direction that is not a unit
+/// vector. The meshes' hierarchies are searched with the parallelograms that the edges sweep (and
+/// the segments the points travel), not their boxes, so a long oblique travel costs about what it
+/// passes near.
 std::optional<SweepContact> FirstBlockingContact(
     const CollisionMesh& moving, const RigidTransform& X_WM, const CollisionMesh& obstacle,
     const RigidTransform& X_WO, const Eigen::Vector3d& d_W, const SweepOptions& options);

@@ -438,6 +438,8 @@ TEST(RealExports, TheReducersCapScrewsLeaveTheCoverTheirHeadsRestOn) {
     if (a.part(s.part).id.find("Socket_button_head_cap_screw") == std::string::npos) continue;
     EXPECT_FALSE(model.part_mesh(s.part).closed());
     EXPECT_TRUE(model.part_mesh(s.part).oriented());
+    EXPECT_FALSE(s.clear);
+    ASSERT_FALSE(s.blocked_by.empty());
     for (const InsertionObstacle& o : s.blocked_by) {
       EXPECT_TRUE(o.clash_at_rest) << a.part(o.part).id;
       EXPECT_EQ(o.short_by, 0.0);

@@ -398,8 +398,7 @@ TEST(TranslationalSweep, APartLeavesASolidThatMeetsItselfAlongAnEdge) {
   // Resting on its top face, the lid leaves upward freely (before: blocked where it stood, as
   // by a two-sided sheet) and is stopped at once downward.
   EXPECT_FALSE(FirstBlockingContact(*lid, {}, *solid, {}, Eigen::Vector3d::UnitZ(), options));
-  const auto down =
-      FirstBlockingContact(*lid, {}, *solid, {}, -Eigen::Vector3d::UnitZ(), options);
+  const auto down = FirstBlockingContact(*lid, {}, *solid, {}, -Eigen::Vector3d::UnitZ(), options);
   ASSERT_TRUE(down);
   EXPECT_EQ(down->travel, 0.0);
   // With one face turned over it is not oriented: two-sided, the touch where it stands blocks.
@@ -408,6 +407,69 @@ TEST(TranslationalSweep, APartLeavesASolidThatMeetsItselfAlongAnEdge) {
   const CollisionMesh turned(mesh);
   EXPECT_FALSE(turned.oriented());
   EXPECT_TRUE(FirstBlockingContact(*lid, {}, turned, {}, Eigen::Vector3d::UnitZ(), options));
+  // With the second box wound inside out every edge still runs both ways, but its faces point
+  // into it: not oriented either.
+  auto inverted = std::make_shared<TriangleMesh>(solid->mesh());
+  for (std::size_t f = inverted->faces.size() / 2; f < inverted->faces.size(); ++f) {
+    std::swap(inverted->faces[f][1], inverted->faces[f][2]);
+  }
+  const CollisionMesh inside_out(inverted);
+  EXPECT_FALSE(inside_out.oriented());
+}
+
+TEST(TranslationalSweep, AnEdgeOfFourFacesStopsWhateverEntersThere) {
+  // Two wedges along the z axis, welded on it: one fills the angles 0 to 90 degrees about it,
+  // the other 135 to 180. The first wedge's face on the plane x = 0 is listed first, then the
+  // second wedge's faces on the axis: the first two faces on the axis belong to different
+  // wedges, so the angle between them is no angle of the solid; an edge of more than two
+  // faces has none (CollisionMesh::EdgeConvexity 0) and counts two-sided.
+  const auto wedge = [](const std::vector<Eigen::Vector2d>& outline) {
+    Region2d r;
+    r.outer = outline;
+    return ExtrudeRegion(r, 0, 1);
+  };
+  TriangleMesh shells = wedge({{0, 0}, {1, 0}, {0, 1}});
+  shells.Append(wedge({{0, 0}, {-1, 1}, {-1, 0}}));
+  const auto rank = [&shells](const TriangleMesh::Face& f) {
+    const auto on_axis = [&](const Eigen::Vector3d& p) { return p.head<2>().isZero(); };
+    int axis_corners = 0;
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (const std::int32_t v : f) {
+      axis_corners += on_axis(shells.vertices[v]);
+      centroid += shells.vertices[v] / 3;
+    }
+    if (axis_corners < 2) return 2;
+    return std::abs(centroid.x()) < 1e-12 ? 0 : centroid.x() < 0 ? 1 : 2;
+  };
+  std::vector<TriangleMesh::Face> faces = shells.faces;
+  std::stable_sort(faces.begin(), faces.end(),
+                   [&](const auto& f, const auto& g) { return rank(f) < rank(g); });
+  auto soup = std::make_shared<TriangleMesh>();
+  for (const TriangleMesh::Face& f : faces) {
+    const auto n = static_cast<std::int32_t>(soup->vertices.size());
+    for (int k = 0; k < 3; ++k) soup->vertices.push_back(shells.vertices[f[k]]);
+    soup->faces.push_back({n, n + 1, n + 2});
+  }
+  const CollisionMesh wedges(soup);
+  EXPECT_FALSE(wedges.closed());
+  EXPECT_TRUE(wedges.oriented());
+  // A thin tetrahedron, tip first, from 330 degrees through the axis toward 150 degrees: it
+  // enters the second wedge where its tip crosses the axis, after 2 mm.
+  const double angle = 150 * kPi / 180;
+  const Eigen::Vector3d d(std::cos(angle), std::sin(angle), 0);
+  const Eigen::Vector3d tip = Eigen::Vector3d(0, 0, 0.5) - 2 * d;
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitZ(), side = d.cross(up);
+  auto tetrahedron = std::make_shared<TriangleMesh>();
+  tetrahedron->vertices = {tip, tip - d + 0.2 * up, tip - d - 0.1 * up + 0.17 * side,
+                           tip - d - 0.1 * up - 0.17 * side};
+  tetrahedron->faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}};
+  const CollisionMesh moving(tetrahedron);
+  ASSERT_TRUE(moving.closed());
+  SweepOptions options;
+  options.max_travel = 5;
+  const auto c = FirstBlockingContact(moving, {}, wedges, {}, d, options);
+  ASSERT_TRUE(c);
+  EXPECT_NEAR(c->travel, 2.0, 1e-9);
 }
 
 TEST(TranslationalSweep, EdgeMeetsEdgeWhereTheGeometrySays) {
