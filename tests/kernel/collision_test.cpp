@@ -422,7 +422,8 @@ TEST(TranslationalSweep, AnEdgeOfFourFacesStopsWhateverEntersThere) {
   // the other 135 to 180. The first wedge's face on the plane x = 0 is listed first, then the
   // second wedge's faces on the axis: the first two faces on the axis belong to different
   // wedges, so the angle between them is no angle of the solid; an edge of more than two
-  // faces has none (CollisionMesh::EdgeConvexity 0) and counts two-sided.
+  // faces has none (CollisionMesh::EdgeConvexity 0): a point that reaches a face across it
+  // enters. (The earlier pairing happens to stop the tip here too: this pins the behaviour.)
   const auto wedge = [](const std::vector<Eigen::Vector2d>& outline) {
     Region2d r;
     r.outer = outline;
