@@ -72,11 +72,11 @@ class CollisionMesh {
   bool solid() const { return solid_; }
   /// True when face_normals() point out of the solid the mesh bounds: closed(), or every edge
   /// run as often one way as the other by its faces (a closed surface that also meets itself
-  /// along some edges, four faces on one, as where a CAD tessellation's faces touch at a hex
-  /// socket's corner; or closed shells welded where they touch) with none of the faces sampled
-  /// by solid()'s test wound inward (the winding number larger in front of it than behind, or
-  /// negative in front: a shell wound inside out among them is found when a sampled face is on
-  /// it). Sweeps tell entering from leaving by such normals (FirstBlockingContact).
+  /// along some edges, four faces on one, as some CAD tessellations do; or closed shells
+  /// welded where they touch) with none of the faces sampled by solid()'s test wound inward
+  /// (the winding number larger in front of it than behind, or negative in front: a shell
+  /// wound inside out among them is found when a sampled face is on it). Sweeps tell entering
+  /// from leaving by such normals (FirstBlockingContact).
   bool oriented() const { return oriented_; }
   /// Bounds of the mesh in its own frame.
   const Aabb& bounds() const { return nodes_.front().box_M; }
