@@ -293,6 +293,17 @@ TEST(MeshContact, FacetedPinInHoleOfItsDiameterIsTouching) {
 // Boxes [x0, x1] x [y0, y1] x [z0, z1] in one mesh, as a multi-body part exported as one file:
 // closed shells that share faces. `soup`: every triangle with its own corners, as in an STL
 // file, so that the shells' coincident edges make the mesh not closed by its edges.
+// `mesh`'s faces in their order, each with three vertices of its own (a triangle soup).
+std::shared_ptr<TriangleMesh> Soup(const TriangleMesh& mesh) {
+  auto soup = std::make_shared<TriangleMesh>();
+  for (const TriangleMesh::Face& f : mesh.faces) {
+    const auto n = static_cast<std::int32_t>(soup->vertices.size());
+    for (int k = 0; k < 3; ++k) soup->vertices.push_back(mesh.vertices[f[k]]);
+    soup->faces.push_back({n, n + 1, n + 2});
+  }
+  return soup;
+}
+
 std::shared_ptr<const CollisionMesh> Boxes(const std::vector<std::array<double, 6>>& boxes,
                                            bool soup) {
   TriangleMesh shells;
@@ -301,17 +312,8 @@ std::shared_ptr<const CollisionMesh> Boxes(const std::vector<std::array<double, 
     r.outer = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
     shells.Append(ExtrudeRegion(r, z0, z1));
   }
-  auto mesh = std::make_shared<TriangleMesh>();
-  if (!soup) {
-    *mesh = shells;
-  } else {
-    for (const TriangleMesh::Face& f : shells.faces) {
-      const auto n = static_cast<std::int32_t>(mesh->vertices.size());
-      for (int k = 0; k < 3; ++k) mesh->vertices.push_back(shells.vertices[f[k]]);
-      mesh->faces.push_back({n, n + 1, n + 2});
-    }
-  }
-  return std::make_shared<CollisionMesh>(mesh);
+  return std::make_shared<CollisionMesh>(soup ? Soup(shells)
+                                              : std::make_shared<TriangleMesh>(shells));
 }
 
 // A pocket: a floor 1 mm thick and four walls standing on it, each its own box.
@@ -442,16 +444,10 @@ TEST(TranslationalSweep, AnEdgeOfFourFacesStopsWhateverEntersThere) {
     if (axis_corners < 2) return 2;
     return std::abs(centroid.x()) < 1e-12 ? 0 : centroid.x() < 0 ? 1 : 2;
   };
-  std::vector<TriangleMesh::Face> faces = shells.faces;
-  std::stable_sort(faces.begin(), faces.end(),
+  TriangleMesh ordered = shells;
+  std::stable_sort(ordered.faces.begin(), ordered.faces.end(),
                    [&](const auto& f, const auto& g) { return rank(f) < rank(g); });
-  auto soup = std::make_shared<TriangleMesh>();
-  for (const TriangleMesh::Face& f : faces) {
-    const auto n = static_cast<std::int32_t>(soup->vertices.size());
-    for (int k = 0; k < 3; ++k) soup->vertices.push_back(shells.vertices[f[k]]);
-    soup->faces.push_back({n, n + 1, n + 2});
-  }
-  const CollisionMesh wedges(soup);
+  const CollisionMesh wedges(Soup(ordered));
   EXPECT_FALSE(wedges.closed());
   EXPECT_TRUE(wedges.oriented());
   // A thin tetrahedron, tip first, from 330 degrees through the axis toward 150 degrees: it
