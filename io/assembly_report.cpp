@@ -182,11 +182,19 @@ Json StepJson(const Assembly& assembly, const Analysis& analysis, const Insertio
   j["blocked_by"] = BlockedJson(assembly, s.blocked_by);
   j["pair"] = s.pair ? Json(PairText(assembly, analysis, *s.pair)) : Json(nullptr);
   j["pins"] = PinsJson(assembly, s.pins);
+  j["subassembly"] = s.subassembly;
+  j["apart_for"] = s.apart_for ? Json(*s.apart_for) : Json(nullptr);
   return j;
 }
 
+// "A + B (A/hole_1) into C/shaft_1 along (0, 0, 1), 12 mm: clear; makes ...", after "apart,
+// for step 5: " for a step that puts the sub-assembly of step 5 together, or "sub-assembly "
+// for a sub-assembly's insertion.
 std::string StepText(const Assembly& assembly, const Analysis& analysis, const InsertionStep& s) {
-  std::string t = assembly.part(s.part).id;
+  std::string t = s.apart_for     ? fmt::format("apart, for step {}: ", *s.apart_for + 1)
+                  : s.subassembly ? "sub-assembly "
+                                  : "";
+  t += assembly.part(s.part).id;
   auto out = std::back_inserter(t);
   for (const std::size_t c : s.carried) fmt::format_to(out, " + {}", assembly.part(c).id);
   if (s.feature) fmt::format_to(out, " ({})", assembly.FeatureName(*s.feature));
@@ -358,9 +366,10 @@ void WriteAssemblySummary(const Assembly& assembly, const Analysis& analysis,
   out << "in place first:";
   for (const std::size_t p : plan.base) out << " " << assembly.part(p).id;
   // The search leaves them where they are: every step finds them in place.
-  if (!plan.from_steps && !plan.unplaced.empty()) {
+  if (!plan.from_steps && std::any_of(plan.unplaced.begin(), plan.unplaced.end(),
+                                      [](const InsertionStep& s) { return !s.apart_for; })) {
     std::size_t parts = 0;  // each unplaced part with what travels with it
-    for (const InsertionStep& s : plan.unplaced) parts += 1 + s.carried.size();
+    for (const InsertionStep& s : plan.unplaced) parts += s.apart_for ? 0 : 1 + s.carried.size();
     out << fmt::format(", and the {} that cannot be placed (below), which the steps find in place",
                        parts == 1 ? "part" : fmt::format("{} parts", parts));
   }

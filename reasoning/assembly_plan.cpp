@@ -5,8 +5,10 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <mutex>
 #include <numeric>
+#include <set>
 #include <string_view>
 #include <tuple>
 
@@ -48,6 +50,25 @@ std::optional<double> TravelToMeet(const Aabb& moving, const Aabb& fixed, const 
   }
   return lo;
 }
+
+// The units that stop a unit leaving in a direction (Planner::Blockers), by unit and direction,
+// kept from one search for a sub-assembly to the next: parts only leave in between, so a list
+// only loses parts, and the base stays.
+struct BlockerMemo {
+  std::mutex mutex;
+  std::map<std::tuple<std::size_t, double, double, double>, std::optional<std::vector<std::size_t>>>
+      blockers;
+};
+
+// Units that leave as one (Planner::RemovableSubassembly): the units, the removal of them all,
+// the removals that take them apart, down to the first of them (the base), and the best
+// attempts of those that cannot leave the base.
+struct Subassembly {
+  std::vector<std::size_t> members;
+  InsertionStep step;
+  std::vector<InsertionStep> apart;
+  std::vector<InsertionStep> stuck;
+};
 
 // Something in place that can stop a motion: a part, or a pin the file leaves out.
 struct Obstacle {
@@ -145,17 +166,21 @@ class Planner {
     if (added) SortByTravel(blocked);
   }
 
-  // The pins through a part of `unit` whose parts are all `present`.
+  // The pins through a part of `unit` whose parts are all `present`; with `across_only`, only
+  // those through a part outside the unit too.
   std::vector<const HingePin*> PinsThrough(const std::vector<std::size_t>& unit,
-                                           const std::vector<bool>& present) const {
+                                           const std::vector<bool>& present,
+                                           bool across_only = false) const {
     std::vector<const HingePin*> through;
+    const auto in_unit = [&](std::size_t p) {
+      return std::find(unit.begin(), unit.end(), p) != unit.end();
+    };
     for (const HingePin& pin : pins_) {
-      const bool in_unit = std::any_of(pin.parts.begin(), pin.parts.end(), [&](std::size_t p) {
-        return std::find(unit.begin(), unit.end(), p) != unit.end();
-      });
+      const bool some_in = std::any_of(pin.parts.begin(), pin.parts.end(), in_unit);
+      const bool all_in = std::all_of(pin.parts.begin(), pin.parts.end(), in_unit);
       const bool all_present = std::all_of(pin.parts.begin(), pin.parts.end(),
                                            [&](std::size_t p) { return present[p]; });
-      if (in_unit && all_present) through.push_back(&pin);
+      if (some_in && !(across_only && all_in) && all_present) through.push_back(&pin);
     }
     return through;
   }
@@ -706,31 +731,22 @@ class Planner {
       base_unit[unit_of[largest]] = true;
     }
     std::vector<bool> present(n, true);
-    std::vector<InsertionStep> removed;  // in removal order
     std::vector<bool> done(units.size(), false);
     // Progress: the units removed, then those that cannot leave, each attempted once more.
     const double to_place =
         static_cast<double>(std::count(base_unit.begin(), base_unit.end(), false));
     std::size_t decided = 0;
-    for (bool progress = true; progress;) {
-      progress = false;
-      // A pass over the units in order, each tried with the parts that those before it left:
-      // the units from `next` on are tried at once, the first of them that can leave goes, and
-      // the pass goes on after it.
-      for (std::size_t next = 0; next < units.size();) {
-        std::vector<std::size_t> pending;
-        for (std::size_t u = next; u < units.size(); ++u) {
-          if (!done[u] && !base_unit[u]) pending.push_back(u);
-        }
-        auto removable = FirstRemovable(pending, units, present);
-        if (!removable) break;
-        auto& [u, step] = *removable;
-        for (const std::size_t p : units[u]) present[p] = false;
-        done[u] = true;
-        removed.push_back(std::move(step));
-        progress = true;
-        Report(++decided / to_place);
-        next = u + 1;
+    BlockerMemo memo;
+    std::vector<InsertionStep> stuck_apart;
+    std::vector<InsertionStep> removed = RemoveUnits(units, unit_of, base_unit, &present, &done,
+                                                     &memo, &stuck_apart, [&](std::size_t count) {
+                                                       decided += count;
+                                                       Report(decided / to_place);
+                                                     });
+    // Removals become insertions, in reverse order.
+    for (std::vector<InsertionStep>* list : {&removed, &stuck_apart}) {
+      for (InsertionStep& s : *list) {
+        if (s.apart_for) s.apart_for = removed.size() - 1 - *s.apart_for;
       }
     }
     std::vector<std::size_t> stuck;
@@ -750,6 +766,7 @@ class Planner {
       const std::lock_guard<std::mutex> lock(reporting);
       Report(++decided / to_place);
     });
+    plan->unplaced.insert(plan->unplaced.end(), stuck_apart.begin(), stuck_apart.end());
     std::sort(plan->base.begin(), plan->base.end());
     // The base's pins go in before anything else is there.
     std::vector<bool> base_only(n, false);
@@ -757,6 +774,202 @@ class Planner {
     std::vector<bool> pin_in(pins_.size(), false);
     plan->base_pins = PinsAmong(plan->base, base_only, &pin_in);
     plan->steps.assign(removed.rbegin(), removed.rend());
+  }
+
+  // Removes the units that are neither `done` nor of the base (`base_unit`) from the parts
+  // `present`, one at a time, in passes over the units in order until a pass removes none; then,
+  // given a `memo`, a sub-assembly (RemovableSubassembly) leaves as one and the passes go on.
+  // Returns the removals in order: a sub-assembly's removal, then the removals that take it
+  // apart, `apart_for` the index of its removal among the removals; the best attempts of its
+  // units that cannot be taken from it go to `stuck_apart` (`apart_for` likewise). Marks the
+  // units removed `done` and their parts not `present`, and tells `removed` how many units each
+  // removal took.
+  std::vector<InsertionStep> RemoveUnits(const std::vector<std::vector<std::size_t>>& units,
+                                         const std::vector<std::size_t>& unit_of,
+                                         const std::vector<bool>& base_unit,
+                                         std::vector<bool>* present, std::vector<bool>* done,
+                                         BlockerMemo* memo, std::vector<InsertionStep>* stuck_apart,
+                                         const std::function<void(std::size_t)>& removed) const {
+    std::vector<InsertionStep> steps;
+    for (bool progress = true; progress;) {
+      progress = false;
+      // A pass over the units in order, each tried with the parts that those before it left:
+      // the units from `next` on are tried at once, the first of them that can leave goes, and
+      // the pass goes on after it.
+      for (std::size_t next = 0; next < units.size();) {
+        std::vector<std::size_t> pending;
+        for (std::size_t u = next; u < units.size(); ++u) {
+          if (!(*done)[u] && !base_unit[u]) pending.push_back(u);
+        }
+        auto removable = FirstRemovable(pending, units, *present);
+        if (!removable) break;
+        auto& [u, step] = *removable;
+        for (const std::size_t p : units[u]) (*present)[p] = false;
+        (*done)[u] = true;
+        steps.push_back(std::move(step));
+        progress = true;
+        if (removed) removed(1);
+        next = u + 1;
+      }
+      if (progress || !memo) continue;
+      auto sub = RemovableSubassembly(units, unit_of, base_unit, *done, *present, memo);
+      if (!sub) break;
+      for (const std::size_t u : sub->members) {
+        (*done)[u] = true;
+        for (const std::size_t p : units[u]) (*present)[p] = false;
+      }
+      // Put together apart for the removal's insertion (its index once the removals are
+      // reversed into insertions: Search).
+      for (InsertionStep& s : sub->apart) s.apart_for = steps.size();
+      for (InsertionStep& s : sub->stuck) s.apart_for = steps.size();
+      steps.push_back(std::move(sub->step));
+      steps.insert(steps.end(), sub->apart.begin(), sub->apart.end());
+      stuck_apart->insert(stuck_apart->end(), sub->stuck.begin(), sub->stuck.end());
+      progress = true;
+      if (removed) removed(sub->members.size());
+    }
+    return steps;
+  }
+
+  // What stops `unit` leaving along r (every stop on its way out, with no seat) among the parts
+  // `present`: the parts, or none when a part of the base (`in_base`) or a pin the file leaves
+  // out stops it (the base is swept first: most units tried are held by it).
+  std::optional<std::vector<std::size_t>> Blockers(const std::vector<std::size_t>& unit,
+                                                   const Eigen::Vector3d& r,
+                                                   const std::vector<bool>& present,
+                                                   const std::vector<bool>& in_base,
+                                                   bool* by_pin) const {
+    std::vector<Obstacle> others = Obstacles(unit, present, PinsInPlace(unit, present));
+    const double travel = ClearingDistance(unit, others, r);
+    std::stable_partition(others.begin(), others.end(),
+                          [&](const Obstacle& o) { return o.pin || in_base[o.part]; });
+    const double no_seat = std::numeric_limits<double>::infinity();
+    const Aabb swept = SweptBox(unit, r, 0.0, travel);
+    std::vector<std::size_t> parts;
+    for (const Obstacle& o : others) {
+      if (!FirstStop(unit, o, swept, r, 0.0, travel, no_seat)) continue;
+      *by_pin = o.pin != nullptr;
+      if (o.pin || in_base[o.part]) return std::nullopt;
+      parts.push_back(o.part);
+    }
+    return parts;
+  }
+
+  // What stops unit `u` leaving along r (Blockers), from the memo when it is there: a list
+  // found with more parts present loses those that have left since.
+  std::optional<std::vector<std::size_t>> MemoBlockers(
+      BlockerMemo* memo, const std::vector<std::vector<std::size_t>>& units, std::size_t u,
+      const Eigen::Vector3d& r, const std::vector<bool>& present,
+      const std::vector<bool>& in_base) const {
+    const auto key = std::make_tuple(u, r.x(), r.y(), r.z());
+    std::optional<std::optional<std::vector<std::size_t>>> known;
+    {
+      const std::lock_guard<std::mutex> lock(memo->mutex);
+      const auto it = memo->blockers.find(key);
+      if (it != memo->blockers.end()) known = it->second;
+    }
+    if (!known) {
+      bool by_pin = false;
+      known = Blockers(units[u], r, present, in_base, &by_pin);
+      if (!by_pin) {  // the pins in place change as parts leave: not kept
+        const std::lock_guard<std::mutex> lock(memo->mutex);
+        memo->blockers.emplace(key, *known);
+      }
+    }
+    if (*known) {
+      std::erase_if(**known, [&](std::size_t p) { return !present[p]; });
+    }
+    return *known;
+  }
+
+  // When no unit can leave alone: sets of units (none of the base) that can leave as one, each
+  // a seed unit and, in turn, every unit that stops a unit of the set on its way out along one
+  // of the seed's removal directions (the closure of the blocking relation along that
+  // direction: Wilson and Latombe's non-directional blocking graph, "Geometric reasoning about
+  // mechanical assembly", Artificial Intelligence 71, 1994); the first of them, smallest first,
+  // that leaves as one (Apart).
+  std::optional<Subassembly> RemovableSubassembly(
+      const std::vector<std::vector<std::size_t>>& units, const std::vector<std::size_t>& unit_of,
+      const std::vector<bool>& base_unit, const std::vector<bool>& done,
+      const std::vector<bool>& present, BlockerMemo* memo) const {
+    std::vector<bool> in_base(present.size(), false);
+    for (std::size_t p = 0; p < present.size(); ++p) in_base[p] = base_unit[unit_of[p]];
+    std::vector<std::size_t> seeds;
+    for (std::size_t u = 0; u < units.size(); ++u) {
+      if (!done[u] && !base_unit[u]) seeds.push_back(u);
+    }
+    std::vector<std::vector<std::vector<std::size_t>>> found(seeds.size());
+    ParallelFor(seeds.size(), [&](std::size_t k) {
+      for (const auto& direction : RemovalDirections(units[seeds[k]])) {
+        const Eigen::Vector3d& r = direction.first;
+        std::vector<bool> in(units.size(), false);
+        in[seeds[k]] = true;
+        std::vector<std::size_t> members = {seeds[k]};
+        bool held = false;  // by the base or a pin the file leaves out
+        for (std::size_t m = 0; !held && m < members.size(); ++m) {
+          const auto blockers = MemoBlockers(memo, units, members[m], r, present, in_base);
+          held = !blockers;
+          for (const std::size_t b : blockers.value_or(std::vector<std::size_t>())) {
+            if (!in[unit_of[b]]) {
+              in[unit_of[b]] = true;
+              members.push_back(unit_of[b]);
+            }
+          }
+        }
+        if (!held && members.size() > 1) {
+          std::sort(members.begin(), members.end());
+          found[k].push_back(members);
+        }
+      }
+    });
+    std::vector<std::vector<std::size_t>> candidates;
+    for (auto& f : found) candidates.insert(candidates.end(), f.begin(), f.end());
+    // The smallest first, then in the order of their seeds; each set tried once.
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const auto& a, const auto& b) { return a.size() < b.size(); });
+    std::set<std::vector<std::size_t>> tried;
+    for (const std::vector<std::size_t>& members : candidates) {
+      if (!tried.insert(members).second) continue;
+      if (auto sub = Apart(units, unit_of, members, present)) return sub;
+    }
+    return std::nullopt;
+  }
+
+  // The sub-assembly of the units `members` leaving the parts `present` as one, if it can, and
+  // how it is put together apart from the rest of the assembly: its units, the one with the
+  // largest box first (the sub-assembly's base), are removed from it one at a time as the search
+  // removes them from the assembly (with no sub-assembly inside it); those that cannot leave it
+  // so stay with its base, each with its best attempt.
+  std::optional<Subassembly> Apart(const std::vector<std::vector<std::size_t>>& units,
+                                   const std::vector<std::size_t>& unit_of,
+                                   std::vector<std::size_t> members,
+                                   const std::vector<bool>& present) const {
+    const auto volume = [&](std::size_t u) {
+      Aabb box;
+      for (const std::size_t p : units[u]) box.Extend(boxes_[p]);
+      return box.size().prod();
+    };
+    // The largest first, then in order: the step names the base and carries the rest.
+    std::stable_sort(members.begin(), members.end(),
+                     [&](std::size_t a, std::size_t b) { return volume(a) > volume(b); });
+    std::vector<std::size_t> group;
+    for (const std::size_t u : members) group.insert(group.end(), units[u].begin(), units[u].end());
+    std::optional<InsertionStep> step = TryRemove(group, present, /*pins_across_only=*/true);
+    if (!step) return std::nullopt;
+    std::vector<bool> alone(present.size(), false);  // the sub-assembly's parts, by themselves
+    for (const std::size_t p : group) alone[p] = true;
+    std::vector<bool> base(units.size(), false), done(units.size(), true);
+    base[members.front()] = true;
+    for (const std::size_t u : members) done[u] = false;
+    Subassembly sub;
+    sub.apart = RemoveUnits(units, unit_of, base, &alone, &done, nullptr, nullptr, {});
+    for (const std::size_t u : members) {
+      if (!done[u] && !base[u]) sub.stuck.push_back(BestAttempt(units[u], alone));
+    }
+    step->subassembly = true;
+    sub.members = std::move(members);
+    sub.step = std::move(*step);
+    return sub;
   }
 
   InsertionStep MakeStep(const std::vector<std::size_t>& unit, const Eigen::Vector3d& r,
@@ -782,8 +995,13 @@ class Planner {
     return step;
   }
 
+  // The first of `unit`'s removal directions (RemovalDirections) in which it can leave the parts
+  // `present`, with its pins: those through it (PinsThrough; with `pins_across_only`, only those
+  // through a part outside it too: a sub-assembly's own go in while it is put together) come
+  // out first.
   std::optional<InsertionStep> TryRemove(const std::vector<std::size_t>& unit,
-                                         const std::vector<bool>& present) const {
+                                         const std::vector<bool>& present,
+                                         bool pins_across_only = false) const {
     const std::vector<bool> pin_in = PinsInPlace(unit, present);
     const std::vector<Obstacle> others = Obstacles(unit, present, pin_in);
     for (const auto& [r, feature] : RemovalDirections(unit)) {
@@ -796,7 +1014,7 @@ class Planner {
       // is known, since most units tried cannot leave yet whatever their pins do.
       InsertionStep step = MakeStep(unit, r, feature, present);
       std::vector<bool> pins_after = pin_in;  // as the pins go in after the unit, in order
-      for (const HingePin* pin : PinsThrough(unit, present)) {
+      for (const HingePin* pin : PinsThrough(unit, present, pins_across_only)) {
         step.pins.push_back(InsertPin(*pin, present, pins_after));
         if (!step.pins.back().clear) return std::nullopt;
         pins_after[Index(*pin)] = true;

@@ -69,6 +69,16 @@ struct InsertionStep {
   /// The pins the file leaves out that go in right after this step: those through this
   /// step's parts whose other parts are in place.
   std::vector<PinInsertion> pins;
+  /// A sub-assembly's insertion: `part` and `carried` were put together apart from the rest of
+  /// the assembly (`part` first, with the parts that cannot leave it: AssemblyPlan::unplaced),
+  /// by the steps just before this one that are `apart_for` it, and move in as one.
+  bool subassembly = false;
+  /// A step that puts a sub-assembly together apart, or (in AssemblyPlan::unplaced) an attempt
+  /// to: the index into AssemblyPlan::steps of the sub-assembly's insertion. Only the parts of
+  /// the sub-assembly put together before it are in place: that step's `part`, with the parts
+  /// of the sub-assembly that cannot leave it, and the parts of the steps before this one that
+  /// are apart for it.
+  std::optional<std::size_t> apart_for;
 };
 
 /// Whether and how the assembly can be put together.
@@ -123,11 +133,20 @@ struct AssemblyPlan {
 /// axis; a part leaves only when the pins the file leaves out through it can come out first
 /// (with the parts present then), and the pins whose parts are all present, none of them
 /// leaving, stand in its way; a part that clashes at rest with a part present leaves all the
-/// same (the clash is the model's, in `clashes`), and its step is not clear; the sequence is
-/// the reverse. Parts that cannot leave are
-/// `unplaced`, each with its best attempt: the direction in which it gets furthest (the first
-/// of those that get equally far), with every part on its way, and its pins. The search runs
-/// on all cores and gives the one-at-a-time search's answer whatever the threads' timing.
+/// same (the clash is the model's, in `clashes`), and its step is not clear. When a pass
+/// removes none, a sub-assembly leaves as one: for each unit left and each of its removal
+/// directions, the unit and, in turn, every unit that stops one of them along that direction
+/// (the closure of the blocking relation, Wilson and Latombe's non-directional blocking graph),
+/// unless the base or a pin the file leaves out stops one; the smallest such set that can
+/// leave as one (its first direction that is clear, with its pins through parts outside it)
+/// goes, its largest unit first (`part`, the others `carried`, `subassembly`), and is taken
+/// apart by the same one-at-a-time search with its parts alone, down to that unit (no
+/// sub-assembly inside it): those steps are `apart_for` it, and the units that cannot leave
+/// it are `unplaced` apart for it. Then the passes go on. The sequence is the reverse. Parts
+/// that cannot leave are `unplaced`, each with its best attempt: the direction in which it
+/// gets furthest (the first of those that get equally far), with every part on its way, and
+/// its pins. The search runs on all cores and gives the one-at-a-time search's answer whatever
+/// the threads' timing.
 ///
 /// The assembly is assemblable when there are no clashes, every part is placed, and every step
 /// and every pin is clear.

@@ -185,7 +185,9 @@ json Insertion(const Assembly& assembly, const InsertionStep& step, bool placed)
           {"clear", step.clear},
           {"placed", placed},
           {"blocked_by", Blocked(assembly, step.blocked_by)},
-          {"pins", Pins(assembly, step.pins)}};
+          {"pins", Pins(assembly, step.pins)},
+          {"subassembly", step.subassembly},
+          {"apart_for", step.apart_for ? json(*step.apart_for) : json(nullptr)}};
 }
 
 json Sequence(const Assembly& assembly, const AssemblyPlan& plan) {

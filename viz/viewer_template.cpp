@@ -670,10 +670,14 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     addPins(plan.base_pins, -1);
     plan.steps.forEach((st, k) => { if (st.placed) addPins(st.pins, k); });
   }
+  // A step that puts a sub-assembly together apart (and an attempt to) is with the steps of
+  // that sub-assembly only.
+  const sameRoom = (j, k) => plan.steps[j].apart_for === plan.steps[k].apart_for;
   // A step's own pins show once its part is in: at its end, and only if nothing stopped it.
   const showPins = (k, u) => {
     for (const m of pinMeshes) {
       m.mesh.visible = k !== null && m.pin.clear &&
+        (m.step < 0 ? plan.steps[k].apart_for === null : sameRoom(m.step, k)) &&
         (m.step < k || (m.step === k && u >= 1 && plan.steps[k].clear));
     }
   };
@@ -694,7 +698,9 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       (first.travel / data.mm_per_length).toFixed(2) + " " + data.length_unit;
   };
   const stepWords = (st) => {
-    const moving = [st.part].concat(st.carried).map((p) => data.parts[p].id).join(" + ");
+    const moving = (st.apart_for !== null ? "apart, for step " + (st.apart_for + 1) + ": " :
+                    st.subassembly ? "sub-assembly " : "") +
+      [st.part].concat(st.carried).map((p) => data.parts[p].id).join(" + ");
     const d = st.direction.map((v) => +v.toFixed(3)).join(", ");
     let words = moving + " along (" + d + "), " +
       (st.travel / data.mm_per_length).toFixed(2) + " " + data.length_unit + ": " +
@@ -740,10 +746,26 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     clearRun();
     const st = plan.steps[k];
     step = k;
+    // Not in yet: the parts of later steps, but for those that cannot leave a sub-assembly
+    // once it is in; put together apart: all but the sub-assembly's parts put together by then
+    // (its first part and those that cannot leave it).
     const later = new Set();
-    plan.steps.forEach((other, j) => {
-      if (j > k) [other.part].concat(other.carried).forEach((p) => later.add(p));
-    });
+    const partsOf = (other) => [other.part].concat(other.carried);
+    const room = st.apart_for;
+    if (room === null) {
+      plan.steps.forEach((other, j) => {
+        const stays = !other.placed && other.apart_for !== null && other.apart_for <= k;
+        if (j > k && !stays) partsOf(other).forEach((p) => later.add(p));
+      });
+    } else {
+      const together = new Set([plan.steps[room].part]);
+      plan.steps.forEach((other, j) => {
+        if (other.apart_for === room && (j <= k || !other.placed)) {
+          partsOf(other).forEach((p) => together.add(p));
+        }
+      });
+      parts.forEach((part, p) => { if (!together.has(p)) later.add(p); });
+    }
     parts.forEach((part, p) => { part.group.visible = !later.has(p); });
     showPins(k, u);
     changed();

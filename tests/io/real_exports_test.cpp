@@ -404,16 +404,24 @@ TEST(RealExports, TheSolidEdgePinTouchesItsBoreAndGoesIn) {
   EXPECT_EQ(a.part(plan.steps.front().part).id, "Assem1.body2");
 }
 
-TEST(RealExports, TheReducersSpacersAreStuckWhereTheyClash) {
+TEST(RealExports, TheReducersSpacersGoInWithTheCoverTheyAreStuckIn) {
   // The Onshape reducer's two tiny spacers lie 0.55 mm deep in the top cover (as exported):
-  // neither can leave, and their attempts say the clash at rest holds them, not a contact
-  // on the way.
+  // neither can leave the assembly alone, nor the cover alone, and the cover cannot leave
+  // while they are there; the three leave as one. So the cover goes in as a sub-assembly with
+  // them, and their attempts to go into it apart say the clash at rest holds them, not a
+  // contact on the way.
   const Assembly a = LoadAssembly(std::filesystem::path(MECHANIST_SHARED_DATA) /
                                   "real/cycloid_7pin_6lobe_onshape/Full Assembly.step");
   const AssemblyPlan plan = PlanAssembly(a, Analyze(a), CollisionModel(a));
   int stuck = 0;
   for (const InsertionStep& u : plan.unplaced) {
     if (a.part(u.part).id.find("Tiny_spacer") == std::string::npos) continue;
+    ASSERT_TRUE(u.apart_for);
+    const InsertionStep& in = plan.steps.at(*u.apart_for);
+    EXPECT_TRUE(in.subassembly);
+    EXPECT_TRUE(in.clear);
+    EXPECT_EQ(a.part(in.part).id, "Full_Assembly.Top_centering_cover");
+    EXPECT_EQ(std::count(in.carried.begin(), in.carried.end(), u.part), 1);
     for (const InsertionObstacle& o : u.blocked_by) {
       if (a.part(o.part).id != "Full_Assembly.Top_centering_cover") continue;
       EXPECT_TRUE(o.clash_at_rest);

@@ -510,5 +510,99 @@ TEST(AssemblyPlan, OverlappingCubesAreAClash) {
   EXPECT_EQ(step.blocked_by.front().travel, step.travel);
 }
 
+// A tub, ground and open on top, its inside [-10, 10] x [0, 10] x [0, 20] (mm).
+Part Tub() {
+  using V = Eigen::Vector3d;
+  Part tub = MakePart("tub", {}, RigidTransform(), true);
+  tub.mesh = Boxes({{V(-15, -5, -5), V(15, 15, 0)},
+                    {V(-15, -5, 0), V(-10, 15, 20)},
+                    {V(10, -5, 0), V(15, 15, 20)},
+                    {V(-10, -5, 0), V(10, 0, 20)},
+                    {V(-10, 10, 0), V(10, 15, 20)}});
+  return tub;
+}
+
+// Whether `part` travels from `travel` mm back along d into its place without a blocking
+// contact with `obstacle` (the kernel's sweep: an oracle apart from the planner's search).
+bool Clear(const Assembly& a, const CollisionModel& model, std::size_t part, std::size_t obstacle,
+           const Eigen::Vector3d& d, double travel) {
+  SweepOptions options;
+  options.max_travel = travel - 1e-9;
+  options.min_approach = std::sin(a.tolerance().angle);
+  const RigidTransform X_start = RigidTransform::Translation(-travel * d) * a.part(part).X_WP;
+  return !FirstBlockingContact(model.part_mesh(part), X_start, model.part_mesh(obstacle),
+                               a.part(obstacle).X_WP, d, options);
+}
+
+// Two parts in the tub that hook into each other: `x`, a block with a shelf reaching right,
+// and `y`, a C around that shelf whose top reaches back over x. Each holds the other down, and
+// the tub holds them sideways, so neither can leave alone; together they lift out. Apart from
+// the tub, x slides out of y's C along -x (y, the larger, is the sub-assembly's base): the
+// sub-assembly is put together apart, x into y along +x, then lowered into the tub.
+TEST(AssemblyPlan, PartsThatHoldEachOtherGoInAsASubAssembly) {
+  using V = Eigen::Vector3d;
+  Part x = MakePart("x", {});
+  x.mesh = Boxes({{V(-10, 0, 0), V(0, 10, 10)}, {V(0, 0, 8), V(4.5, 10, 10)}});
+  Part y = MakePart("y", {});
+  y.mesh = Boxes(
+      {{V(0.5, 0, 0), V(10, 10, 7)}, {V(5, 0, 7), V(10, 10, 11)}, {V(-5, 0, 11), V(10, 10, 13)}});
+  const Assembly a = MakeAssembly({Tub(), x, y});
+  const CollisionModel model(a);
+  // Alone, each is stopped on its way out of the tub by the other.
+  EXPECT_FALSE(Clear(a, model, 1, 2, V(0, 0, -1), 30));
+  EXPECT_FALSE(Clear(a, model, 2, 1, V(0, 0, -1), 30));
+  const AssemblyPlan plan = PlanAssembly(a, Analyze(a), model);
+  EXPECT_TRUE(plan.assemblable);
+  EXPECT_TRUE(plan.unplaced.empty());
+  ASSERT_EQ(plan.steps.size(), 2u);
+  const InsertionStep& apart = plan.steps[0];
+  const InsertionStep& in = plan.steps[1];
+  EXPECT_EQ(a.part(apart.part).id, "x");
+  EXPECT_EQ(apart.apart_for, std::optional<std::size_t>(1));
+  EXPECT_FALSE(apart.subassembly);
+  EXPECT_EQ(apart.direction_W, V(1, 0, 0));
+  EXPECT_TRUE(apart.clear);
+  EXPECT_TRUE(Clear(a, model, 1, 2, apart.direction_W, apart.travel)) << "x into y, y alone";
+  EXPECT_TRUE(in.subassembly);
+  EXPECT_FALSE(in.apart_for);
+  EXPECT_EQ(a.part(in.part).id, "y");
+  EXPECT_EQ(in.carried, std::vector<std::size_t>({1}));
+  EXPECT_EQ(in.direction_W, V(0, 0, -1));
+  EXPECT_TRUE(in.clear);
+  EXPECT_TRUE(Clear(a, model, 1, 0, in.direction_W, in.travel)) << "x, with y, into the tub";
+  EXPECT_TRUE(Clear(a, model, 2, 0, in.direction_W, in.travel)) << "y, with x, into the tub";
+}
+
+// A part shut in a box (y), both in the tub: they lift out together, but the part cannot be
+// put into the box, which stays the sub-assembly's base; its attempt is unplaced, apart for
+// the sub-assembly's step, stopped by the box where it stands.
+TEST(AssemblyPlan, APartShutInASubAssemblyIsUnplacedApartForIt) {
+  using V = Eigen::Vector3d;
+  Part box = MakePart("box", {});
+  box.mesh = Boxes({{V(-6, 0, 0), V(6, 10, 2)},
+                    {V(-6, 0, 8), V(6, 10, 10)},
+                    {V(-6, 0, 2), V(-4, 10, 8)},
+                    {V(4, 0, 2), V(6, 10, 8)},
+                    {V(-4, 0, 2), V(4, 2, 8)},
+                    {V(-4, 8, 2), V(4, 10, 8)}});
+  Part inside = MakePart("inside", {});
+  inside.mesh = Boxes({{V(-4, 2, 2), V(4, 8, 8)}});
+  const Assembly a = MakeAssembly({Tub(), box, inside});
+  const AssemblyPlan plan = PlanAssembly(a, Analyze(a), CollisionModel(a));
+  EXPECT_FALSE(plan.assemblable);
+  ASSERT_EQ(plan.steps.size(), 1u);
+  EXPECT_TRUE(plan.steps[0].subassembly);
+  EXPECT_EQ(a.part(plan.steps[0].part).id, "box");
+  EXPECT_EQ(plan.steps[0].carried, std::vector<std::size_t>({2}));
+  EXPECT_TRUE(plan.steps[0].clear);
+  ASSERT_EQ(plan.unplaced.size(), 1u);
+  const InsertionStep& shut = plan.unplaced[0];
+  EXPECT_EQ(a.part(shut.part).id, "inside");
+  EXPECT_EQ(shut.apart_for, std::optional<std::size_t>(0));
+  ASSERT_FALSE(shut.blocked_by.empty());
+  EXPECT_EQ(a.part(shut.blocked_by[0].part).id, "box");
+  EXPECT_NEAR(shut.blocked_by[0].short_by, 0.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace mechanist

@@ -8,6 +8,7 @@
 //               "graph": {"nodes": N, "edges": E},
 //               "step": {"part": ID, "obstacle": ID or "the pin through HOLES",
 //                        "red_pins": N (0 if absent), "shot": FILE (viewer_step.png)},
+//               "subassembly": {"part": ID, "apart": ID, "alone": [ID, ...]},
 //               "cache": {"part": ID, "turns": T},
 //               "run": {"driver": 0, "s": S, "meets": [ID, ID]}}, every entry optional
 // Prints one line per check and exits 1 at the first failure.
@@ -248,6 +249,46 @@ function fail(message) {
     console.log("ok the step of " + t.part + " shows " + result.after + " pins at its end: " +
                 result.words);
     await shot("viewer_pin.png");
+  }
+  if (checks.subassembly) {
+    // A sub-assembly moves in as one, its parts together; a step (or attempt) that puts it
+    // together apart shows its parts put together by then and nothing else.
+    const t = checks.subassembly;
+    const result = await page.evaluate((t) => {
+      const m = window.mechanist;
+      const steps = m.data.assembly.steps;
+      const id = (p) => m.data.parts[p].id;
+      const k = steps.findIndex((st) => st.subassembly && id(st.part) === t.part);
+      const a = steps.findIndex((st) => st.apart_for === k && id(st.part) === t.apart);
+      if (k < 0 || a < 0) return null;
+      const moving = [steps[k].part].concat(steps[k].carried).map(id);
+      m.assemblyStep(k, 0);
+      const start = moving.map((p) => m.pose(p));
+      const shown = m.assemblyStep(k, 1).hidden.length;
+      const end = moving.map((p) => m.pose(p));
+      const apart = m.assemblyStep(a, 1);
+      const row = document.querySelectorAll("#assembly-steps .row")[a].textContent;
+      return { moving, start, end, shown, hidden: apart.hidden, row, all: m.data.parts.map((p) => p.id) };
+    }, t);
+    if (!result) fail("no sub-assembly step of " + t.part + " with " + t.apart + " apart for it");
+    const shift = (i) => [12, 13, 14].map((c) => result.start[i][c] - result.end[i][c]);
+    const first = shift(0);
+    if (!(Math.hypot(...first) > 1)) fail("the sub-assembly of " + t.part + " does not move in");
+    for (let i = 1; i < result.moving.length; ++i) {
+      if (Math.hypot(...shift(i).map((v, c) => v - first[c])) > 1e-6) {
+        fail(result.moving[i] + " does not move with " + t.part + " in its sub-assembly");
+      }
+    }
+    const expected = result.all.filter((id) => !t.alone.includes(id)).sort();
+    if (JSON.stringify([...result.hidden].sort()) !== JSON.stringify(expected)) {
+      fail("putting " + t.apart + " in apart hides " + JSON.stringify(result.hidden) +
+           ", not all but " + JSON.stringify(t.alone));
+    }
+    if (!/^\d+\. apart, for step /.test(result.row)) fail("the apart row reads " + result.row);
+    console.log("ok the sub-assembly of " + t.part + " moves in as one (" +
+                result.moving.join(" + ") + "); apart, " + t.apart + " is with " +
+                t.alone.join(", ") + " only");
+    await shot("viewer_subassembly.png");
   }
   if (checks.cache) {
     // A drag drawn from the cache of the still parts looks as when everything is redrawn.

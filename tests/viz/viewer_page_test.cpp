@@ -483,12 +483,12 @@ TEST(ViewerPage, WorksInABrowser) {
   const json all = {{"poses", {{"driver", 2}, {"s", 0.3}, {"parts", together_poses}}}};
   EXPECT_EQ(RunBrowser(dir, "differential.html", all), "") << "all drivers together";
 
-  // The assembly stepper: as the file stands, part c cannot go in; its step stops where it
-  // meets the top.
+  // The assembly stepper: as the file stands, shaft d (with its arm and lug) cannot go in; its
+  // step stops where it meets the top.
   const Assembly blocked =
       LoadAssembly(std::string(MECHANIST_SOURCE_DIR) + "/examples/pushed_by_contact/assembly.json");
   std::ofstream(dir / "steps.html") << ViewerHtml(blocked, Analyze(blocked));
-  const json step = {{"step", {{"part", "c"}, {"obstacle", "top"}}}};
+  const json step = {{"step", {{"part", "d"}, {"obstacle", "top"}}}};
   EXPECT_EQ(RunBrowser(dir, "steps.html", step), "") << "a blocked insertion";
 
   // A pin the file leaves out in the way: the latch's step stops on it, and the pin, in place
@@ -512,19 +512,28 @@ TEST(ViewerPage, WorksInABrowser) {
   EXPECT_EQ(RunBrowser(dir, "hinge.html", printed), "") << "a real STEP export";
 
   // The Onshape reducer's spacers lie 0.55 mm deep in its cover as exported: a spacer's row
-  // says the clash holds it where it is. (The drags' ranges, not looked at here, left out.)
+  // says the clash holds it where it is, within the sub-assembly of the cover that they move
+  // in with; put in apart, the spacer shows with the cover and the other spacer only. (The
+  // drags' ranges, not looked at here, left out.)
   const Assembly reducer = LoadAssembly(std::string(MECHANIST_SHARED_DATA) +
                                         "/real/cycloid_7pin_6lobe_onshape/Full Assembly.step");
   ViewerOptions no_ranges;
   no_ranges.ranges = false;
   std::ofstream(dir / "reducer.html") << ViewerHtml(reducer, Analyze(reducer), no_ranges);
-  const json stuck = {
-      {"pins",
-       {{"part", "Full_Assembly.Tiny_spacer"},
-        {"before", 0},
-        {"after", 0},
-        {"error", true},
-        {"words", {"blocked by", "where it is (they clash there)", "(cannot be placed)"}}}}};
+  const json stuck = {{"pins",
+                       {{"part", "Full_Assembly.Tiny_spacer"},
+                        {"before", 0},
+                        {"after", 0},
+                        {"error", true},
+                        {"words",
+                         {"apart, for step", "blocked by", "where it is (they clash there)",
+                          "(cannot be placed)"}}}},
+                      {"subassembly",
+                       {{"part", "Full_Assembly.Top_centering_cover"},
+                        {"apart", "Full_Assembly.Tiny_spacer"},
+                        {"alone",
+                         {"Full_Assembly.Top_centering_cover", "Full_Assembly.Tiny_spacer",
+                          "Full_Assembly.Tiny_spacer_2"}}}}};
   EXPECT_EQ(RunBrowser(dir, "reducer.html", stuck), "") << "a part stuck by a clash at rest";
 
   // A lever in a clevis whose pin the file leaves out: the pin shows in place once the lever
