@@ -188,10 +188,11 @@ Json StepJson(const Assembly& assembly, const Analysis& analysis, const Insertio
 }
 
 // "A + B (A/hole_1) into C/shaft_1 along (0, 0, 1), 12 mm: clear; makes ...", after "apart,
-// for step 5: " for a step that puts the sub-assembly of step 5 together, or "sub-assembly "
-// for a sub-assembly's insertion.
+// into the sub-assembly of step 5: " for a step that puts the sub-assembly of step 5 together,
+// or "sub-assembly " for a sub-assembly's insertion.
 std::string StepText(const Assembly& assembly, const Analysis& analysis, const InsertionStep& s) {
-  std::string t = s.apart_for     ? fmt::format("apart, for step {}: ", *s.apart_for + 1)
+  std::string t = s.apart_for
+                      ? fmt::format("apart, into the sub-assembly of step {}: ", *s.apart_for + 1)
                   : s.subassembly ? "sub-assembly "
                                   : "";
   t += assembly.part(s.part).id;

@@ -30,16 +30,19 @@ std::string InterferenceJson(const Assembly& assembly, const Analysis& analysis,
 
 /// `mechanist assemble` summary: the verdict, the base, each insertion (clear, or its
 /// obstacles with the travel at contact, the fit that holds it across its travel, or the
-/// clash at rest that keeps it where it is), the parts that could not be placed, the clashes.
+/// clash at rest that keeps it where it is; "sub-assembly A + B ..." for a sub-assembly moved
+/// in as one, "apart, into the sub-assembly of step N: ..." for a step that puts it together),
+/// the parts that could not be placed, the clashes.
 void WriteAssemblySummary(const Assembly& assembly, const Analysis& analysis,
                           const AssemblyPlan& plan, std::ostream& out);
 
 /// The assembly JSON report: {"assembly", "skipped", "assemblable", "source": "steps"|"search",
-/// "base", "steps": [{"part", "carried", "feature", "into", "direction", "travel", "clear",
-/// "blocked_by": [{"part", "pin", "travel", "short_by", "location", "held_by", "clash_at_rest"}],
-/// "pair"}], "unplaced"
-/// (same shape), "clashes": [...]}. An obstacle is a part ("part" its id, "pin" null) or a pin
-/// the file leaves out ("part" null, "pin" the holes it goes through).
+/// "base", "base_pins", "steps": [{"part", "carried", "feature", "into", "direction", "travel",
+/// "clear", "blocked_by": [{"part", "pin", "travel", "short_by", "location", "held_by",
+/// "clash_at_rest"}], "pair", "pins", "subassembly", "apart_for"}], "unplaced" (same shape),
+/// "clashes": [...]}. An obstacle is a part ("part" its id, "pin" null) or a pin the file leaves
+/// out ("part" null, "pin" the holes it goes through). "apart_for" is the index into "steps" of
+/// the sub-assembly's insertion (InsertionStep::apart_for), else null.
 std::string AssemblyPlanJson(const Assembly& assembly, const Analysis& analysis,
                              const AssemblyPlan& plan);
 

@@ -51,14 +51,17 @@ std::optional<double> TravelToMeet(const Aabb& moving, const Aabb& fixed, const 
   return lo;
 }
 
-// The units that stop a unit leaving in a direction (Planner::Blockers), by unit and direction,
-// kept from one search for a sub-assembly to the next: parts only leave in between, so a list
-// only loses parts, and the base stays.
+// The parts that stop a unit leaving in a direction (Planner::Blockers; none when the base
+// does), by unit and direction, kept from one search for a sub-assembly to the next: parts only
+// leave in between, so a list only loses parts, and the base stays.
 struct BlockerMemo {
   std::mutex mutex;
   std::map<std::tuple<std::size_t, double, double, double>, std::optional<std::vector<std::size_t>>>
       blockers;
 };
+
+// A removal direction (world, unit) with the feature that suggests it, if one does.
+using Direction = std::pair<Eigen::Vector3d, std::optional<FeatureRef>>;
 
 // Units that leave as one (Planner::RemovableSubassembly): the units, the removal of them all,
 // the removals that take them apart, down to the first of them (the base), and the best
@@ -166,21 +169,17 @@ class Planner {
     if (added) SortByTravel(blocked);
   }
 
-  // The pins through a part of `unit` whose parts are all `present`; with `across_only`, only
-  // those through a part outside the unit too.
+  // The pins through a part of `unit` whose parts are all `present`.
   std::vector<const HingePin*> PinsThrough(const std::vector<std::size_t>& unit,
-                                           const std::vector<bool>& present,
-                                           bool across_only = false) const {
+                                           const std::vector<bool>& present) const {
     std::vector<const HingePin*> through;
-    const auto in_unit = [&](std::size_t p) {
-      return std::find(unit.begin(), unit.end(), p) != unit.end();
-    };
     for (const HingePin& pin : pins_) {
-      const bool some_in = std::any_of(pin.parts.begin(), pin.parts.end(), in_unit);
-      const bool all_in = std::all_of(pin.parts.begin(), pin.parts.end(), in_unit);
+      const bool in_unit = std::any_of(pin.parts.begin(), pin.parts.end(), [&](std::size_t p) {
+        return std::find(unit.begin(), unit.end(), p) != unit.end();
+      });
       const bool all_present = std::all_of(pin.parts.begin(), pin.parts.end(),
                                            [&](std::size_t p) { return present[p]; });
-      if (some_in && !(across_only && all_in) && all_present) through.push_back(&pin);
+      if (in_unit && all_present) through.push_back(&pin);
     }
     return through;
   }
@@ -652,9 +651,8 @@ class Planner {
   // axis to the centre of the unit's box, square to the axis, and the world's axes turned
   // square to it, both senses: a finger segment leaves its fork across the pin, along the
   // finger, whichever way the finger stands.
-  std::vector<std::pair<Eigen::Vector3d, std::optional<FeatureRef>>> RemovalDirections(
-      const std::vector<std::size_t>& unit) const {
-    std::vector<std::pair<Eigen::Vector3d, std::optional<FeatureRef>>> dirs;
+  std::vector<Direction> RemovalDirections(const std::vector<std::size_t>& unit) const {
+    std::vector<Direction> dirs;
     auto add = [&](const Eigen::Vector3d& r, std::optional<FeatureRef> f) {
       for (const auto& [q, g] : dirs) {
         if (q.dot(r) >= std::cos(assembly_.tolerance().angle)) return;
@@ -778,7 +776,8 @@ class Planner {
 
   // Removes the units that are neither `done` nor of the base (`base_unit`) from the parts
   // `present`, one at a time, in passes over the units in order until a pass removes none; then,
-  // given a `memo`, a sub-assembly (RemovableSubassembly) leaves as one and the passes go on.
+  // given a `memo` (and `stuck_apart`), a sub-assembly (RemovableSubassembly) leaves as one and
+  // the passes go on.
   // Returns the removals in order: a sub-assembly's removal, then the removals that take it
   // apart, `apart_for` the index of its removal among the removals; the best attempts of its
   // units that cannot be taken from it go to `stuck_apart` (`apart_for` likewise). Marks the
@@ -811,7 +810,9 @@ class Planner {
         if (removed) removed(1);
         next = u + 1;
       }
-      if (progress || !memo) continue;
+      if (progress) continue;
+      if (!memo) break;
+      assert(stuck_apart);
       auto sub = RemovableSubassembly(units, unit_of, base_unit, *done, *present, memo);
       if (!sub) break;
       for (const std::size_t u : sub->members) {
@@ -832,8 +833,10 @@ class Planner {
   }
 
   // What stops `unit` leaving along r (every stop on its way out, with no seat) among the parts
-  // `present`: the parts, or none when a part of the base (`in_base`) or a pin the file leaves
-  // out stops it (the base is swept first: most units tried are held by it).
+  // `present`: the parts, and for a pin the file leaves out the parts it goes through that are
+  // not of the base (`in_base`; the pin then comes out with them, or before them); none when a
+  // part of the base, or a pin through the base alone, stops it (the base is swept first: most
+  // units tried are held by it). `by_pin` tells whether a pin stops it.
   std::optional<std::vector<std::size_t>> Blockers(const std::vector<std::size_t>& unit,
                                                    const Eigen::Vector3d& r,
                                                    const std::vector<bool>& present,
@@ -848,8 +851,16 @@ class Planner {
     std::vector<std::size_t> parts;
     for (const Obstacle& o : others) {
       if (!FirstStop(unit, o, swept, r, 0.0, travel, no_seat)) continue;
-      *by_pin = o.pin != nullptr;
-      if (o.pin || in_base[o.part]) return std::nullopt;
+      if (o.pin) {
+        *by_pin = true;
+        const std::size_t before = parts.size();
+        for (const std::size_t p : o.pin->parts) {
+          if (!in_base[p]) parts.push_back(p);
+        }
+        if (parts.size() == before) return std::nullopt;
+        continue;
+      }
+      if (in_base[o.part]) return std::nullopt;
       parts.push_back(o.part);
     }
     return parts;
@@ -871,7 +882,7 @@ class Planner {
     if (!known) {
       bool by_pin = false;
       known = Blockers(units[u], r, present, in_base, &by_pin);
-      if (!by_pin) {  // the pins in place change as parts leave: not kept
+      if (!by_pin) {  // the pins in place go as their parts leave: not kept
         const std::lock_guard<std::mutex> lock(memo->mutex);
         memo->blockers.emplace(key, *known);
       }
@@ -886,8 +897,8 @@ class Planner {
   // a seed unit and, in turn, every unit that stops a unit of the set on its way out along one
   // of the seed's removal directions (the closure of the blocking relation along that
   // direction: Wilson and Latombe's non-directional blocking graph, "Geometric reasoning about
-  // mechanical assembly", Artificial Intelligence 71, 1994); the first of them, smallest first,
-  // that leaves as one (Apart).
+  // mechanical assembly", Artificial Intelligence 71, 1994): of the smallest that leave as one
+  // (Apart), the first that comes apart down to its base, else the first.
   std::optional<Subassembly> RemovableSubassembly(
       const std::vector<std::vector<std::size_t>>& units, const std::vector<std::size_t>& unit_of,
       const std::vector<bool>& base_unit, const std::vector<bool>& done,
@@ -898,9 +909,10 @@ class Planner {
     for (std::size_t u = 0; u < units.size(); ++u) {
       if (!done[u] && !base_unit[u]) seeds.push_back(u);
     }
-    std::vector<std::vector<std::vector<std::size_t>>> found(seeds.size());
+    // Per seed: each set of units found, with the direction it leaves in.
+    std::vector<std::vector<std::pair<std::vector<std::size_t>, Direction>>> found(seeds.size());
     ParallelFor(seeds.size(), [&](std::size_t k) {
-      for (const auto& direction : RemovalDirections(units[seeds[k]])) {
+      for (const Direction& direction : RemovalDirections(units[seeds[k]])) {
         const Eigen::Vector3d& r = direction.first;
         std::vector<bool> in(units.size(), false);
         in[seeds[k]] = true;
@@ -918,31 +930,38 @@ class Planner {
         }
         if (!held && members.size() > 1) {
           std::sort(members.begin(), members.end());
-          found[k].push_back(members);
+          found[k].emplace_back(members, direction);
         }
       }
     });
-    std::vector<std::vector<std::size_t>> candidates;
+    std::vector<std::pair<std::vector<std::size_t>, Direction>> candidates;
     for (auto& f : found) candidates.insert(candidates.end(), f.begin(), f.end());
-    // The smallest first, then in the order of their seeds; each set tried once.
+    // The smallest first, then in the order of their seeds; each set tried once. Of the sets
+    // of the smallest size that leave, one that comes apart down to its base is preferred.
     std::stable_sort(candidates.begin(), candidates.end(),
-                     [](const auto& a, const auto& b) { return a.size() < b.size(); });
+                     [](const auto& a, const auto& b) { return a.first.size() < b.first.size(); });
     std::set<std::vector<std::size_t>> tried;
-    for (const std::vector<std::size_t>& members : candidates) {
+    std::optional<Subassembly> with_stuck;
+    for (const auto& [members, direction] : candidates) {
+      if (with_stuck && members.size() > with_stuck->members.size()) break;
       if (!tried.insert(members).second) continue;
-      if (auto sub = Apart(units, unit_of, members, present)) return sub;
+      std::optional<Subassembly> sub = Apart(units, unit_of, members, direction, present);
+      if (sub && sub->stuck.empty()) return sub;
+      if (sub && !with_stuck) with_stuck = std::move(sub);
     }
-    return std::nullopt;
+    return with_stuck;
   }
 
-  // The sub-assembly of the units `members` leaving the parts `present` as one, if it can, and
-  // how it is put together apart from the rest of the assembly: its units, the one with the
-  // largest box first (the sub-assembly's base), are removed from it one at a time as the search
-  // removes them from the assembly (with no sub-assembly inside it); those that cannot leave it
-  // so stay with its base, each with its best attempt.
+  // The sub-assembly of the units `members` leaving the parts `present` as one (along
+  // `direction` first, then its own removal directions), if it can, and how it is put together
+  // apart from the rest of the assembly: its units, the one with the largest box first (the
+  // sub-assembly's base), are removed from it one at a time as the search removes them from the
+  // assembly (with no sub-assembly inside it, and without the pins the file leaves out: those
+  // through its parts go in after its insertion, with everything in place); those that cannot
+  // leave it so stay with its base, each with its best attempt.
   std::optional<Subassembly> Apart(const std::vector<std::vector<std::size_t>>& units,
                                    const std::vector<std::size_t>& unit_of,
-                                   std::vector<std::size_t> members,
+                                   std::vector<std::size_t> members, const Direction& direction,
                                    const std::vector<bool>& present) const {
     const auto volume = [&](std::size_t u) {
       Aabb box;
@@ -954,17 +973,19 @@ class Planner {
                      [&](std::size_t a, std::size_t b) { return volume(a) > volume(b); });
     std::vector<std::size_t> group;
     for (const std::size_t u : members) group.insert(group.end(), units[u].begin(), units[u].end());
-    std::optional<InsertionStep> step = TryRemove(group, present, /*pins_across_only=*/true);
+    std::optional<InsertionStep> step = TryRemove(group, present, direction);
     if (!step) return std::nullopt;
+    Planner without_pins = *this;
+    without_pins.pins_.clear();
     std::vector<bool> alone(present.size(), false);  // the sub-assembly's parts, by themselves
     for (const std::size_t p : group) alone[p] = true;
     std::vector<bool> base(units.size(), false), done(units.size(), true);
     base[members.front()] = true;
     for (const std::size_t u : members) done[u] = false;
     Subassembly sub;
-    sub.apart = RemoveUnits(units, unit_of, base, &alone, &done, nullptr, nullptr, {});
+    sub.apart = without_pins.RemoveUnits(units, unit_of, base, &alone, &done, nullptr, nullptr, {});
     for (const std::size_t u : members) {
-      if (!done[u] && !base[u]) sub.stuck.push_back(BestAttempt(units[u], alone));
+      if (!done[u] && !base[u]) sub.stuck.push_back(without_pins.BestAttempt(units[u], alone));
     }
     step->subassembly = true;
     sub.members = std::move(members);
@@ -995,16 +1016,16 @@ class Planner {
     return step;
   }
 
-  // The first of `unit`'s removal directions (RemovalDirections) in which it can leave the parts
-  // `present`, with its pins: those through it (PinsThrough; with `pins_across_only`, only those
-  // through a part outside it too: a sub-assembly's own go in while it is put together) come
-  // out first.
+  // The first of `unit`'s removal directions (`first`, if given, then RemovalDirections) in
+  // which it can leave the parts `present`, the pins through it (PinsThrough) coming out first.
   std::optional<InsertionStep> TryRemove(const std::vector<std::size_t>& unit,
                                          const std::vector<bool>& present,
-                                         bool pins_across_only = false) const {
+                                         const std::optional<Direction>& first = {}) const {
     const std::vector<bool> pin_in = PinsInPlace(unit, present);
     const std::vector<Obstacle> others = Obstacles(unit, present, pin_in);
-    for (const auto& [r, feature] : RemovalDirections(unit)) {
+    std::vector<Direction> directions = RemovalDirections(unit);
+    if (first) directions.insert(directions.begin(), *first);
+    for (const auto& [r, feature] : directions) {
       const double travel = ClearingDistance(unit, others, r);
       // Leaving: no seat at the far end, so every contact counts.
       if (Stopped(unit, others, r, travel)) {
@@ -1014,7 +1035,7 @@ class Planner {
       // is known, since most units tried cannot leave yet whatever their pins do.
       InsertionStep step = MakeStep(unit, r, feature, present);
       std::vector<bool> pins_after = pin_in;  // as the pins go in after the unit, in order
-      for (const HingePin* pin : PinsThrough(unit, present, pins_across_only)) {
+      for (const HingePin* pin : PinsThrough(unit, present)) {
         step.pins.push_back(InsertPin(*pin, present, pins_after));
         if (!step.pins.back().clear) return std::nullopt;
         pins_after[Index(*pin)] = true;
@@ -1056,7 +1077,7 @@ class Planner {
                             const std::vector<bool>& present) const {
     const std::vector<bool> pin_in = PinsInPlace(unit, present);
     const std::vector<Obstacle> others = Obstacles(unit, present, pin_in);
-    std::optional<std::pair<Eigen::Vector3d, std::optional<FeatureRef>>> best;
+    std::optional<Direction> best;
     double best_free = -1.0, best_travel = 0.0;
     for (const auto& [r, feature] : RemovalDirections(unit)) {
       const double travel = ClearingDistance(unit, others, r);

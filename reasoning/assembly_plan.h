@@ -74,10 +74,9 @@ struct InsertionStep {
   /// by the steps just before this one that are `apart_for` it, and move in as one.
   bool subassembly = false;
   /// A step that puts a sub-assembly together apart, or (in AssemblyPlan::unplaced) an attempt
-  /// to: the index into AssemblyPlan::steps of the sub-assembly's insertion. Only the parts of
-  /// the sub-assembly put together before it are in place: that step's `part`, with the parts
-  /// of the sub-assembly that cannot leave it, and the parts of the steps before this one that
-  /// are apart for it.
+  /// to: the index into AssemblyPlan::steps of the sub-assembly's insertion. Only parts of the
+  /// sub-assembly are in place: for a step, all but those of the later steps apart for it; for
+  /// an attempt, all but those of the steps apart for it (its base, with what cannot leave it).
   std::optional<std::size_t> apart_for;
 };
 
@@ -137,16 +136,18 @@ struct AssemblyPlan {
 /// removes none, a sub-assembly leaves as one: for each unit left and each of its removal
 /// directions, the unit and, in turn, every unit that stops one of them along that direction
 /// (the closure of the blocking relation, Wilson and Latombe's non-directional blocking graph),
-/// unless the base or a pin the file leaves out stops one; the smallest such set that can
-/// leave as one (its first direction that is clear, with its pins through parts outside it)
-/// goes, its largest unit first (`part`, the others `carried`, `subassembly`), and is taken
-/// apart by the same one-at-a-time search with its parts alone, down to that unit (no
-/// sub-assembly inside it): those steps are `apart_for` it, and the units that cannot leave
-/// it are `unplaced` apart for it. Then the passes go on. The sequence is the reverse. Parts
-/// that cannot leave are `unplaced`, each with its best attempt: the direction in which it
-/// gets furthest (the first of those that get equally far), with every part on its way, and
-/// its pins. The search runs on all cores and gives the one-at-a-time search's answer whatever
-/// the threads' timing.
+/// (a pin the file leaves out that stops one brings in the parts it goes through), unless the
+/// base, or a pin through the base alone, stops one; the smallest such set that can leave as
+/// one (along that direction first, then its own; the pins through its parts come out first,
+/// and go in right after it) goes, its largest unit first (`part`, the others `carried`,
+/// `subassembly`), and is taken apart by the same one-at-a-time search with its parts alone
+/// and no pins, down to that unit (no sub-assembly inside it): those steps are `apart_for` it,
+/// and the units that cannot leave it are `unplaced` apart for it (of the smallest sets that
+/// leave, one that comes apart down to its base is preferred). Then the passes go on. The sequence
+/// is the reverse. Parts that cannot leave are `unplaced`, each with its best attempt: the
+/// direction in which it gets furthest (the first of those that get equally far), with every part
+/// on its way, and its pins. The search runs on all cores and gives the one-at-a-time search's
+/// answer whatever the threads' timing.
 ///
 /// The assembly is assemblable when there are no clashes, every part is placed, and every step
 /// and every pin is clear.

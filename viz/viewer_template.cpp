@@ -698,7 +698,8 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
       (first.travel / data.mm_per_length).toFixed(2) + " " + data.length_unit;
   };
   const stepWords = (st) => {
-    const moving = (st.apart_for !== null ? "apart, for step " + (st.apart_for + 1) + ": " :
+    const moving = (st.apart_for !== null ?
+                    "apart, into the sub-assembly of step " + (st.apart_for + 1) + ": " :
                     st.subassembly ? "sub-assembly " : "") +
       [st.part].concat(st.carried).map((p) => data.parts[p].id).join(" + ");
     const d = st.direction.map((v) => +v.toFixed(3)).join(", ");
@@ -747,8 +748,9 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
     const st = plan.steps[k];
     step = k;
     // Not in yet: the parts of later steps, but for those that cannot leave a sub-assembly
-    // once it is in; put together apart: all but the sub-assembly's parts put together by then
-    // (its first part and those that cannot leave it).
+    // once it is in; put together apart: all but the sub-assembly's parts, less those of its
+    // later steps apart (of all its steps apart, for an attempt: its base and what cannot
+    // leave it).
     const later = new Set();
     const partsOf = (other) => [other.part].concat(other.carried);
     const room = st.apart_for;
@@ -758,10 +760,10 @@ const char* const kViewerTemplate = R"html(<!DOCTYPE html>
         if (j > k && !stays) partsOf(other).forEach((p) => later.add(p));
       });
     } else {
-      const together = new Set([plan.steps[room].part]);
+      const together = new Set(partsOf(plan.steps[room]));
       plan.steps.forEach((other, j) => {
-        if (other.apart_for === room && (j <= k || !other.placed)) {
-          partsOf(other).forEach((p) => together.add(p));
+        if (other.apart_for === room && other.placed && (j > k || !st.placed)) {
+          partsOf(other).forEach((p) => together.delete(p));
         }
       });
       parts.forEach((part, p) => { if (!together.has(p)) later.add(p); });

@@ -8,7 +8,8 @@
 //               "graph": {"nodes": N, "edges": E},
 //               "step": {"part": ID, "obstacle": ID or "the pin through HOLES",
 //                        "red_pins": N (0 if absent), "shot": FILE (viewer_step.png)},
-//               "subassembly": {"part": ID, "apart": ID, "alone": [ID, ...]},
+//               "subassembly": {"part": ID, "apart": ID, "shot": FILE, "alone": [ID, ...] (shown
+//                               at the end of `apart`'s step or attempt)},
 //               "cache": {"part": ID, "turns": T},
 //               "run": {"driver": 0, "s": S, "meets": [ID, ID]}}, every entry optional
 // Prints one line per check and exits 1 at the first failure.
@@ -264,11 +265,11 @@ function fail(message) {
       const moving = [steps[k].part].concat(steps[k].carried).map(id);
       m.assemblyStep(k, 0);
       const start = moving.map((p) => m.pose(p));
-      const shown = m.assemblyStep(k, 1).hidden.length;
+      m.assemblyStep(k, 1);
       const end = moving.map((p) => m.pose(p));
       const apart = m.assemblyStep(a, 1);
       const row = document.querySelectorAll("#assembly-steps .row")[a].textContent;
-      return { moving, start, end, shown, hidden: apart.hidden, row, all: m.data.parts.map((p) => p.id) };
+      return { moving, start, end, hidden: apart.hidden, row, all: m.data.parts.map((p) => p.id) };
     }, t);
     if (!result) fail("no sub-assembly step of " + t.part + " with " + t.apart + " apart for it");
     const shift = (i) => [12, 13, 14].map((c) => result.start[i][c] - result.end[i][c]);
@@ -284,11 +285,13 @@ function fail(message) {
       fail("putting " + t.apart + " in apart hides " + JSON.stringify(result.hidden) +
            ", not all but " + JSON.stringify(t.alone));
     }
-    if (!/^\d+\. apart, for step /.test(result.row)) fail("the apart row reads " + result.row);
+    if (!/^\d+\. apart, into the sub-assembly of step /.test(result.row)) {
+      fail("the apart row reads " + result.row);
+    }
     console.log("ok the sub-assembly of " + t.part + " moves in as one (" +
                 result.moving.join(" + ") + "); apart, " + t.apart + " is with " +
                 t.alone.join(", ") + " only");
-    await shot("viewer_subassembly.png");
+    await shot(t.shot || "viewer_subassembly.png");
   }
   if (checks.cache) {
     // A drag drawn from the cache of the still parts looks as when everything is redrawn.

@@ -484,11 +484,17 @@ TEST(ViewerPage, WorksInABrowser) {
   EXPECT_EQ(RunBrowser(dir, "differential.html", all), "") << "all drivers together";
 
   // The assembly stepper: as the file stands, shaft d (with its arm and lug) cannot go in; its
-  // step stops where it meets the top.
+  // step stops where it meets the top. Block b and nut c go in as a sub-assembly: the nut set
+  // on the block apart shows with the block alone, then both move in together.
   const Assembly blocked =
       LoadAssembly(std::string(MECHANIST_SOURCE_DIR) + "/examples/pushed_by_contact/assembly.json");
   std::ofstream(dir / "steps.html") << ViewerHtml(blocked, Analyze(blocked));
-  const json step = {{"step", {{"part", "d"}, {"obstacle", "top"}}}};
+  const json step = {{"step", {{"part", "d"}, {"obstacle", "top"}}},
+                     {"subassembly",
+                      {{"part", "b"},
+                       {"apart", "c"},
+                       {"alone", {"b", "c"}},
+                       {"shot", "viewer_subassembly_apart.png"}}}};
   EXPECT_EQ(RunBrowser(dir, "steps.html", step), "") << "a blocked insertion";
 
   // A pin the file leaves out in the way: the latch's step stops on it, and the pin, in place
@@ -526,8 +532,8 @@ TEST(ViewerPage, WorksInABrowser) {
                         {"after", 0},
                         {"error", true},
                         {"words",
-                         {"apart, for step", "blocked by", "where it is (they clash there)",
-                          "(cannot be placed)"}}}},
+                         {"apart, into the sub-assembly of step", "blocked by",
+                          "where it is (they clash there)", "(cannot be placed)"}}}},
                       {"subassembly",
                        {{"part", "Full_Assembly.Top_centering_cover"},
                         {"apart", "Full_Assembly.Tiny_spacer"},
