@@ -917,7 +917,7 @@ class Planner {
         std::vector<bool> in(units.size(), false);
         in[seeds[k]] = true;
         std::vector<std::size_t> members = {seeds[k]};
-        bool held = false;  // by the base or a pin the file leaves out
+        bool held = false;  // by the base, or by a pin through the base alone
         for (std::size_t m = 0; !held && m < members.size(); ++m) {
           const auto blockers = MemoBlockers(memo, units, members[m], r, present, in_base);
           held = !blockers;

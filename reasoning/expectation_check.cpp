@@ -167,8 +167,9 @@ ExpectationResult CheckAssemblable(const Assembly& assembly, const AssemblyPlan*
     r.detail = fmt::format("found assemblable ({} insertions {})", plan->steps.size(),
                            plan->from_steps ? "from the file's steps" : "found by disassembly");
   } else {
-    r.detail = fmt::format("found not assemblable: {} clashes, {} blocked insertions",
-                           plan->clashes.size(), blocked);
+    r.detail = fmt::format("found not assemblable: {} clash{}, {} blocked insertion{}",
+                           plan->clashes.size(), plan->clashes.size() == 1 ? "" : "es", blocked,
+                           blocked == 1 ? "" : "s");
     if (blocked_pins > 0) {
       fmt::format_to(std::back_inserter(r.detail), ", {} pin{} the file leaves out blocked",
                      blocked_pins, blocked_pins == 1 ? "" : "s");
